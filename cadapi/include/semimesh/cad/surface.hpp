@@ -1,0 +1,56 @@
+// A CAD surface (face): a parametric map (u,v) -> S(u,v), trimmed by the loops the Model
+// records for it.
+//
+// Orientation contract: normal() points OUT of the solid, INTO the fluid. A backend whose
+// natural du x dv points the other way passes orientation = -1 to the constructor; normal()
+// and curvatures() then account for it, so no caller ever flips a normal.
+#pragma once
+
+#include "semimesh/cad/types.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace semimesh::cad {
+
+class Surface {
+ public:
+  Surface(int id, std::string name, int orientation = +1)
+      : id_(id), name_(std::move(name)), orientation_(orientation >= 0 ? +1 : -1) {}
+  virtual ~Surface() = default;
+  Surface(const Surface&) = delete;
+  Surface& operator=(const Surface&) = delete;
+
+  int id() const { return id_; }
+  const std::string& name() const { return name_; }
+  /// +1 when du x dv points into the fluid, -1 when it points into the solid.
+  int orientation() const { return orientation_; }
+
+  virtual SurfaceKind kind() const = 0;
+  /// Parameter box {u-interval, v-interval}; trimming loops lie inside it.
+  virtual std::array<Interval, 2> bounds() const = 0;
+  /// S and its first and second partial derivatives.
+  virtual SurfaceDerivatives derivatives(const Vec2& uv) const = 0;
+  virtual Vec3 point(const Vec2& uv) const { return derivatives(uv).p; }
+  virtual bool is_planar() const { return kind() == SurfaceKind::Plane; }
+
+  /// Whether (u,v) lies inside the trimmed face (on the boundary counts as inside).
+  virtual bool contains(const Vec2& uv) const = 0;
+
+  /// Closest point to x. `guess` seeds the local solver; without it the backend finds a start.
+  /// The default is Newton on the parameter box from a sampled start; `inside` from contains().
+  virtual SurfaceProjection project(const Vec3& x, std::optional<Vec2> guess = std::nullopt) const;
+
+  /// Unit normal pointing into the fluid (see the orientation contract above).
+  Vec3 normal(const Vec2& uv) const;
+  /// Principal curvatures with the sign convention of PrincipalCurvatures.
+  PrincipalCurvatures curvatures(const Vec2& uv) const;
+
+ private:
+  int id_;
+  std::string name_;
+  int orientation_;
+};
+
+}  // namespace semimesh::cad

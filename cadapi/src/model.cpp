@@ -1,0 +1,125 @@
+#include "semimesh/cad/model.hpp"
+
+#include "semimesh/cad/error.hpp"
+
+#include <string>
+
+namespace semimesh::cad {
+namespace {
+
+[[noreturn]] void topology_error(const std::string& backend, const std::string& what) {
+  throw CadError(CadError::Kind::Geometry, "backend '" + backend + "': inconsistent topology: " + what);
+}
+
+}  // namespace
+
+Model::~Model() = default;
+
+int Model::add_vertex(const Vec3& point, std::string name) {
+  int id = num_vertices();
+  vertices_.push_back(Vertex{id, point, std::move(name)});
+  return id;
+}
+
+int Model::add_curve(std::unique_ptr<Curve> curve, int start_vertex, int end_vertex) {
+  if (curve->id() != num_curves())
+    topology_error(backend_, "curve added with id " + std::to_string(curve->id()) + ", expected " + std::to_string(num_curves()));
+  curves_.push_back(std::move(curve));
+  curve_vertices_.push_back({start_vertex, end_vertex});
+  return num_curves() - 1;
+}
+
+int Model::add_surface(std::unique_ptr<Surface> surface, std::vector<Loop> loops) {
+  if (surface->id() != num_surfaces())
+    topology_error(backend_, "surface added with id " + std::to_string(surface->id()) + ", expected " + std::to_string(num_surfaces()));
+  surfaces_.push_back(std::move(surface));
+  loops_.push_back(std::move(loops));
+  return num_surfaces() - 1;
+}
+
+void Model::set_units(std::string units, double scale_applied) {
+  units_ = std::move(units);
+  scale_applied_ = scale_applied;
+}
+
+void Model::finalize() {
+  curve_surfaces_.assign(curves_.size(), {});
+  vertex_curves_.assign(vertices_.size(), {});
+  for (int c = 0; c < num_curves(); ++c) {
+    for (int v : curve_vertices_[c]) {
+      if (v < 0 || v >= num_vertices())
+        topology_error(backend_, "curve " + std::to_string(c) + " ('" + curves_[c]->name() + "') names vertex " + std::to_string(v));
+    }
+    vertex_curves_[curve_vertices_[c][0]].push_back(c);
+    if (curve_vertices_[c][1] != curve_vertices_[c][0]) vertex_curves_[curve_vertices_[c][1]].push_back(c);
+  }
+  for (int s = 0; s < num_surfaces(); ++s) {
+    const std::string where = "surface " + std::to_string(s) + " ('" + surfaces_[s]->name() + "')";
+    if (loops_[s].empty()) topology_error(backend_, where + " has no loop");
+    for (size_t l = 0; l < loops_[s].size(); ++l) {
+      const auto& uses = loops_[s][l].uses;
+      if (uses.empty()) topology_error(backend_, where + " loop " + std::to_string(l) + " is empty");
+      for (size_t k = 0; k < uses.size(); ++k) {
+        const CurveUse& u = uses[k];
+        if (u.curve < 0 || u.curve >= num_curves())
+          topology_error(backend_, where + " loop " + std::to_string(l) + " names curve " + std::to_string(u.curve));
+        curve_surfaces_[u.curve].push_back(SurfaceUse{s, u.forward});
+        const CurveUse& next = uses[(k + 1) % uses.size()];
+        int end = curve_vertices_[u.curve][u.forward ? 1 : 0];
+        int start = curve_vertices_[next.curve][next.forward ? 0 : 1];
+        if (end != start)
+          topology_error(backend_, where + " loop " + std::to_string(l) + " is not closed: curve " + std::to_string(u.curve) +
+                                       " ends at vertex " + std::to_string(end) + " but curve " + std::to_string(next.curve) +
+                                       " starts at vertex " + std::to_string(start));
+      }
+    }
+  }
+  closed_ = num_curves() > 0;
+  for (const auto& uses : curve_surfaces_) closed_ = closed_ && uses.size() == 2;
+
+  bbox_ = BBox{};
+  for (const Vertex& v : vertices_) bbox_.add(v.point);
+  for (const auto& c : curves_) {
+    Interval t = c->bounds();
+    for (int i = 0; i <= 32; ++i) bbox_.add(c->point(t.lo + t.length() * i / 32));
+  }
+  for (const auto& s : surfaces_) {
+    auto box = s->bounds();
+    for (int i = 0; i <= 16; ++i)
+      for (int j = 0; j <= 16; ++j) {
+        Vec2 uv(box[0].lo + box[0].length() * i / 16, box[1].lo + box[1].length() * j / 16);
+        if (s->contains(uv)) bbox_.add(s->point(uv));
+      }
+  }
+  finalized_ = true;
+}
+
+namespace {
+template <class T>
+const T& checked(const std::vector<T>& v, int id, const char* what, const std::string& backend) {
+  if (id < 0 || id >= static_cast<int>(v.size()))
+    throw CadError(CadError::Kind::Geometry, "backend '" + backend + "': no " + what + " with id " + std::to_string(id) +
+                                                 " (model has " + std::to_string(v.size()) + ")");
+  return v[id];
+}
+}  // namespace
+
+const Vertex& Model::vertex(int id) const { return checked(vertices_, id, "vertex", backend_); }
+const Curve& Model::curve(int id) const { return *checked(curves_, id, "curve", backend_); }
+const Surface& Model::surface(int id) const { return *checked(surfaces_, id, "surface", backend_); }
+const std::vector<Loop>& Model::loops(int surface) const { return checked(loops_, surface, "surface", backend_); }
+const std::vector<SurfaceUse>& Model::surfaces_of_curve(int curve) const {
+  return checked(curve_surfaces_, curve, "curve", backend_);
+}
+std::array<int, 2> Model::curve_vertices(int curve) const { return checked(curve_vertices_, curve, "curve", backend_); }
+const std::vector<int>& Model::curves_of_vertex(int vertex) const {
+  return checked(vertex_curves_, vertex, "vertex", backend_);
+}
+
+std::optional<int> Model::find_surface(const std::string& name) const {
+  for (const auto& s : surfaces_)
+    if (s->name() == name) return s->id();
+  return std::nullopt;
+}
+
+}  // namespace semimesh::cad

@@ -1,0 +1,52 @@
+// Element shapes, reference elements and the canonical node order of high-order elements.
+//
+// Reference elements are Gmsh's (gmsh.info/doc/texinfo, "Node ordering"):
+//   segment  [-1, 1]
+//   triangle (0,0) (1,0) (0,1)                 quadrilateral [-1,1]^2
+//   tetrahedron (0,0,0) (1,0,0) (0,1,0) (0,0,1)
+//   pyramid  base [-1,1]^2 at z = 0, apex (0,0,1)
+//   prism    triangle (0,0) (1,0) (0,1) x z in [-1, 1]
+//   hexahedron [-1,1]^3
+// The canonical node order of an element of order P is Gmsh's MSH order: the vertices, then the
+// nodes inside each edge (edge by edge, in Gmsh's edge order and direction), then the nodes inside
+// each face (recursively, as a lower-order face element), then the interior nodes (recursively, as a
+// lower-order element of the same shape). The mesh stores element nodes in this order; writers for
+// other formats permute it.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace semimesh::ho {
+
+enum class Shape { Segment, Triangle, Quadrilateral, Tetrahedron, Pyramid, Prism, Hexahedron };
+
+/// Where the nodes of an order-P element sit in the reference element.
+///  Equispaced: what Gmsh and VTK files assume for their Lagrange elements.
+///  GLL: Gauss-Lobatto-Legendre points on tensor shapes; warp-and-blend (Warburton 2006) on
+///       simplices; pyramids use the equispaced layout warped along edges and faces (documented
+///       in node_set.cpp).
+enum class NodeSet { Equispaced, GLL };
+
+constexpr int kMaxOrder = 10;
+
+int dimension(Shape shape);
+int num_vertices(Shape shape);
+/// Number of nodes of the order-P element (P >= 1).
+int num_nodes(Shape shape, int order);
+std::string to_string(Shape shape);
+
+/// Local edges as vertex pairs (Gmsh's order and direction).
+const std::vector<std::array<int, 2>>& edges(Shape shape);
+/// Local faces of 3D shapes as vertex lists (3 or 4), ordered so that their normal by the right-hand
+/// rule points out of the element (Gmsh's face order).
+const std::vector<std::vector<int>>& faces(Shape shape);
+
+/// Reference coordinates of the nodes of an order-P element in canonical order; row i is node i.
+/// Shape (num_nodes, 3); unused coordinates are 0.
+Eigen::MatrixX3d reference_nodes(Shape shape, int order, NodeSet set = NodeSet::Equispaced);
+
+}  // namespace semimesh::ho
