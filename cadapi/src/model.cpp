@@ -59,10 +59,12 @@ void Model::finalize() {
     for (size_t l = 0; l < loops_[s].size(); ++l) {
       const auto& uses = loops_[s][l].uses;
       if (uses.empty()) topology_error(backend_, where + " loop " + std::to_string(l) + " is empty");
-      for (size_t k = 0; k < uses.size(); ++k) {
-        const CurveUse& u = uses[k];
+      // All ids first: the closure check below reads the next use's curve too.
+      for (const CurveUse& u : uses)
         if (u.curve < 0 || u.curve >= num_curves())
           topology_error(backend_, where + " loop " + std::to_string(l) + " names curve " + std::to_string(u.curve));
+      for (size_t k = 0; k < uses.size(); ++k) {
+        const CurveUse& u = uses[k];
         curve_surfaces_[u.curve].push_back(SurfaceUse{s, u.forward});
         const CurveUse& next = uses[(k + 1) % uses.size()];
         int end = curve_vertices_[u.curve][u.forward ? 1 : 0];

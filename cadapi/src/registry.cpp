@@ -39,7 +39,9 @@ const BackendInfo& Registry::info(const std::string& name) const {
 
 std::string Registry::backend_for_path(const std::string& path) const {
   auto dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot);
+  auto slash = path.find_last_of("/\\");
+  bool in_file_name = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  std::string ext = in_file_name ? path.substr(dot) : "";
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   for (const auto& b : backends_)
     if (std::find(b.extensions.begin(), b.extensions.end(), ext) != b.extensions.end()) return b.name;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // Vec3::cross() is declared in Core but defined here
 
 #include <array>
 #include <string>
