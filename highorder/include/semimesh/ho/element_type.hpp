@@ -39,6 +39,9 @@ int num_vertices(Shape shape);
 int num_nodes(Shape shape, int order);
 std::string to_string(Shape shape);
 
+/// Reference coordinates of the vertices (Gmsh's reference element, see above); shape (num_vertices, 3).
+Eigen::MatrixX3d reference_vertices(Shape shape);
+
 /// Local edges as vertex pairs (Gmsh's order and direction).
 const std::vector<std::array<int, 2>>& edges(Shape shape);
 /// Local faces of 3D shapes as vertex lists (3 or 4), ordered so that their normal by the right-hand

@@ -1,0 +1,102 @@
+// The registry factory: read (or generate), scale once, sew, heal, map onto a cadapi Model.
+#include "prepare_shape.hpp"
+#include "read_shape.hpp"
+#include "semimesh/cad/error.hpp"
+#include "semimesh/occ/occ_backend.hpp"
+
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+
+#include <cmath>
+#include <sstream>
+
+namespace semimesh::occ {
+namespace {
+
+using cad::CadError;
+
+const char* const kBackend = "occ";
+
+FluidSide fluid_side_from(const cad::Params& params) {
+  const std::string value = params.get_string("occ.fluid_inside", "auto");
+  if (value == "auto") return FluidSide::Auto;
+  return params.get_bool("occ.fluid_inside", false) ? FluidSide::Inside : FluidSide::Outside;
+}
+
+double diagonal_of(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent());
+}
+
+std::string number_label(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
+  const cad::Params& params = source.params;
+  params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside"},
+                       kBackend);
+  const double scale = params.get_double("occ.scale", 1.0);
+  if (!(scale > 0.0))
+    throw CadError(CadError::Kind::BadParameter, "parameter 'occ.scale' = " + number_label(scale) + ": expected a positive number");
+  const FluidSide fluid_side = fluid_side_from(params);
+
+  ReadShape read = read_shape(source.path);
+  TopoDS_Shape shape = scale_shape(read.shape, read.to_file_unit * scale, read.face_names);
+
+  const double tolerance = params.get_double("occ.sew_tolerance", 1e-6 * diagonal_of(shape));
+  if (!(tolerance > 0.0))
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'occ.sew_tolerance' = " + number_label(tolerance) + ": expected a positive length");
+  if (params.get_bool("occ.sew", true)) shape = sew_shape(shape, tolerance, read.face_names);
+  if (params.get_bool("occ.heal", true)) shape = heal_shape(shape, tolerance, read.face_names);
+
+  ModelOptions options;
+  options.scale_applied = scale;
+  options.units = scale == 1.0 ? read.unit : read.unit + " x " + number_label(scale);
+  options.units = params.get_string("occ.units", options.units);
+  options.fluid_side = fluid_side;
+  options.face_names = std::move(read.face_names);
+  try {
+    return model_from_shape(shape, kBackend, options);
+  } catch (const CadError& error) {
+    throw CadError(error.kind(), "'" + source.path + "': " + error.what());
+  }
+}
+
+std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
+  cad::Params naca_params;
+  ModelOptions options;
+  for (const auto& [key, value] : source.params.all()) {
+    if (key.rfind("naca.", 0) == 0) naca_params.set(key, value);
+    else if (key != "occ.scale" && key != "occ.units")
+      throw CadError(CadError::Kind::BadParameter, "parameter '" + key +
+                                                       "' does not apply to the generated NACA wing of backend 'occ' "
+                                                       "(use naca.* keys, occ.scale and occ.units)");
+  }
+  const mock_cad::NacaWingParams wing = mock_cad::naca_params_from(naca_params);
+  const double scale = source.params.get_double("occ.scale", 1.0);
+  if (!(scale > 0.0))
+    throw CadError(CadError::Kind::BadParameter, "parameter 'occ.scale' = " + number_label(scale) + ": expected a positive number");
+
+  TopoDS_Shape shape = make_naca_wing_shape(wing);
+  const std::vector<std::string> names = naca_wing_face_names(wing);
+  int index = 0;
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) options.face_names.emplace_back(f.Current(), names.at(index++));
+  shape = scale_shape(shape, scale, options.face_names);
+  options.scale_applied = scale;
+  options.units = source.params.get_string("occ.units", scale == 1.0 ? "chord" : "chord x " + number_label(scale));
+  return model_from_shape(shape, kBackend, options);
+}
+
+}  // namespace
+
+std::unique_ptr<cad::Model> load_occ(const cad::Source& source) {
+  return source.path.empty() ? generate_wing(source) : load_file(source);
+}
+
+}  // namespace semimesh::occ

@@ -1,0 +1,65 @@
+#include "occ_curve.hpp"
+
+#include "semimesh/cad/error.hpp"
+
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Standard_Failure.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+namespace semimesh::occ {
+namespace {
+
+cad::Vec3 to_vec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+cad::CurveKind kind_of(GeomAbs_CurveType type) {
+  switch (type) {
+    case GeomAbs_Line: return cad::CurveKind::Line;
+    case GeomAbs_Circle: return cad::CurveKind::Circle;
+    case GeomAbs_Ellipse: return cad::CurveKind::Ellipse;
+    case GeomAbs_BSplineCurve: return cad::CurveKind::BSpline;
+    case GeomAbs_BezierCurve: return cad::CurveKind::Bezier;
+    default: return cad::CurveKind::Other;
+  }
+}
+
+}  // namespace
+
+OccCurve::OccCurve(int id, std::string name, const TopoDS_Edge& edge) : cad::Curve(id, std::move(name)) {
+  double first = 0.0, last = 0.0;
+  curve_ = BRep_Tool::Curve(edge, first, last);  // location already applied
+  if (curve_.IsNull())
+    throw cad::CadError(cad::CadError::Kind::Geometry,
+                        "occ: edge of curve " + std::to_string(id) + " has no 3D curve (try occ.heal = true)");
+  range_ = {first, last};
+  GeomAbs_CurveType type = GeomAdaptor_Curve(curve_).GetType();
+  kind_ = kind_of(type);
+  mutable_evaluator_ = type == GeomAbs_OffsetCurve;
+}
+
+cad::CurveDerivatives OccCurve::derivatives(double t) const {
+  gp_Pnt p;
+  gp_Vec d1, d2;
+  curve_->D2(t, p, d1, d2);
+  return {to_vec(p.XYZ()), to_vec(d1.XYZ()), to_vec(d2.XYZ())};
+}
+
+cad::CurveProjection OccCurve::project(const cad::Vec3& x, std::optional<double> guess) const {
+  if (guess) return cad::Curve::project(x, guess);
+  // Extrema finds interior stationary points only; the edge ends compete with them.
+  double best_t = range_.lo;
+  double best = (point(range_.lo) - x).squaredNorm();
+  if (double d = (point(range_.hi) - x).squaredNorm(); d < best) { best = d; best_t = range_.hi; }
+  try {
+    GeomAPI_ProjectPointOnCurve extrema(gp_Pnt(x.x(), x.y(), x.z()), curve_, range_.lo, range_.hi);
+    if (extrema.NbPoints() > 0 && extrema.LowerDistance() * extrema.LowerDistance() < best)
+      best_t = extrema.LowerDistanceParameter();
+  } catch (const Standard_Failure&) {
+    return cad::Curve::project(x);  // OCC gave up: the generic sampled start still works
+  }
+  return cad::Curve::project(x, best_t);
+}
+
+}  // namespace semimesh::occ

@@ -1,0 +1,65 @@
+// Certified validity of high-order elements: bounds of the Jacobian determinant det J over the whole
+// reference element, not only at the nodes.
+//
+// Method (Johnen, Remacle & Geuzaine 2013, "Geometrical validity of curvilinear finite elements",
+// J. Comput. Phys. 233): det J of an order-P element is a polynomial (pyramids: a polynomial on the
+// collapsed cube, see src/validity/jacobian_polynomial.hpp); written in a Bernstein basis, which is
+// non-negative and sums to one, its coefficients bound it from below and above, and its coefficients
+// at the corners of the domain are exact values. When the coefficients straddle zero, the domain is
+// bisected (de Casteljau along its longest edge in the Bernstein domain's coordinates) and the
+// pieces are re-examined; bisection makes the coefficients converge to the values.
+#pragma once
+
+#include "semimesh/ho/element_type.hpp"
+
+#include <Eigen/Core>
+
+namespace semimesh::ho {
+
+/// Bounds of det J (derivatives with respect to Gmsh's reference coordinates) over the element.
+///  min_lower  certified lower bound of min det J (smallest Bernstein coefficient over the pieces).
+///  min_upper  upper bound of min det J: the smallest det J value actually evaluated (at the corners
+///             of every piece examined), so min det J lies in [min_lower, min_upper].
+///  max_upper  certified upper bound of max det J (largest coefficient over the pieces).
+///  valid      true only when proven: every piece has all coefficients > 0.
+///  proven     the verdict is proven: valid, or invalid because some evaluated det J <= 0. When false
+///             (depth or budget exhausted with coefficients straddling zero) `valid` is false too:
+///             an unproven element is treated as invalid.
+///  subdivisions  number of bisections performed (each splits one piece in two).
+struct JacobianBounds {
+  double min_lower = 0.0;
+  double min_upper = 0.0;
+  double max_upper = 0.0;
+  bool valid = false;
+  bool proven = false;
+  int subdivisions = 0;
+};
+
+/// Certifies the sign of det J of one 3D element (tetrahedron, pyramid, prism, hexahedron; orders
+/// 1..kMaxOrder). element_nodes: (num_nodes(shape, order), 3), canonical (Gmsh) order, nodes of the
+/// reference positions of `set`. max_depth: levels of refinement, each level being three bisections
+/// (the analogue of one split into 8 children), so the smallest piece is about 2^-max_depth of the
+/// element across; at most kMaxCertificationPieces pieces are examined in all.
+/// Throws std::invalid_argument for a 2D shape, a bad order or a wrong number of nodes.
+JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
+                                int max_depth = 8);
+
+constexpr int kMaxCertificationPieces = 200000;
+
+/// Scaled Jacobian from certified bounds: min_lower / max(|max_upper|, |min_lower|), in [-1, 1].
+/// For a valid element that is min_lower / max_upper, a lower bound of min det J / max det J (the
+/// conservative side: the true ratio is at least this). Negative when min_lower <= 0; -1 when the
+/// whole element is inverted (max_upper <= 0).
+double scaled_jacobian(const JacobianBounds& bounds);
+
+/// Slow, obviously right reference: det J from the Lagrange basis at a dense grid of the reference
+/// element (samples_per_direction >= 2 points per direction, boundary included; for the pyramid the
+/// apex layer z = 1 is replaced by z = 1 - 1e-6 because the rational basis is not defined there).
+struct SampledJacobian {
+  double min = 0.0;
+  double max = 0.0;
+};
+SampledJacobian sample_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
+                                int samples_per_direction);
+
+}  // namespace semimesh::ho

@@ -1,0 +1,284 @@
+#include "semimesh/ho/bernstein.hpp"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace semimesh::ho {
+namespace {
+
+double factorial(int n) {
+  double result = 1.0;
+  for (int k = 2; k <= n; ++k) result *= k;
+  return result;
+}
+
+double binomial(int n, int k) {
+  if (k < 0 || k > n) return 0.0;
+  return std::round(factorial(n) / (factorial(k) * factorial(n - k)));
+}
+
+std::shared_ptr<const BernsteinLayout> build_layout(const std::vector<SimplexFactor>& factors) {
+  auto layout = std::make_shared<BernsteinLayout>();
+  layout->factors = factors;
+  std::array<int, 3> extent{1, 1, 1};
+  int var = 0;
+  for (int f = 0; f < static_cast<int>(factors.size()); ++f) {
+    if (factors[f].dim < 1 || factors[f].degree < 0)
+      throw std::invalid_argument("Bernstein layout: factor " + std::to_string(f) +
+                                  " needs dim >= 1 and degree >= 0");
+    for (int slot = 1; slot <= factors[f].dim; ++slot) {
+      if (var >= 3) throw std::invalid_argument("Bernstein layout: more than 3 variables");
+      layout->var_factor[var] = f;
+      layout->var_slot[var] = slot;
+      extent[var] = factors[f].degree + 1;
+      ++var;
+    }
+  }
+  layout->num_vars = var;
+  layout->box_stride = {1, extent[0], extent[0] * extent[1]};
+  layout->box_to_id.assign(extent[0] * extent[1] * extent[2], -1);
+  for (int i2 = 0; i2 < extent[2]; ++i2)
+    for (int i1 = 0; i1 < extent[1]; ++i1)
+      for (int i0 = 0; i0 < extent[0]; ++i0) {
+        const std::array<int, 3> free{i0, i1, i2};
+        std::vector<int> factor_sum(factors.size(), 0);
+        for (int v = 0; v < layout->num_vars; ++v) factor_sum[layout->var_factor[v]] += free[v];
+        bool inside = true;
+        double weight = 1.0;
+        for (std::size_t f = 0; f < factors.size(); ++f) {
+          if (factor_sum[f] > factors[f].degree) inside = false;
+          else weight *= factorial(factors[f].degree) / factorial(factors[f].degree - factor_sum[f]);
+        }
+        if (!inside) continue;
+        for (int v = 0; v < layout->num_vars; ++v) weight /= factorial(free[v]);
+        layout->box_to_id[i0 + extent[0] * (i1 + extent[1] * i2)] = layout->size();
+        layout->index.push_back(free);
+        layout->multinomial.push_back(std::round(weight));
+      }
+  // A corner: in every factor at most one free component is non-zero and it equals the degree, or
+  // all are zero (vertex 0).
+  for (int id = 0; id < layout->size(); ++id) {
+    bool corner = true;
+    for (std::size_t f = 0; f < factors.size(); ++f)
+      for (int slot = 0; slot <= factors[f].dim; ++slot) {
+        const int a = layout->component(id, static_cast<int>(f), slot);
+        if (a != 0 && a != factors[f].degree) corner = false;
+      }
+    if (corner) layout->corners.push_back(id);
+  }
+  return layout;
+}
+
+}  // namespace
+
+int BernsteinLayout::id_of(const std::array<int, 3>& free_components) const {
+  int offset = 0;
+  for (int v = 0; v < 3; ++v) {
+    const int extent = v < num_vars ? factors[var_factor[v]].degree + 1 : 1;
+    if (free_components[v] < 0 || free_components[v] >= extent) return -1;
+    offset += free_components[v] * box_stride[v];
+  }
+  return box_to_id[offset];
+}
+
+int BernsteinLayout::component(int id, int factor, int slot) const {
+  int sum = 0;
+  for (int v = 0; v < num_vars; ++v) {
+    if (var_factor[v] != factor) continue;
+    if (var_slot[v] == slot) return index[id][v];
+    sum += index[id][v];
+  }
+  return factors[factor].degree - sum;  // slot 0: the implicit component
+}
+
+std::shared_ptr<const BernsteinLayout> BernsteinLayout::get(const std::vector<SimplexFactor>& factors) {
+  static std::mutex mutex;
+  static std::map<std::vector<std::pair<int, int>>, std::shared_ptr<const BernsteinLayout>> cache;
+  std::vector<std::pair<int, int>> key;
+  for (const SimplexFactor& f : factors) key.emplace_back(f.dim, f.degree);
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = cache.find(key);
+  if (found != cache.end()) return found->second;
+  auto layout = build_layout(factors);
+  cache.emplace(std::move(key), layout);
+  return layout;
+}
+
+BernsteinPolynomial::BernsteinPolynomial(const std::vector<SimplexFactor>& factors)
+    : BernsteinPolynomial(BernsteinLayout::get(factors)) {}
+
+BernsteinPolynomial::BernsteinPolynomial(std::shared_ptr<const BernsteinLayout> layout)
+    : layout_(std::move(layout)), coefficients_(Eigen::VectorXd::Zero(layout_->size())) {}
+
+Eigen::VectorXd BernsteinPolynomial::basis_values(const BernsteinLayout& layout, const Eigen::Vector3d& point) {
+  // Barycentric coordinates per factor: lambda_0 = 1 - sum of its variables.
+  std::vector<std::array<double, 4>> lambda(layout.factors.size(), {1.0, 0.0, 0.0, 0.0});
+  for (int v = 0; v < layout.num_vars; ++v) {
+    lambda[layout.var_factor[v]][layout.var_slot[v]] = point[v];
+    lambda[layout.var_factor[v]][0] -= point[v];
+  }
+  Eigen::VectorXd values(layout.size());
+  for (int id = 0; id < layout.size(); ++id) {
+    double value = layout.multinomial[id];
+    for (std::size_t f = 0; f < layout.factors.size(); ++f)
+      for (int slot = 0; slot <= layout.factors[f].dim; ++slot) {
+        const int power = layout.component(id, static_cast<int>(f), slot);
+        if (power > 0) value *= std::pow(lambda[f][slot], power);
+      }
+    values[id] = value;
+  }
+  return values;
+}
+
+double BernsteinPolynomial::evaluate(const Eigen::Vector3d& point) const {
+  return basis_values(*layout_, point).dot(coefficients_);
+}
+
+BernsteinPolynomial BernsteinPolynomial::derivative(int var) const {
+  if (var < 0 || var >= layout_->num_vars)
+    throw std::invalid_argument("Bernstein derivative: variable " + std::to_string(var) + " out of range");
+  const int factor = layout_->var_factor[var];
+  const int degree = layout_->factors[factor].degree;
+  std::vector<SimplexFactor> factors = layout_->factors;
+  factors[factor].degree = std::max(0, degree - 1);
+  BernsteinPolynomial result(factors);
+  if (degree == 0) return result;  // derivative of a constant
+  const BernsteinLayout& out = result.layout();
+  for (int id = 0; id < out.size(); ++id) {
+    std::array<int, 3> up = out.index[id];
+    const int base = layout_->id_of(up);
+    ++up[var];
+    result.coefficients_[id] = degree * (coefficients_[layout_->id_of(up)] - coefficients_[base]);
+  }
+  return result;
+}
+
+BernsteinPolynomial BernsteinPolynomial::divide_by_one_minus(int var) const {
+  const int factor = layout_->var_factor[var];
+  const int degree = layout_->factors[factor].degree;
+  if (layout_->factors[factor].dim != 1 || degree < 1)
+    throw std::invalid_argument("Bernstein division by (1 - t): variable " + std::to_string(var) +
+                                " must be a segment factor of degree >= 1");
+  std::vector<SimplexFactor> factors = layout_->factors;
+  factors[factor].degree = degree - 1;
+  BernsteinPolynomial result(factors);
+  const BernsteinLayout& out = result.layout();
+  for (int id = 0; id < out.size(); ++id) {
+    const int s = out.index[id][var];
+    result.coefficients_[id] = coefficients_[layout_->id_of(out.index[id])] * degree / (degree - s);
+  }
+  return result;
+}
+
+BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
+  const BernsteinLayout& la = a.layout();
+  const BernsteinLayout& lb = b.layout();
+  if (la.factors.size() != lb.factors.size())
+    throw std::invalid_argument("Bernstein product: operands have different factor structures");
+  std::vector<SimplexFactor> factors = la.factors;
+  for (std::size_t f = 0; f < factors.size(); ++f) {
+    if (la.factors[f].dim != lb.factors[f].dim)
+      throw std::invalid_argument("Bernstein product: operands have different factor dimensions");
+    factors[f].degree += lb.factors[f].degree;
+  }
+  BernsteinPolynomial result(factors);
+  const BernsteinLayout& out = result.layout();
+  // In the scaled basis (multinomial folded into the coefficient) the product is a plain
+  // convolution of multi-indices: alpha + beta.
+  // Accumulated in the dense box of the result (contiguous inner loop), then gathered.
+  std::vector<int> offset_a(la.size(), 0), offset_b(lb.size(), 0);
+  for (int i = 0; i < la.size(); ++i)
+    for (int v = 0; v < la.num_vars; ++v) offset_a[i] += la.index[i][v] * out.box_stride[v];
+  for (int j = 0; j < lb.size(); ++j)
+    for (int v = 0; v < lb.num_vars; ++v) offset_b[j] += lb.index[j][v] * out.box_stride[v];
+  std::vector<double> scaled_b(lb.size());
+  for (int j = 0; j < lb.size(); ++j) scaled_b[j] = b.coefficients_[j] * lb.multinomial[j];
+  std::vector<double> box(out.box_to_id.size(), 0.0);
+  for (int i = 0; i < la.size(); ++i) {
+    const double scaled_a = a.coefficients_[i] * la.multinomial[i];
+    if (scaled_a == 0.0) continue;
+    double* target = box.data() + offset_a[i];
+    for (int j = 0; j < lb.size(); ++j) target[offset_b[j]] += scaled_a * scaled_b[j];
+  }
+  Eigen::VectorXd scaled_out(out.size());
+  for (int k = 0; k < out.size(); ++k) {
+    const std::array<int, 3>& free = out.index[k];
+    scaled_out[k] = box[free[0] * out.box_stride[0] + free[1] * out.box_stride[1] + free[2] * out.box_stride[2]];
+  }
+  for (int k = 0; k < out.size(); ++k) result.coefficients_[k] = scaled_out[k] / out.multinomial[k];
+  return result;
+}
+
+BernsteinPolynomial operator+(BernsteinPolynomial a, const BernsteinPolynomial& b) {
+  if (a.layout_ != b.layout_) throw std::invalid_argument("Bernstein sum: operands have different layouts");
+  a.coefficients_ += b.coefficients_;
+  return a;
+}
+
+BernsteinPolynomial operator-(BernsteinPolynomial a, const BernsteinPolynomial& b) {
+  if (a.layout_ != b.layout_) throw std::invalid_argument("Bernstein difference: operands have different layouts");
+  a.coefficients_ -= b.coefficients_;
+  return a;
+}
+
+BernsteinPolynomial& BernsteinPolynomial::operator*=(double scale) {
+  coefficients_ *= scale;
+  return *this;
+}
+
+void BernsteinPolynomial::bisect(int factor, int vertex_a, int vertex_b, BernsteinPolynomial& first,
+                                 BernsteinPolynomial& second) const {
+  const BernsteinLayout& l = *layout_;
+  const int dim = l.factors.at(factor).dim;
+  if (vertex_a == vertex_b || vertex_a < 0 || vertex_b < 0 || vertex_a > dim || vertex_b > dim)
+    throw std::invalid_argument("Bernstein bisection: invalid edge of factor " + std::to_string(factor));
+  // The variables holding alpha_a and alpha_b (-1: the implicit component alpha_0).
+  int var_a = -1, var_b = -1;
+  for (int v = 0; v < l.num_vars; ++v) {
+    if (l.var_factor[v] != factor) continue;
+    if (l.var_slot[v] == vertex_a) var_a = v;
+    if (l.var_slot[v] == vertex_b) var_b = v;
+  }
+  first = BernsteinPolynomial(layout_);
+  second = BernsteinPolynomial(layout_);
+  std::vector<int> line;
+  std::vector<double> work;
+  for (int start = 0; start < l.size(); ++start) {
+    if (l.component(start, factor, vertex_b) != 0) continue;  // each line starts at alpha_b = 0
+    const int k = l.component(start, factor, vertex_a);
+    // Coefficients along the line alpha_a = k - m, alpha_b = m, m = 0..k.
+    line.assign(k + 1, -1);
+    for (int m = 0; m <= k; ++m) {
+      std::array<int, 3> free = l.index[start];
+      if (var_a >= 0) free[var_a] = k - m;
+      if (var_b >= 0) free[var_b] = m;
+      line[m] = l.id_of(free);
+    }
+    work.resize(k + 1);
+    for (int m = 0; m <= k; ++m) work[m] = coefficients_[line[m]];
+    first.coefficients_[line[0]] = work[0];
+    second.coefficients_[line[k]] = work[k];
+    for (int level = 1; level <= k; ++level) {
+      for (int q = 0; q + level <= k; ++q) work[q] = 0.5 * (work[q] + work[q + 1]);
+      first.coefficients_[line[level]] = work[0];
+      second.coefficients_[line[k - level]] = work[k - level];
+    }
+  }
+}
+
+Eigen::MatrixXd bernstein_elevation_1d(int from, int to) {
+  if (from < 0 || to < from)
+    throw std::invalid_argument("Bernstein elevation: need 0 <= from <= to, got " + std::to_string(from) +
+                                " -> " + std::to_string(to));
+  Eigen::MatrixXd elevation = Eigen::MatrixXd::Zero(to + 1, from + 1);
+  for (int i = 0; i <= from; ++i)
+    for (int j = i; j <= i + to - from; ++j)
+      elevation(j, i) = binomial(from, i) * binomial(to - from, j - i) / binomial(to, j);
+  return elevation;
+}
+
+}  // namespace semimesh::ho

@@ -1,0 +1,43 @@
+// Atomic file output: write `path.tmp-XXXXXX` in the same directory, fsync, rename over `path`.
+// If anything fails (or the writer is destroyed without commit) the temporary file is removed and
+// an existing `path` is left untouched. Output is buffered and formatted with fmt (fast).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <string>
+
+namespace semimesh::io {
+
+class AtomicFile {
+ public:
+  /// Creates the temporary file; throws std::runtime_error naming the directory if it cannot.
+  explicit AtomicFile(const std::string& path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// Appends formatted text (fmt syntax).
+  template <typename... Args>
+  void print(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
+    if (buffer_.size() > kFlushBytes) flush_buffer();
+  }
+  void write(const std::string& text);
+  /// Flushes, fsyncs and renames the temporary file to the final path; throws on any failure.
+  void commit();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  static constexpr std::size_t kFlushBytes = 1 << 20;
+  void flush_buffer();
+
+  std::string path_, temp_path_;
+  std::FILE* file_ = nullptr;
+  fmt::memory_buffer buffer_;
+  bool committed_ = false;
+};
+
+}  // namespace semimesh::io

@@ -1,0 +1,33 @@
+// Gmsh MSH files, ASCII, versions 4.1 and 2.2 (gmsh.info/doc/texinfo, "MSH file format").
+//
+// Written: $MeshFormat, $PhysicalNames (one dim-2 group per boundary group, tags 1..G in the
+// mesh's group order, and the dim-3 group "fluid", tag 1), $Entities (4.1: one surface per
+// boundary group, one volume), $Nodes (every mesh node, tag = NodeId + 1, equispaced positions),
+// $Elements (volume elements first, then boundary faces, in mesh order; element tags from 1).
+// Node order inside an element is the canonical Gmsh order, so it is written as stored.
+// Orders 1..6. A GLL mesh is resampled to equispaced nodes first (io::to_equispaced).
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <string>
+
+namespace semimesh::io {
+
+enum class MshVersion { V41, V22 };
+
+/// Name of the dim-3 physical group that holds the volume elements.
+inline const char* const kVolumeGroupName = "fluid";
+
+/// Writes atomically (see atomic_file.hpp). Throws std::invalid_argument for an unsupported order,
+/// std::runtime_error for I/O failures (message names the file).
+void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version = MshVersion::V41);
+
+/// Reads an ASCII MSH 4.1 or 2.2 file: 3D elements become mesh elements, triangles and quads
+/// become boundary faces in the group named by their physical group ("surface_<tag>" when the
+/// group has no name, "unassigned" without a physical group); points and lines are skipped.
+/// All elements must have one order (1..6). The node set is Equispaced. Throws std::runtime_error
+/// "FILE:LINE: what was expected" on malformed input.
+mesh::Mesh read_msh(const std::string& path);
+
+}  // namespace semimesh::io

@@ -1,0 +1,18 @@
+// VTK XML UnstructuredGrid (.vtu), ASCII, with VTK Lagrange cells (see vtk_order.hpp) for
+// ParaView. Header version="2.2" so readers use the VTK >= 9.1 hexahedron numbering.
+// Points: every mesh node (point i = NodeId i), equispaced. Cells: volume elements, then boundary
+// faces. Cell data "boundary_group": -1 for volume cells, else the index i of
+// Mesh::group_names()[i]. Pyramids are linear VTK_PYRAMID cells (VTK 9.1 has no
+// Lagrange pyramid): their curvature is not shown.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <string>
+
+namespace semimesh::io {
+
+/// Writes atomically; throws std::runtime_error for I/O failures.
+void write_vtu(const mesh::Mesh& mesh, const std::string& path);
+
+}  // namespace semimesh::io

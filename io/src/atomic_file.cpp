@@ -1,0 +1,74 @@
+#include "semimesh/io/atomic_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <stdexcept>
+#include <unistd.h>
+#include <vector>
+
+namespace semimesh::io {
+namespace {
+
+std::string directory_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::runtime_error os_error(const std::string& what, const std::string& path) {
+  return std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(const std::string& path) : path_(path) {
+  std::vector<char> name(path.begin(), path.end());
+  const std::string suffix = ".tmp-XXXXXX";
+  name.insert(name.end(), suffix.begin(), suffix.end());
+  name.push_back('\0');
+  const int fd = ::mkstemp(name.data());
+  if (fd < 0) throw os_error("cannot create a temporary file in directory", directory_of(path));
+  temp_path_ = name.data();
+  file_ = ::fdopen(fd, "wb");
+  if (!file_) {
+    ::close(fd);
+    ::unlink(temp_path_.c_str());
+    throw os_error("cannot open temporary file", temp_path_);
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  if (file_) std::fclose(file_);
+  ::unlink(temp_path_.c_str());
+}
+
+void AtomicFile::write(const std::string& text) {
+  buffer_.append(text.data(), text.data() + text.size());
+  if (buffer_.size() > kFlushBytes) flush_buffer();
+}
+
+void AtomicFile::flush_buffer() {
+  if (buffer_.size() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
+    throw os_error("cannot write to", temp_path_);
+  buffer_.clear();
+}
+
+void AtomicFile::commit() {
+  flush_buffer();
+  if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) throw os_error("cannot flush", temp_path_);
+  const int closed = std::fclose(file_);
+  file_ = nullptr;
+  if (closed != 0) throw os_error("cannot close", temp_path_);
+  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) throw os_error("cannot rename the temporary file to", path_);
+  committed_ = true;
+  // Make the rename itself durable.
+  const int dir = ::open(directory_of(path_).c_str(), O_RDONLY | O_DIRECTORY);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+}  // namespace semimesh::io

@@ -1,0 +1,67 @@
+// The analytic backend "naca": a NACA 4-digit wing standing on a flat wall, optionally inside a
+// far-field box, evaluated in closed form (exact first and second derivatives, no sampling or
+// finite differences). It is the reference model for every test of the pipeline.
+//
+// Frame: x streamwise (root leading edge at x = 0), y cross-flow (thickness), z spanwise. The wall
+// is the plane z = 0; the wing goes from z = 0 to z = span. Local chord and leading edge:
+//   c(z) = chord (1 - (1 - taper) z / span),   x_le(z) = z tan(sweep).
+// Section (Abbott & von Doenhoff 1959, sec. 6.4), with the chordwise station x = u^2 so that
+// sqrt(x) = u and the skins are smooth at the leading edge:
+//   y_t = 5 t (0.2969 u - 0.1260 u^2 - 0.3516 u^4 + 0.2843 u^6 + a4 u^8),
+//   a4 = -0.1015 (squared-off TE of thickness 2 y_t(1) = 0.021 t) or -0.1036 (sharp TE),
+//   camber y_c(x) per the MPTT parabolas, theta = atan(dy_c/dx),
+//   upper: (x - y_t sin theta, y_c + y_t cos theta), lower: (x + y_t sin theta, y_c - y_t cos theta).
+// The skins are smooth except, for a cambered code, along x = p (u = sqrt(p)): the camber line's
+// curvature jumps there, which gives the standard 4-digit surface a small tangent kink (about
+// 3e-4 rad for 2412). Derivatives there are the aft-side limits; projections handle the crease.
+//
+// Surfaces, in id order (normals point out of the solid into the fluid):
+//   upper    (u, v) in [0,1] x [0,span]: S = (x_le(v) + c(v) X(u), c(v) Y(u), v), u = 0 at the LE
+//   lower    same parameters, lower side
+//   te_base  (blunt only) (s, v) in [0,1] x [0,span]: lower TE line (s = 0) to upper TE line (s = 1)
+//   tip      plane z = span, (u, v) = (x, y), trimmed to the tip section (normal +z)
+//   wall     (farfield only) plane z = 0, (u, v) = (x, y) on the box's xy rectangle, with the root
+//            section as a hole (normal +z)
+//   box_xmin, box_xmax, box_ymin, box_ymax, box_zmax   (farfield only) planes with the two other
+//            coordinates as (u, v) in axis order (x before y before z); normals point into the box
+// Curves, in id order: leading_edge (t = z), root_upper, root_lower, tip_upper, tip_lower
+// (t = u, LE -> TE), then blunt: te_upper, te_lower (t = z), root_te, tip_te (t = s, lower ->
+// upper) or sharp: trailing_edge (t = z); then with farfield the 12 box edges, named by their two
+// fixed coordinates (box_ymin_zmin runs along x, box_xmin_zmin along y, box_xmin_ymin along z)
+// with t = the running coordinate. Vertices: root_le, tip_le, root_te_upper, root_te_lower,
+// tip_te_upper, tip_te_lower (blunt) or root_te, tip_te (sharp), box_<x>_<y>_<z> corners.
+// With farfield the model is watertight: every curve bounds exactly two surfaces.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/cad/source.hpp"
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace semimesh::mock_cad {
+
+struct NacaWingParams {
+  std::string code = "0012";  ///< NACA 4-digit MPTT                                       (naca.code)
+  double chord = 1.0;         ///< root chord                                               (naca.chord)
+  double span = 3.0;          ///< semi-span: wing height above the wall z = 0              (naca.span)
+  double taper = 1.0;         ///< tip chord / root chord, > 0                               (naca.taper)
+  double sweep_deg = 0.0;     ///< leading-edge sweep angle in degrees, |sweep| < 80         (naca.sweep)
+  bool sharp_te = false;      ///< false: squared-off TE with a te_base face; true: closed TE (naca.te)
+  bool farfield = true;       ///< add the wall (root section as a hole) and the far-field box (naca.farfield)
+  std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 (naca.box)
+  std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
+};
+
+/// Reads the naca.* keys of `p` (unknown keys are errors) over the defaults and validates them.
+/// Throws cad::CadError(BadParameter) naming the key, its value and what was expected.
+NacaWingParams naca_params_from(const cad::Params& p);
+
+/// Builds the finalized model. Throws cad::CadError(BadParameter) on invalid parameters.
+std::unique_ptr<cad::Model> make_naca_wing(const NacaWingParams& params);
+
+/// Registry factory of backend "naca": parameters only; a non-empty path is an error.
+std::unique_ptr<cad::Model> load_naca(const cad::Source& source);
+
+}  // namespace semimesh::mock_cad

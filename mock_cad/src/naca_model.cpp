@@ -1,0 +1,203 @@
+// Assembles the wing, wall and box entities into a cad::Model (topology and loop orientation:
+// see the comment at the top of naca.hpp and the contract in cadapi/model.hpp).
+#include "naca_validation.hpp"
+#include "naca_wing.hpp"
+#include "plane_entities.hpp"
+#include "wing_entities.hpp"
+
+#include "semimesh/cad/error.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+
+#include <map>
+
+namespace semimesh::mock_cad {
+namespace {
+
+using cad::CurveUse;
+using cad::Interval;
+using cad::Loop;
+using cad::Vec3;
+using detail::Side;
+
+// Convergence tolerance of projections and the band around face boundaries that counts as
+// inside, both relative to the root chord.
+constexpr double kSolverTolerance = 1e-12;
+constexpr double kBoundaryBand = 1e-10;
+
+CurveUse fwd(int curve) { return CurveUse{curve, true}; }
+CurveUse rev(int curve) { return CurveUse{curve, false}; }
+
+class Builder {
+ public:
+  explicit Builder(const NacaWingParams& p)
+      : p_(p),
+        wing_(std::make_shared<const detail::NacaWing>(detail::NacaSection(detail::parse_naca_code(p.code), p.sharp_te),
+                                                       p.chord, p.span, p.taper, p.sweep_deg)),
+        model_(std::make_unique<cad::Model>("naca")),
+        tol_(kSolverTolerance * p.chord),
+        band_(kBoundaryBand * p.chord) {}
+
+  std::unique_ptr<cad::Model> build() {
+    add_wing_curves();
+    if (p_.farfield) add_box_curves();
+    add_wing_surfaces();
+    if (p_.farfield) add_farfield_surfaces();
+    model_->set_units(p_.units, 1.0);
+    model_->set_tolerance(tol_);
+    model_->set_thread_safe(true);
+    model_->finalize();
+    return std::move(model_);
+  }
+
+ private:
+  int vertex(const std::string& name, const Vec3& point) { return vertices_[name] = model_->add_vertex(point, name); }
+
+  int line(const std::string& name, const std::string& from, const std::string& to, Interval range) {
+    const int a = vertices_.at(from), b = vertices_.at(to);
+    auto curve = std::make_unique<detail::LineCurve>(model_->num_curves(), name, model_->vertex(a).point,
+                                                     model_->vertex(b).point, range);
+    return curves_[name] = model_->add_curve(std::move(curve), a, b);
+  }
+
+  int section(const std::string& name, Side side, double v, const std::string& from, const std::string& to) {
+    auto curve = std::make_unique<detail::SectionCurve>(model_->num_curves(), name, wing_, side, v, tol_);
+    return curves_[name] = model_->add_curve(std::move(curve), vertices_.at(from), vertices_.at(to));
+  }
+
+  void add_wing_curves() {
+    const double span = p_.span;
+    vertex("root_le", wing_->point(Side::Upper, 0.0, 0.0));
+    vertex("tip_le", wing_->point(Side::Upper, 0.0, span));
+    if (p_.sharp_te) {
+      vertex("root_te", wing_->point(Side::Upper, 1.0, 0.0));
+      vertex("tip_te", wing_->point(Side::Upper, 1.0, span));
+    } else {
+      vertex("root_te_upper", wing_->point(Side::Upper, 1.0, 0.0));
+      vertex("root_te_lower", wing_->point(Side::Lower, 1.0, 0.0));
+      vertex("tip_te_upper", wing_->point(Side::Upper, 1.0, span));
+      vertex("tip_te_lower", wing_->point(Side::Lower, 1.0, span));
+    }
+    const std::string te_upper_root = p_.sharp_te ? "root_te" : "root_te_upper";
+    const std::string te_lower_root = p_.sharp_te ? "root_te" : "root_te_lower";
+    const std::string te_upper_tip = p_.sharp_te ? "tip_te" : "tip_te_upper";
+    const std::string te_lower_tip = p_.sharp_te ? "tip_te" : "tip_te_lower";
+
+    line("leading_edge", "root_le", "tip_le", Interval{0.0, span});
+    section("root_upper", Side::Upper, 0.0, "root_le", te_upper_root);
+    section("root_lower", Side::Lower, 0.0, "root_le", te_lower_root);
+    section("tip_upper", Side::Upper, span, "tip_le", te_upper_tip);
+    section("tip_lower", Side::Lower, span, "tip_le", te_lower_tip);
+    if (p_.sharp_te) {
+      line("trailing_edge", "root_te", "tip_te", Interval{0.0, span});
+    } else {
+      line("te_upper", "root_te_upper", "tip_te_upper", Interval{0.0, span});
+      line("te_lower", "root_te_lower", "tip_te_lower", Interval{0.0, span});
+      line("root_te", "root_te_lower", "root_te_upper", Interval{0.0, 1.0});
+      line("tip_te", "tip_te_lower", "tip_te_upper", Interval{0.0, 1.0});
+    }
+  }
+
+  static std::string corner(int i, int j, int k) {
+    return std::string("box_") + (i ? "xmax" : "xmin") + (j ? "_ymax" : "_ymin") + (k ? "_zmax" : "_zmin");
+  }
+
+  void add_box_curves() {
+    const auto& b = p_.box;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        for (int k = 0; k < 2; ++k) vertex(corner(i, j, k), Vec3(b[3 * i], b[1 + 3 * j], b[2 + 3 * k]));
+    auto tag = [](const char* axis, int side) { return std::string(axis) + (side ? "max" : "min"); };
+    for (int j = 0; j < 2; ++j)  // along x
+      for (int k = 0; k < 2; ++k)
+        line("box_" + tag("y", j) + "_" + tag("z", k), corner(0, j, k), corner(1, j, k), Interval{b[0], b[3]});
+    for (int i = 0; i < 2; ++i)  // along y
+      for (int k = 0; k < 2; ++k)
+        line("box_" + tag("x", i) + "_" + tag("z", k), corner(i, 0, k), corner(i, 1, k), Interval{b[1], b[4]});
+    for (int i = 0; i < 2; ++i)  // along z
+      for (int j = 0; j < 2; ++j)
+        line("box_" + tag("x", i) + "_" + tag("y", j), corner(i, j, 0), corner(i, j, 1), Interval{b[2], b[5]});
+  }
+
+  int c(const std::string& name) const { return curves_.at(name); }
+
+  void surface(std::unique_ptr<cad::Surface> s, std::vector<Loop> loops) { model_->add_surface(std::move(s), std::move(loops)); }
+
+  int next_surface() const { return model_->num_surfaces(); }
+
+  void add_wing_surfaces() {
+    const bool sharp = p_.sharp_te;
+    const int te_up = sharp ? c("trailing_edge") : c("te_upper");
+    const int te_lo = sharp ? c("trailing_edge") : c("te_lower");
+    // Loops run counter-clockwise around the fluid normal (material on the left).
+    surface(std::make_unique<detail::WingSkin>(next_surface(), "upper", wing_, Side::Upper, tol_),
+            {Loop{{fwd(c("leading_edge")), fwd(c("tip_upper")), rev(te_up), rev(c("root_upper"))}}});
+    surface(std::make_unique<detail::WingSkin>(next_surface(), "lower", wing_, Side::Lower, tol_),
+            {Loop{{fwd(c("root_lower")), fwd(te_lo), rev(c("tip_lower")), rev(c("leading_edge"))}}});
+    if (!sharp)
+      surface(std::make_unique<detail::TrailingEdgeBase>(next_surface(), "te_base", wing_, tol_),
+              {Loop{{fwd(c("root_te")), fwd(c("te_upper")), rev(c("tip_te")), rev(c("te_lower"))}}});
+
+    const double span = p_.span, chord = wing_->chord_at(span), x_le = wing_->leading_edge_x(span);
+    const cad::Vec2 lo = wing_->section().extent_lo(), hi = wing_->section().extent_hi();
+    const double pad = 1e-3 * chord;  // keeps the sampled section extents clear of the outline
+    const std::array<Interval, 2> tip_box = {Interval{x_le + chord * lo.x() - pad, x_le + chord * hi.x() + pad},
+                                             Interval{chord * lo.y() - pad, chord * hi.y() + pad}};
+    Loop tip_loop = sharp ? Loop{{fwd(c("tip_lower")), rev(c("tip_upper"))}}
+                          : Loop{{fwd(c("tip_lower")), fwd(c("tip_te")), rev(c("tip_upper"))}};
+    surface(std::make_unique<detail::PlaneFace>(next_surface(), "tip", +1, Vec3(0, 0, span), Vec3::UnitX(), Vec3::UnitY(),
+                                                tip_box, band_, detail::SectionTrim{wing_, span, true}),
+            {tip_loop});
+  }
+
+  void add_farfield_surfaces() {
+    const auto& b = p_.box;
+    const Interval x{b[0], b[3]}, y{b[1], b[4]}, z{b[2], b[5]};
+    const Vec3 ex = Vec3::UnitX(), ey = Vec3::UnitY(), ez = Vec3::UnitZ();
+    auto plane = [&](const std::string& name, int orientation, const Vec3& origin, const Vec3& e1, const Vec3& e2,
+                     Interval i1, Interval i2, std::vector<Loop> loops, std::optional<detail::SectionTrim> trim = {}) {
+      surface(std::make_unique<detail::PlaneFace>(next_surface(), name, orientation, origin, e1, e2,
+                                                  std::array<Interval, 2>{i1, i2}, band_, std::move(trim)),
+              std::move(loops));
+    };
+    // The root section is a hole of the wall: walked clockwise around the wall's +z normal.
+    Loop hole = p_.sharp_te ? Loop{{fwd(c("root_upper")), rev(c("root_lower"))}}
+                            : Loop{{fwd(c("root_upper")), rev(c("root_te")), rev(c("root_lower"))}};
+    plane("wall", +1, Vec3::Zero(), ex, ey, x, y,
+          {Loop{{fwd(c("box_ymin_zmin")), fwd(c("box_xmax_zmin")), rev(c("box_ymax_zmin")), rev(c("box_xmin_zmin"))}}, hole},
+          detail::SectionTrim{wing_, 0.0, false});
+    // Box faces: normals point into the box (the fluid).
+    plane("box_xmin", +1, Vec3(b[0], 0, 0), ey, ez, y, z,
+          {Loop{{fwd(c("box_xmin_zmin")), fwd(c("box_xmin_ymax")), rev(c("box_xmin_zmax")), rev(c("box_xmin_ymin"))}}});
+    plane("box_xmax", -1, Vec3(b[3], 0, 0), ey, ez, y, z,
+          {Loop{{fwd(c("box_xmax_ymin")), fwd(c("box_xmax_zmax")), rev(c("box_xmax_ymax")), rev(c("box_xmax_zmin"))}}});
+    plane("box_ymin", -1, Vec3(0, b[1], 0), ex, ez, x, z,
+          {Loop{{fwd(c("box_xmin_ymin")), fwd(c("box_ymin_zmax")), rev(c("box_xmax_ymin")), rev(c("box_ymin_zmin"))}}});
+    plane("box_ymax", +1, Vec3(0, b[4], 0), ex, ez, x, z,
+          {Loop{{fwd(c("box_ymax_zmin")), fwd(c("box_xmax_ymax")), rev(c("box_ymax_zmax")), rev(c("box_xmin_ymax"))}}});
+    plane("box_zmax", -1, Vec3(0, 0, b[5]), ex, ey, x, y,
+          {Loop{{fwd(c("box_xmin_zmax")), fwd(c("box_ymax_zmax")), rev(c("box_xmax_zmax")), rev(c("box_ymin_zmax"))}}});
+  }
+
+  const NacaWingParams& p_;
+  std::shared_ptr<const detail::NacaWing> wing_;
+  std::unique_ptr<cad::Model> model_;
+  double tol_, band_;
+  std::map<std::string, int> vertices_, curves_;
+};
+
+}  // namespace
+
+std::unique_ptr<cad::Model> make_naca_wing(const NacaWingParams& params) {
+  detail::validate(params);
+  return Builder(params).build();
+}
+
+std::unique_ptr<cad::Model> load_naca(const cad::Source& source) {
+  if (!source.path.empty())
+    throw cad::CadError(cad::CadError::Kind::BadParameter,
+                        "backend 'naca' builds its wing from naca.* parameters and reads no file, but was given '" +
+                            source.path + "' (use backend 'occ' for CAD files)");
+  return make_naca_wing(naca_params_from(source.params));
+}
+
+}  // namespace semimesh::mock_cad

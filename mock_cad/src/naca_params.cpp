@@ -1,0 +1,57 @@
+// naca.* keys -> NacaWingParams.
+#include "naca_validation.hpp"
+
+#include "semimesh/cad/error.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace semimesh::mock_cad {
+namespace {
+
+[[noreturn]] void reject(const std::string& key, const std::string& value, const std::string& expected) {
+  throw cad::CadError(cad::CadError::Kind::BadParameter, key + " = '" + value + "': expected " + expected);
+}
+
+std::array<double, 6> parse_box(const std::string& text) {
+  const std::string expected = "6 comma-separated numbers xmin,ymin,zmin,xmax,ymax,zmax (e.g. -10,-10,0,11,10,10)";
+  std::array<double, 6> box{};
+  const char* cursor = text.c_str();
+  for (int i = 0; i < 6; ++i) {
+    char* end = nullptr;
+    errno = 0;
+    box[i] = std::strtod(cursor, &end);
+    if (end == cursor || errno == ERANGE || !std::isfinite(box[i])) reject("naca.box", text, expected);
+    while (*end == ' ') ++end;
+    if (i < 5 && *end != ',') reject("naca.box", text, expected);
+    cursor = i < 5 ? end + 1 : end;
+  }
+  if (*cursor != '\0') reject("naca.box", text, expected);
+  return box;
+}
+
+}  // namespace
+
+NacaWingParams naca_params_from(const cad::Params& p) {
+  p.require_known({"naca.code", "naca.chord", "naca.span", "naca.taper", "naca.sweep", "naca.te", "naca.farfield",
+                   "naca.box", "naca.units"},
+                  "naca");
+  NacaWingParams out;
+  out.code = p.get_string("naca.code", out.code);
+  out.chord = p.get_double("naca.chord", out.chord);
+  out.span = p.get_double("naca.span", out.span);
+  out.taper = p.get_double("naca.taper", out.taper);
+  out.sweep_deg = p.get_double("naca.sweep", out.sweep_deg);
+  const std::string te = p.get_string("naca.te", "blunt");
+  if (te != "blunt" && te != "sharp") reject("naca.te", te, "blunt (squared-off trailing edge) or sharp");
+  out.sharp_te = te == "sharp";
+  out.farfield = p.get_bool("naca.farfield", out.farfield);
+  if (p.has("naca.box")) out.box = parse_box(p.get_string("naca.box", ""));
+  out.units = p.get_string("naca.units", out.units);
+  detail::validate(out);
+  return out;
+}
+
+}  // namespace semimesh::mock_cad

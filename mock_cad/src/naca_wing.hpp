@@ -1,0 +1,56 @@
+// The wing as a map (side, u, v) -> R^3: the NACA section scaled by the local chord and shifted
+// by the leading-edge sweep, at height z = v above the wall.
+//
+//   c(v)    = chord (1 - (1 - taper) v / span)       (linear taper)
+//   x_le(v) = v tan(sweep)
+//   S(u, v) = (x_le(v) + c(v) X(u), c(v) Y(u), v)    with (X, Y) the chord-normalised profile
+//
+// c and x_le are linear in v, so S_vv = 0 and the leading and trailing edges are straight lines.
+#pragma once
+
+#include "naca_section.hpp"
+
+#include "semimesh/cad/types.hpp"
+
+#include <array>
+
+namespace semimesh::mock_cad::detail {
+
+using cad::SurfaceDerivatives;
+using cad::Vec3;
+
+class NacaWing {
+ public:
+  NacaWing(const NacaSection& section, double chord, double span, double taper, double sweep_deg);
+
+  const NacaSection& section() const { return section_; }
+  double root_chord() const { return chord_; }
+  double span() const { return span_; }
+  double chord_at(double v) const { return chord_ + dchord_ * v; }
+  double leading_edge_x(double v) const { return tan_sweep_ * v; }
+  /// Radius of curvature at the leading edge, (5 t a0)^2 / 2 c(v) (~1.1019 t^2 c).
+  double leading_edge_radius(double v) const {
+    const double slope = section_.leading_edge_slope();
+    return 0.5 * slope * slope * chord_at(v);
+  }
+
+  /// S(u, v) on one side and its first and second partial derivatives.
+  SurfaceDerivatives eval(Side side, double u, double v) const;
+  Vec3 point(Side side, double u, double v) const;
+
+  /// (X, Y) of x in the chord-normalised frame of the section at height v.
+  Vec2 to_section(const Vec3& x, double v) const;
+  /// Two starts u for the closest point of q (chord-normalised) on one side: from the chordwise
+  /// station (u = sqrt(X)) and from the thickness (Y ~ +-5 t a0 u, right near the leading edge).
+  std::array<double, 2> start_candidates(Side side, const Vec2& q) const;
+  /// The candidate that lands closer to q.
+  double initial_u(Side side, const Vec2& q) const;
+  /// A start (u, v) for the closest point of x on one side: v from z, u from initial_u.
+  Vec2 initial_guess(Side side, const Vec3& x) const;
+
+ private:
+  NacaSection section_;
+  double chord_, span_, dchord_, tan_sweep_;
+};
+
+}  // namespace semimesh::mock_cad::detail

@@ -1,0 +1,262 @@
+// Writers and readers: atomic output, MSH round trips, reader error locations, VTK permutations,
+// GLL -> equispaced resampling, `semimesh check` exit codes.
+#include "semimesh/io/atomic_file.hpp"
+#include "semimesh/io/check.hpp"
+#include "semimesh/io/equispaced.hpp"
+#include "semimesh/io/msh.hpp"
+#include "semimesh/io/vtk_order.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <dirent.h>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace {
+
+using semimesh::ho::NodeSet;
+using semimesh::ho::Shape;
+using semimesh::mesh::Mesh;
+using semimesh::mesh::NodeId;
+
+// A fresh directory under /tmp, removed when the test program exits.
+std::string temp_dir() {
+  struct Cleanup {
+    std::vector<std::string> dirs;
+    ~Cleanup() {
+      for (const auto& d : dirs) std::filesystem::remove_all(d);
+    }
+  };
+  static Cleanup cleanup;
+  char name[] = "/tmp/semimesh_test_io_XXXXXX";
+  const char* d = ::mkdtemp(name);
+  if (!d) throw std::runtime_error("mkdtemp failed");
+  cleanup.dirs.push_back(d);
+  return d;
+}
+
+std::vector<std::string> list_dir(const std::string& dir) {
+  std::vector<std::string> names;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (dirent* e = ::readdir(d))
+      if (e->d_name[0] != '.') names.push_back(e->d_name);
+    ::closedir(d);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A polynomial map of degree 2 (reproduced exactly by every element of order >= 2).
+Eigen::Vector3d quadratic_map(const Eigen::Vector3d& r) {
+  return {r[0] + 0.1 * r[1] * r[1], r[1] + 0.05 * r[0] * r[2], r[2] - 0.08 * r[0] * r[0] + 0.3};
+}
+
+// Two prisms of order P split from the hex [0,1]^3 along the diagonal (1,0)-(0,1), with nodes on
+// a shared (P+1)^3 lattice bent by quadratic_map, and their 8 boundary faces in two groups.
+Mesh two_prisms(int p, NodeSet set = NodeSet::Equispaced) {
+  Mesh mesh(p, set);
+  const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(Shape::Prism, p, set);
+  std::map<std::array<long, 3>, NodeId> lattice;
+  auto node_at = [&](const Eigen::Vector3d& x) {
+    const std::array<long, 3> key = {std::lround(x[0] * 1e9), std::lround(x[1] * 1e9), std::lround(x[2] * 1e9)};
+    auto it = lattice.find(key);
+    if (it == lattice.end()) it = lattice.emplace(key, mesh.add_node(quadratic_map(x))).first;
+    return it->second;
+  };
+  for (int half = 0; half < 2; ++half) {
+    std::vector<NodeId> ids;
+    for (int i = 0; i < ref.rows(); ++i) {
+      // Prism A: (u, v) -> (u, v); prism B: (u, v) -> (1 - u, 1 - v) (180 degree turn).
+      const double u = ref(i, 0), v = ref(i, 1), w = 0.5 * (ref(i, 2) + 1);
+      ids.push_back(node_at(half == 0 ? Eigen::Vector3d(u, v, w) : Eigen::Vector3d(1 - u, 1 - v, w)));
+    }
+    mesh.add_element(Shape::Prism, ids);
+  }
+  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+    const auto& face = mesh.faces()[f];
+    // Skip the shared diagonal face: its vertices have x + y = 1.
+    bool diagonal = true;
+    for (int k = 0; k < face.num_vertices; ++k) {
+      const auto& x = mesh.node(face.vertices[k]);
+      diagonal = diagonal && std::abs(x[0] + x[1] - 1.0) < 0.2;
+    }
+    if (diagonal) continue;
+    const bool tri = face.num_vertices == 3;
+    mesh.add_boundary_face(tri ? "wall" : "side", tri ? Shape::Triangle : Shape::Quadrilateral, mesh.face_nodes(f));
+  }
+  return mesh;
+}
+
+TEST(AtomicFile, FailureLeavesTheOldFileAndNoTemporary) {
+  const std::string dir = temp_dir();
+  const std::string path = dir + "/mesh.msh";
+  { std::ofstream(path) << "old content\n"; }
+  try {
+    semimesh::io::AtomicFile out(path);
+    out.print("new {}\n", 1);
+    throw std::runtime_error("writer failed half way");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(read_text(path), "old content\n");
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"mesh.msh"});
+  {
+    semimesh::io::AtomicFile out(path);
+    out.print("new {}\n", 2);
+    out.commit();
+  }
+  EXPECT_EQ(read_text(path), "new 2\n");
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"mesh.msh"});
+  try {
+    semimesh::io::AtomicFile out("/nonexistent_dir_for_semimesh/mesh.msh");
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent_dir_for_semimesh"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Msh, WriteFailureKeepsExistingFile) {
+  const std::string dir = temp_dir();
+  const std::string path = dir + "/m.msh";
+  { std::ofstream(path) << "keep\n"; }
+  Mesh too_high(7);  // MSH tables stop at order 6
+  EXPECT_THROW(semimesh::io::write_msh(too_high, path), std::invalid_argument);
+  EXPECT_EQ(read_text(path), "keep\n");
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"m.msh"});
+}
+
+class MshRoundTrip : public ::testing::TestWithParam<std::tuple<int, semimesh::io::MshVersion>> {};
+
+TEST_P(MshRoundTrip, ReadBackGivesTheSameMesh) {
+  const auto [p, version] = GetParam();
+  const Mesh mesh = two_prisms(p);
+  const std::string path = temp_dir() + "/two_prisms.msh";
+  semimesh::io::write_msh(mesh, path, version);
+  const Mesh back = semimesh::io::read_msh(path);
+  EXPECT_EQ(back.order(), p);
+  ASSERT_EQ(back.elements().size(), 2u);
+  EXPECT_EQ(back.num_nodes(), static_cast<std::size_t>((p + 1) * (p + 1) * (p + 1)));
+  EXPECT_EQ(back.edges().size(), 14u);  // 9 + 9 - 4 on the shared quad
+  EXPECT_EQ(back.faces().size(), 9u);
+  for (std::size_t e = 0; e < 2; ++e)
+    EXPECT_LT((back.element_coordinates(e) - mesh.element_coordinates(e)).cwiseAbs().maxCoeff(), 1e-15);
+  ASSERT_EQ(back.boundary_faces().size(), 8u);
+  std::vector<std::string> groups = back.group_names();
+  std::sort(groups.begin(), groups.end());
+  EXPECT_EQ(groups, (std::vector<std::string>{"side", "wall"}));
+  // MSH 4.1 groups boundary faces by (group, type), so match them through their face entity; the
+  // reader keeps node ids (file order = NodeId order).
+  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
+    const auto& bf = mesh.boundary_faces()[b];
+    const long face = back.find_face(std::vector<NodeId>(bf.vertices.begin(),
+                                                         bf.vertices.begin() + semimesh::ho::num_vertices(bf.shape)));
+    ASSERT_GE(face, 0);
+    std::size_t match = 0;
+    while (match < back.boundary_faces().size() && back.boundary_faces()[match].face != static_cast<std::uint32_t>(face))
+      ++match;
+    ASSERT_LT(match, back.boundary_faces().size());
+    EXPECT_EQ(back.boundary_face_nodes(match), mesh.boundary_face_nodes(b));
+    EXPECT_EQ(back.group_names()[back.boundary_faces()[match].group], mesh.group_names()[bf.group]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Orders, MshRoundTrip,
+                         ::testing::Combine(::testing::Values(1, 2, 3, 4, 6),
+                                            ::testing::Values(semimesh::io::MshVersion::V41,
+                                                              semimesh::io::MshVersion::V22)));
+
+TEST(Msh, ReaderErrorsGiveFileAndLine) {
+  const std::string path = temp_dir() + "/bad.msh";
+  {
+    std::ofstream out(path);
+    out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\n3 1 0 2\n1\n2\n0 0 0\n0 0\n$EndNodes\n";
+  }
+  try {
+    semimesh::io::read_msh(path);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ":10:"), std::string::npos) << e.what();
+  }
+  {
+    std::ofstream out(path);
+    out << "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n";
+  }
+  try {
+    semimesh::io::read_msh(path);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ":2: binary"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(semimesh::io::read_msh(path + ".missing"), std::runtime_error);
+}
+
+TEST(VtkOrder, IsAPermutationWithVerticesFirst) {
+  for (Shape shape : {Shape::Triangle, Shape::Quadrilateral, Shape::Tetrahedron, Shape::Prism, Shape::Hexahedron})
+    for (int p = 1; p <= 6; ++p) {
+      std::vector<int> perm = semimesh::io::vtk_from_canonical(shape, p);
+      ASSERT_EQ(static_cast<int>(perm.size()), semimesh::ho::num_nodes(shape, p));
+      for (int k = 0; k < semimesh::ho::num_vertices(shape); ++k) EXPECT_EQ(perm[k], k);
+      std::sort(perm.begin(), perm.end());
+      for (std::size_t i = 0; i < perm.size(); ++i) ASSERT_EQ(perm[i], static_cast<int>(i));
+    }
+  // VTK 9.1 hexahedron (file version 2.2): the 27-node hex's 11th edge node is on edge 2-6
+  // (x = y = 1), its 12th on edge 3-7 (vtkHigherOrderHexahedron::PointIndexFromIJK).
+  const auto& hex = semimesh::io::vtk_from_canonical(Shape::Hexahedron, 2);
+  const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(Shape::Hexahedron, 2, NodeSet::Equispaced);
+  EXPECT_EQ(ref.row(hex[18]), Eigen::RowVector3d(1, 1, 0));
+  EXPECT_EQ(ref.row(hex[19]), Eigen::RowVector3d(-1, 1, 0));
+}
+
+TEST(Equispaced, GllMeshIsResampledOntoTheSameMap) {
+  const int p = 4;
+  const Mesh gll = two_prisms(p, NodeSet::GLL);
+  const Mesh eq = semimesh::io::to_equispaced(gll);
+  EXPECT_EQ(eq.node_set(), NodeSet::Equispaced);
+  const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(Shape::Prism, p, NodeSet::Equispaced);
+  for (int i = 0; i < ref.rows(); ++i) {  // prism A maps (u, v, z) to the unit cube directly
+    const Eigen::Vector3d cube(ref(i, 0), ref(i, 1), 0.5 * (ref(i, 2) + 1));
+    EXPECT_LT((eq.element_coordinates(0).row(i).transpose() - quadratic_map(cube)).norm(), 1e-12) << "node " << i;
+  }
+}
+
+TEST(Check, ExitCodesAndJson) {
+  const std::string dir = temp_dir();
+  const Mesh mesh = two_prisms(3);
+  semimesh::io::write_msh(mesh, dir + "/ok.msh");
+  std::ostringstream out, err;
+  EXPECT_EQ(semimesh::io::run_check({"check", dir + "/ok.msh", "--json"}, out, err), 0) << err.str();
+  EXPECT_NE(out.str().find("\"elements\": {\"prism\": {\"3\": 2}"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("\"invalid\": []"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("\"min_scaled_jacobian\""), std::string::npos);
+  EXPECT_NE(out.str().find("\"median_scaled_jacobian\""), std::string::npos);
+
+  // Fold the second prism: push its last interior node far below the bottom face.
+  Mesh folded = two_prisms(3);
+  const auto ids = folded.element_nodes(1);
+  folded.place_node(ids.back(), folded.node(ids.back()) + Eigen::Vector3d(0, 0, -3));
+  semimesh::io::write_msh(folded, dir + "/folded.msh");
+  std::ostringstream out2, err2;
+  EXPECT_EQ(semimesh::io::run_check({dir + "/folded.msh"}, out2, err2), 2);
+  EXPECT_NE(out2.str().find("invalid elements: 1"), std::string::npos) << out2.str();
+  EXPECT_NE(out2.str().find("element 1 (prism)"), std::string::npos) << out2.str();
+
+  std::ostringstream out3, err3;
+  EXPECT_EQ(semimesh::io::run_check({dir + "/missing.msh"}, out3, err3), 1);
+  EXPECT_NE(err3.str().find(dir + "/missing.msh"), std::string::npos) << err3.str();
+  std::ostringstream out4, err4;
+  EXPECT_EQ(semimesh::io::run_check({}, out4, err4), 1);
+}
+
+}  // namespace

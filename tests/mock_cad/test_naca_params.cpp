@@ -1,0 +1,126 @@
+// naca.* parameters: reading, and every invalid value rejected with the key in the message.
+#include "naca_reference.hpp"
+
+#include "semimesh/cad/error.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using semimesh::cad::CadError;
+using semimesh::cad::Params;
+using semimesh::cad::Source;
+using semimesh::mock_cad::load_naca;
+using semimesh::mock_cad::naca_params_from;
+
+TEST(NacaParams, ReadsEveryKey) {
+  const Params p{{"naca.code", "2412"}, {"naca.chord", "2"},        {"naca.span", "4"},
+                 {"naca.taper", "0.5"}, {"naca.sweep", "-15"},      {"naca.te", "sharp"},
+                 {"naca.farfield", "false"}, {"naca.box", " -20, -15,0 ,30,15 , 12"}, {"naca.units", "m"}};
+  const auto w = naca_params_from(p);
+  EXPECT_EQ(w.code, "2412");
+  EXPECT_EQ(w.chord, 2.0);
+  EXPECT_EQ(w.span, 4.0);
+  EXPECT_EQ(w.taper, 0.5);
+  EXPECT_EQ(w.sweep_deg, -15.0);
+  EXPECT_TRUE(w.sharp_te);
+  EXPECT_FALSE(w.farfield);
+  EXPECT_EQ(w.box, (std::array<double, 6>{-20, -15, 0, 30, 15, 12}));
+  EXPECT_EQ(w.units, "m");
+}
+
+TEST(NacaParams, DefaultsAreTheBluntNaca0012InABox) {
+  const auto w = naca_params_from(Params{});
+  EXPECT_EQ(w.code, "0012");
+  EXPECT_FALSE(w.sharp_te);
+  EXPECT_TRUE(w.farfield);
+  auto model = load_naca(Source{});
+  EXPECT_EQ(model->backend(), "naca");
+  EXPECT_EQ(model->units(), "chord");
+  EXPECT_EQ(model->scale_applied(), 1.0);
+  EXPECT_TRUE(model->thread_safe());
+  EXPECT_NEAR(model->tolerance(), 1e-12, 1e-20);
+  EXPECT_TRUE(model->is_closed());
+}
+
+struct BadCase {
+  const char* key;
+  const char* value;
+  const char* also_in_message;  // what the message must explain
+};
+
+class NacaBadParam : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(NacaBadParam, IsRejectedNamingTheKey) {
+  const BadCase& c = GetParam();
+  Params p{{c.key, c.value}};
+  try {
+    naca_params_from(p);
+    FAIL() << c.key << " = '" << c.value << "' was accepted";
+  } catch (const CadError& e) {
+    EXPECT_EQ(e.kind(), CadError::Kind::BadParameter);
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(c.key), std::string::npos) << msg;
+    if (std::string(c.also_in_message) != "unknown parameter") {
+      EXPECT_NE(msg.find(c.value), std::string::npos) << msg;
+    }
+    EXPECT_NE(msg.find(c.also_in_message), std::string::npos) << msg;
+  }
+  // The builder rejects the same values given as a struct (through the same checks).
+  if (std::string(c.key) == "naca.span") {
+    semimesh::mock_cad::NacaWingParams w;
+    w.span = -1;
+    EXPECT_THROW(semimesh::mock_cad::make_naca_wing(w), CadError);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Naca, NacaBadParam,
+    ::testing::Values(BadCase{"naca.code", "00a2", "4 digits MPTT"}, BadCase{"naca.code", "2 0", "4 digits"},
+                      BadCase{"naca.code", "00012", "4 digits"}, BadCase{"naca.code", "0000", "thickness"},
+                      BadCase{"naca.code", "2012", "camber position"}, BadCase{"naca.chord", "0", "chord > 0"},
+                      BadCase{"naca.chord", "-1", "chord > 0"}, BadCase{"naca.chord", "abc", "number"},
+                      BadCase{"naca.span", "-2", "> 0"}, BadCase{"naca.span", "0", "> 0"},
+                      BadCase{"naca.taper", "0", "> 0"}, BadCase{"naca.taper", "-0.5", "> 0"},
+                      BadCase{"naca.sweep", "80", "< 80"}, BadCase{"naca.sweep", "-85", "< 80"},
+                      BadCase{"naca.te", "round", "blunt"}, BadCase{"naca.farfield", "maybe", "true or false"},
+                      BadCase{"naca.box", "-10,-10,1,11,10,10", "zmin"}, BadCase{"naca.box", "0.5,-10,0,11,10,10", "enclos"},
+                      BadCase{"naca.box", "-10,-10,0,0.9,10,10", "enclos"}, BadCase{"naca.box", "-10,-0.01,0,11,10,10", "enclos"},
+                      BadCase{"naca.box", "-10,-10,0,11,10,2", "enclos"}, BadCase{"naca.box", "1,2,3", "6 comma-separated"},
+                      BadCase{"naca.box", "-10,-10,0,11,10,10,4", "6 comma-separated"},
+                      BadCase{"naca.box", "-10;-10;0;11;10;10", "6 comma-separated"}, BadCase{"naca.units", "", "unit"},
+                      BadCase{"naca.cord", "1", "unknown parameter"}));
+
+TEST(NacaParams, CodeMessageIsActionable) {
+  try {
+    naca_params_from(Params{{"naca.code", "00a2"}});
+    FAIL();
+  } catch (const CadError& e) {
+    EXPECT_STREQ(e.what(), "naca.code = '00a2': expected 4 digits MPTT (e.g. 0012)");
+  }
+}
+
+TEST(NacaParams, BoxOnlyMattersWithAFarField) {
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.farfield", "false"}, {"naca.box", "0,0,5,1,1,6"}}));
+  auto model = load_naca(Source{"", Params{{"naca.farfield", "false"}}});
+  EXPECT_EQ(model->num_surfaces(), 4);  // upper, lower, te_base, tip
+  EXPECT_FALSE(model->is_closed());     // open at the root without the wall
+}
+
+TEST(NacaParams, AFilePathIsRefused) {
+  try {
+    load_naca(Source{"wing.step", Params{}});
+    FAIL();
+  } catch (const CadError& e) {
+    EXPECT_EQ(e.kind(), CadError::Kind::BadParameter);
+    EXPECT_NE(std::string(e.what()).find("wing.step"), std::string::npos);
+  }
+}
+
+TEST(NacaParams, CamberWithoutPositionIsFineWhenThereIsNoCamber) {
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.code", "0412"}}));
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.code", "2412"}}));
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.code", "0001"}}));
+}
+
+}  // namespace
