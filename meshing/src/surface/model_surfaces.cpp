@@ -1,0 +1,92 @@
+#include "semimesh/surface/model_surfaces.hpp"
+
+#include "semimesh/surface/error.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace semimesh::surface {
+namespace {
+
+using EdgeKey = std::array<double, 6>;  // the two end points, lexicographically ordered
+
+EdgeKey edge_key(const Vec3& a, const Vec3& b) {
+  const std::array<double, 3> pa{a.x(), a.y(), a.z()}, pb{b.x(), b.y(), b.z()};
+  const auto& lo = std::min(pa, pb);
+  const auto& hi = std::max(pa, pb);
+  return {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
+}
+
+// Edges used by exactly one element of the mesh, by their 3D points.
+std::map<EdgeKey, int> boundary_edges(const SurfaceMesh& mesh) {
+  std::map<std::pair<int, int>, int> uses;
+  auto add_ring = [&](const int* nodes, int count) {
+    for (int i = 0; i < count; ++i) ++uses[std::minmax(nodes[i], nodes[(i + 1) % count])];
+  };
+  for (const auto& t : mesh.triangles) add_ring(t.data(), 3);
+  for (const auto& q : mesh.quads) add_ring(q.data(), 4);
+  std::map<EdgeKey, int> edges;
+  for (const auto& [e, count] : uses)
+    if (count == 1) ++edges[edge_key(mesh.points[e.first], mesh.points[e.second])];
+  return edges;
+}
+
+}  // namespace
+
+int SurfaceMeshes::num_triangles() const {
+  int n = 0;
+  for (const auto& s : surfaces) n += static_cast<int>(s.triangles.size());
+  return n;
+}
+
+int SurfaceMeshes::num_quads() const {
+  int n = 0;
+  for (const auto& s : surfaces) n += static_cast<int>(s.quads.size());
+  return n;
+}
+
+SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options) {
+  for (int s : options.structured_surfaces)
+    if (s < 0 || s >= model.num_surfaces())
+      throw SurfaceMeshError("structured surface id " + std::to_string(s) + " is out of range: the model has " +
+                             std::to_string(model.num_surfaces()) + " surfaces");
+  SurfaceMeshes out;
+  out.curves = discretise_all_curves(model, size, options.curve_counts, options.min_segments);
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    out.surfaces.push_back(options.structured_surfaces.count(s)
+                               ? mesh_surface_structured(model, s, out.curves, options.split_structured)
+                               : mesh_surface(model, s, out.curves, size, options.surface));
+  return out;
+}
+
+std::vector<std::string> check_conformity(const cad::Model& model, const SurfaceMeshes& meshes) {
+  std::vector<std::string> problems;
+  if (static_cast<int>(meshes.surfaces.size()) != model.num_surfaces())
+    return {"expected " + std::to_string(model.num_surfaces()) + " surface meshes, got " +
+            std::to_string(meshes.surfaces.size())};
+  std::vector<std::map<EdgeKey, int>> open(meshes.surfaces.size());  // [surfaces] unmatched boundary edges
+  for (std::size_t s = 0; s < meshes.surfaces.size(); ++s) open[s] = boundary_edges(meshes.surfaces[s]);
+
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const CurveMesh& cm = meshes.curves.at(c);
+    for (const cad::SurfaceUse& use : model.surfaces_of_curve(c))
+      for (int k = 0; k < cm.segments(); ++k) {
+        auto& edges = open[use.surface];
+        auto found = edges.find(edge_key(cm.points[k], cm.points[k + 1]));
+        if (found == edges.end()) {
+          problems.push_back("segment " + std::to_string(k) + " of curve " + std::to_string(c) + " ('" +
+                             model.curve(c).name() + "') is not a boundary edge of surface " +
+                             std::to_string(use.surface) + " ('" + model.surface(use.surface).name() + "')");
+        } else if (--found->second == 0) {
+          edges.erase(found);
+        }
+      }
+  }
+  for (std::size_t s = 0; s < open.size(); ++s)
+    if (!open[s].empty())
+      problems.push_back("surface " + std::to_string(s) + " ('" + model.surface(static_cast<int>(s)).name() + "') has " +
+                         std::to_string(open[s].size()) + " boundary edges that are not curve segments");
+  return problems;
+}
+
+}  // namespace semimesh::surface

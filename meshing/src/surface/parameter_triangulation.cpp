@@ -1,0 +1,213 @@
+#include "parameter_triangulation.hpp"
+
+#include "boundary_nodes.hpp"
+#include "semimesh/surface/error.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <deque>
+#include <optional>
+
+namespace semimesh::surface::detail {
+namespace {
+
+struct VertexInfo {
+  int node = -1;
+};
+struct FaceInfo {
+  int nesting = -1;  // number of loops crossed from the unbounded region
+  bool in_domain() const { return nesting % 2 == 1; }
+};
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+using Point = Cdt::Point;
+using FaceHandle = Cdt::Face_handle;
+using VertexHandle = Cdt::Vertex_handle;
+
+// An inserted point must keep this fraction of the local size from the vertices around it, so
+// refinement ends and leaves no tiny edges.
+constexpr double kMinSpacing = 0.5;
+constexpr std::size_t kMaxNodes = 20'000'000;
+
+Vec2 to_uv(const Point& p) { return Vec2(p.x(), p.y()); }
+
+// Nesting level by flood fill: faces reached from the infinite face without crossing a loop have
+// level 0, each loop crossed adds one; the face is the odd levels (outer loop + holes).
+void mark_domain(Cdt& cdt) {
+  std::deque<std::pair<FaceHandle, int>> seeds{{cdt.infinite_face(), 0}};
+  while (!seeds.empty()) {
+    auto [start, level] = seeds.front();
+    seeds.pop_front();
+    if (start->info().nesting != -1) continue;
+    std::deque<FaceHandle> queue{start};
+    start->info().nesting = level;
+    while (!queue.empty()) {
+      FaceHandle f = queue.front();
+      queue.pop_front();
+      for (int i = 0; i < 3; ++i) {
+        FaceHandle n = f->neighbor(i);
+        if (n->info().nesting != -1) continue;
+        if (cdt.is_constrained(Cdt::Edge(f, i))) {
+          seeds.emplace_back(n, level + 1);
+        } else {
+          n->info().nesting = level;
+          queue.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+class Refiner {
+ public:
+  Refiner(const cad::Surface& face, const SizeField& size, double split_factor, SurfaceMesh& mesh, Cdt& cdt)
+      : face_(face), size_(size), split_factor_(split_factor), mesh_(mesh), cdt_(cdt) {}
+
+  void run() {
+    for (FaceHandle f : cdt_.finite_face_handles())
+      if (f->info().in_domain()) queue_.push_back(key(f));
+    while (!queue_.empty()) {
+      const auto entry = queue_.front();
+      queue_.pop_front();
+      FaceHandle f;
+      if (!cdt_.is_face(entry[0], entry[1], entry[2], f)) continue;  // replaced since queued
+      refine(f);
+    }
+  }
+
+ private:
+  using Key = std::array<VertexHandle, 3>;
+  static Key key(FaceHandle f) { return {f->vertex(0), f->vertex(1), f->vertex(2)}; }
+
+  const Vec3& point(VertexHandle v) const { return mesh_.points[v->info().node]; }
+
+  void refine(FaceHandle f) {
+    const Vec3 &a = point(f->vertex(0)), &b = point(f->vertex(1)), &c = point(f->vertex(2));
+    const double h = size_((a + b + c) / 3.0);
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    if (longest <= split_factor_ * h) return;
+    for (const std::optional<Vec2>& candidate : {metric_circumcentre(f), longest_free_edge_midpoint(f), centroid(f)})
+      if (candidate && try_insert(*candidate, f, h)) return;
+  }
+
+  // Circumcentre in the tangent-plane metric at the centroid: where the 3D circumcentre would be.
+  std::optional<Vec2> metric_circumcentre(FaceHandle f) const {
+    const Vec2 p0 = to_uv(f->vertex(0)->point()), p1 = to_uv(f->vertex(1)->point()), p2 = to_uv(f->vertex(2)->point());
+    const Vec2 mid = (p0 + p1 + p2) / 3.0;
+    const cad::SurfaceDerivatives d = face_.derivatives(mid);
+    // A maps parameter steps to tangent-plane coordinates with |A du| = |S_u du + S_v dv|.
+    const Vec3 e1 = d.du.normalized();
+    const Vec3 e2 = (d.dv - d.dv.dot(e1) * e1).normalized();
+    Eigen::Matrix2d A;
+    A << e1.dot(d.du), e1.dot(d.dv), 0.0, e2.dot(d.dv);
+    if (!(std::abs(A.determinant()) > 0.0)) return std::nullopt;
+    const Vec2 q1 = A * (p1 - p0), q2 = A * (p2 - p0);
+    const double det = 2.0 * (q1.x() * q2.y() - q1.y() * q2.x());
+    if (!(std::abs(det) > 0.0)) return std::nullopt;
+    const Vec2 centre((q2.y() * q1.squaredNorm() - q1.y() * q2.squaredNorm()) / det,
+                      (q1.x() * q2.squaredNorm() - q2.x() * q1.squaredNorm()) / det);
+    return p0 + A.inverse() * centre;
+  }
+
+  std::optional<Vec2> longest_free_edge_midpoint(FaceHandle f) const {
+    int best = -1;
+    double best_length = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      if (cdt_.is_constrained(Cdt::Edge(f, i))) continue;
+      const double l = (point(f->vertex(Cdt::cw(i))) - point(f->vertex(Cdt::ccw(i)))).norm();
+      if (l > best_length) { best_length = l; best = i; }
+    }
+    if (best < 0) return std::nullopt;
+    return 0.5 * (to_uv(f->vertex(Cdt::cw(best))->point()) + to_uv(f->vertex(Cdt::ccw(best))->point()));
+  }
+
+  static std::optional<Vec2> centroid(FaceHandle f) {
+    return (to_uv(f->vertex(0)->point()) + to_uv(f->vertex(1)->point()) + to_uv(f->vertex(2)->point())) / 3.0;
+  }
+
+  bool try_insert(const Vec2& uv, FaceHandle hint, double h) {
+    Cdt::Locate_type type;
+    int index;
+    const Point p(uv.x(), uv.y());
+    FaceHandle at = cdt_.locate(p, type, index, hint);
+    if (type == Cdt::VERTEX || type == Cdt::OUTSIDE_CONVEX_HULL || type == Cdt::OUTSIDE_AFFINE_HULL) return false;
+    if (cdt_.is_infinite(at) || !at->info().in_domain()) return false;
+    if (type == Cdt::EDGE && cdt_.is_constrained(Cdt::Edge(at, index))) return false;  // would split a curve segment
+    const Vec3 x = face_.point(uv);
+    if (too_close(at, x, kMinSpacing * h)) return false;
+    if (mesh_.points.size() >= kMaxNodes) throw SurfaceMeshError("surface refinement exceeded the node limit");
+
+    mesh_.uv.push_back(uv);
+    mesh_.points.push_back(x);
+    mesh_.origin.push_back(NodeOrigin{});
+    const int nesting = at->info().nesting;  // `at` itself is replaced by the insertion
+    VertexHandle v = cdt_.insert(p, at);
+    v->info().node = mesh_.num_nodes() - 1;
+    auto faces = cdt_.incident_faces(v), done = faces;
+    do {
+      faces->info().nesting = nesting;  // the new star lies in the same region
+      queue_.push_back(key(faces));
+    } while (++faces != done);
+    return true;
+  }
+
+  // Whether a vertex of `at` or a neighbour of one is nearer to x than `spacing` in 3D. The
+  // (u, v) Delaunay triangles can be far from 3D Delaunay where the surface stretches its
+  // parameters, so the nearest vertex is not always one of the face containing x.
+  bool too_close(FaceHandle at, const Vec3& x, double spacing) const {
+    for (int i = 0; i < 3; ++i) {
+      auto around = cdt_.incident_vertices(at->vertex(i)), done = around;
+      do {
+        if (!cdt_.is_infinite(around) && (point(around) - x).norm() < spacing) return true;
+      } while (++around != done);
+    }
+    return false;
+  }
+
+  const cad::Surface& face_;
+  const SizeField& size_;
+  double split_factor_;
+  SurfaceMesh& mesh_;
+  Cdt& cdt_;
+  std::deque<Key> queue_;
+};
+
+}  // namespace
+
+void triangulate_parameter_space(const cad::Model& model, int surface, const std::vector<std::vector<int>>& loops,
+                                 const SizeField& size, double split_factor, SurfaceMesh& mesh) {
+  Cdt cdt;
+  std::vector<VertexHandle> handles(mesh.num_nodes());
+  for (int node = 0; node < mesh.num_nodes(); ++node) {
+    handles[node] = cdt.insert(Point(mesh.uv[node].x(), mesh.uv[node].y()));
+    if (handles[node]->info().node != -1)
+      throw SurfaceMeshError(surface_label(model, surface) + ": boundary nodes " + std::to_string(handles[node]->info().node) +
+                             " and " + std::to_string(node) + " coincide in parameter space (degenerate edge or pole?)");
+    handles[node]->info().node = node;
+  }
+  for (const auto& loop : loops)
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      cdt.insert_constraint(handles[loop[i]], handles[loop[(i + 1) % loop.size()]]);
+  if (static_cast<int>(cdt.number_of_vertices()) != mesh.num_nodes())
+    throw SurfaceMeshError(surface_label(model, surface) +
+                           ": boundary loops intersect in parameter space (curves crossing, or too coarse for the trim)");
+  mark_domain(cdt);
+  Refiner(model.surface(surface), size, split_factor, mesh, cdt).run();
+
+  for (FaceHandle f : cdt.finite_face_handles())
+    if (f->info().in_domain())
+      mesh.triangles.push_back({f->vertex(0)->info().node, f->vertex(1)->info().node, f->vertex(2)->info().node});
+  if (mesh.triangles.empty()) throw SurfaceMeshError(surface_label(model, surface) + ": the boundary loops enclose no area");
+}
+
+}  // namespace semimesh::surface::detail

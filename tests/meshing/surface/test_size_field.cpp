@@ -1,0 +1,101 @@
+#include "semimesh/surface/error.hpp"
+#include "semimesh/surface/size_field.hpp"
+#include "wing_fixture.hpp"
+
+#include <gtest/gtest.h>
+
+namespace semimesh::surface {
+namespace {
+
+using testing::naca_model;
+
+SizeParams no_curvature() {
+  SizeParams p;
+  p.max_size = 1.0;
+  p.min_size = 0.001;
+  p.curvature_segments = 0.0;
+  return p;
+}
+
+TEST(SizeField, WithoutSourcesIsTheMaximum) {
+  auto model = naca_model();
+  SizeField size(*model, no_curvature());
+  EXPECT_EQ(size.num_sources(), 0);
+  EXPECT_DOUBLE_EQ(size(Vec3(0.3, 0.0, 1.0)), 1.0);
+  EXPECT_DOUBLE_EQ(size(Vec3(-9, 9, 9)), 1.0);
+}
+
+TEST(SizeField, PointSourceGrowsWithTheGradation) {
+  auto model = naca_model();
+  SizeParams p = no_curvature();
+  p.gradation = 1.2;
+  p.point_sources.push_back({Vec3(2, 0, 1), 0.05});
+  SizeField size(*model, p);
+  EXPECT_NEAR(size(Vec3(2, 0, 1)), 0.05, 1e-12);
+  EXPECT_NEAR(size(Vec3(2, 1, 1)), 0.05 + 0.2 * 1.0, 1e-12);
+  EXPECT_NEAR(size(Vec3(2, 0, 4)), 0.05 + 0.2 * 3.0, 1e-12);
+  EXPECT_NEAR(size(Vec3(8, 0, 1)), 1.0, 1e-12);  // capped by max_size
+}
+
+TEST(SizeField, BoxSourceIsConstantInsideAndGradedOutside) {
+  auto model = naca_model();
+  SizeParams p = no_curvature();
+  p.gradation = 1.5;
+  p.box_sources.push_back({Vec3(0, -1, 0), Vec3(2, 1, 3), 0.1});
+  SizeField size(*model, p);
+  EXPECT_NEAR(size(Vec3(1, 0, 2)), 0.1, 1e-12);
+  EXPECT_NEAR(size(Vec3(3, 0, 2)), 0.1 + 0.5 * 1.0, 1e-12);
+}
+
+TEST(SizeField, MinSizeBoundsEverySource) {
+  auto model = naca_model();
+  SizeParams p = no_curvature();
+  p.min_size = 0.02;
+  p.point_sources.push_back({Vec3(0, 0, 0), 1e-6});
+  SizeField size(*model, p);
+  EXPECT_NEAR(size(Vec3(0, 0, 0)), 0.02, 1e-12);
+}
+
+TEST(SizeField, LeadingEdgeCurvatureGivesRadiusOverSegments) {
+  auto model = naca_model();
+  SizeParams p;
+  p.max_size = 1.0;
+  p.min_size = 1e-4;
+  p.curvature_segments = 2.0;
+  SizeField size(*model, p);
+  // NACA 4-digit leading-edge radius 1.1019 t^2 c (Abbott & von Doenhoff, sec. 6.4).
+  const double radius = 1.1019 * 0.12 * 0.12;
+  EXPECT_NEAR(size(Vec3(0, 0, 1.5)), radius / 2.0, 0.05 * radius / 2.0);
+  // Far from the wing the size grows back to the maximum.
+  EXPECT_DOUBLE_EQ(size(Vec3(-9, 9, 9)), 1.0);
+}
+
+TEST(SizeField, LeadingEdgeSourceFollowsTheNamedCurve) {
+  auto model = naca_model();
+  SizeParams p = no_curvature();
+  p.le_size = 0.01;
+  SizeField size(*model, p);
+  for (double z : {0.0, 0.77, 1.5, 2.9}) EXPECT_LE(size(Vec3(0, 0, z)), 0.01 * 1.01) << z;
+  EXPECT_GT(size(Vec3(1.0, 0, 1.5)), 0.1);
+}
+
+TEST(SizeField, RejectsBadParameters) {
+  auto model = naca_model();
+  SizeParams p = no_curvature();
+  p.max_size = -1.0;
+  EXPECT_THROW(SizeField(*model, p), SurfaceMeshError);
+  p = no_curvature();
+  p.gradation = 0.9;
+  EXPECT_THROW(SizeField(*model, p), SurfaceMeshError);
+  p = no_curvature();
+  p.curve_sources.push_back({"no_such_curve", 0.1});
+  try {
+    SizeField field(*model, p);
+    FAIL() << "expected an error";
+  } catch (const SurfaceMeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_curve"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::surface
