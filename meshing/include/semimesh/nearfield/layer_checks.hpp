@@ -1,0 +1,28 @@
+// The two tests that decide where the prism layer must be thinner.
+#pragma once
+
+#include "semimesh/nearfield/body_mesh.hpp"
+
+#include <array>
+#include <vector>
+
+namespace semimesh::nearfield {
+
+/// A prism (vertices 0,1,2 on the body, 3,4,5 their offsets) is sound when its Jacobian is
+/// certified positive over the whole element (ho::certify_jacobian) and, at every vertex pair i,
+/// i+3, the Jacobian at the offset vertex is at least `min_outer_ratio` of the one at the body
+/// vertex: a concave fan whose offsets converge (about to cross) fails the second test before the
+/// first. Both tests pass for any thin enough layer when the node normals see their triangles.
+bool prism_is_sound(const std::array<Vec3, 6>& vertices, double min_outer_ratio = 0.1);
+
+/// [nodes] true where the offset point outer[i] lies closer than half of thickness[i] to a body
+/// triangle that is not in the node's own neighbourhood (no vertex within a mesh path length of
+/// 1.5 thickness[i]): there the layers of two parts of the body would overlap.
+std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
+                                const std::vector<Vec3>& outer, const std::vector<double>& thickness);
+
+/// Distance from p to the triangle (a, b, c) (closest point by Voronoi regions of the triangle,
+/// Ericson, "Real-Time Collision Detection", 2005, section 5.1.5).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace semimesh::nearfield

@@ -1,0 +1,13 @@
+# The near-field shell: one layer of prisms around the body (O-type). Included from
+# meshing/CMakeLists.txt; paths are relative to this file's folder.
+add_library(semimesh_nearfield
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/body_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/node_normals.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/layer_checks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp)
+add_library(semimesh::nearfield ALIAS semimesh_nearfield)
+target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
+target_link_libraries(semimesh_nearfield
+  PUBLIC semimesh_meshing semimesh_surface_mesh semimesh_cadapi
+  PRIVATE semimesh_warnings)
+set_target_properties(semimesh_nearfield PROPERTIES POSITION_INDEPENDENT_CODE ON)

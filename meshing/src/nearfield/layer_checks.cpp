@@ -1,0 +1,95 @@
+#include "semimesh/nearfield/layer_checks.hpp"
+
+#include "semimesh/ho/validity.hpp"
+
+#include <algorithm>
+#include <queue>
+#include <unordered_set>
+
+namespace semimesh::nearfield {
+namespace {
+
+// Mesh path lengths from `source`, up to `radius`: the nodes reached.
+std::unordered_set<int> nodes_within(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours, int source,
+                                     double radius) {
+  std::unordered_set<int> done;
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (!done.insert(v).second) continue;
+    for (int w : neighbours[v]) {
+      const double dw = d + (body.points[w] - body.points[v]).norm();
+      if (dw <= radius && !done.count(w)) queue.push({dw, w});
+    }
+  }
+  return done;
+}
+
+}  // namespace
+
+bool prism_is_sound(const std::array<Vec3, 6>& x, double min_outer_ratio) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const Vec3 up = x[i + 3] - x[i];
+    const double body_det = (x[j] - x[i]).cross(x[k] - x[i]).dot(up);
+    const double outer_det = (x[j + 3] - x[i + 3]).cross(x[k + 3] - x[i + 3]).dot(up);
+    if (!(body_det > 0.0) || outer_det < min_outer_ratio * body_det) return false;
+  }
+  Eigen::MatrixX3d nodes(6, 3);
+  for (int i = 0; i < 6; ++i) nodes.row(i) = x[i].transpose();
+  return ho::certify_jacobian(ho::Shape::Prism, 1, ho::NodeSet::Equispaced, nodes).valid;
+}
+
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return ap.norm();  // vertex a
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return bp.norm();  // vertex b
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return (p - (a + d1 / (d1 - d3) * ab)).norm();  // edge ab
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return cp.norm();  // vertex c
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return (p - (a + d2 / (d2 - d6) * ac)).norm();  // edge ac
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)  // edge bc
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  const double denominator = 1.0 / (va + vb + vc);  // inside the face
+  return (p - (a + ab * (vb * denominator) + ac * (vc * denominator))).norm();
+}
+
+std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
+                                const std::vector<Vec3>& outer, const std::vector<double>& thickness) {
+  // Bounding sphere of each triangle: a cheap lower bound of the distance.
+  const int triangles = static_cast<int>(body.triangles.size());
+  std::vector<Vec3> centre(triangles);
+  std::vector<double> radius(triangles);
+  for (int t = 0; t < triangles; ++t) {
+    const auto& v = body.triangles[t];
+    centre[t] = (body.points[v[0]] + body.points[v[1]] + body.points[v[2]]) / 3.0;
+    radius[t] = 0.0;
+    for (int i : v) radius[t] = std::max(radius[t], (body.points[i] - centre[t]).norm());
+  }
+  std::vector<char> crowded(body.num_nodes(), 0);
+  for (int i = 0; i < body.num_nodes(); ++i) {
+    const double limit = 0.5 * thickness[i];
+    std::unordered_set<int> own;  // filled on the first near triangle only
+    bool own_known = false;
+    for (int t = 0; t < triangles && !crowded[i]; ++t) {
+      if ((outer[i] - centre[t]).norm() - radius[t] >= limit) continue;
+      if (!own_known) own = nodes_within(body, neighbours, i, 1.5 * thickness[i]), own_known = true;
+      const auto& v = body.triangles[t];
+      if (own.count(v[0]) || own.count(v[1]) || own.count(v[2])) continue;
+      crowded[i] = point_triangle_distance(outer[i], body.points[v[0]], body.points[v[1]], body.points[v[2]]) < limit;
+    }
+  }
+  return crowded;
+}
+
+}  // namespace semimesh::nearfield
