@@ -1,0 +1,17 @@
+# High order on meshes: CAD curving with spring optimisation, isoparametric layer splitting.
+# A separate target from semimesh_highorder because it needs the mesh model (semimesh_meshing links
+# semimesh_highorder) and the CAD interface.
+add_library(semimesh_ho_mesh
+  ${CMAKE_CURRENT_LIST_DIR}/src/splitting/reference_lattice.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/reference_quadrature.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/curve_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/geometric_error.cpp)
+add_library(semimesh::ho_mesh ALIAS semimesh_ho_mesh)
+target_include_directories(semimesh_ho_mesh PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include
+                                            PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)
+target_link_libraries(semimesh_ho_mesh PUBLIC semimesh_meshing semimesh_highorder semimesh_cadapi Eigen3::Eigen
+                                       PRIVATE semimesh_warnings)

@@ -1,0 +1,49 @@
+// Curving a linear mesh onto its CAD model, bottom-up (paper, section "High-order mesh generation"):
+//  1. edges: nodes of an edge on a CAD curve are placed by arc length at the node set's fractions
+//     (the exact optimum of the spring chain on a curve); nodes of an edge inside a CAD surface start
+//     at the node set's fractions of the straight line in the surface's (u, v) and are then moved by
+//     the spring optimisation below, constrained to the surface, so they lie near the geodesic;
+//  2. faces: interior nodes of a boundary face on a CAD surface start from the harmonic extension
+//     of the face's boundary (u, v) (then S(u, v)), and are optimised by the spring network of the
+//     face's own node lattice with the edge nodes fixed; other faces (the skin, internal faces) take
+//     the harmonic extension of their boundary nodes in 3D, so a face with straight edges stays flat;
+//  3. volumes: interior nodes are the harmonic extension of the curved boundary nodes (exact for
+//     the element's linear map, which is harmonic, and smooth otherwise).
+// Spring optimisation: every free node is pulled by springs to its lattice neighbours with weights
+// that make the node set's own reference positions the equilibrium (force balance exact for an
+// affine face); the squared force imbalance is minimised by damped Gauss-Newton in (u, v). It stops
+// when no node moves more than tolerance x (edge/face length); when it does not converge within
+// spring_iterations, or leaves the trimmed face, the projected start positions are kept (a fallback).
+// Which CAD entity an edge or face lies on comes from the CAD attachments of its vertices (see
+// cad_classification in the sources); only edges and faces of boundary faces are curved.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/mesh/mesh.hpp"
+
+namespace semimesh::ho {
+
+struct CurvingParams {
+  int order = 4;                       ///< polynomial order P of the result, 2..kMaxOrder
+  NodeSet node_set = NodeSet::GLL;     ///< node set of the result
+  int spring_iterations = 50;          ///< Gauss-Newton iterations per edge/face before falling back
+  double tolerance = 1e-10;            ///< relative move below which the optimisation has converged
+};
+
+struct CurvingStats {
+  int edges_on_curves = 0;
+  int edges_on_surfaces = 0;
+  int faces_on_surfaces = 0;
+  int optimisation_fallbacks = 0;       ///< edges + faces that kept their projected start positions
+  double max_projection_distance = 0.0; ///< largest distance from a straight-sided node to its CAD position
+};
+
+/// A new mesh of order params.order from the order-1 mesh `linear` whose boundary vertices carry CAD
+/// attachments. Node ids 0..linear.num_nodes()-1 are the linear mesh's vertices (same attachments);
+/// elements and boundary faces keep their indices and groups. New nodes on CAD carry their curve or
+/// surface attachment. Throws std::invalid_argument when `linear` is not order 1 or a parameter is
+/// out of range, and cad::CadError when an attachment names an entity the model does not have.
+mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
+                      CurvingStats* stats = nullptr);
+
+}  // namespace semimesh::ho

@@ -1,0 +1,64 @@
+// Isoparametric splitting of near-field elements into thin layers (paper, section "High-order mesh
+// generation": the coarse curved element is subdivided in its reference space and every node of
+// every sub-element is placed by the coarse element's own map chi, so the sub-elements inherit the
+// curvature and, for a valid chi, the validity of the coarse element).
+//
+// Convention (near_field.hpp): prisms have vertices 0,1,2 on the body and 3,4,5 on the skin, hexes
+// 0..3 on the body and 4..7 on the skin; the layer direction is reference zeta and the first
+// (thinnest) layer touches the body. For split_hex_direction the first layer touches the face at
+// reference coordinate -1 of the chosen direction.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace semimesh::ho {
+
+/// `layers` sub-layers whose thicknesses grow by `ratio` from the body outwards (ratio >= 1).
+struct LayerDistribution {
+  int layers = 5;
+  double ratio = 2.0;
+};
+
+/// Position-dependent growth ratio (e.g. decaying to 1 along a wake). It is evaluated at each body
+/// vertex of an element and the layer interfaces are interpolated linearly between the vertices,
+/// so two neighbours see the same distribution on their shared vertical edges and faces (a ratio
+/// per element would break conformity across shared side faces).
+using RatioField = std::function<double(const Eigen::Vector3d&)>;
+
+/// Figures of a split. Heights are straight distances between consecutive nodes along the vertical
+/// edges of the split elements; achieved_ratio is the mean over those edges of
+/// (last layer height / first layer height)^(1 / (layers - 1)) (1 for a single layer).
+struct SplitStats {
+  double first_cell_height_min = 0.0;
+  double first_cell_height_max = 0.0;
+  double achieved_ratio = 1.0;
+  int elements_in = 0;
+  int elements_out = 0;
+};
+
+/// Returns a new mesh of the same order and node set in which every prism/hex of `layer_elements`
+/// (indices into mesh.elements()) is replaced by `layers` sub-elements stacked along reference zeta;
+/// every other element and every boundary face is copied (boundary faces on a split element's side
+/// face are split with it). Element order: input order, each split element replaced in place by its
+/// sub-elements from the body outwards. Node ids of the input are kept (ids 0..mesh.num_nodes()-1
+/// are the input nodes with their CAD attachments); the nodes inside the split elements' side faces
+/// and volumes that only the coarse elements used are left unreferenced. New nodes carry no CAD
+/// attachment. Throws std::invalid_argument naming the element when it is not a prism/hex, an
+/// index is out of range, layers < 1 or a ratio < 1.
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,
+                        const LayerDistribution& distribution, const RatioField& ratio = {},
+                        SplitStats* stats = nullptr);
+
+/// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
+/// second wall-normal direction of root junction blocks. Throws for a non-hex element or a
+/// direction outside 0..2.
+mesh::Mesh split_hex_direction(const mesh::Mesh& mesh, const std::vector<std::size_t>& hexes, int direction,
+                               const LayerDistribution& distribution, SplitStats* stats = nullptr);
+
+}  // namespace semimesh::ho

@@ -1,0 +1,37 @@
+// Which CAD entity a mesh edge or face lies on, from the CAD attachments of its vertices, and the
+// parameters of its vertices on that entity.
+//  - An edge lies on curve c when both vertices are on c: attached to c, or to a CAD vertex that c
+//    starts or ends at.
+//  - Otherwise an edge or face lies on surface s when every vertex is on s: attached to s, to a
+//    curve bounding s, or to a CAD vertex of such a curve. When several surfaces qualify (a single
+//    element spanning a whole face), the one closest to `probe` wins.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/mesh/mesh.hpp"
+
+#include <vector>
+
+namespace semimesh::ho::detail {
+
+struct CadPlace {
+  enum Kind { None, Curve, Surface };
+  Kind kind = None;
+  int id = -1;
+};
+
+CadPlace classify(const cad::Model& model, const std::vector<mesh::CadAttachment>& vertices, bool allow_curve,
+                  const cad::Vec3& probe);
+
+/// Parameter on `curve` of a node at x with attachment `a`: its own parameter when attached to the
+/// curve, the curve's end for a CAD vertex (`prefer_end`: which end of a closed curve), else the
+/// projection.
+double curve_parameter(const cad::Model& model, int curve, const mesh::CadAttachment& a, const cad::Vec3& x,
+                       bool prefer_end);
+
+/// (u, v) on `surface` of a node at x with attachment `a`: its own when attached to the surface,
+/// else the projection of x (seeded by `guess` when given).
+cad::Vec2 surface_parameter(const cad::Model& model, int surface, const mesh::CadAttachment& a, const cad::Vec3& x,
+                            const cad::Vec2* guess = nullptr);
+
+}  // namespace semimesh::ho::detail

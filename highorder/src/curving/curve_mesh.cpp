@@ -1,0 +1,246 @@
+#include "semimesh/ho/curving/curve_mesh.hpp"
+
+#include "curving/cad_classification.hpp"
+#include "curving/harmonic_extension.hpp"
+#include "curving/spring_optimisation.hpp"
+#include "semimesh/ho/basis.hpp"
+#include "semimesh/mesh/node_layout.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace semimesh::ho {
+namespace {
+
+using detail::CadPlace;
+using mesh::CadAttachment;
+using mesh::NodeId;
+
+class Curver {
+ public:
+  Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params)
+      : in_(linear), model_(model), params_(params), out_(params.order, params.node_set) {}
+  mesh::Mesh run(CurvingStats* stats);
+
+ private:
+  void curve_edges(const std::vector<char>& on_boundary);
+  void curve_faces(const std::vector<char>& on_boundary);
+  /// Canonical node ids of a 2D shape with these vertices, from the edge nodes already made and,
+  /// when `face` >= 0, that face's interior nodes seen with orientation `code`.
+  std::vector<NodeId> planar_nodes(Shape shape, const NodeId* vertices, long face, int code) const;
+  NodeId edge_node(NodeId a, NodeId b, const mesh::NodeSlot& slot) const;
+  void note_projection(const Eigen::Vector3d& straight, const Eigen::Vector3d& placed) {
+    stats_.max_projection_distance = std::max(stats_.max_projection_distance, (placed - straight).norm());
+  }
+
+  const mesh::Mesh& in_;
+  const cad::Model& model_;
+  CurvingParams params_;
+  mesh::Mesh out_;
+  CurvingStats stats_;
+  std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
+  std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
+};
+
+NodeId Curver::edge_node(NodeId a, NodeId b, const mesh::NodeSlot& slot) const {
+  const long e = in_.find_edge(a, b);
+  if (e < 0) throw std::logic_error("curve_mesh: edge " + std::to_string(a) + "-" + std::to_string(b) + " not found");
+  return edge_interior_[e][slot.slot[a > b ? 1 : 0]];
+}
+
+std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, long face, int code) const {
+  const mesh::NodeLayout& layout = mesh::node_layout(shape, params_.order);
+  std::vector<NodeId> ids(layout.slots.size(), mesh::kNoNode);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const mesh::NodeSlot& s = layout.slots[i];
+    if (s.kind == mesh::NodeSlot::Vertex) {
+      ids[i] = vertices[s.local];
+    } else if (s.kind == mesh::NodeSlot::Edge) {
+      const auto& e = edges(shape)[s.local];
+      ids[i] = edge_node(vertices[e[0]], vertices[e[1]], s);
+    } else if (face >= 0) {
+      ids[i] = face_interior_[face][s.slot[code]];
+    }
+  }
+  return ids;
+}
+
+void Curver::curve_edges(const std::vector<char>& on_boundary) {
+  const int P = params_.order;
+  const Eigen::MatrixX3d seg = reference_nodes(Shape::Segment, P, params_.node_set);
+  std::vector<double> fraction(P - 1);  // of the interior nodes, from vertex 0 to vertex 1
+  for (int i = 0; i < P - 1; ++i) fraction[i] = 0.5 * (seg(i + 2, 0) + 1.0);
+  const double tol = params_.tolerance;
+
+  edge_interior_.resize(in_.edges().size());
+  for (std::size_t e = 0; e < in_.edges().size(); ++e) {
+    const NodeId a = in_.edges()[e].vertices[0], b = in_.edges()[e].vertices[1];
+    const Eigen::Vector3d xa = in_.node(a), xb = in_.node(b);
+    std::vector<Eigen::Vector3d> x(P - 1);
+    std::vector<CadAttachment> att(P - 1);
+    for (int i = 0; i < P - 1; ++i) x[i] = xa + fraction[i] * (xb - xa);
+    const CadPlace place = on_boundary[e]
+                               ? detail::classify(model_, {in_.cad_attachment(a), in_.cad_attachment(b)}, true,
+                                                  0.5 * (xa + xb))
+                               : CadPlace{};
+    if (place.kind == CadPlace::Curve) {
+      // Arc-length placement at the node set's fractions: the spring chain's optimum on a curve.
+      const cad::Curve& c = model_.curve(place.id);
+      const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, false);
+      const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, true);
+      const double length = c.arc_length(ta, tb);
+      for (int i = 0; i < P - 1; ++i) {
+        const double t = c.parameter_at_length(ta, fraction[i] * length);
+        const Eigen::Vector3d p = c.point(t);
+        note_projection(x[i], p);
+        x[i] = p;
+        att[i] = {CadAttachment::Curve, place.id, t, 0.0};
+      }
+      ++stats_.edges_on_curves;
+    } else if (place.kind == CadPlace::Surface) {
+      const cad::Surface& s = model_.surface(place.id);
+      const cad::Vec2 uva = detail::surface_parameter(model_, place.id, in_.cad_attachment(a), xa);
+      const cad::Vec2 uvb = detail::surface_parameter(model_, place.id, in_.cad_attachment(b), xb, &uva);
+      Eigen::MatrixX2d uv(P + 1, 2);
+      Eigen::MatrixX3d pts(P + 1, 3);
+      uv.row(0) = uva.transpose();
+      uv.row(1) = uvb.transpose();
+      pts.row(0) = xa.transpose();
+      pts.row(1) = xb.transpose();
+      for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
+      if (!detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts, params_.spring_iterations,
+                                       tol * (xb - xa).norm()))
+        ++stats_.optimisation_fallbacks;
+      for (int i = 0; i < P - 1; ++i) {
+        note_projection(x[i], pts.row(i + 2).transpose());
+        x[i] = pts.row(i + 2).transpose();
+        att[i] = {CadAttachment::Surface, place.id, uv(i + 2, 0), uv(i + 2, 1)};
+      }
+      ++stats_.edges_on_surfaces;
+    }
+    for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(x[i], att[i]));
+  }
+}
+
+void Curver::curve_faces(const std::vector<char>& on_boundary) {
+  const int P = params_.order;
+  face_interior_.resize(in_.faces().size());
+  for (std::size_t f = 0; f < in_.faces().size(); ++f) {
+    const mesh::Face& face = in_.faces()[f];
+    const Shape shape = face.num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+    const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), -1, 0);
+    const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
+    if (ext.interior.empty()) continue;
+    const int n = static_cast<int>(ids.size());
+    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
+    for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
+    // The straight-sided face (its linear map), to measure how far curving moves the nodes.
+    Eigen::MatrixX3d corners(face.num_vertices, 3);
+    for (int v = 0; v < face.num_vertices; ++v) corners.row(v) = in_.node(face.vertices[v]).transpose();
+    const Eigen::MatrixXd straight =
+        LagrangeBasis(shape, 1, NodeSet::Equispaced).values(reference_nodes(shape, P, params_.node_set)) * corners;
+    extend_harmonically(ext, X);
+
+    std::vector<CadAttachment> att(n);
+    std::vector<CadAttachment> corner_att;
+    for (int v = 0; v < face.num_vertices; ++v) corner_att.push_back(in_.cad_attachment(face.vertices[v]));
+    const CadPlace place = on_boundary[f] ? detail::classify(model_, corner_att, false, X.colwise().mean().transpose())
+                                          : CadPlace{};
+    if (place.kind == CadPlace::Surface) {
+      const cad::Surface& s = model_.surface(place.id);
+      Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(n, 2);
+      for (int v = 0; v < face.num_vertices; ++v)
+        uv.row(v) = detail::surface_parameter(model_, place.id, corner_att[v], X.row(v).transpose()).transpose();
+      const cad::Vec2 guess = uv.topRows(face.num_vertices).colwise().mean().transpose();
+      for (int j : ext.boundary)
+        if (j >= face.num_vertices)
+          uv.row(j) =
+              detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
+                  .transpose();
+      extend_harmonically(ext, uv);
+      Eigen::MatrixX2d uv2 = uv;
+      Eigen::MatrixX3d pts = X;
+      double size = 0.0;
+      for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
+      if (!detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
+                                       params_.tolerance * size))
+        ++stats_.optimisation_fallbacks;
+      for (int j : ext.interior) {
+        X.row(j) = pts.row(j);
+        att[j] = {CadAttachment::Surface, place.id, uv2(j, 0), uv2(j, 1)};
+        note_projection(straight.row(j).transpose(), X.row(j).transpose());
+      }
+      ++stats_.faces_on_surfaces;
+    }
+    // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
+    const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
+    face_interior_[f].assign(ext.interior.size(), mesh::kNoNode);
+    for (int j : ext.interior)
+      face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(X.row(j).transpose(), att[j]);
+  }
+}
+
+mesh::Mesh Curver::run(CurvingStats* stats) {
+  if (in_.order() != 1)
+    throw std::invalid_argument("curve_mesh: the input mesh must be linear (order 1), it has order " +
+                                std::to_string(in_.order()));
+  if (params_.order < 1 || params_.order > kMaxOrder)
+    throw std::invalid_argument("curve_mesh: CurvingParams::order = " + std::to_string(params_.order) +
+                                " must be in [1, " + std::to_string(kMaxOrder) + "]");
+  if (params_.spring_iterations < 1 || !(params_.tolerance > 0.0))
+    throw std::invalid_argument("curve_mesh: CurvingParams::spring_iterations must be >= 1 and tolerance > 0");
+
+  for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+  for (const std::string& g : in_.group_names()) out_.group_index(g);
+  std::vector<char> edge_on_boundary(in_.edges().size(), 0), face_on_boundary(in_.faces().size(), 0);
+  for (const mesh::BoundaryFace& bf : in_.boundary_faces()) {
+    face_on_boundary[bf.face] = 1;
+    for (int k = 0; k < num_vertices(bf.shape); ++k) edge_on_boundary[bf.edges[k]] = 1;
+  }
+  curve_edges(edge_on_boundary);
+  curve_faces(face_on_boundary);
+
+  const int P = params_.order;
+  std::vector<NodeId> ids;
+  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
+    const mesh::Element& el = in_.elements()[e];
+    const mesh::NodeLayout& layout = mesh::node_layout(el.shape, P);
+    ids.assign(layout.slots.size(), mesh::kNoNode);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const mesh::NodeSlot& s = layout.slots[i];
+      switch (s.kind) {
+        case mesh::NodeSlot::Vertex: ids[i] = el.vertices[s.local]; break;
+        case mesh::NodeSlot::Edge:
+          ids[i] = edge_interior_[el.edges[s.local]][s.slot[(el.edge_reversed >> s.local) & 1]];
+          break;
+        case mesh::NodeSlot::Face: ids[i] = face_interior_[el.faces[s.local]][s.slot[el.face_orientation[s.local]]]; break;
+        case mesh::NodeSlot::Interior: break;
+      }
+    }
+    const detail::HarmonicExtension& ext = detail::harmonic_extension(el.shape, P, params_.node_set);
+    if (!ext.interior.empty()) {
+      Eigen::MatrixXd X = Eigen::MatrixXd::Zero(ids.size(), 3);
+      for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
+      extend_harmonically(ext, X);
+      for (int j : ext.interior) ids[j] = out_.add_node(X.row(j).transpose());
+    }
+    out_.add_element(el.shape, ids);
+  }
+  for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
+    const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
+    out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
+                           planar_nodes(bf.shape, bf.vertices.data(), bf.face, bf.face_orientation));
+  }
+  if (stats) *stats = stats_;
+  return std::move(out_);
+}
+
+}  // namespace
+
+mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
+                      CurvingStats* stats) {
+  return Curver(linear, model, params).run(stats);
+}
+
+}  // namespace semimesh::ho

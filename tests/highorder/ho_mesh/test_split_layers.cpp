@@ -1,0 +1,243 @@
+// Isoparametric splitting: sub-element nodes on the coarse map, layer heights in the ratio r,
+// validity inherited, conformity between split neighbours, curved faces kept, two-direction hexes.
+#include "semimesh/ho/splitting/split_layers.hpp"
+
+#include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/validity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+
+namespace semimesh::ho {
+namespace {
+
+using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+// Interface positions in [-1, 1] for N layers growing by r, written from the definition
+// (thicknesses h r^k summing to 2).
+std::vector<double> expected_interfaces(int layers, double r) {
+  const double h = r == 1.0 ? 2.0 / layers : 2.0 * (r - 1.0) / (std::pow(r, layers) - 1.0);
+  std::vector<double> z{-1.0};
+  for (int k = 0; k < layers; ++k) z.push_back(z.back() + h * std::pow(r, k));
+  return z;
+}
+
+// One element whose nodes are F at its reference nodes.
+mesh::Mesh single_element(Shape shape, int order, NodeSet set, const Map& F) {
+  mesh::Mesh m(order, set);
+  const Eigen::MatrixX3d r = reference_nodes(shape, order, set);
+  std::vector<mesh::NodeId> ids;
+  for (Eigen::Index i = 0; i < r.rows(); ++i) ids.push_back(m.add_node(F(r.row(i).transpose())));
+  m.add_element(shape, ids);
+  return m;
+}
+
+// A prism map in the space P_3(xi, eta) x P_3(zeta): curved body face, curved side face eta = 0.
+Eigen::Vector3d prism_map(const Eigen::Vector3d& r) {
+  const double x = r(0), y = r(1), z = r(2);
+  return {x + 0.05 * y * z, 0.2 * x * (1.0 - x) + y + 0.03 * x * z, 0.1 * (z + 1.0) + 0.05 * x * x};
+}
+
+TEST(SplitLayers, PrismNodesLieOnTheCoarseMap) {
+  for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL}) {
+    const int P = 3, N = 5;
+    const mesh::Mesh coarse = single_element(Shape::Prism, P, set, prism_map);
+    SplitStats stats;
+    const mesh::Mesh fine = split_layers(coarse, {0}, {N, 2.0}, {}, &stats);
+    ASSERT_EQ(fine.elements().size(), std::size_t(N));
+    EXPECT_EQ(stats.elements_in, 1);
+    EXPECT_EQ(stats.elements_out, N);
+    const std::vector<double> z = expected_interfaces(N, 2.0);
+    const Eigen::MatrixX3d r = reference_nodes(Shape::Prism, P, set);
+    double worst = 0.0;
+    for (int k = 0; k < N; ++k) {
+      const Eigen::MatrixX3d X = fine.element_coordinates(k);
+      for (Eigen::Index i = 0; i < r.rows(); ++i) {
+        Eigen::Vector3d q = r.row(i).transpose();
+        q(2) = z[k] + 0.5 * (q(2) + 1.0) * (z[k + 1] - z[k]);
+        worst = std::max(worst, (X.row(i).transpose() - prism_map(q)).norm());
+      }
+    }
+    EXPECT_LT(worst, 1e-12);  // the map is in the element's space: exact up to round-off
+  }
+}
+
+TEST(SplitLayers, FirstCellHeightsFollowTheRatio) {
+  // Vertical edges are straight: |d chi / d zeta| is 0.1 at vertex 0, so layer k there is 0.1 h r^k high.
+  const mesh::Mesh coarse = single_element(Shape::Prism, 2, NodeSet::GLL, prism_map);
+  SplitStats stats;
+  const mesh::Mesh fine = split_layers(coarse, {0}, {5, 2.0}, {}, &stats);
+  const double h0 = 2.0 / 31.0;  // 2 (r - 1) / (r^5 - 1)
+  EXPECT_NEAR(stats.first_cell_height_min, 0.1 * h0, 1e-12);
+  // The longest vertical edge is at vertex 2 (xi, eta) = (0, 1): d chi / d zeta = (0.05, 0, 0.1).
+  EXPECT_NEAR(stats.first_cell_height_max, std::hypot(0.05, 0.1) * h0, 1e-12);
+  EXPECT_NEAR(stats.achieved_ratio, 2.0, 1e-12);
+  // The same from the nodes: vertex 3 of sub-element 0 over vertex 0.
+  const Eigen::MatrixX3d X0 = fine.element_coordinates(0), X1 = fine.element_coordinates(1);
+  const double first = (X0.row(3) - X0.row(0)).norm(), second = (X1.row(3) - X1.row(0)).norm();
+  EXPECT_NEAR(second / first, 2.0, 1e-12);
+}
+
+TEST(SplitLayers, SubElementsOfAValidPrismAreValid) {
+  const int P = 3;
+  const mesh::Mesh coarse = single_element(Shape::Prism, P, NodeSet::GLL, prism_map);
+  ASSERT_TRUE(certify_jacobian(Shape::Prism, P, NodeSet::GLL, coarse.element_coordinates(0)).valid);
+  const mesh::Mesh fine = split_layers(coarse, {0}, {5, 2.0});
+  for (std::size_t e = 0; e < fine.elements().size(); ++e)
+    EXPECT_TRUE(certify_jacobian(Shape::Prism, P, NodeSet::GLL, fine.element_coordinates(e)).valid) << "sub-element " << e;
+}
+
+TEST(SplitLayers, CurvedSideFaceIsKept) {
+  // On the side face eta = 0 the map gives y = 0.2 x (1 - x) + 0.03 x zeta with x = xi: check the
+  // interior nodes of that face in every sub-element against it (zeta from z, independent of chi).
+  const int P = 4;
+  const mesh::Mesh coarse = single_element(Shape::Prism, P, NodeSet::GLL, prism_map);
+  const mesh::Mesh fine = split_layers(coarse, {0}, {4, 1.5});
+  int checked = 0;
+  for (std::size_t e = 0; e < fine.elements().size(); ++e) {
+    const mesh::Element& el = fine.elements()[e];
+    const long f = fine.find_face({el.vertices[0], el.vertices[1], el.vertices[4], el.vertices[3]});
+    ASSERT_GE(f, 0);
+    for (mesh::NodeId id : fine.face_nodes(f)) {
+      const Eigen::Vector3d x = fine.node(id);
+      const double xi = x(0);                          // eta = 0 on this face
+      const double zeta = (x(2) - 0.05 * xi * xi) / 0.1 - 1.0;
+      EXPECT_NEAR(x(1), 0.2 * xi * (1.0 - xi) + 0.03 * xi * zeta, 1e-12);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 4 * (P + 1) * (P + 1));
+}
+
+// Two prisms sharing the side face (1, 2, 5, 4) of the first: a flat layer of thickness 0.1 under
+// a smooth global bending, nodes placed element by element.
+mesh::Mesh two_prisms(int order, NodeSet set) {
+  const Eigen::Vector3d corners[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  const int tris[2][3] = {{0, 1, 2}, {1, 3, 2}};
+  const auto bend = [](const Eigen::Vector3d& p) {
+    return Eigen::Vector3d(p(0), p(1), p(2) + 0.1 * std::sin(p(0)) * std::cos(p(1)));
+  };
+  mesh::Mesh m(order, set);
+  const Eigen::MatrixX3d r = reference_nodes(Shape::Prism, order, set);
+  // Nodes at the same place are one node (the elements are placed independently).
+  std::map<std::array<long, 3>, mesh::NodeId> by_place;
+  for (const auto& t : tris) {
+    std::vector<mesh::NodeId> ids;
+    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+      const double a = r(i, 0), b = r(i, 1), h = 0.05 * (r(i, 2) + 1.0);
+      const Eigen::Vector3d flat = (1 - a - b) * corners[t[0]] + a * corners[t[1]] + b * corners[t[2]];
+      const Eigen::Vector3d x = bend(flat + Eigen::Vector3d(0, 0, h));
+      const std::array<long, 3> key{std::lround(x(0) * 1e9), std::lround(x(1) * 1e9), std::lround(x(2) * 1e9)};
+      const auto it = by_place.find(key);
+      ids.push_back(it != by_place.end() ? it->second : by_place[key] = m.add_node(x));
+    }
+    m.add_element(Shape::Prism, ids);
+  }
+  return m;
+}
+
+TEST(SplitLayers, SplitNeighboursConform) {
+  const int P = 3, N = 5;
+  const mesh::Mesh coarse = two_prisms(P, NodeSet::GLL);
+  const mesh::Mesh fine = split_layers(coarse, {0, 1}, {N, 2.0});
+  ASSERT_EQ(fine.elements().size(), std::size_t(2 * N));
+  // Each sub-element of the second prism sees the shared face nodes created by the first one: they
+  // must still be on its own coarse map.
+  const std::vector<double> z = expected_interfaces(N, 2.0);
+  const LagrangeBasis basis(Shape::Prism, P, NodeSet::GLL);
+  const Eigen::MatrixX3d r = basis.nodes();
+  double worst = 0.0;
+  for (int c = 0; c < 2; ++c) {
+    const Eigen::MatrixX3d Xc = coarse.element_coordinates(c);
+    for (int k = 0; k < N; ++k) {
+      Eigen::MatrixX3d q = r;
+      for (Eigen::Index i = 0; i < q.rows(); ++i) q(i, 2) = z[k] + 0.5 * (r(i, 2) + 1.0) * (z[k + 1] - z[k]);
+      worst = std::max(worst, (fine.element_coordinates(c * N + k) - map_points(basis, Xc, q)).cwiseAbs().maxCoeff());
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+  // The shared side face is split once: the sub-faces are shared entities (5 faces used twice).
+  std::multiset<long> used;
+  for (std::size_t e = 0; e < fine.elements().size(); ++e)
+    for (int f = 0; f < 5; ++f) used.insert(fine.elements()[e].faces[f]);
+  int shared = 0;
+  for (long f : std::set<long>(used.begin(), used.end())) shared += used.count(f) == 2 ? 1 : 0;
+  EXPECT_EQ(shared, N + 2 * (N - 1));  // N pieces of the side face + layer interfaces in each prism
+}
+
+TEST(SplitLayers, RatioFieldKeepsConformityAndUsesTheVertexRatio) {
+  const mesh::Mesh coarse = two_prisms(2, NodeSet::Equispaced);
+  const RatioField ratio = [](const Eigen::Vector3d& x) { return 1.0 + x(0) + 0.5 * x(1); };
+  const int N = 4;
+  const mesh::Mesh fine = split_layers(coarse, {0, 1}, {N, 2.0}, ratio);
+  // Heights along each vertical edge follow the ratio at its body vertex (edges are straight in z).
+  for (std::size_t e = 0; e < fine.elements().size(); ++e) {
+    const std::size_t coarse_element = e / N;
+    const int k = static_cast<int>(e % N);
+    const Eigen::MatrixX3d Xc = coarse.element_coordinates(coarse_element);
+    const Eigen::MatrixX3d X = fine.element_coordinates(e);
+    for (int v = 0; v < 3; ++v) {
+      const std::vector<double> z = expected_interfaces(N, ratio(Xc.row(v).transpose()));
+      const double height = Xc(v + 3, 2) - Xc(v, 2);
+      EXPECT_NEAR(X(v, 2), Xc(v, 2) + 0.5 * (z[k] + 1.0) * height, 1e-12);
+      EXPECT_NEAR(X(v + 3, 2), Xc(v, 2) + 0.5 * (z[k + 1] + 1.0) * height, 1e-12);
+    }
+  }
+}
+
+// A hexahedron map in Q_2 with a closed-form inverse: F(a, b, c) = (a, b + 0.1 a^2, c + 0.1 a b).
+Eigen::Vector3d hex_map(const Eigen::Vector3d& r) { return {r(0), r(1) + 0.1 * r(0) * r(0), r(2) + 0.1 * r(0) * r(1)}; }
+Eigen::Vector3d hex_inverse(const Eigen::Vector3d& x) {
+  const double a = x(0), b = x(1) - 0.1 * a * a;
+  return {a, b, x(2) - 0.1 * a * b};
+}
+
+TEST(SplitLayers, HexSplitInTwoDirections) {
+  const int P = 2;
+  const mesh::Mesh coarse = single_element(Shape::Hexahedron, P, NodeSet::Equispaced, hex_map);
+  const mesh::Mesh once = split_layers(coarse, {0}, {3, 1.5});
+  std::vector<std::size_t> all{0, 1, 2};
+  SplitStats stats;
+  const mesh::Mesh twice = split_hex_direction(once, all, 0, {2, 1.0}, &stats);
+  ASSERT_EQ(twice.elements().size(), 6u);
+  EXPECT_EQ(stats.elements_out, 6);
+  // Every node of the result is F at a point of the refined lattice: xi in {-1, -1/2, ..., 1},
+  // eta in {-1, 0, 1}, zeta at the interfaces of (3, 1.5) and their midpoints.
+  const std::vector<double> z = expected_interfaces(3, 1.5);
+  std::set<std::pair<long, long>> expected_zeta;
+  std::set<std::array<long, 3>> seen;
+  for (std::size_t e = 0; e < twice.elements().size(); ++e) {
+    EXPECT_TRUE(certify_jacobian(Shape::Hexahedron, P, NodeSet::Equispaced, twice.element_coordinates(e)).valid);
+    for (mesh::NodeId id : twice.element_nodes(e)) {
+      const Eigen::Vector3d q = hex_inverse(twice.node(id));
+      EXPECT_NEAR(q(0) * 2.0, std::round(q(0) * 2.0), 1e-12);
+      EXPECT_NEAR(q(1), std::round(q(1)), 1e-12);
+      double best = 1e9;
+      for (int k = 0; k < 3; ++k)
+        for (double t : {z[k], 0.5 * (z[k] + z[k + 1]), z[k + 1]}) best = std::min(best, std::abs(q(2) - t));
+      EXPECT_LT(best, 1e-12);
+      seen.insert({std::lround(q(0) * 4), std::lround(q(1) * 2), std::lround(q(2) * 1e6)});
+    }
+  }
+  // (2*2+1) x (2+1) x (3*2+1) distinct lattice points, each one node: nothing duplicated or lost.
+  std::set<mesh::NodeId> referenced;
+  for (std::size_t e = 0; e < twice.elements().size(); ++e)
+    for (mesh::NodeId id : twice.element_nodes(e)) referenced.insert(id);
+  EXPECT_EQ(seen.size(), 105u);
+  EXPECT_EQ(referenced.size(), 105u);
+}
+
+TEST(SplitLayers, RejectsBadInput) {
+  const mesh::Mesh coarse = single_element(Shape::Prism, 2, NodeSet::GLL, prism_map);
+  EXPECT_THROW(split_layers(coarse, {1}, {5, 2.0}), std::invalid_argument);
+  EXPECT_THROW(split_layers(coarse, {0}, {0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(split_layers(coarse, {0}, {5, 0.5}), std::invalid_argument);
+  EXPECT_THROW(split_hex_direction(coarse, {0}, 0, {5, 2.0}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace semimesh::ho
