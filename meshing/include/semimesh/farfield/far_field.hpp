@@ -1,0 +1,53 @@
+// The far field: the unstructured region between the near field's outer skin, the wall and the
+// far-field box (DESIGN.md section 1). Pyramids sit on the quads of the skin so that the rest of
+// the region can be filled with tetrahedra; the tetrahedra come from TetGen.
+//
+// Licence: this stage links TetGen 1.5 (AGPL-3.0-or-later) and lives in its own target,
+// semimesh_farfield, so that the rest of semimesh does not.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/nearfield/near_field.hpp"
+
+#include <stdexcept>
+#include <vector>
+
+namespace semimesh::farfield {
+
+class FarFieldError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FarFieldParams {
+  double box_size = 1.0;           ///< target edge length on the box faces (model units), > 0
+  double wall_size = 0.5;          ///< target edge length on the far-field part of the wall, far from the body, > 0
+  double growth = 1.2;             ///< size gradation from the skin outwards, >= 1
+  double radius_edge_ratio = 1.5;  ///< TetGen quality bound (-q), >= 1.0 (TetGen's own lower limit)
+  double max_volume = 0.0;         ///< TetGen volume bound (-a); 0: none
+};
+
+struct FarFieldStats {
+  int tets = 0;
+  int pyramids = 0;
+  int wall_triangles = 0;
+  int box_triangles = 0;
+  double seconds_tetgen = 0;
+};
+
+/// Adds far-field nodes, pyramids (one on each quad of nf.skin, vertices 0..3 the quad, 4 the apex)
+/// and TetGen tetrahedra to nf.mesh, and the boundary faces "wall" (the far-field part of the
+/// wall, normal out of the domain) and "farfield" (the box faces, normal out of the domain).
+/// The skin faces and the footprint are kept exactly: the far field conforms with the near field.
+///  box_surfaces  CAD surface ids of the box faces; their curve meshes are shared with the wall's
+///                outer loop.
+///  wall_surface  the planar wall; its outer loop bounds the wall region, nf.footprint the hole.
+/// Tetrahedron sizes grow from the local skin edge length towards the box size by TetGen's quality
+/// bound alone (-q radius_edge_ratio; no background size, which over-refined about 8 times on the
+/// NACA0012 case); `growth` grades the wall region and the box curves.
+/// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
+/// translated: self-intersecting boundary, too close facets).
+FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
+                              const std::vector<int>& box_surfaces, int wall_surface);
+
+}  // namespace semimesh::farfield

@@ -1,0 +1,238 @@
+#include "semimesh/farfield/far_field.hpp"
+
+#include "pyramid_apex.hpp"
+#include "tetgen_volume.hpp"
+#include "wall_annulus.hpp"
+
+#include "semimesh/surface/curve_mesh.hpp"
+#include "semimesh/surface/error.hpp"
+#include "semimesh/surface/surface_mesh.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <unordered_map>
+
+namespace semimesh::farfield {
+namespace {
+
+using mesh::CadAttachment;
+using mesh::NodeId;
+using Triangle = std::array<NodeId, 3>;
+
+void check_params(const cad::Model& model, const nearfield::NearField& nf, const FarFieldParams& p,
+                  const std::vector<int>& box_surfaces, int wall_surface) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw FarFieldError("far field: " + what);
+  };
+  require(p.box_size > 0, "box_size must be > 0, got " + std::to_string(p.box_size));
+  require(p.wall_size > 0, "wall_size must be > 0, got " + std::to_string(p.wall_size));
+  require(p.growth >= 1, "growth must be >= 1, got " + std::to_string(p.growth));
+  require(p.radius_edge_ratio >= 1, "radius_edge_ratio must be >= 1, got " + std::to_string(p.radius_edge_ratio));
+  require(p.max_volume >= 0, "max_volume must be >= 0 (0: no bound), got " + std::to_string(p.max_volume));
+  require(nf.mesh.order() == 1, "the near-field mesh must be linear (order 1) when the far field is built, it has order " +
+                                    std::to_string(nf.mesh.order()));
+  require(nf.footprint.size() >= 3, "the near field's footprint has " + std::to_string(nf.footprint.size()) +
+                                        " nodes; a closed loop needs at least 3");
+  require(!box_surfaces.empty(), "no box surfaces given");
+  for (int s : box_surfaces)
+    require(s >= 0 && s < model.num_surfaces(), "box surface id " + std::to_string(s) + " is not a surface of the model");
+  require(wall_surface >= 0 && wall_surface < model.num_surfaces(),
+          "wall surface id " + std::to_string(wall_surface) + " is not a surface of the model");
+  require(model.surface(wall_surface).is_planar(),
+          "wall surface " + std::to_string(wall_surface) + " ('" + model.surface(wall_surface).name() + "') is not planar");
+}
+
+// One mesh node per CAD vertex and per inner curve-mesh node, so every surface using a curve
+// shares its nodes.
+class CurveNodes {
+ public:
+  CurveNodes(const cad::Model& model, const surface::CurveMeshes& curves, mesh::Mesh& mesh)
+      : model_(model), curves_(curves), mesh_(mesh) {}
+
+  int segments(int curve) const { return curves_.at(curve).segments(); }
+
+  NodeId node(int curve, int index) {
+    const surface::CurveMesh& cm = curves_.at(curve);
+    if (index == 0 || index == cm.segments()) {
+      const int vertex = model_.curve_vertices(curve)[index == 0 ? 0 : 1];
+      auto [it, added] = by_vertex_.try_emplace(vertex, mesh::kNoNode);
+      if (added) it->second = mesh_.add_node(cm.points[index], {CadAttachment::Vertex, vertex});
+      return it->second;
+    }
+    auto [it, added] = by_curve_node_.try_emplace({curve, index}, mesh::kNoNode);
+    if (added) it->second = mesh_.add_node(cm.points[index], {CadAttachment::Curve, curve, cm.t[index]});
+    return it->second;
+  }
+
+ private:
+  const cad::Model& model_;
+  const surface::CurveMeshes& curves_;
+  mesh::Mesh& mesh_;
+  std::map<int, NodeId> by_vertex_;
+  std::map<std::pair<int, int>, NodeId> by_curve_node_;
+};
+
+// Box faces, meshed on the CAD; triangles returned with their normal out of the domain.
+std::vector<Triangle> mesh_box(const cad::Model& model, const std::vector<int>& box_surfaces,
+                               const surface::CurveMeshes& curves, const surface::SizeField& size, CurveNodes& curve_nodes,
+                               mesh::Mesh& mesh) {
+  std::vector<Triangle> triangles;
+  for (int s : box_surfaces) {
+    surface::SurfaceMesh sm;
+    try {
+      sm = surface::mesh_surface(model, s, curves, size);
+    } catch (const surface::SurfaceMeshError& e) {
+      throw FarFieldError("far field: meshing box surface " + std::to_string(s) + " ('" + model.surface(s).name() +
+                          "') failed: " + e.what());
+    }
+    if (!sm.quads.empty())
+      throw FarFieldError("far field: box surface " + std::to_string(s) + " was meshed with quads; triangles expected");
+    std::vector<NodeId> ids(sm.num_nodes());
+    for (int i = 0; i < sm.num_nodes(); ++i)
+      ids[i] = sm.origin[i].on_boundary()
+                   ? curve_nodes.node(sm.origin[i].curve, sm.origin[i].index)
+                   : mesh.add_node(sm.points[i], {CadAttachment::Surface, s, sm.uv[i].x(), sm.uv[i].y()});
+    // The surface mesh faces the fluid (into the box); the boundary faces face out of it.
+    for (const auto& t : sm.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
+  }
+  return triangles;
+}
+
+// An orthonormal frame of the wall plane with e1 x e2 = the wall's fluid normal.
+struct PlaneFrame {
+  Eigen::Vector3d origin, e1, e2, normal;
+  Eigen::Vector2d to_2d(const Eigen::Vector3d& x) const { return {(x - origin).dot(e1), (x - origin).dot(e2)}; }
+  Eigen::Vector3d to_3d(const Eigen::Vector2d& a) const { return origin + a.x() * e1 + a.y() * e2; }
+};
+
+PlaneFrame wall_frame(const cad::Surface& wall) {
+  const auto bounds = wall.bounds();
+  const cad::Vec2 mid(0.5 * (bounds[0].lo + bounds[0].hi), 0.5 * (bounds[1].lo + bounds[1].hi));
+  PlaneFrame f;
+  f.origin = wall.point(mid);
+  f.normal = wall.normal(mid);
+  const Eigen::Vector3d helper = std::abs(f.normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  f.e1 = f.normal.cross(helper).normalized();
+  f.e2 = f.normal.cross(f.e1);
+  return f;
+}
+
+// The far-field part of the wall; triangles returned with their normal out of the domain.
+std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
+                                const FarFieldParams& params, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
+  const cad::Surface& wall = model.surface(wall_surface);
+  const PlaneFrame frame = wall_frame(wall);
+
+  std::vector<NodeId> ids;
+  std::vector<Eigen::Vector2d> outer, hole;
+  for (const cad::CurveUse& use : model.loops(wall_surface).front().uses) {
+    const int n = curve_nodes.segments(use.curve);
+    for (int k = 0; k < n; ++k) ids.push_back(curve_nodes.node(use.curve, use.forward ? k : n - k));
+  }
+  for (NodeId id : ids) outer.push_back(frame.to_2d(mesh.node(id)));
+
+  const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
+  for (NodeId id : nf.footprint) {
+    const Eigen::Vector3d& x = mesh.node(id);
+    const double off = (x - frame.origin).dot(frame.normal);
+    if (std::abs(off) > 10 * tolerance)
+      throw FarFieldError("far field: footprint node " + std::to_string(id) + " lies " + std::to_string(off) +
+                          " off the plane of wall surface " + std::to_string(wall_surface));
+    hole.push_back(frame.to_2d(x));
+    ids.push_back(id);
+  }
+
+  const Annulus annulus = triangulate_annulus(outer, hole, params.wall_size, params.growth);
+  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
+    const Eigen::Vector3d x = frame.to_3d(annulus.points[i]);
+    const cad::SurfaceProjection on_wall = wall.project(x);
+    ids.push_back(mesh.add_node(x, {CadAttachment::Surface, wall_surface, on_wall.uv.x(), on_wall.uv.y()}));
+  }
+  std::vector<Triangle> triangles;
+  // Counter-clockwise in (e1, e2) means along the fluid normal: reversed to face out of the domain.
+  for (const auto& t : annulus.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
+  return triangles;
+}
+
+// Each skin quad becomes a pyramid; returns the far field's view of the skin: the skin triangles
+// and the pyramids' four side triangles.
+std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh, int& pyramids) {
+  std::vector<Triangle> triangles;
+  for (const nearfield::SkinFace& face : nf.skin) {
+    const auto& v = face.nodes;
+    if (face.count == 3) {
+      triangles.push_back({v[0], v[1], v[2]});
+      continue;
+    }
+    if (face.count != 4) throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
+    const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])}));
+    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex});
+    ++pyramids;
+    for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});
+  }
+  return triangles;
+}
+
+}  // namespace
+
+FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
+                              const std::vector<int>& box_surfaces, int wall_surface) {
+  check_params(model, nf, params, box_surfaces, wall_surface);
+  mesh::Mesh& mesh = nf.mesh;
+  FarFieldStats stats;
+
+  // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
+  surface::SizeParams size_params;
+  size_params.max_size = params.box_size;
+  size_params.min_size = std::min(size_params.min_size, params.box_size);
+  size_params.curvature_segments = 0.0;
+  size_params.gradation = params.growth;
+  size_params.le_curves.clear();
+  size_params.te_curves.clear();
+  const surface::SizeField size(model, size_params);
+  const surface::CurveMeshes curves = surface::discretise_all_curves(model, size);
+  CurveNodes curve_nodes(model, curves, mesh);
+
+  const std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
+  const std::vector<Triangle> wall = mesh_wall(model, wall_surface, nf, params, curve_nodes, mesh);
+  const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
+
+  // The closed boundary of the tetrahedral region, numbered densely for TetGen.
+  TetgenInput input;
+  input.radius_edge_ratio = params.radius_edge_ratio;
+  input.max_volume = params.max_volume;
+  std::unordered_map<NodeId, int> plc_index;
+  std::vector<NodeId> plc_node;
+  for (const auto* group : {&skin, &wall, &box})
+    for (const Triangle& t : *group) {
+      std::array<int, 3> local;
+      for (int k = 0; k < 3; ++k) {
+        auto [it, added] = plc_index.try_emplace(t[k], static_cast<int>(plc_node.size()));
+        if (added) {
+          plc_node.push_back(t[k]);
+          input.points.push_back(mesh.node(t[k]));
+        }
+        local[k] = it->second;
+      }
+      input.triangles.push_back(local);
+    }
+  const TetgenOutput output = run_tetgen(input);
+  stats.seconds_tetgen = output.seconds;
+  for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));
+  mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
+  for (const auto& t : output.tets)
+    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]});
+  stats.tets = static_cast<int>(output.tets.size());
+
+  for (const Triangle& t : wall) mesh.add_boundary_face("wall", ho::Shape::Triangle, {t[0], t[1], t[2]});
+  for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
+  stats.wall_triangles = static_cast<int>(wall.size());
+  stats.box_triangles = static_cast<int>(box.size());
+  return stats;
+}
+
+}  // namespace semimesh::farfield

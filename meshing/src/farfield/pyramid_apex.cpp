@@ -1,0 +1,41 @@
+#include "pyramid_apex.hpp"
+
+#include "semimesh/farfield/far_field.hpp"
+#include "semimesh/ho/validity.hpp"
+
+#include <Eigen/Geometry>
+
+#include <sstream>
+
+namespace semimesh::farfield {
+
+Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+  double perimeter = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d& p = quad[i];
+    const Eigen::Vector3d& q = quad[(i + 1) % 4];
+    centroid += 0.25 * p;
+    normal += p.cross(q);  // Newell: twice the vector area of the (possibly warped) quad
+    perimeter += (q - p).norm();
+  }
+  std::ostringstream where;
+  where << "(" << centroid.x() << ", " << centroid.y() << ", " << centroid.z() << ")";
+  if (normal.norm() <= 1e-14 * perimeter * perimeter)
+    throw FarFieldError("pyramid on the skin quad at " + where.str() + ": the quad has zero area");
+  normal.normalize();
+
+  Eigen::MatrixX3d nodes(5, 3);
+  for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
+  double height = 0.5 * perimeter / 4.0;
+  constexpr int kHalvings = 6;
+  for (int attempt = 0; attempt <= kHalvings; ++attempt, height *= 0.5) {
+    const Eigen::Vector3d apex = centroid + height * normal;
+    nodes.row(4) = apex.transpose();
+    if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
+  }
+  throw FarFieldError("pyramid on the skin quad at " + where.str() +
+                      ": no apex height gives a valid pyramid (is the quad folded or far from planar?)");
+}
+
+}  // namespace semimesh::farfield

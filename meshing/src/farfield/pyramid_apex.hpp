@@ -1,0 +1,16 @@
+// The apex of the pyramid that turns a quadrilateral skin face into triangles for TetGen.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace semimesh::farfield {
+
+/// Apex over the quad a,b,c,d (counter-clockwise seen from the side the pyramid goes to): the
+/// centroid plus h times the unit (Newell) normal, h = half the mean edge length, halved until the
+/// linear pyramid (a,b,c,d,apex) has a certified positive Jacobian. Throws FarFieldError (with the
+/// quad's centroid) when no height up to 1/64 of the start gives a valid pyramid.
+Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad);
+
+}  // namespace semimesh::farfield

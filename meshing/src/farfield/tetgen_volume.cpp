@@ -1,0 +1,209 @@
+#include "tetgen_volume.hpp"
+
+#include "boundary_crossing.hpp"
+
+#include "semimesh/farfield/far_field.hpp"
+
+#define TETLIBRARY
+#include <tetgen.h>
+
+#include <Eigen/Geometry>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <sstream>
+#include <string>
+
+namespace semimesh::farfield {
+namespace {
+
+// TetGen's exit codes (tetgen.h, terminatetetgen()) as advice a user can act on.
+std::string explain_tetgen_code(int code) {
+  switch (code) {
+    case 1: return "out of memory (lower the far-field resolution or raise box_size / wall_size)";
+    case 2: return "internal error in TetGen";
+    case 3: return "the far-field boundary intersects itself (skin, pyramids, wall and box faces cross; is the near "
+                   "field too thick near the box or the wall, or are pyramids too tall?)";
+    case 4: return "a very small input feature was detected (nearly coincident boundary points)";
+    case 5: return "two boundary facets are very close to each other (skin close to itself or to the box?)";
+    case 10: return "invalid input (a boundary triangle with repeated or out-of-range points)";
+    default: return "unknown failure";
+  }
+}
+
+// Where the boundary crosses itself, as a clause for an error message (empty if no crossing).
+std::string locate_problem(const TetgenInput& input) {
+  const auto crossing = find_crossing(input.points, input.triangles);
+  if (!crossing) return "";
+  std::ostringstream out;
+  out << "; boundary triangle " << crossing->edge_triangle << " crosses boundary triangle " << crossing->pierced_triangle
+      << " at (" << crossing->point.x() << ", " << crossing->point.y() << ", " << crossing->point.z() << ")";
+  return out.str();
+}
+
+struct TetgenRun {
+  int code = 0;                      // TetGen's exit code (0: success)
+  bool crashed = false;              // the child process died or sent a truncated answer
+  std::string crash_description;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 4>> tets;
+};
+
+void write_all(int fd, const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::write(fd, p, bytes);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) ::_exit(101);
+    p += n;
+    bytes -= static_cast<std::size_t>(n);
+  }
+}
+
+// TetGen runs in a forked child: TetGen 1.5.0 (Debian's) frees its memory pools in
+// terminatetetgen() and again in the destructor that runs while its error code is thrown, so any
+// TetGen failure would crash the whole program. The child sends back, through a pipe,
+// [int code, int points, int tets, double xyz[points][3], int corners[tets][4]].
+TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in) {
+  int pipe_fds[2];
+  if (::pipe(pipe_fds) != 0) throw FarFieldError(std::string("cannot create a pipe for TetGen: ") + std::strerror(errno));
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(pipe_fds[0]);
+    ::close(pipe_fds[1]);
+    throw FarFieldError(std::string("cannot start a process for TetGen: ") + std::strerror(errno));
+  }
+  if (pid == 0) {
+    ::close(pipe_fds[0]);
+    tetgenio out;
+    int header[3] = {0, 0, 0};
+    try {
+      tetrahedralize(switches.data(), &in, &out);
+      header[1] = out.numberofpoints;
+      header[2] = out.numberoftetrahedra;
+    } catch (int code) {
+      header[0] = code;
+    }
+    write_all(pipe_fds[1], header, sizeof header);
+    if (header[0] == 0) {
+      write_all(pipe_fds[1], out.pointlist, sizeof(REAL) * 3 * header[1]);
+      for (int t = 0; t < header[2]; ++t) write_all(pipe_fds[1], out.tetrahedronlist + t * out.numberofcorners, sizeof(int) * 4);
+    }
+    ::_exit(0);  // no atexit handlers or destructors of the parent's state in the child
+  }
+  ::close(pipe_fds[1]);
+  std::string bytes;
+  char chunk[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(pipe_fds[0], chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    bytes.append(chunk, static_cast<std::size_t>(n));
+  }
+  ::close(pipe_fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+
+  TetgenRun run;
+  if (WIFSIGNALED(status)) {
+    run.crashed = true;
+    run.crash_description = std::string("TetGen crashed (signal ") + std::to_string(WTERMSIG(status)) + ", " +
+                            strsignal(WTERMSIG(status)) + ")";
+    return run;
+  }
+  int header[3];
+  if (bytes.size() < sizeof header) {
+    run.crashed = true;
+    run.crash_description = "TetGen's process ended without an answer";
+    return run;
+  }
+  std::memcpy(header, bytes.data(), sizeof header);
+  run.code = header[0];
+  if (run.code != 0) return run;
+  const std::size_t expected = sizeof header + sizeof(double) * 3 * header[1] + sizeof(int) * 4 * header[2];
+  if (bytes.size() != expected) {
+    run.crashed = true;
+    run.crash_description = "TetGen's answer is truncated";
+    return run;
+  }
+  run.points.resize(header[1]);
+  run.tets.resize(header[2]);
+  const char* p = bytes.data() + sizeof header;
+  for (auto& x : run.points) {
+    std::memcpy(x.data(), p, sizeof(double) * 3);
+    p += sizeof(double) * 3;
+  }
+  for (auto& t : run.tets) {
+    std::memcpy(t.data(), p, sizeof(int) * 4);
+    p += sizeof(int) * 4;
+  }
+  return run;
+}
+
+}  // namespace
+
+TetgenOutput run_tetgen(const TetgenInput& input) {
+  const int num_points = static_cast<int>(input.points.size());
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = num_points;
+  in.pointlist = new REAL[3 * num_points];
+  for (int i = 0; i < num_points; ++i) {
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = input.points[i][k];
+  }
+  in.numberoffacets = static_cast<int>(input.triangles.size());
+  in.facetlist = new tetgenio::facet[in.numberoffacets];
+  for (int f = 0; f < in.numberoffacets; ++f) {
+    tetgenio::facet& facet = in.facetlist[f];
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    facet.numberofholes = 0;
+    facet.holelist = nullptr;
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k) facet.polygonlist[0].vertexlist[k] = input.triangles[f][k];
+  }
+
+  std::ostringstream switches;
+  switches << "pYQq" << input.radius_edge_ratio;
+  if (input.max_volume > 0) switches << "a" << input.max_volume;
+  std::string buffer = switches.str();
+
+  const auto start = std::chrono::steady_clock::now();
+  const TetgenRun run = tetrahedralize_in_child(buffer, in);
+  TetgenOutput result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (run.crashed)
+    throw FarFieldError("TetGen failed (switches '" + switches.str() + "'): " + run.crash_description +
+                        "; TetGen 1.5.0 crashes while reporting an input error, which usually means the far-field "
+                        "boundary intersects itself or two boundary facets nearly touch" + locate_problem(input));
+  if (run.code != 0)
+    throw FarFieldError("TetGen failed (code " + std::to_string(run.code) + ", switches '" + switches.str() +
+                        "'): " + explain_tetgen_code(run.code) + locate_problem(input));
+
+  if (static_cast<int>(run.points.size()) < num_points)
+    throw FarFieldError("TetGen returned " + std::to_string(run.points.size()) + " points for " +
+                        std::to_string(num_points) + " boundary points: it dropped boundary points");
+  result.points = run.points;
+  for (int i = 0; i < num_points; ++i)
+    if (result.points[i] != input.points[i])
+      throw FarFieldError("TetGen moved boundary point " + std::to_string(i) + "; the boundary must be kept exactly");
+
+  result.tets.resize(run.tets.size());
+  for (std::size_t t = 0; t < run.tets.size(); ++t) {
+    std::array<int, 4> tet = run.tets[t];
+    const Eigen::Vector3d& p0 = result.points[tet[0]];
+    const double volume6 =
+        (result.points[tet[1]] - p0).cross(result.points[tet[2]] - p0).dot(result.points[tet[3]] - p0);
+    if (volume6 < 0) std::swap(tet[2], tet[3]);
+    result.tets[t] = tet;
+  }
+  return result;
+}
+
+}  // namespace semimesh::farfield

@@ -1,0 +1,35 @@
+// Tetrahedra of a closed triangulated boundary through TetGen 1.5 (AGPL-3.0-or-later: only the
+// semimesh_farfield target links it).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace semimesh::farfield {
+
+struct TetgenInput {
+  std::vector<Eigen::Vector3d> points;         ///< [points]
+  std::vector<std::array<int, 3>> triangles;   ///< [triangles][3] the boundary, kept exactly
+  double radius_edge_ratio = 1.5;              ///< -q bound
+  double max_volume = 0.0;                     ///< -a bound; 0: none
+};
+
+struct TetgenOutput {
+  std::vector<Eigen::Vector3d> points;         ///< [points] the input points first, same order, then Steiner points
+  std::vector<std::array<int, 4>> tets;        ///< [tets][4] positive volume (Gmsh's reference orientation)
+  double seconds = 0.0;
+};
+
+/// Runs TetGen with switches "pYQ q<ratio> [a<volume>]": the region enclosed by the triangles is
+/// filled (the outside of the boundary, reached from the convex hull, is carved away), no point is
+/// added on the boundary (Y). Sizes follow from the boundary by the radius-edge bound alone: tets
+/// start at the size of the boundary triangles they touch and grow away from them.
+/// TetGen runs in a child process (see tetgen_volume.cpp: TetGen 1.5.0 crashes while reporting
+/// errors). Throws FarFieldError with TetGen's failure explained (self-intersecting boundary,
+/// facets too close, ...) and, when the boundary crosses itself, the two triangles and the point;
+/// or when TetGen moved or dropped an input point.
+TetgenOutput run_tetgen(const TetgenInput& input);
+
+}  // namespace semimesh::farfield

@@ -1,0 +1,28 @@
+// The apex of the pyramid over a skin quad.
+#include "pyramid_apex.hpp"
+
+#include "semimesh/farfield/far_field.hpp"
+
+#include <gtest/gtest.h>
+
+namespace semimesh::farfield {
+namespace {
+
+using Eigen::Vector3d;
+
+TEST(PyramidApex, SquareGetsItsApexHalfAnEdgeAboveTheCentre) {
+  // counter-clockwise seen from +z: the apex goes up
+  const Vector3d apex = pyramid_apex({Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(2, 2, 0), Vector3d(0, 2, 0)});
+  EXPECT_NEAR((apex - Vector3d(1, 1, 1)).norm(), 0.0, 1e-12);
+  const Vector3d down = pyramid_apex({Vector3d(0, 0, 0), Vector3d(0, 2, 0), Vector3d(2, 2, 0), Vector3d(2, 0, 0)});
+  EXPECT_NEAR((down - Vector3d(1, 1, -1)).norm(), 0.0, 1e-12);
+}
+
+TEST(PyramidApex, NonConvexQuadHasNoValidPyramid) {
+  // an arrowhead: the corner (0.2, 0.2) is reflex, det J < 0 there whatever the apex height
+  EXPECT_THROW(pyramid_apex({Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(0.2, 0.2, 0), Vector3d(0, 2, 0)}),
+               FarFieldError);
+}
+
+}  // namespace
+}  // namespace semimesh::farfield
