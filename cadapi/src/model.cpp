@@ -2,13 +2,40 @@
 
 #include "semimesh/cad/error.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace semimesh::cad {
 namespace {
 
 [[noreturn]] void topology_error(const std::string& backend, const std::string& what) {
   throw CadError(CadError::Kind::Geometry, "backend '" + backend + "': inconsistent topology: " + what);
+}
+
+// Adds the curve's extreme points per axis: 32 samples, then golden-section search around the
+// extreme sample, so that a coordinate maximum between two samples is not missed.
+void add_curve_extremes(const Curve& c, BBox& box) {
+  constexpr int kSamples = 32;
+  const Interval range = c.bounds();
+  const double h = range.length() / kSamples;
+  std::vector<Vec3> p(kSamples + 1);
+  for (int i = 0; i <= kSamples; ++i) box.add(p[i] = c.point(range.lo + h * i));
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {+1.0, -1.0}) {
+      int best = 0;
+      for (int i = 1; i <= kSamples; ++i)
+        if (sign * p[i][axis] > sign * p[best][axis]) best = i;
+      double a = range.clamp(range.lo + h * (best - 1)), b = range.clamp(range.lo + h * (best + 1));
+      const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+      for (int it = 0; it < 60 && b - a > 1e-15 * std::max(1.0, range.length()); ++it) {
+        double x1 = b - ratio * (b - a), x2 = a + ratio * (b - a);
+        if (sign * c.point(x1)[axis] > sign * c.point(x2)[axis]) b = x2;
+        else a = x1;
+      }
+      box.add(c.point(0.5 * (a + b)));
+    }
 }
 
 }  // namespace
@@ -81,10 +108,7 @@ void Model::finalize() {
 
   bbox_ = BBox{};
   for (const Vertex& v : vertices_) bbox_.add(v.point);
-  for (const auto& c : curves_) {
-    Interval t = c->bounds();
-    for (int i = 0; i <= 32; ++i) bbox_.add(c->point(t.lo + t.length() * i / 32));
-  }
+  for (const auto& c : curves_) add_curve_extremes(*c, bbox_);
   for (const auto& s : surfaces_) {
     auto box = s->bounds();
     for (int i = 0; i <= 16; ++i)

@@ -1,0 +1,151 @@
+"""Runs the semimesh CLI once and checks its exit code, stderr and (optionally) its JSON output.
+
+Used by CTest (tests/apps/CMakeLists.txt) with Debian's /usr/bin/python3; standard library only.
+
+  cli_check.py --exe PATH [--exit N] [--stderr-has TEXT]... [--stderr-is TEXT]
+               [--json CHECK] [--write NAME:PATH] -- ARGS...
+
+--write NAME:PATH writes the fixture file NAME (see FIXTURES) to PATH before running.
+--json CHECK parses stdout as one JSON object and runs the named check of JSON_CHECKS.
+"""
+import argparse
+import json
+import math
+import subprocess
+import sys
+
+# A STEP file that parses but holds only a point: no solid, no face.
+POINT_ONLY_STEP = """ISO-10303-21;
+HEADER;
+FILE_DESCRIPTION(('a single point'),'2;1');
+FILE_NAME('point_only.stp','2026-01-01T00:00:00',('semimesh tests'),(''),'','','');
+FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));
+ENDSEC;
+DATA;
+#1=CARTESIAN_POINT('',(0.,0.,0.));
+ENDSEC;
+END-ISO-10303-21;
+"""
+
+FIXTURES = {
+    "point_only_step": POINT_ONLY_STEP,
+    "corrupt_step": "ISO-10303-21;\nHEADER;\nthis is not a STEP file at all ((((\n",
+    "empty_brep": "",
+}
+
+# NACA 0012 blunt (a4 = -0.1015) section area per unit chord^2: 2 * integral of y_t over [0, 1]
+# = 10 t (0.2969 * 2/3 - 0.1260 / 2 - 0.3516 / 3 + 0.2843 / 4 - 0.1015 / 5).
+NACA0012_SECTION_AREA = 10 * 0.12 * (0.2969 * 2 / 3 - 0.1260 / 2 - 0.3516 / 3 + 0.2843 / 4 - 0.1015 / 5)
+
+NACA_SURFACES = ["upper", "lower", "te_base", "tip", "wall", "box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmax"]
+
+
+def fail(message):
+    print("cli_check: FAILED: " + message)
+    sys.exit(1)
+
+
+def expect(condition, message):
+    if not condition:
+        fail(message)
+
+
+def common_keys(doc):
+    for key, kind in [("backend", str), ("vertices", int), ("curves", int), ("surfaces", int), ("bbox", list),
+                      ("closed", bool), ("units", str), ("surface_list", list)]:
+        expect(key in doc, "key '%s' missing" % key)
+        expect(isinstance(doc[key], kind), "key '%s' is %r, expected %s" % (key, doc[key], kind.__name__))
+    expect(len(doc["bbox"]) == 6, "bbox must have 6 numbers")
+    expect(all(doc["bbox"][i] < doc["bbox"][i + 3] for i in range(3)), "bbox min must be below max: %r" % doc["bbox"])
+    expect(len(doc["surface_list"]) == doc["surfaces"], "surface_list length differs from surfaces")
+    for i, s in enumerate(doc["surface_list"]):
+        expect(set(s) == {"id", "name", "kind", "area"}, "surface entry keys: %r" % sorted(s))
+        expect(s["id"] == i, "surface ids must be 0..n-1 in order")
+        expect(s["area"] > 0, "surface %d '%s' has area %r" % (i, s["name"], s["area"]))
+
+
+def default_wing(doc, backend):
+    common_keys(doc)
+    expect(doc["backend"] == backend, "backend is %r, expected %r" % (doc["backend"], backend))
+    expect(doc["surfaces"] == 10 and doc["curves"] == 21 and doc["vertices"] == 14,
+           "counts %d/%d/%d, expected 10 surfaces, 21 curves, 14 vertices" % (doc["surfaces"], doc["curves"], doc["vertices"]))
+    expect(doc["closed"] is True, "the default wing in its box is closed")
+    expect(doc["units"] == "chord", "units %r" % doc["units"])
+    for got, want in zip(doc["bbox"], [-10, -10, 0, 11, 10, 10]):
+        expect(abs(got - want) < 1e-9, "bbox %r, expected the default box" % doc["bbox"])
+    expect([s["name"] for s in doc["surface_list"]] == NACA_SURFACES, "surface names/order: %r" % doc["surface_list"])
+    area = {s["name"]: s["area"] for s in doc["surface_list"]}
+    boxes = {"box_xmin": 200, "box_xmax": 200, "box_ymin": 210, "box_ymax": 210, "box_zmax": 420}
+    for name, want in boxes.items():
+        expect(math.isclose(area[name], want, rel_tol=1e-6), "%s area %r, expected %r" % (name, area[name], want))
+    # Trimmed faces: cad-info's documented area accuracy is 1e-3 relative (apps/surface_area.hpp).
+    expect(math.isclose(area["tip"], NACA0012_SECTION_AREA, rel_tol=1e-3),
+           "tip area %r, expected the NACA 0012 section area %r" % (area["tip"], NACA0012_SECTION_AREA))
+    expect(math.isclose(area["wall"], 420 - NACA0012_SECTION_AREA, rel_tol=1e-5),
+           "wall area %r, expected 420 minus the root section" % area["wall"])
+    # Blunt TE base: thickness 2 y_t(1) = 10 t (0.2969 - 0.1260 - 0.3516 + 0.2843 - 0.1015) times span 3.
+    te = 10 * 0.12 * (0.2969 - 0.1260 - 0.3516 + 0.2843 - 0.1015) * 3
+    expect(math.isclose(area["te_base"], te, rel_tol=1e-4), "te_base area %r, expected %r" % (area["te_base"], te))
+    expect(math.isclose(area["upper"], area["lower"], rel_tol=1e-6), "a symmetric wing has equal skins")
+
+
+def step_file(doc, faces):
+    common_keys(doc)
+    expect(doc["backend"] == "occ", "STEP files load with occ, got %r" % doc["backend"])
+    expect(doc["surfaces"] == faces, "%d surfaces, expected %d" % (doc["surfaces"], faces))
+    expect(doc["units"] != "", "units must be named")
+
+
+JSON_CHECKS = {
+    "naca_default": lambda d: default_wing(d, "naca"),
+    "occ_default": lambda d: default_wing(d, "occ"),
+    "nektar_wing": lambda d: step_file(d, 9),
+    "onera_m6": lambda d: step_file(d, 11),
+}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--exe", required=True)
+    parser.add_argument("--exit", type=int, default=0)
+    parser.add_argument("--stderr-has", action="append", default=[])
+    parser.add_argument("--stderr-is")
+    parser.add_argument("--stdout-has", action="append", default=[])
+    parser.add_argument("--json", choices=sorted(JSON_CHECKS))
+    parser.add_argument("--write", action="append", default=[])
+    parser.add_argument("args", nargs=argparse.REMAINDER)
+    opts = parser.parse_args()
+    args = opts.args[1:] if opts.args[:1] == ["--"] else opts.args
+
+    for item in opts.write:
+        name, path = item.split(":", 1)
+        with open(path, "w") as f:
+            f.write(FIXTURES[name])
+
+    run = subprocess.run([opts.exe] + args, capture_output=True, text=True, timeout=300)
+    print("$ semimesh " + " ".join(args))
+    print("exit %d\n--- stdout\n%s--- stderr\n%s" % (run.returncode, run.stdout[:4000], run.stderr))
+    expect(run.returncode == opts.exit, "exit code %d, expected %d" % (run.returncode, opts.exit))
+    for text in opts.stderr_has:
+        expect(text in run.stderr, "stderr lacks %r" % text)
+    if opts.stderr_is is not None:
+        expect(run.stderr == opts.stderr_is + "\n", "stderr is %r, expected exactly %r" % (run.stderr, opts.stderr_is))
+    if opts.exit != 0:
+        lines = run.stderr.splitlines()
+        expect(len(lines) == 1 and lines[0].startswith("semimesh: error: "),
+               "bad input must print one line starting 'semimesh: error: '")
+        expect(run.stdout == "", "nothing on stdout on error")
+    for text in opts.stdout_has:
+        expect(text in run.stdout, "stdout lacks %r" % text)
+    if opts.json:
+        try:
+            doc = json.loads(run.stdout)
+        except ValueError as e:
+            fail("stdout is not one JSON document: %s" % e)
+        expect(isinstance(doc, dict), "the JSON document must be an object")
+        JSON_CHECKS[opts.json](doc)
+    print("cli_check: ok")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,144 @@
+// The models the conformance suite runs on: one type per model, each saying how to load it and
+// what is known about it (closedness, where the fluid is, analytic values to compare with).
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+#ifdef SEMIMESH_HAVE_OCC
+#include "semimesh/occ/occ_backend.hpp"
+#endif
+#ifdef SEMIMESH_HAVE_VENDOR_FAKE
+#include "semimesh/vendor/vendor_backend.hpp"
+#endif
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace conformance {
+
+namespace cad = semimesh::cad;
+
+struct Expectations {
+  /// Watertight: every curve bounds two surfaces, once forward and once reversed.
+  bool closed = true;
+  /// The model encloses the fluid (far-field box): fluid points have winding number -1; else the
+  /// fluid is outside a body and has winding number 0.
+  bool fluid_encloses = true;
+  /// Leading-edge radius of the sections, when known; the leading edge must then be the z axis
+  /// (unswept, x = y = 0) and the surface on its upper side be named "upper".
+  std::optional<double> le_radius;
+  double le_radius_tolerance = 1e-9;  ///< relative
+  /// Faces whose fluid side is checked by the winding number (0: all). That integral calls the
+  /// trim test thousands of times, ~0.2 ms each on OCC's B-spline-trimmed faces; the other faces
+  /// follow from the loop-orientation test.
+  int winding_surfaces = 0;
+  /// Why the closedness checks do not apply (when closed is false).
+  std::string open_reason;
+};
+
+inline std::string testdata(const std::string& file) { return std::string(SEMIMESH_TESTDATA_DIR) + "/cad/" + file; }
+
+/// Empty when the file exists, else the reason to skip.
+inline std::string missing(const std::string& path) {
+  return std::filesystem::exists(path) ? "" : "test CAD file " + path + " not found (see shared/testdata/cad/README.md)";
+}
+
+struct NacaDefault {
+  static constexpr const char* kName = "naca default (0012, blunt TE, box)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() { return semimesh::mock_cad::load_naca(cad::Source{}); }
+  static Expectations expect() {
+    Expectations e;
+    // NACA 4-digit: y_t = 5t(0.2969 sqrt(x) + ...) ~ sqrt(2 r x) near the LE, so
+    // r = (5 * 0.2969 t)^2 / 2 = 1.1019 t^2 c (Abbott & von Doenhoff 1959, sec. 6.4).
+    e.le_radius = 0.5 * std::pow(5 * 0.2969 * 0.12, 2);
+    return e;
+  }
+};
+
+struct NacaBluntNoBox {
+  static constexpr const char* kName = "naca 0015 blunt TE, no box";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(
+        cad::Source{"", {{"naca.code", "0015"}, {"naca.te", "blunt"}, {"naca.farfield", "false"}, {"naca.chord", "2"}}});
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.closed = false;
+    e.fluid_encloses = false;
+    e.open_reason = "without the wall the root section is an open boundary";
+    e.le_radius = 0.5 * std::pow(5 * 0.2969 * 0.15, 2) * 2.0;
+    return e;
+  }
+};
+
+struct NacaCamberedTaperedSweptSharp {
+  static constexpr const char* kName = "naca 2412 sharp TE, taper 0.5, sweep 25 deg";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{
+        "", {{"naca.code", "2412"}, {"naca.te", "sharp"}, {"naca.taper", "0.5"}, {"naca.sweep", "25"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return {}; }
+};
+
+#ifdef SEMIMESH_HAVE_OCC
+struct OccNaca {
+  static constexpr const char* kName = "occ B-spline NACA 0012 wing";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() { return semimesh::occ::load_occ(cad::Source{}); }
+  static Expectations expect() {
+    Expectations e;
+    e.le_radius = NacaDefault::expect().le_radius;
+    e.le_radius_tolerance = 1e-2;  // B-spline fit of the section: curvature is approximate
+    e.winding_surfaces = 2;
+    return e;
+  }
+};
+
+struct OccStepNektarWing {
+  static constexpr const char* kName = "occ STEP nektar_3d_bl_wing_naca0012";
+  static std::string path() { return testdata("nektar_3d_bl_wing_naca0012.stp"); }
+  static std::string skip_reason() { return missing(path()); }
+  static std::unique_ptr<cad::Model> load() { return semimesh::occ::load_occ(cad::Source{path(), {}}); }
+  static Expectations expect() {
+    Expectations e;
+    e.winding_surfaces = 2;
+    return e;
+  }
+};
+
+struct OccStepOneraM6 {
+  static constexpr const char* kName = "occ STEP onera_m6_sharp_te";
+  static std::string path() { return testdata("onera_m6_sharp_te.stp"); }
+  static std::string skip_reason() { return missing(path()); }
+  static std::unique_ptr<cad::Model> load() { return semimesh::occ::load_occ(cad::Source{path(), {}}); }
+  static Expectations expect() {
+    Expectations e;
+    e.fluid_encloses = false;  // one closed solid: the fluid is outside it
+    e.winding_surfaces = 2;
+    return e;
+  }
+};
+#endif
+
+#ifdef SEMIMESH_HAVE_VENDOR_FAKE
+struct VendorFake {
+  static constexpr const char* kName = "vendor adapter over the fake kernel (NACA 0012)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::vendor::load_vendor(cad::Source{"naca:naca.code=0012;naca.span=2", {}});
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.le_radius = NacaDefault::expect().le_radius;
+    return e;
+  }
+};
+#endif
+
+}  // namespace conformance

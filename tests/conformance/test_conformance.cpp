@@ -1,0 +1,347 @@
+// The backend conformance suite: every check of the cadapi contract (DESIGN.md section 3) on
+// every model of fixtures.hpp. A check that cannot apply to a model is skipped with the reason.
+#include "fixtures.hpp"
+#include "sampling.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+
+namespace conformance {
+namespace {
+
+template <class F>
+class Conformance : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    skip_ = F::skip_reason();
+    if (!skip_.empty()) return;
+    try {
+      model_ = F::load();
+    } catch (const std::exception& e) {
+      load_error_ = e.what();
+    }
+  }
+  static void TearDownTestSuite() { model_.reset(); }
+  void SetUp() override {
+    if (!skip_.empty()) GTEST_SKIP() << F::kName << ": " << skip_;
+    ASSERT_TRUE(model_) << F::kName << " failed to load: " << load_error_;
+  }
+
+  const cad::Model& model() const { return *model_; }
+  static Expectations expect() { return F::expect(); }
+  double diagonal() const { return model_->bbox().diagonal(); }
+
+ private:
+  static inline std::unique_ptr<cad::Model> model_;
+  static inline std::string skip_;
+  static inline std::string load_error_;
+};
+
+using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp
+#ifdef SEMIMESH_HAVE_OCC
+                                ,
+                                OccNaca, OccStepNektarWing, OccStepOneraM6
+#endif
+#ifdef SEMIMESH_HAVE_VENDOR_FAKE
+                                ,
+                                VendorFake
+#endif
+                                >;
+
+struct ModelNames {
+  template <class F>
+  static std::string GetName(int) {
+    std::string name = F::kName, out;
+    for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return out;
+  }
+};
+
+TYPED_TEST_SUITE(Conformance, Models, ModelNames);
+
+// Central differences of P give dP/dt; of dP/dt give d2P/dt2. Tolerances relative to the size of
+// the derivatives: 1e-5 for first, 1e-3 for second derivatives (spline knots limit the latter);
+// a wrong formula is off by O(1).
+TYPED_TEST(Conformance, CurveDerivativesMatchFiniteDifferences) {
+  const cad::Model& m = this->model();
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const cad::Curve& curve = m.curve(c);
+    const auto range = curve.bounds();
+    const double h = 1e-4 * range.length();
+    for (int k = 0; k < 9; ++k) {
+      const double t = range.lo + range.length() * (k + 0.618) / 10.0;  // off the usual knots
+      const auto d = curve.derivatives(t), minus = curve.derivatives(t - h), plus = curve.derivatives(t + h);
+      const Vec3 d1 = (plus.p - minus.p) / (2 * h), d2 = (plus.d1 - minus.d1) / (2 * h);
+      const double scale1 = d.d1.norm() + this->diagonal() * 1e-6 / range.length();
+      const double scale2 = d.d2.norm() + d.d1.norm() / range.length();
+      EXPECT_LE((d1 - d.d1).norm(), 1e-5 * scale1) << "curve " << c << " '" << curve.name() << "' dC/dt at t = " << t;
+      EXPECT_LE((d2 - d.d2).norm(), 1e-3 * scale2) << "curve " << c << " '" << curve.name() << "' d2C/dt2 at t = " << t;
+    }
+  }
+}
+
+TYPED_TEST(Conformance, SurfaceDerivativesMatchFiniteDifferences) {
+  const cad::Model& m = this->model();
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    const auto box = surface.bounds();
+    const double hu = 1e-4 * box[0].length(), hv = 1e-4 * box[1].length();
+    const Vec2 eu(hu, 0), ev(0, hv);
+    for (const Vec2& uv : inside_samples(surface, 5, 0.02, 0.3819)) {  // off the usual knots
+      const auto d = surface.derivatives(uv);
+      const auto um = surface.derivatives(uv - eu), up = surface.derivatives(uv + eu);
+      const auto vm = surface.derivatives(uv - ev), vp = surface.derivatives(uv + ev);
+      const std::string where = "surface " + std::to_string(s) + " '" + surface.name() + "' at (" +
+                                std::to_string(uv.x()) + ", " + std::to_string(uv.y()) + ")";
+      const double s1 = d.du.norm() * box[0].length() + d.dv.norm() * box[1].length() + 1e-6 * this->diagonal();
+      EXPECT_LE(((up.p - um.p) / (2 * hu) - d.du).norm() * box[0].length(), 1e-5 * s1) << where << " dS/du";
+      EXPECT_LE(((vp.p - vm.p) / (2 * hv) - d.dv).norm() * box[1].length(), 1e-5 * s1) << where << " dS/dv";
+      const double s2 = s1 + d.duu.norm() * std::pow(box[0].length(), 2) + d.dvv.norm() * std::pow(box[1].length(), 2) +
+                        d.duv.norm() * box[0].length() * box[1].length();
+      const double lu2 = std::pow(box[0].length(), 2), lv2 = std::pow(box[1].length(), 2), luv = box[0].length() * box[1].length();
+      EXPECT_LE(((up.du - um.du) / (2 * hu) - d.duu).norm() * lu2, 1e-3 * s2) << where << " d2S/du2";
+      EXPECT_LE(((vp.dv - vm.dv) / (2 * hv) - d.dvv).norm() * lv2, 1e-3 * s2) << where << " d2S/dv2";
+      EXPECT_LE(((vp.du - vm.du) / (2 * hv) - d.duv).norm() * luv, 1e-3 * s2) << where << " d2S/dudv (from dS/du)";
+      EXPECT_LE(((up.dv - um.dv) / (2 * hu) - d.duv).norm() * luv, 1e-3 * s2) << where << " d2S/dudv (from dS/dv)";
+    }
+  }
+}
+
+// Normals point into the fluid, checked in two steps that trust no normal.
+// 1. Every loop runs counter-clockwise around its face's normal (DESIGN.md section 3 / model.hpp):
+//    at a point of a bounding curve, stepping along n x T (T the tangent in the loop's direction)
+//    lands on the face, and stepping the other way leaves it. With each curve walked once each way
+//    by its two faces (AdjacencyAndOrientation), neighbouring faces' normals agree.
+// 2. The winding number of the model (a surface integral of the geometry, sampling.hpp) at
+//    q = P + eps n is the fluid's value (-1 when the model encloses the fluid, 0 around a body)
+//    and one more at P - eps n. A flipped face or a flipped model changes these values.
+TYPED_TEST(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
+  const cad::Model& m = this->model();
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    const auto box = surface.bounds();
+    const double size = std::hypot(box[0].length(), box[1].length());
+    for (const cad::Loop& loop : m.loops(s))
+      for (const cad::CurveUse& use : loop.uses) {
+        const cad::Curve& curve = m.curve(use.curve);
+        const auto range = curve.bounds();
+        bool seam = false;  // walked both ways by this same face: both sides are on it
+        for (const cad::SurfaceUse& other : m.surfaces_of_curve(use.curve))
+          seam = seam || (other.surface == s && other.forward != use.forward);
+        for (int k = 1; k <= 3; ++k) {
+          const double t = range.lo + range.length() * k / 4.0;
+          const Vec3 tangent = (use.forward ? 1.0 : -1.0) * curve.tangent(t);
+          const auto on = surface.project(curve.point(t));
+          const auto d = surface.derivatives(on.uv);
+          // n x T in parameter coordinates: solve [du dv] (a, b) = n x T in the least-squares sense.
+          Eigen::Matrix<double, 3, 2> jac;
+          jac << d.du, d.dv;
+          const Vec3 left = surface.normal(on.uv).cross(tangent);
+          Vec2 dir = jac.colPivHouseholderQr().solve(left);
+          dir.normalize();
+          // The face must lie on the left and not on the right at some small step (narrow faces
+          // need small steps); a reversed loop has it on the right at every step.
+          bool left_only = false;
+          for (double step = 1e-3 * size; step > 1e-9 * size && !left_only; step *= 0.5)
+            left_only = surface.contains(on.uv + step * dir) && (seam || !surface.contains(on.uv - step * dir));
+          EXPECT_TRUE(left_only) << "surface " << s << " '" << surface.name() << "', curve " << use.curve << " '"
+                                 << curve.name() << "' at t = " << t << ": the face is not on the loop's left only";
+        }
+      }
+  }
+}
+
+TYPED_TEST(Conformance, NormalsPointIntoTheFluid) {
+  if (!this->expect().closed) GTEST_SKIP() << "the winding number needs a closed model: " << this->expect().open_reason;
+  const cad::Model& m = this->model();
+  const double fluid = this->expect().fluid_encloses ? -1.0 : 0.0;
+  const double eps = 1e-4 * this->diagonal();
+  const int checked = this->expect().winding_surfaces > 0 ? std::min(this->expect().winding_surfaces, m.num_surfaces())
+                                                         : m.num_surfaces();
+  for (int s = 0; s < checked; ++s) {
+    const cad::Surface& surface = m.surface(s);
+    const Vec2 uv = central_sample(surface);
+    const Vec3 p = surface.point(uv), n = surface.normal(uv);
+    ASSERT_NEAR(n.norm(), 1.0, 1e-12) << "surface " << s;
+    EXPECT_NEAR(winding_number(m, p + eps * n), fluid, 0.2) << "surface " << s << " '" << surface.name() << "': P + eps n";
+    EXPECT_NEAR(winding_number(m, p - eps * n), fluid + 1.0, 0.2) << "surface " << s << " '" << surface.name() << "': P - eps n";
+    auto back = surface.project(p + eps * n, uv);
+    EXPECT_NEAR(back.distance, eps, 1e-6 * eps) << "surface " << s << " '" << surface.name() << "'";
+  }
+}
+
+// Points on each face (inside the trim) project back onto themselves: distance ~0, the same
+// point (parameters may differ across a periodic seam, so points are compared), inside = true.
+TYPED_TEST(Conformance, ProjectionOfPointsOnTheSurface) {
+  const cad::Model& m = this->model();
+  const double tol = 1e-9 * this->diagonal();
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    for (const Vec2& uv : inside_samples(surface, 4)) {
+      const Vec3 p = surface.point(uv);
+      auto r = surface.project(p);
+      EXPECT_LE(r.distance, tol) << "surface " << s << " '" << surface.name() << "'";
+      EXPECT_LE((r.point - p).norm(), tol) << "surface " << s << " '" << surface.name() << "'";
+      EXPECT_TRUE(r.inside) << "surface " << s << " '" << surface.name() << "'";
+    }
+  }
+}
+
+// P + d n projects back to P with distance d (d = 1e-3 of the model size, small against every
+// radius of curvature on the fluid side of these models).
+TYPED_TEST(Conformance, ProjectionOfPointsOffTheSurface) {
+  const cad::Model& m = this->model();
+  const double d = 1e-3 * this->diagonal(), tol = 1e-8 * this->diagonal();
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    for (const Vec2& uv : inside_samples(surface, 4, 0.05)) {
+      const Vec3 p = surface.point(uv), n = surface.normal(uv);
+      auto r = surface.project(p + d * n);
+      EXPECT_NEAR(r.distance, d, tol) << "surface " << s << " '" << surface.name() << "'";
+      EXPECT_LE((r.point - p).norm(), tol) << "surface " << s << " '" << surface.name() << "'";
+      EXPECT_TRUE(r.converged) << "surface " << s << " '" << surface.name() << "'";
+    }
+  }
+}
+
+// A guess near the answer converges to it; curves likewise.
+TYPED_TEST(Conformance, ProjectionWithInitialGuess) {
+  const cad::Model& m = this->model();
+  const double tol = 1e-8 * this->diagonal();
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    const auto box = surface.bounds();
+    const Vec2 nudge(0.01 * box[0].length(), -0.01 * box[1].length());
+    for (const Vec2& uv : inside_samples(surface, 3, 0.05)) {
+      const Vec3 p = surface.point(uv) + 1e-4 * this->diagonal() * surface.normal(uv);
+      auto r = surface.project(p, uv + nudge);
+      EXPECT_LE((r.point - surface.point(uv)).norm(), tol) << "surface " << s << " '" << surface.name() << "'";
+    }
+  }
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const cad::Curve& curve = m.curve(c);
+    const auto range = curve.bounds();
+    for (int k = 1; k < 4; ++k) {
+      const double t = range.lo + range.length() * k / 4.0;
+      const Vec3 p = curve.point(t);
+      auto free = curve.project(p);
+      auto guessed = curve.project(p, t + 0.02 * range.length());
+      EXPECT_LE(free.distance, tol) << "curve " << c << " '" << curve.name() << "' at t = " << t;
+      EXPECT_LE(guessed.distance, tol) << "curve " << c << " '" << curve.name() << "' at t = " << t << " with a guess";
+      EXPECT_NEAR(guessed.t, t, 1e-7 * range.length()) << "curve " << c << " '" << curve.name() << "'";
+    }
+  }
+}
+
+// Planar faces have zero curvature; where the LE radius is known, the upper skin's chordwise
+// curvature at the LE is its inverse (convex: positive against the fluid normal).
+TYPED_TEST(Conformance, CurvaturesOnKnownCases) {
+  const cad::Model& m = this->model();
+  int planes = 0;
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    if (!surface.is_planar()) continue;
+    ++planes;
+    for (const Vec2& uv : inside_samples(surface, 3)) {
+      auto k = surface.curvatures(uv);
+      EXPECT_NEAR(k.k_min, 0.0, 1e-9 / this->diagonal()) << "planar surface " << s << " '" << surface.name() << "'";
+      EXPECT_NEAR(k.k_max, 0.0, 1e-9 / this->diagonal()) << "planar surface " << s << " '" << surface.name() << "'";
+    }
+  }
+  const auto expect = this->expect();
+  if (!expect.le_radius) {
+    if (planes == 0) GTEST_SKIP() << "no planar face and no known leading-edge radius";
+    return;
+  }
+  auto upper = m.find_surface("upper");
+  ASSERT_TRUE(upper.has_value()) << "a model with a known LE radius must name its upper skin 'upper'";
+  const cad::Surface& surface = m.surface(*upper);
+  const double z = surface.point(central_sample(surface)).z();  // mid-span
+  auto le = surface.project(Vec3(0, 0, z));
+  ASSERT_LE(le.distance, 1e-7 * this->diagonal()) << "the leading edge is not on the z axis";
+  auto k = surface.curvatures(le.uv);
+  EXPECT_NEAR(1.0 / k.k_max, *expect.le_radius, expect.le_radius_tolerance * *expect.le_radius);
+  EXPECT_NEAR(k.k_min, 0.0, 1e-3 / *expect.le_radius);  // straight along the span
+}
+
+// Topology: loops are closed chains whose end points meet geometrically; each curve lies on the
+// surfaces it bounds; on a closed model each curve is used once forward and once reversed.
+TYPED_TEST(Conformance, AdjacencyAndOrientation) {
+  const cad::Model& m = this->model();
+  const double tol = std::max(1e3 * m.tolerance(), 1e-7 * this->diagonal());
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const cad::Curve& curve = m.curve(c);
+    const auto ends = m.curve_vertices(c);
+    const auto range = curve.bounds();
+    EXPECT_LE((curve.point(range.lo) - m.vertex(ends[0]).point).norm(), tol) << "curve " << c << " start vertex";
+    EXPECT_LE((curve.point(range.hi) - m.vertex(ends[1]).point).norm(), tol) << "curve " << c << " end vertex";
+    for (const cad::SurfaceUse& use : m.surfaces_of_curve(c)) {
+      const cad::Surface& surface = m.surface(use.surface);
+      for (int k = 0; k <= 4; ++k) {
+        auto r = surface.project(curve.point(range.lo + range.length() * k / 4.0));
+        EXPECT_LE(r.distance, tol) << "curve " << c << " '" << curve.name() << "' off surface " << use.surface << " '"
+                                   << surface.name() << "'";
+      }
+    }
+  }
+  for (int s = 0; s < m.num_surfaces(); ++s)
+    for (const cad::Loop& loop : m.loops(s))
+      for (size_t k = 0; k < loop.uses.size(); ++k) {
+        const auto& a = loop.uses[k];
+        const auto& b = loop.uses[(k + 1) % loop.uses.size()];
+        const auto ra = m.curve(a.curve).bounds(), rb = m.curve(b.curve).bounds();
+        const Vec3 end = m.curve(a.curve).point(a.forward ? ra.hi : ra.lo);
+        const Vec3 start = m.curve(b.curve).point(b.forward ? rb.lo : rb.hi);
+        EXPECT_LE((end - start).norm(), tol) << "surface " << s << ": curve " << a.curve << " then " << b.curve;
+      }
+
+  if (!this->expect().closed) {
+    EXPECT_FALSE(m.is_closed());
+    GTEST_SKIP() << "not a closed model: " << this->expect().open_reason;
+  }
+  EXPECT_TRUE(m.is_closed());
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const auto& uses = m.surfaces_of_curve(c);
+    ASSERT_EQ(uses.size(), 2u) << "curve " << c << " '" << m.curve(c).name() << "'";
+    EXPECT_NE(uses[0].forward, uses[1].forward) << "curve " << c << " '" << m.curve(c).name()
+                                                << "' must be walked once each way by its two surfaces";
+  }
+}
+
+// Simpson's error is O(h^4) for smooth |C'|, but O(h) where |C'| jumps (NACA camber lines have a
+// curvature jump at the maximum-camber station; STEP splines may have C0 knots), hence the fine
+// step and the 1e-5 tolerance; a wrong arc length is off by far more.
+TYPED_TEST(Conformance, ArcLengthMatchesSimpson) {
+  const cad::Model& m = this->model();
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const cad::Curve& curve = m.curve(c);
+    const auto range = curve.bounds();
+    const double expected = simpson_length(curve, range.lo, range.hi, 20000);
+    EXPECT_NEAR(curve.arc_length(range.lo, range.hi), expected, 1e-5 * expected) << "curve " << c << " '" << curve.name() << "'";
+    const double mid = 0.5 * (range.lo + range.hi);
+    const double half = simpson_length(curve, range.lo, mid, 10000);
+    EXPECT_NEAR(curve.arc_length(mid, range.lo), -half, 1e-5 * expected) << "curve " << c << " reversed half";
+    EXPECT_NEAR(curve.parameter_at_length(range.lo, half), mid, 1e-5 * range.length()) << "curve " << c;
+  }
+}
+
+TYPED_TEST(Conformance, BoundingBoxContainsAllSamples) {
+  const cad::Model& m = this->model();
+  const cad::BBox& box = m.bbox();
+  ASSERT_FALSE(box.empty());
+  const double tol = 1e-9 * this->diagonal();
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const auto range = m.curve(c).bounds();
+    for (int k = 0; k <= 50; ++k)
+      EXPECT_TRUE(box.contains(m.curve(c).point(range.lo + range.length() * k / 50.0), tol)) << "curve " << c;
+  }
+  for (int s = 0; s < m.num_surfaces(); ++s)
+    for (const Vec2& uv : inside_samples(m.surface(s), 9, 0.0))
+      EXPECT_TRUE(box.contains(m.surface(s).point(uv), tol)) << "surface " << s << " '" << m.surface(s).name() << "'";
+}
+
+}  // namespace
+}  // namespace conformance
