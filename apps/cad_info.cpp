@@ -1,0 +1,120 @@
+#include "cad_info.hpp"
+
+#include "surface_area.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace semimesh::app {
+namespace {
+
+// JSON string literal (RFC 8259 section 7: escape quote, backslash and control characters).
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') out += {'\\', static_cast<char>(c)};
+    else if (c < 0x20) out += fmt::format("\\u{:04x}", c);
+    else out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+std::string json_number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "null"; }
+
+struct SurfaceRow {
+  int id;
+  std::string name;
+  std::string kind;
+  TrimmedArea area;
+  int loops;
+};
+
+std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
+  std::vector<SurfaceRow> rows;
+  for (int s = 0; s < model.num_surfaces(); ++s) {
+    const cad::Surface& surface = model.surface(s);
+    rows.push_back(SurfaceRow{s, surface.name(), cad::to_string(surface.kind()), trimmed_area(surface),
+                              static_cast<int>(model.loops(s).size())});
+  }
+  return rows;
+}
+
+std::string bbox_json(const cad::BBox& b) {
+  if (b.empty()) return "null";
+  return fmt::format("[{},{},{},{},{},{}]", json_number(b.lo.x()), json_number(b.lo.y()), json_number(b.lo.z()),
+                     json_number(b.hi.x()), json_number(b.hi.y()), json_number(b.hi.z()));
+}
+
+std::string report_json(const std::string& backend, const cad::Model& model, const std::vector<SurfaceRow>& rows) {
+  std::string list;
+  for (const SurfaceRow& r : rows)
+    list += fmt::format("{}{{\"id\":{},\"name\":{},\"kind\":{},\"area\":{}}}", list.empty() ? "" : ",", r.id,
+                        json_string(r.name), json_string(r.kind), json_number(r.area.area));
+  return fmt::format(
+      "{{\"backend\":{},\"vertices\":{},\"curves\":{},\"surfaces\":{},\"bbox\":{},\"closed\":{},\"units\":{},"
+      "\"surface_list\":[{}]}}\n",
+      json_string(backend), model.num_vertices(), model.num_curves(), model.num_surfaces(), bbox_json(model.bbox()),
+      model.is_closed() ? "true" : "false", json_string(model.units()), list);
+}
+
+std::string report_table(const std::string& backend, const std::string& source, const cad::Model& model,
+                         const std::vector<SurfaceRow>& rows) {
+  std::string out;
+  out += fmt::format("source    {}\n", source.empty() ? "(generated)" : source);
+  out += fmt::format("backend   {}\n", backend);
+  out += fmt::format("units     {} (scale applied at load: {})\n", model.units(), model.scale_applied());
+  out += fmt::format("closed    {}\n", model.is_closed() ? "yes (every curve bounds two surfaces)" : "no");
+  const cad::BBox& b = model.bbox();
+  if (b.empty()) out += "bbox      (empty)\n";
+  else
+    out += fmt::format("bbox      [{:.6g}, {:.6g}, {:.6g}] .. [{:.6g}, {:.6g}, {:.6g}]\n", b.lo.x(), b.lo.y(), b.lo.z(),
+                       b.hi.x(), b.hi.y(), b.hi.z());
+  out += fmt::format("counts    {} vertices, {} curves, {} surfaces\n\n", model.num_vertices(), model.num_curves(),
+                     model.num_surfaces());
+
+  out += fmt::format("{:>4}  {:<16} {:<10} {:>14} {:>10} {:>5}\n", "id", "surface", "kind", "area", "+/-", "loops");
+  for (const SurfaceRow& r : rows)
+    out += fmt::format("{:>4}  {:<16} {:<10} {:>14.8g} {:>10.2g} {:>5}\n", r.id, r.name, r.kind, r.area.area,
+                       r.area.error_estimate, r.loops);
+
+  out += fmt::format("\n{:>4}  {:<16} {:<10} {:>14} {:>9}  {}\n", "id", "curve", "kind", "length", "vertices", "surfaces");
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const cad::Curve& curve = model.curve(c);
+    auto ends = model.curve_vertices(c);
+    std::string users;
+    for (const cad::SurfaceUse& u : model.surfaces_of_curve(c)) users += fmt::format("{}{}{}", users.empty() ? "" : " ", u.surface, u.forward ? "+" : "-");
+    out += fmt::format("{:>4}  {:<16} {:<10} {:>14.8g} {:>4}-{:<4}  {}\n", c, curve.name(), cad::to_string(curve.kind()),
+                       curve.length(), ends[0], ends[1], users);
+  }
+  return out;
+}
+
+}  // namespace
+
+cad::Params parse_params(const std::vector<std::string>& key_values) {
+  cad::Params params;
+  for (const std::string& kv : key_values) {
+    auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw cad::CadError(cad::CadError::Kind::BadParameter, "--param '" + kv + "': expected key=value, e.g. naca.code=0012");
+    params.set(kv.substr(0, eq), kv.substr(eq + 1));
+  }
+  return params;
+}
+
+std::string choose_backend(const cad::Registry& registry, const CadInfoOptions& options) {
+  if (!options.backend.empty()) return options.backend;
+  if (!options.source.empty()) return registry.backend_for_path(options.source);
+  return "naca";
+}
+
+void run_cad_info(const cad::Registry& registry, const CadInfoOptions& options, std::ostream& out) {
+  const std::string backend = choose_backend(registry, options);
+  cad::Source source{options.source, parse_params(options.params)};
+  std::unique_ptr<cad::Model> model = registry.load(backend, source);
+  std::vector<SurfaceRow> rows = surface_rows(*model);
+  out << (options.json ? report_json(backend, *model, rows) : report_table(backend, options.source, *model, rows));
+}
+
+}  // namespace semimesh::app

@@ -1,0 +1,27 @@
+// `semimesh run CONFIG [-o DIR] [--set key=value]... [--allow-invalid]`: the whole pipeline with a
+// line per stage, a summary table, the mesh files and report.json.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace semimesh::app {
+
+struct RunOptions {
+  std::string config;                  ///< TOML file
+  std::string output_directory;        ///< -o: overrides output.directory when set
+  std::vector<std::string> overrides;  ///< --set key=value
+  bool allow_invalid = false;
+};
+
+/// Declares the `run` subcommand and its options on `app`; `options` receives them when parsed.
+CLI::App* add_run_subcommand(CLI::App& app, RunOptions& options);
+
+/// Runs the pipeline. Progress and the summary go to `out`, errors and offenders to `err`.
+/// Returns the exit code: 0 ok, 1 bad input, 2 invalid mesh produced, 3 internal error.
+int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace semimesh::app

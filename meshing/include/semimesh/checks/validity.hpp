@@ -1,0 +1,35 @@
+// Certified validity of every element of a mesh (ho::certify_jacobian: Bezier bounds of det J with
+// subdivision) and the distribution of the scaled Jacobian.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+namespace semimesh::checks {
+
+struct InvalidElement {
+  std::size_t element = 0;
+  ho::Shape shape = ho::Shape::Tetrahedron;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the vertices
+  double scaled_jacobian = 0.0;
+  bool proven = true;  ///< false: not proven invalid, only not proven valid
+};
+
+struct ValidityResult {
+  std::size_t elements = 0;
+  std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided)
+  double min_scaled_jacobian = 1.0;
+  double median_scaled_jacobian = 1.0;
+  std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
+  bool ok() const { return invalid == 0; }
+};
+
+/// Certifies every element, on `threads` threads (0: the hardware's count). The verdict does not
+/// depend on the thread count.
+ValidityResult check_validity(const mesh::Mesh& mesh, int threads = 0, std::size_t max_listed = 100);
+
+}  // namespace semimesh::checks

@@ -1,0 +1,51 @@
+// Volume of a mesh three ways, to catch elements that overlap, leave gaps or are inverted:
+//  - element volume: sum over elements of the integral of det J (Gauss quadrature);
+//  - boundary volume: (1/3) of the flux of x through the boundary faces (divergence theorem),
+//    each face oriented outward through the element it belongs to;
+//  - expected volume: the far-field box minus the body, both from the surface meshes the volume
+//    mesh was built on (divergence theorem on the triangulated surfaces).
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+#include "semimesh/surface/surface_mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <vector>
+
+namespace semimesh::checks {
+
+struct MeshVolume {
+  double element_volume = 0.0;              ///< sum of the integrals of det J
+  double boundary_volume = 0.0;             ///< (1/3) flux of x through the boundary faces
+  std::size_t boundary_faces_without_element = 0;  ///< skipped (the conformity check names them)
+  double boundary_relative_error() const;   ///< |element - boundary| / |boundary|
+};
+
+/// Integrates every element and every boundary face of `mesh` (any order; quadrature exact for the
+/// polynomial det J of tets, prisms and hexes).
+MeshVolume mesh_volume(const mesh::Mesh& mesh);
+
+/// Volume of the solid bounded by `faces` (triangles and quads counter-clockwise seen from OUTSIDE
+/// the solid) and, where the surface is open, by the plane through `plane_point` with normal
+/// `plane_normal` (the wall under a wing). Exact for planar facets; quads are split into two triangles.
+double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& plane_point,
+                             const Eigen::Vector3d& plane_normal);
+
+/// The figures of the volume check.
+struct VolumeCheck {
+  MeshVolume mesh;
+  double box_volume = 0.0;    ///< volume enclosed by the far-field and wall surface meshes
+  double body_volume = 0.0;   ///< volume of the body from its surface meshes, closed by the wall plane
+  double expected_volume() const { return box_volume - body_volume; }
+  double expected_relative_error() const;   ///< |element - expected| / expected
+};
+
+/// Runs mesh_volume and computes the box and body volumes from the surface meshes: the fluid
+/// normals of the far-field faces point into the box, those of the body out of the solid; the wall
+/// surface mesh gives the closing plane (its first node and its mean normal).
+VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
+                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall);
+
+}  // namespace semimesh::checks

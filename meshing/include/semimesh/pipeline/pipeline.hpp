@@ -1,0 +1,85 @@
+// `semimesh run` as a library call: CAD -> size field -> surface meshes -> near-field shell ->
+// far field -> checks -> files. Each stage is a function of the previous one's value; only loading
+// the CAD model and writing the files touch the file system.
+#pragma once
+
+#include "semimesh/checks/conformity.hpp"
+#include "semimesh/checks/validity.hpp"
+#include "semimesh/checks/volume.hpp"
+#include "semimesh/mesh/mesh.hpp"
+#include "semimesh/pipeline/config.hpp"
+
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace semimesh::pipeline {
+
+/// A failure of the run, classified for the exit code: bad input (config, CAD, a thickness that
+/// cannot work, TetGen rejecting the boundary) or an internal error. The message names the stage.
+class RunError : public std::runtime_error {
+ public:
+  enum class Kind { BadInput, Internal };
+  RunError(Kind kind, std::string stage, const std::string& message)
+      : std::runtime_error(message), kind_(kind), stage_(std::move(stage)) {}
+  Kind kind() const { return kind_; }
+  const std::string& stage() const { return stage_; }
+
+ private:
+  Kind kind_;
+  std::string stage_;
+};
+
+struct StageTiming {
+  std::string name;
+  double seconds = 0.0;
+};
+
+/// Receives the start and end of every stage (the CLI prints a line per stage).
+class Progress {
+ public:
+  virtual ~Progress() = default;
+  virtual void stage_started(const std::string& /*name*/) {}
+  virtual void stage_finished(const StageTiming& /*timing*/) {}
+};
+
+/// The volume-check tolerances: the element volume must match the boundary flux to round-off and
+/// the box-minus-body volume of the (linear) surface meshes closely.
+constexpr double kBoundaryVolumeTolerance = 1e-9;
+constexpr double kExpectedVolumeTolerance = 1e-6;
+
+struct RunResult {
+  mesh::Mesh mesh{1};
+  std::vector<StageTiming> stages;
+  std::map<std::string, std::size_t> elements_by_type;  ///< "tetrahedron" -> count, ...
+  std::map<std::string, std::size_t> boundary_faces_by_group;
+  std::size_t surface_triangles = 0;
+  std::size_t surface_quads = 0;
+  double thickness_min = 0.0;
+  double thickness_max = 0.0;
+  checks::ConformityResult conformity;
+  checks::VolumeCheck volume;
+  checks::ValidityResult validity;
+  std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
+  std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
+  double peak_memory_mb = 0.0;             ///< peak resident set size of the process (getrusage)
+
+  bool volume_ok() const {
+    return volume.mesh.boundary_relative_error() <= kBoundaryVolumeTolerance &&
+           volume.expected_relative_error() <= kExpectedVolumeTolerance;
+  }
+  bool checks_passed() const { return conformity.ok() && validity.ok() && volume_ok(); }
+  double total_seconds() const;
+};
+
+/// Runs every stage. Throws RunError (kinds as above). When a check fails the mesh is not written
+/// (unless config.output.allow_invalid): the result says which check failed. Files are written
+/// atomically, report.json last; if one fails, the files this run had already written are removed.
+RunResult run(const Config& config, Progress& progress);
+
+/// Output file paths the configuration asks for, mesh formats in config order, then report.json.
+std::vector<std::string> output_paths(const OutputConfig& output);
+
+}  // namespace semimesh::pipeline

@@ -1,0 +1,194 @@
+#include "semimesh/checks/conformity.hpp"
+
+#include "face_nodes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <tuple>
+
+namespace semimesh::checks {
+namespace {
+
+using mesh::NodeId;
+
+// One use of a face: by an element (its local face `local`) or by a boundary face.
+struct Occurrence {
+  std::array<NodeId, 4> key{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};  // sorted vertices
+  std::uint32_t owner = 0;         // element or boundary face index
+  std::uint8_t local = 0;          // local face of the element
+  bool boundary = false;
+};
+
+// Sorts the first n (3 or 4) entries: a plain insertion sort (std::sort on such short ranges trips
+// GCC 12's -Warray-bounds).
+void sort_key(std::array<NodeId, 4>& key, int n) {
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && key[j] < key[j - 1]; --j) std::swap(key[j], key[j - 1]);
+}
+
+std::vector<Occurrence> collect_occurrences(const mesh::Mesh& mesh) {
+  std::vector<Occurrence> all;
+  all.reserve(mesh.elements().size() * 5 + mesh.boundary_faces().size());
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const mesh::Element& element = mesh.elements()[e];
+    const auto& faces = ho::faces(element.shape);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      Occurrence o;
+      for (std::size_t i = 0; i < faces[f].size(); ++i) o.key[i] = element.vertices[faces[f][i]];
+      sort_key(o.key, static_cast<int>(faces[f].size()));
+      o.owner = static_cast<std::uint32_t>(e);
+      o.local = static_cast<std::uint8_t>(f);
+      all.push_back(o);
+    }
+  }
+  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
+    const mesh::BoundaryFace& face = mesh.boundary_faces()[b];
+    const int n = ho::num_vertices(face.shape);
+    Occurrence o;
+    std::copy(face.vertices.begin(), face.vertices.begin() + n, o.key.begin());
+    sort_key(o.key, n);
+    o.owner = static_cast<std::uint32_t>(b);
+    o.boundary = true;
+    all.push_back(o);
+  }
+  return all;
+}
+
+int key_size(const std::array<NodeId, 4>& key) { return key[3] == mesh::kNoNode ? 3 : 4; }
+
+// Vertex ids of an element's local face in the element's (outward) order.
+std::vector<unsigned> element_face_cycle(const mesh::Mesh& mesh, const Occurrence& o) {
+  const mesh::Element& element = mesh.elements()[o.owner];
+  std::vector<unsigned> cycle;
+  for (int v : ho::faces(element.shape)[o.local]) cycle.push_back(element.vertices[v]);
+  return cycle;
+}
+
+// All node ids (vertices and high-order nodes) a user gives the face, sorted.
+std::vector<NodeId> face_node_set(const mesh::Mesh& mesh, const Occurrence& o) {
+  std::vector<NodeId> nodes;
+  if (o.boundary) {
+    nodes = mesh.boundary_face_nodes(o.owner);
+  } else {
+    const mesh::Element& element = mesh.elements()[o.owner];
+    const std::vector<NodeId> all = mesh.element_nodes(o.owner);
+    for (int i : detail::nodes_on_faces(element.shape, mesh.order(), mesh.node_set())[o.local]) nodes.push_back(all[i]);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+// Classifies the uses of one face; adds at most one problem per face (the most severe).
+void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses, ConformityResult& result) {
+  std::vector<const Occurrence*> elements, boundary;
+  for (const Occurrence* o : uses) (o->boundary ? boundary : elements).push_back(o);
+
+  auto report = [&](FaceProblem::Kind kind) {
+    FaceProblem p;
+    p.kind = kind;
+    const auto& key = uses.front()->key;
+    p.vertices.assign(key.begin(), key.begin() + key_size(key));
+    for (NodeId v : p.vertices) p.centroid += mesh.node(v);
+    p.centroid /= static_cast<double>(p.vertices.size());
+    for (const Occurrence* o : elements) p.elements.push_back(o->owner);
+    for (const Occurrence* o : boundary) p.boundary_faces.push_back(o->owner);
+    std::sort(p.elements.begin(), p.elements.end());
+    std::sort(p.boundary_faces.begin(), p.boundary_faces.end());
+    result.problems.push_back(std::move(p));
+  };
+  auto nodes_differ = [&]() {
+    if (mesh.order() == 1) return false;  // the nodes are the vertices, equal by construction of the key
+    const std::vector<NodeId> first = face_node_set(mesh, *uses.front());
+    return std::any_of(uses.begin() + 1, uses.end(), [&](const Occurrence* o) { return face_node_set(mesh, *o) != first; });
+  };
+
+  using Kind = FaceProblem::Kind;
+  if (elements.size() > 2) return report(Kind::SharedByMoreThanTwo);
+  if (elements.empty()) return report(Kind::BoundaryWithoutElement);
+  if (nodes_differ()) return report(Kind::DifferentNodes);
+  if (elements.size() == 2) {
+    if (detail::same_cycle(element_face_cycle(mesh, *elements[0]), element_face_cycle(mesh, *elements[1])))
+      return report(Kind::SameSide);
+    if (!boundary.empty()) return report(Kind::BoundaryOnInteriorFace);
+    ++result.interior_faces;
+    return;
+  }
+  if (boundary.empty()) return report(Kind::Unmatched);
+  if (boundary.size() > 1) return report(Kind::BoundaryRepeated);
+  ++result.boundary_faces;
+}
+
+void sort_problems(ConformityResult& result) {
+  std::sort(result.problems.begin(), result.problems.end(),
+            [](const FaceProblem& a, const FaceProblem& b) { return std::tie(a.kind, a.vertices) < std::tie(b.kind, b.vertices); });
+}
+
+}  // namespace
+
+std::string to_string(FaceProblem::Kind kind) {
+  switch (kind) {
+    case FaceProblem::Kind::SharedByMoreThanTwo: return "face shared by more than two elements";
+    case FaceProblem::Kind::SameSide: return "two elements on the same side of a face (overlap)";
+    case FaceProblem::Kind::DifferentNodes: return "users of a face give it different nodes";
+    case FaceProblem::Kind::Unmatched: return "face of one element that is not on the boundary (gap or hole)";
+    case FaceProblem::Kind::BoundaryOnInteriorFace: return "boundary face between two elements";
+    case FaceProblem::Kind::BoundaryRepeated: return "face is a boundary face more than once";
+    case FaceProblem::Kind::BoundaryWithoutElement: return "boundary face of no element";
+  }
+  return "unknown";
+}
+
+std::string FaceProblem::describe(const mesh::Mesh& mesh) const {
+  std::string text = fmt::format("{} at ({:.6g}, {:.6g}, {:.6g}), vertices [{}]", to_string(kind), centroid.x(),
+                                 centroid.y(), centroid.z(), fmt::join(vertices, " "));
+  if (!elements.empty()) text += fmt::format(", elements [{}]", fmt::join(elements, " "));
+  for (std::size_t b : boundary_faces)
+    text += fmt::format(", boundary face {} ({})", b, mesh.group_names()[mesh.boundary_faces()[b].group]);
+  return text;
+}
+
+ConformityResult check_conformity(const mesh::Mesh& mesh) {
+  std::vector<Occurrence> all = collect_occurrences(mesh);
+  std::sort(all.begin(), all.end(), [](const Occurrence& a, const Occurrence& b) {
+    return std::tie(a.key, a.boundary, a.owner, a.local) < std::tie(b.key, b.boundary, b.owner, b.local);
+  });
+  ConformityResult result;
+  std::vector<const Occurrence*> uses;
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t j = i;
+    uses.clear();
+    for (; j < all.size() && all[j].key == all[i].key; ++j) uses.push_back(&all[j]);
+    classify(mesh, uses, result);
+    i = j;
+  }
+  sort_problems(result);
+  return result;
+}
+
+ConformityResult check_conformity_brute_force(const mesh::Mesh& mesh) {
+  const std::vector<Occurrence> all = collect_occurrences(mesh);
+  std::vector<bool> grouped(all.size(), false);
+  ConformityResult result;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (grouped[i]) continue;
+    std::vector<const Occurrence*> uses{&all[i]};
+    for (std::size_t j = i + 1; j < all.size(); ++j) {
+      if (grouped[j] || key_size(all[j].key) != key_size(all[i].key)) continue;
+      // Same face when every vertex of one is a vertex of the other (no sorting involved).
+      const int n = key_size(all[i].key);
+      bool same = true;
+      for (int a = 0; a < n && same; ++a)
+        same = std::find(all[j].key.begin(), all[j].key.begin() + n, all[i].key[a]) != all[j].key.begin() + n;
+      if (same) {
+        grouped[j] = true;
+        uses.push_back(&all[j]);
+      }
+    }
+    classify(mesh, uses, result);
+  }
+  sort_problems(result);
+  return result;
+}
+
+}  // namespace semimesh::checks

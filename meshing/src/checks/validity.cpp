@@ -1,0 +1,58 @@
+#include "semimesh/checks/validity.hpp"
+
+#include "semimesh/ho/quality.hpp"
+
+#include <algorithm>
+#include <thread>
+
+namespace semimesh::checks {
+
+ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t max_listed) {
+  const std::size_t n = mesh.elements().size();
+  std::vector<double> scaled(n);
+  std::vector<char> valid(n), proven(n);
+
+  auto certify_range = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e) {
+      const ho::ElementQuality q =
+          ho::element_quality(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e));
+      scaled[e] = q.scaled_jacobian;
+      valid[e] = q.bounds.valid;
+      proven[e] = q.bounds.proven;
+    }
+  };
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(threads > 0 ? threads : std::thread::hardware_concurrency(), n / 1000 + 1));
+  std::vector<std::thread> pool;
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(certify_range, n * w / workers, n * (w + 1) / workers);
+  certify_range(0, n / workers);
+  for (std::thread& t : pool) t.join();
+
+  ValidityResult result;
+  result.elements = n;
+  for (std::size_t e = 0; e < n; ++e) {
+    if (valid[e]) continue;
+    ++result.invalid;
+    InvalidElement bad;
+    bad.element = e;
+    bad.shape = mesh.elements()[e].shape;
+    const int nv = ho::num_vertices(bad.shape);
+    for (int v = 0; v < nv; ++v) bad.centroid += mesh.node(mesh.elements()[e].vertices[v]);
+    bad.centroid /= nv;
+    bad.scaled_jacobian = scaled[e];
+    bad.proven = proven[e];
+    result.worst.push_back(bad);
+  }
+  std::stable_sort(result.worst.begin(), result.worst.end(),
+                   [](const InvalidElement& a, const InvalidElement& b) { return a.scaled_jacobian < b.scaled_jacobian; });
+  if (result.worst.size() > max_listed) result.worst.resize(max_listed);
+
+  if (n > 0) {
+    result.min_scaled_jacobian = *std::min_element(scaled.begin(), scaled.end());
+    std::nth_element(scaled.begin(), scaled.begin() + n / 2, scaled.end());
+    result.median_scaled_jacobian = scaled[n / 2];
+  }
+  return result;
+}
+
+}  // namespace semimesh::checks

@@ -1,0 +1,169 @@
+#include "semimesh/checks/volume.hpp"
+
+#include "quadrature.hpp"
+
+#include "semimesh/ho/basis.hpp"
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace semimesh::checks {
+namespace {
+
+// Quadrature points pulled into one shape's reference element with its basis derivatives there.
+struct ShapeRule {
+  Eigen::VectorXd weights;                   // [q]
+  Eigen::MatrixXd values;                    // (q, nodes)
+  std::array<Eigen::MatrixXd, 3> gradients;  // 3 x (q, nodes)
+};
+
+// The same on each local face: reference tangents t1, t2 with (t1 x t2) pointing out of the element.
+struct FaceRule {
+  ShapeRule rule;
+  Eigen::Vector3d t1, t2;
+};
+
+ShapeRule pull(const ho::LagrangeBasis& basis, const detail::QuadratureRule& q) {
+  return ShapeRule{q.weights, basis.values(q.points), basis.gradients(q.points)};
+}
+
+// Points per direction: det J of an order-P element has degree <= 3P per variable; the collapsed
+// maps add up to two more.
+int points_per_direction(int order) { return (3 * order + 2) / 2 + 1; }
+
+class RuleCache {
+ public:
+  RuleCache(int order, ho::NodeSet set) : order_(order), set_(set) {}
+
+  const ShapeRule& volume(ho::Shape shape) {
+    auto it = volume_.find(shape);
+    if (it == volume_.end()) {
+      ho::LagrangeBasis basis(shape, order_, set_);
+      it = volume_.emplace(shape, pull(basis, detail::volume_rule(shape, points_per_direction(order_)))).first;
+    }
+    return it->second;
+  }
+
+  const FaceRule& face(ho::Shape shape, int local) {
+    auto key = std::make_pair(shape, local);
+    auto it = face_.find(key);
+    if (it == face_.end()) {
+      ho::LagrangeBasis basis(shape, order_, set_);
+      const Eigen::MatrixX3d vertices = ho::reference_vertices(shape);
+      const std::vector<int>& f = ho::faces(shape)[local];
+      const Eigen::Vector3d r0 = vertices.row(f[0]);
+      // Triangle r0 + s (r1 - r0) + t (r2 - r0) on the unit triangle; quad faces are reference
+      // parallelograms r0 + s (r1 - r0) + t (r3 - r0) on the unit square.
+      const bool triangle = f.size() == 3;
+      const Eigen::Vector3d t1 = Eigen::Vector3d(vertices.row(f[1])) - r0;
+      const Eigen::Vector3d t2 = Eigen::Vector3d(vertices.row(f[triangle ? 2 : 3])) - r0;
+      const int n = points_per_direction(order_);
+      detail::QuadratureRule q = triangle ? detail::unit_triangle_rule(n) : detail::unit_square_rule(n);
+      Eigen::MatrixX3d points(q.points.rows(), 3);
+      for (int i = 0; i < q.points.rows(); ++i) points.row(i) = (r0 + q.points(i, 0) * t1 + q.points(i, 1) * t2).transpose();
+      q.points = points;
+      it = face_.emplace(key, FaceRule{pull(basis, q), t1, t2}).first;
+    }
+    return it->second;
+  }
+
+ private:
+  int order_;
+  ho::NodeSet set_;
+  std::map<ho::Shape, ShapeRule> volume_;
+  std::map<std::pair<ho::Shape, int>, FaceRule> face_;
+};
+
+Eigen::Matrix3d jacobian_at(const ShapeRule& rule, int q, const Eigen::MatrixX3d& x) {
+  Eigen::Matrix3d j;
+  for (int k = 0; k < 3; ++k) j.col(k) = (rule.gradients[k].row(q) * x).transpose();
+  return j;
+}
+
+}  // namespace
+
+double MeshVolume::boundary_relative_error() const {
+  return std::abs(element_volume - boundary_volume) / std::max(std::abs(boundary_volume), 1e-300);
+}
+
+double VolumeCheck::expected_relative_error() const {
+  return std::abs(mesh.element_volume - expected_volume()) / std::max(std::abs(expected_volume()), 1e-300);
+}
+
+MeshVolume mesh_volume(const mesh::Mesh& mesh) {
+  RuleCache rules(mesh.order(), mesh.node_set());
+  MeshVolume result;
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const ShapeRule& rule = rules.volume(mesh.elements()[e].shape);
+    const Eigen::MatrixX3d x = mesh.element_coordinates(e);
+    for (int q = 0; q < rule.weights.size(); ++q) result.element_volume += rule.weights(q) * jacobian_at(rule, q, x).determinant();
+  }
+
+  // Owner of each face entity: element * 8 + local face (the last one seen; a boundary face has one).
+  std::vector<long> owner(mesh.faces().size(), -1);
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const mesh::Element& element = mesh.elements()[e];
+    for (std::size_t f = 0; f < ho::faces(element.shape).size(); ++f) owner[element.faces[f]] = static_cast<long>(e * 8 + f);
+  }
+  double flux = 0.0;
+  for (const mesh::BoundaryFace& face : mesh.boundary_faces()) {
+    if (owner[face.face] < 0) {
+      ++result.boundary_faces_without_element;
+      continue;
+    }
+    const std::size_t e = static_cast<std::size_t>(owner[face.face] / 8);
+    const int local = static_cast<int>(owner[face.face] % 8);
+    const FaceRule& rule = rules.face(mesh.elements()[e].shape, local);
+    const Eigen::MatrixX3d x = mesh.element_coordinates(e);
+    for (int q = 0; q < rule.rule.weights.size(); ++q) {
+      const Eigen::Matrix3d j = jacobian_at(rule.rule, q, x);
+      const Eigen::Vector3d point = (rule.rule.values.row(q) * x).transpose();
+      flux += rule.rule.weights(q) * point.dot((j * rule.t1).cross(j * rule.t2));
+    }
+  }
+  result.boundary_volume = flux / 3.0;
+  return result;
+}
+
+double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& plane_point,
+                             const Eigen::Vector3d& plane_normal) {
+  // Divergence theorem with F = ((x - p) . n) n: div F = 1 and F . n = 0 on the plane, so the plane
+  // part of the boundary adds nothing. On a flat triangle F . N is linear: its integral is the
+  // value at the centroid times the area.
+  const Eigen::Vector3d n = plane_normal.normalized();
+  double volume = 0.0;
+  auto add = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    const Eigen::Vector3d area = 0.5 * (b - a).cross(c - a);
+    volume += n.dot(area) * n.dot((a + b + c) / 3.0 - plane_point);
+  };
+  for (const surface::SurfaceMesh* mesh : faces) {
+    for (const auto& t : mesh->triangles) add(mesh->points[t[0]], mesh->points[t[1]], mesh->points[t[2]]);
+    for (const auto& q : mesh->quads) {
+      add(mesh->points[q[0]], mesh->points[q[1]], mesh->points[q[2]]);
+      add(mesh->points[q[0]], mesh->points[q[2]], mesh->points[q[3]]);
+    }
+  }
+  return volume;
+}
+
+VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
+                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall) {
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (const auto& t : wall.triangles)
+    normal += (wall.points[t[1]] - wall.points[t[0]]).cross(wall.points[t[2]] - wall.points[t[0]]);
+  for (const auto& q : wall.quads)
+    normal += (wall.points[q[2]] - wall.points[q[0]]).cross(wall.points[q[3]] - wall.points[q[1]]);
+  const Eigen::Vector3d point = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
+
+  VolumeCheck result;
+  result.mesh = mesh_volume(mesh);
+  result.body_volume = volume_under_surfaces(body, point, normal);
+  // The far-field faces' normals point into the box: their flux is minus the box volume.
+  result.box_volume = -volume_under_surfaces(farfield, point, normal);
+  return result;
+}
+
+}  // namespace semimesh::checks

@@ -1,0 +1,106 @@
+#include "semimesh/pipeline/report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace semimesh::pipeline {
+namespace {
+
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20)
+          out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        else
+          out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// JSON has no infinity or NaN: such values become null.
+std::string json_number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
+
+template <typename Items, typename Format>
+std::string json_list(const Items& items, Format format) {
+  std::string out = "[";
+  bool first = true;
+  for (const auto& item : items) {
+    out += (first ? "" : ", ") + format(item);
+    first = false;
+  }
+  return out + "]";
+}
+
+std::string json_counts(const std::map<std::string, std::size_t>& counts) {
+  std::string out = "{";
+  for (const auto& [key, count] : counts) out += (out.size() > 1 ? ", " : "") + json_string(key) + ": " + std::to_string(count);
+  return out + "}";
+}
+
+}  // namespace
+
+std::string summary_table(const RunResult& r) {
+  std::string t;
+  t += fmt::format("{:<28} {:>12}\n", "elements (order " + std::to_string(r.mesh.order()) + ")", r.mesh.elements().size());
+  for (const auto& [type, count] : r.elements_by_type) t += fmt::format("  {:<26} {:>12}\n", type, count);
+  t += fmt::format("{:<28} {:>12}\n", "nodes", r.mesh.num_nodes());
+  for (const auto& [group, count] : r.boundary_faces_by_group) t += fmt::format("  boundary {:<17} {:>12}\n", group, count);
+  t += fmt::format("{:<28} {:>12}\n", "invalid elements", r.validity.invalid);
+  t += fmt::format("{:<28} {:>12.4f}\n", "min scaled Jacobian", r.validity.min_scaled_jacobian);
+  t += fmt::format("{:<28} {:>12.4f}\n", "median scaled Jacobian", r.validity.median_scaled_jacobian);
+  t += fmt::format("{:<28} {:>12}\n", "conformity problems", r.conformity.problems.size());
+  t += fmt::format("{:<28} {:>12.3e}\n", "volume error vs boundary", r.volume.mesh.boundary_relative_error());
+  t += fmt::format("{:<28} {:>12.3e}\n", "volume error vs box - body", r.volume.expected_relative_error());
+  t += fmt::format("{:<28} {:>12.4g}\n", "layer thickness min", r.thickness_min);
+  t += fmt::format("{:<28} {:>12.4g}\n", "layer thickness max", r.thickness_max);
+  for (const StageTiming& s : r.stages) t += fmt::format("  time {:<21} {:>10.3f} s\n", s.name, s.seconds);
+  t += fmt::format("{:<28} {:>10.3f} s\n", "time total", r.total_seconds());
+  t += fmt::format("{:<28} {:>9.1f} MB\n", "peak memory", r.peak_memory_mb);
+  for (const std::string& f : r.written_files) t += "wrote " + f + "\n";
+  return t;
+}
+
+std::string report_json(const RunResult& r, const Config& config) {
+  std::string j = "{\n";
+  j += fmt::format("  \"order\": {},\n", r.mesh.order());
+  j += fmt::format("  \"requested_order\": {},\n", config.highorder.order);
+  j += fmt::format("  \"nodes\": {},\n", r.mesh.num_nodes());
+  j += fmt::format("  \"elements\": {},\n", r.mesh.elements().size());
+  j += "  \"elements_by_type\": " + json_counts(r.elements_by_type) + ",\n";
+  j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
+  j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
+  j += fmt::format("  \"thickness_min\": {},\n  \"thickness_max\": {},\n", json_number(r.thickness_min),
+                   json_number(r.thickness_max));
+  j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
+  j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
+  j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));
+  j += fmt::format("  \"conformity_problems\": {},\n", r.conformity.problems.size());
+  j += fmt::format("  \"interior_faces\": {},\n  \"boundary_faces\": {},\n", r.conformity.interior_faces,
+                   r.conformity.boundary_faces);
+  j += fmt::format("  \"volume\": {{\"elements\": {}, \"boundary\": {}, \"box\": {}, \"body\": {}, "
+                   "\"error_vs_boundary\": {}, \"error_vs_box_minus_body\": {}}},\n",
+                   json_number(r.volume.mesh.element_volume), json_number(r.volume.mesh.boundary_volume),
+                   json_number(r.volume.box_volume), json_number(r.volume.body_volume),
+                   json_number(r.volume.mesh.boundary_relative_error()), json_number(r.volume.expected_relative_error()));
+  j += fmt::format("  \"checks_passed\": {},\n", r.checks_passed() ? "true" : "false");
+  j += "  \"stages\": " + json_list(r.stages, [](const StageTiming& s) {
+         return fmt::format("{{\"name\": {}, \"seconds\": {}}}", json_string(s.name), json_number(s.seconds));
+       }) + ",\n";
+  j += fmt::format("  \"total_seconds\": {},\n", json_number(r.total_seconds()));
+  j += fmt::format("  \"peak_memory_mb\": {},\n", json_number(r.peak_memory_mb));
+  j += "  \"warnings\": " + json_list(r.warnings, json_string) + ",\n";
+  j += "  \"files\": " + json_list(r.written_files, json_string) + "\n}\n";
+  return j;
+}
+
+}  // namespace semimesh::pipeline
