@@ -1,6 +1,8 @@
-# High order on meshes: CAD curving with spring optimisation, isoparametric layer splitting.
-# A separate target from semimesh_highorder because it needs the mesh model (semimesh_meshing links
-# semimesh_highorder) and the CAD interface.
+# High order on meshes: CAD curving with spring optimisation, isoparametric layer splitting, whole-mesh
+# certification and repair. A separate target from semimesh_highorder because it needs the mesh model
+# (semimesh_meshing links semimesh_highorder) and the CAD interface. The element-local passes run over
+# OpenMP threads (results independent of the thread count).
+find_package(OpenMP REQUIRED COMPONENTS CXX)
 add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/reference_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
@@ -9,9 +11,11 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/curve_mesh.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/curving/geometric_error.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/geometric_error.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/mesh_validity/certify_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/repair/repair_invalid.cpp)
 add_library(semimesh::ho_mesh ALIAS semimesh_ho_mesh)
 target_include_directories(semimesh_ho_mesh PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include
                                             PRIVATE ${CMAKE_CURRENT_LIST_DIR}/src)
 target_link_libraries(semimesh_ho_mesh PUBLIC semimesh_meshing semimesh_highorder semimesh_cadapi Eigen3::Eigen
-                                       PRIVATE semimesh_warnings)
+                                       PRIVATE OpenMP::OpenMP_CXX semimesh_warnings)

@@ -3,6 +3,7 @@
 #include "curving/cad_classification.hpp"
 #include "curving/harmonic_extension.hpp"
 #include "curving/spring_optimisation.hpp"
+#include "mesh_validity/parallel_for.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
@@ -24,15 +25,33 @@ class Curver {
   mesh::Mesh run(CurvingStats* stats);
 
  private:
+  /// New nodes of one edge or face, computed independently of the others (in parallel) and added
+  /// to the mesh afterwards in a fixed order.
+  struct PlacedNodes {
+    CadPlace::Kind place = CadPlace::None;
+    bool fallback = false;  // the spring optimisation kept its start positions
+    double moved = 0.0;     // largest distance from a straight-sided position to the placed one
+  };
+  struct EdgeNodes : PlacedNodes {
+    std::vector<Eigen::Vector3d> x;  // [P-1] from edge vertices[0] to vertices[1]
+    std::vector<CadAttachment> att;  // [P-1]
+  };
+  struct FaceNodes : PlacedNodes {
+    Eigen::MatrixXd x;               // (face nodes, 3) canonical order of the stored face
+    std::vector<CadAttachment> att;  // [face nodes]
+  };
+
+  EdgeNodes place_edge(std::size_t e, const std::vector<double>& fraction, bool on_boundary) const;
+  FaceNodes place_face(std::size_t f, bool on_boundary) const;
+  void note(const PlacedNodes& placed);
   void curve_edges(const std::vector<char>& on_boundary);
   void curve_faces(const std::vector<char>& on_boundary);
+  /// Canonical node ids of element e with kNoNode for its volume-interior nodes.
+  std::vector<NodeId> element_node_ids(std::size_t e) const;
   /// Canonical node ids of a 2D shape with these vertices, from the edge nodes already made and,
   /// when `face` >= 0, that face's interior nodes seen with orientation `code`.
   std::vector<NodeId> planar_nodes(Shape shape, const NodeId* vertices, long face, int code) const;
   NodeId edge_node(NodeId a, NodeId b, const mesh::NodeSlot& slot) const;
-  void note_projection(const Eigen::Vector3d& straight, const Eigen::Vector3d& placed) {
-    stats_.max_projection_distance = std::max(stats_.max_projection_distance, (placed - straight).norm());
-  }
 
   const mesh::Mesh& in_;
   const cad::Model& model_;
@@ -66,119 +85,171 @@ std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, lo
   return ids;
 }
 
+Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& fraction, bool on_boundary) const {
+  const int P = params_.order;
+  const NodeId a = in_.edges()[e].vertices[0], b = in_.edges()[e].vertices[1];
+  const Eigen::Vector3d xa = in_.node(a), xb = in_.node(b);
+  EdgeNodes out;
+  out.x.resize(P - 1);
+  out.att.resize(P - 1);
+  for (int i = 0; i < P - 1; ++i) out.x[i] = xa + fraction[i] * (xb - xa);
+  const CadPlace place =
+      on_boundary ? detail::classify(model_, {in_.cad_attachment(a), in_.cad_attachment(b)}, true, 0.5 * (xa + xb))
+                  : CadPlace{};
+  out.place = place.kind;
+  const bool springs = params_.placement == NodePlacement::Springs;
+  if (place.kind == CadPlace::Curve) {
+    // The node set's fractions of the parameter interval, or of the arc length (the spring chain's
+    // optimum on a curve).
+    const cad::Curve& c = model_.curve(place.id);
+    const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, false);
+    const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, true);
+    const double length = springs ? c.arc_length(ta, tb) : 0.0;
+    for (int i = 0; i < P - 1; ++i) {
+      const double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);
+      const Eigen::Vector3d p = c.point(t);
+      out.moved = std::max(out.moved, (p - out.x[i]).norm());
+      out.x[i] = p;
+      out.att[i] = {CadAttachment::Curve, place.id, t, 0.0};
+    }
+  } else if (place.kind == CadPlace::Surface) {
+    const cad::Surface& s = model_.surface(place.id);
+    const cad::Vec2 uva = detail::surface_parameter(model_, place.id, in_.cad_attachment(a), xa);
+    const cad::Vec2 uvb = detail::surface_parameter(model_, place.id, in_.cad_attachment(b), xb, &uva);
+    Eigen::MatrixX2d uv(P + 1, 2);
+    Eigen::MatrixX3d pts(P + 1, 3);
+    uv.row(0) = uva.transpose();
+    uv.row(1) = uvb.transpose();
+    pts.row(0) = xa.transpose();
+    pts.row(1) = xb.transpose();
+    for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
+    if (springs)
+      out.fallback = !detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts,
+                                                  params_.spring_iterations, params_.tolerance * (xb - xa).norm());
+    else
+      for (int i = 0; i < P - 1; ++i) pts.row(i + 2) = s.point(uv.row(i + 2).transpose()).transpose();
+    for (int i = 0; i < P - 1; ++i) {
+      out.moved = std::max(out.moved, (pts.row(i + 2).transpose() - out.x[i]).norm());
+      out.x[i] = pts.row(i + 2).transpose();
+      out.att[i] = {CadAttachment::Surface, place.id, uv(i + 2, 0), uv(i + 2, 1)};
+    }
+  }
+  return out;
+}
+
+void Curver::note(const PlacedNodes& placed) {
+  stats_.max_projection_distance = std::max(stats_.max_projection_distance, placed.moved);
+  stats_.optimisation_fallbacks += placed.fallback ? 1 : 0;
+}
+
 void Curver::curve_edges(const std::vector<char>& on_boundary) {
   const int P = params_.order;
   const Eigen::MatrixX3d seg = reference_nodes(Shape::Segment, P, params_.node_set);
   std::vector<double> fraction(P - 1);  // of the interior nodes, from vertex 0 to vertex 1
   for (int i = 0; i < P - 1; ++i) fraction[i] = 0.5 * (seg(i + 2, 0) + 1.0);
-  const double tol = params_.tolerance;
 
+  // Positions in parallel, then the nodes in edge order (ids independent of the thread count).
+  std::vector<EdgeNodes> placed(in_.edges().size());
+  detail::parallel_for(placed.size(), model_.thread_safe(),
+                       [&](std::size_t e) { placed[e] = place_edge(e, fraction, on_boundary[e] != 0); });
   edge_interior_.resize(in_.edges().size());
-  for (std::size_t e = 0; e < in_.edges().size(); ++e) {
-    const NodeId a = in_.edges()[e].vertices[0], b = in_.edges()[e].vertices[1];
-    const Eigen::Vector3d xa = in_.node(a), xb = in_.node(b);
-    std::vector<Eigen::Vector3d> x(P - 1);
-    std::vector<CadAttachment> att(P - 1);
-    for (int i = 0; i < P - 1; ++i) x[i] = xa + fraction[i] * (xb - xa);
-    const CadPlace place = on_boundary[e]
-                               ? detail::classify(model_, {in_.cad_attachment(a), in_.cad_attachment(b)}, true,
-                                                  0.5 * (xa + xb))
-                               : CadPlace{};
-    if (place.kind == CadPlace::Curve) {
-      // Arc-length placement at the node set's fractions: the spring chain's optimum on a curve.
-      const cad::Curve& c = model_.curve(place.id);
-      const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, false);
-      const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, true);
-      const double length = c.arc_length(ta, tb);
-      for (int i = 0; i < P - 1; ++i) {
-        const double t = c.parameter_at_length(ta, fraction[i] * length);
-        const Eigen::Vector3d p = c.point(t);
-        note_projection(x[i], p);
-        x[i] = p;
-        att[i] = {CadAttachment::Curve, place.id, t, 0.0};
-      }
-      ++stats_.edges_on_curves;
-    } else if (place.kind == CadPlace::Surface) {
-      const cad::Surface& s = model_.surface(place.id);
-      const cad::Vec2 uva = detail::surface_parameter(model_, place.id, in_.cad_attachment(a), xa);
-      const cad::Vec2 uvb = detail::surface_parameter(model_, place.id, in_.cad_attachment(b), xb, &uva);
-      Eigen::MatrixX2d uv(P + 1, 2);
-      Eigen::MatrixX3d pts(P + 1, 3);
-      uv.row(0) = uva.transpose();
-      uv.row(1) = uvb.transpose();
-      pts.row(0) = xa.transpose();
-      pts.row(1) = xb.transpose();
-      for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
-      if (!detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts, params_.spring_iterations,
-                                       tol * (xb - xa).norm()))
-        ++stats_.optimisation_fallbacks;
-      for (int i = 0; i < P - 1; ++i) {
-        note_projection(x[i], pts.row(i + 2).transpose());
-        x[i] = pts.row(i + 2).transpose();
-        att[i] = {CadAttachment::Surface, place.id, uv(i + 2, 0), uv(i + 2, 1)};
-      }
-      ++stats_.edges_on_surfaces;
-    }
-    for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(x[i], att[i]));
+  for (std::size_t e = 0; e < placed.size(); ++e) {
+    note(placed[e]);
+    stats_.edges_on_curves += placed[e].place == CadPlace::Curve ? 1 : 0;
+    stats_.edges_on_surfaces += placed[e].place == CadPlace::Surface ? 1 : 0;
+    for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(placed[e].x[i], placed[e].att[i]));
   }
 }
 
-void Curver::curve_faces(const std::vector<char>& on_boundary) {
+Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   const int P = params_.order;
-  face_interior_.resize(in_.faces().size());
-  for (std::size_t f = 0; f < in_.faces().size(); ++f) {
-    const mesh::Face& face = in_.faces()[f];
-    const Shape shape = face.num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
-    const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), -1, 0);
-    const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
-    if (ext.interior.empty()) continue;
-    const int n = static_cast<int>(ids.size());
-    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
-    for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
+  const mesh::Face& face = in_.faces()[f];
+  const Shape shape = face.num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+  const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
+  FaceNodes out;
+  if (ext.interior.empty()) return out;
+  const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), -1, 0);
+  const int n = static_cast<int>(ids.size());
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
+  for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
+  extend_harmonically(ext, X);
+  out.att.resize(n);
+
+  std::vector<CadAttachment> corner_att;
+  for (int v = 0; v < face.num_vertices; ++v) corner_att.push_back(in_.cad_attachment(face.vertices[v]));
+  const CadPlace place =
+      on_boundary ? detail::classify(model_, corner_att, false, X.colwise().mean().transpose()) : CadPlace{};
+  out.place = place.kind;
+  if (place.kind == CadPlace::Surface) {
     // The straight-sided face (its linear map), to measure how far curving moves the nodes.
     Eigen::MatrixX3d corners(face.num_vertices, 3);
     for (int v = 0; v < face.num_vertices; ++v) corners.row(v) = in_.node(face.vertices[v]).transpose();
     const Eigen::MatrixXd straight =
         LagrangeBasis(shape, 1, NodeSet::Equispaced).values(reference_nodes(shape, P, params_.node_set)) * corners;
-    extend_harmonically(ext, X);
-
-    std::vector<CadAttachment> att(n);
-    std::vector<CadAttachment> corner_att;
-    for (int v = 0; v < face.num_vertices; ++v) corner_att.push_back(in_.cad_attachment(face.vertices[v]));
-    const CadPlace place = on_boundary[f] ? detail::classify(model_, corner_att, false, X.colwise().mean().transpose())
-                                          : CadPlace{};
-    if (place.kind == CadPlace::Surface) {
-      const cad::Surface& s = model_.surface(place.id);
-      Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(n, 2);
-      for (int v = 0; v < face.num_vertices; ++v)
-        uv.row(v) = detail::surface_parameter(model_, place.id, corner_att[v], X.row(v).transpose()).transpose();
-      const cad::Vec2 guess = uv.topRows(face.num_vertices).colwise().mean().transpose();
-      for (int j : ext.boundary)
-        if (j >= face.num_vertices)
-          uv.row(j) =
-              detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
-                  .transpose();
-      extend_harmonically(ext, uv);
-      Eigen::MatrixX2d uv2 = uv;
-      Eigen::MatrixX3d pts = X;
-      double size = 0.0;
-      for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
-      if (!detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
-                                       params_.tolerance * size))
-        ++stats_.optimisation_fallbacks;
-      for (int j : ext.interior) {
-        X.row(j) = pts.row(j);
-        att[j] = {CadAttachment::Surface, place.id, uv2(j, 0), uv2(j, 1)};
-        note_projection(straight.row(j).transpose(), X.row(j).transpose());
-      }
-      ++stats_.faces_on_surfaces;
+    const cad::Surface& s = model_.surface(place.id);
+    Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(n, 2);
+    for (int v = 0; v < face.num_vertices; ++v)
+      uv.row(v) = detail::surface_parameter(model_, place.id, corner_att[v], X.row(v).transpose()).transpose();
+    const cad::Vec2 guess = uv.topRows(face.num_vertices).colwise().mean().transpose();
+    for (int j : ext.boundary)
+      if (j >= face.num_vertices)
+        uv.row(j) =
+            detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
+                .transpose();
+    extend_harmonically(ext, uv);
+    Eigen::MatrixX2d uv2 = uv;
+    Eigen::MatrixX3d pts = X;
+    double size = 0.0;
+    for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
+    if (params_.placement == NodePlacement::Springs)
+      out.fallback = !detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
+                                                  params_.tolerance * size);
+    else
+      for (int j : ext.interior) pts.row(j) = s.point(uv2.row(j).transpose()).transpose();
+    for (int j : ext.interior) {
+      X.row(j) = pts.row(j);
+      out.att[j] = {CadAttachment::Surface, place.id, uv2(j, 0), uv2(j, 1)};
+      out.moved = std::max(out.moved, (straight.row(j) - X.row(j)).norm());
     }
+  }
+  out.x = X;
+  return out;
+}
+
+void Curver::curve_faces(const std::vector<char>& on_boundary) {
+  const int P = params_.order;
+  std::vector<FaceNodes> placed(in_.faces().size());
+  detail::parallel_for(placed.size(), model_.thread_safe(),
+                       [&](std::size_t f) { placed[f] = place_face(f, on_boundary[f] != 0); });
+  face_interior_.resize(in_.faces().size());
+  for (std::size_t f = 0; f < placed.size(); ++f) {
+    const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+    const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
+    if (ext.interior.empty()) continue;
+    note(placed[f]);
+    stats_.faces_on_surfaces += placed[f].place == CadPlace::Surface ? 1 : 0;
     // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
     const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
     face_interior_[f].assign(ext.interior.size(), mesh::kNoNode);
     for (int j : ext.interior)
-      face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(X.row(j).transpose(), att[j]);
+      face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(placed[f].x.row(j).transpose(), placed[f].att[j]);
   }
+}
+
+std::vector<NodeId> Curver::element_node_ids(std::size_t e) const {
+  const mesh::Element& el = in_.elements()[e];
+  const mesh::NodeLayout& layout = mesh::node_layout(el.shape, params_.order);
+  std::vector<NodeId> ids(layout.slots.size(), mesh::kNoNode);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const mesh::NodeSlot& s = layout.slots[i];
+    switch (s.kind) {
+      case mesh::NodeSlot::Vertex: ids[i] = el.vertices[s.local]; break;
+      case mesh::NodeSlot::Edge: ids[i] = edge_interior_[el.edges[s.local]][s.slot[(el.edge_reversed >> s.local) & 1]]; break;
+      case mesh::NodeSlot::Face: ids[i] = face_interior_[el.faces[s.local]][s.slot[el.face_orientation[s.local]]]; break;
+      case mesh::NodeSlot::Interior: break;
+    }
+  }
+  return ids;
 }
 
 mesh::Mesh Curver::run(CurvingStats* stats) {
@@ -201,31 +272,25 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   curve_edges(edge_on_boundary);
   curve_faces(face_on_boundary);
 
+  // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order.
   const int P = params_.order;
-  std::vector<NodeId> ids;
-  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
-    const mesh::Element& el = in_.elements()[e];
-    const mesh::NodeLayout& layout = mesh::node_layout(el.shape, P);
-    ids.assign(layout.slots.size(), mesh::kNoNode);
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      const mesh::NodeSlot& s = layout.slots[i];
-      switch (s.kind) {
-        case mesh::NodeSlot::Vertex: ids[i] = el.vertices[s.local]; break;
-        case mesh::NodeSlot::Edge:
-          ids[i] = edge_interior_[el.edges[s.local]][s.slot[(el.edge_reversed >> s.local) & 1]];
-          break;
-        case mesh::NodeSlot::Face: ids[i] = face_interior_[el.faces[s.local]][s.slot[el.face_orientation[s.local]]]; break;
-        case mesh::NodeSlot::Interior: break;
-      }
-    }
-    const detail::HarmonicExtension& ext = detail::harmonic_extension(el.shape, P, params_.node_set);
-    if (!ext.interior.empty()) {
-      Eigen::MatrixXd X = Eigen::MatrixXd::Zero(ids.size(), 3);
-      for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
-      extend_harmonically(ext, X);
-      for (int j : ext.interior) ids[j] = out_.add_node(X.row(j).transpose());
-    }
-    out_.add_element(el.shape, ids);
+  const std::size_t num_elements = in_.elements().size();
+  std::vector<std::vector<NodeId>> element_ids(num_elements);
+  std::vector<Eigen::MatrixXd> interior(num_elements);  // [elements] (nodes, 3), interior rows filled
+  detail::parallel_for(num_elements, true, [&](std::size_t e) {
+    element_ids[e] = element_node_ids(e);
+    const detail::HarmonicExtension& ext = detail::harmonic_extension(in_.elements()[e].shape, P, params_.node_set);
+    if (ext.interior.empty()) return;
+    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(element_ids[e].size(), 3);
+    for (int j : ext.boundary) X.row(j) = out_.node(element_ids[e][j]).transpose();
+    extend_harmonically(ext, X);
+    interior[e] = std::move(X);
+  });
+  for (std::size_t e = 0; e < num_elements; ++e) {
+    const Shape shape = in_.elements()[e].shape;
+    for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
+      element_ids[e][j] = out_.add_node(interior[e].row(j).transpose());
+    out_.add_element(shape, element_ids[e]);
   }
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];

@@ -1,5 +1,6 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
+#include "mesh_validity/parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "semimesh/ho/basis.hpp"
 
@@ -43,12 +44,13 @@ struct ShapeData {
   std::vector<std::array<int, 2>> bottom_edges;
   LagrangeBasis basis;                      // order P, the mesh's node set
   LagrangeBasis linear;                     // order 1: weights of the bottom vertices
+  Eigen::MatrixXd uniform_values;           // (layers * nodes, nodes) basis at the sub-nodes for a constant ratio
 };
 
 ShapeData make_shape_data(Shape shape, int order, NodeSet set, int direction) {
   ShapeData data{shape, detail::lattice_points(shape, order), detail::lattice_index(shape, order),
                  reference_nodes(shape, order, set), {}, {}, {}, LagrangeBasis(shape, order, set),
-                 LagrangeBasis(shape, 1, NodeSet::Equispaced)};
+                 LagrangeBasis(shape, 1, NodeSet::Equispaced), {}};
   const int nv = num_vertices(shape);
   data.top_of.assign(nv, -1);
   for (int v = 0; v < nv; ++v) {
@@ -65,6 +67,9 @@ ShapeData make_shape_data(Shape shape, int order, NodeSet set, int direction) {
 
 using NodeKey = std::array<std::int64_t, 7>;
 
+// Split elements whose sub-node positions are held at once (bounds the memory of the parallel pass).
+constexpr std::size_t kSplitBlock = 1024;
+
 class Splitter {
  public:
   Splitter(const mesh::Mesh& in, int direction, const LayerDistribution& distribution, const RatioField& ratio,
@@ -76,8 +81,18 @@ class Splitter {
 
  private:
   const ShapeData& shape_data(Shape shape);
-  /// Sub-element node lists of one coarse element, bottom layer first.
-  std::vector<std::vector<NodeId>> split_element(std::size_t element);
+  /// Positions of the sub-element nodes of one coarse element and its first-layer figures; pure
+  /// (runs in parallel).
+  struct SplitGeometry {
+    Eigen::MatrixX3d x;                  // (layers * nodes, 3) layer k's canonical nodes at rows k * nodes
+    std::vector<double> first_heights;   // [bottom vertices] first layer height on its vertical edge
+    std::vector<double> ratios;          // [bottom vertices] achieved ratio on that edge
+  };
+  /// Layer interfaces at each bottom vertex of an element (calls the ratio field; serial).
+  std::vector<std::vector<double>> interfaces_of(std::size_t element);
+  SplitGeometry place_sub_nodes(std::size_t element, const std::vector<std::vector<double>>& z_of_vertex) const;
+  /// Sub-element node lists of one coarse element, bottom layer first; creates the new nodes.
+  std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
   NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
   double ratio_at(const Eigen::Vector3d& x, std::size_t element) const;
 
@@ -95,9 +110,21 @@ class Splitter {
 
 const ShapeData& Splitter::shape_data(Shape shape) {
   auto it = shapes_.find(shape);
-  if (it == shapes_.end())
-    it = shapes_.emplace(shape, make_shape_data(shape, in_.order(), in_.node_set(), direction_)).first;
-  return it->second;
+  if (it != shapes_.end()) return it->second;
+  ShapeData data = make_shape_data(shape, in_.order(), in_.node_set(), direction_);
+  if (!ratio_) {
+    const int N = distribution_.layers, nn = static_cast<int>(data.reference.rows());
+    const std::vector<double> z = layer_interfaces(N, distribution_.ratio);
+    Eigen::MatrixX3d q(N * nn, 3);
+    for (int k = 0; k < N; ++k)
+      for (int i = 0; i < nn; ++i) {
+        Eigen::RowVector3d r = data.reference.row(i);
+        r(direction_) = z[k] + 0.5 * (r(direction_) + 1.0) * (z[k + 1] - z[k]);
+        q.row(k * nn + i) = r;
+      }
+    data.uniform_values = data.basis.values(q);
+  }
+  return shapes_.emplace(shape, std::move(data)).first->second;
 }
 
 double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element) const {
@@ -116,17 +143,24 @@ NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
   return id;
 }
 
-std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element) {
+std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
   const mesh::Element& el = in_.elements()[element];
   const ShapeData& data = shape_data(el.shape);
-  const int P = in_.order(), N = distribution_.layers, d = direction_;
-  const std::vector<NodeId> coarse = in_.element_nodes(element);
+  std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
+  for (int v : data.bottom)
+    z_of_vertex[v] = layer_interfaces(distribution_.layers, ratio_at(in_.node(el.vertices[v]), element));
+  return z_of_vertex;
+}
+
+Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
+                                                  const std::vector<std::vector<double>>& z_of_vertex) const {
+  const mesh::Element& el = in_.elements()[element];
+  const ShapeData& data = shapes_.at(el.shape);
+  const int N = distribution_.layers, d = direction_;
   const Eigen::MatrixX3d X = in_.element_coordinates(element);
-  const int nn = static_cast<int>(coarse.size());
+  const int nn = static_cast<int>(X.rows());
 
   // Interfaces per bottom vertex, interpolated linearly in between (see RatioField).
-  std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
-  for (int v : data.bottom) z_of_vertex[v] = layer_interfaces(N, ratio_at(X.row(v).transpose(), element));
   const auto interface_at = [&](const Eigen::RowVector3d& q, int k) {
     Eigen::MatrixX3d foot = q;
     foot(0, d) = -1.0;
@@ -136,16 +170,48 @@ std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element) {
     return z;
   };
 
-  // Coarse reference points of every node of every sub-element, then chi at all of them at once.
-  Eigen::MatrixX3d q(N * nn, 3);
-  for (int k = 0; k < N; ++k)
-    for (int i = 0; i < nn; ++i) {
-      Eigen::RowVector3d r = data.reference.row(i);
-      const double z0 = interface_at(r, k), z1 = interface_at(r, k + 1);
-      r(d) = z0 + 0.5 * (r(d) + 1.0) * (z1 - z0);
-      q.row(k * nn + i) = r;
+  // Coarse reference points of every node of every sub-element, then chi at all of them at once. With
+  // a constant ratio they are the same for every element of a shape: the basis values are cached.
+  SplitGeometry out;
+  if (!ratio_) {
+    out.x = data.uniform_values * X;
+  } else {
+    Eigen::MatrixX3d q(N * nn, 3);
+    for (int k = 0; k < N; ++k)
+      for (int i = 0; i < nn; ++i) {
+        Eigen::RowVector3d r = data.reference.row(i);
+        const double z0 = interface_at(r, k), z1 = interface_at(r, k + 1);
+        r(d) = z0 + 0.5 * (r(d) + 1.0) * (z1 - z0);
+        q.row(k * nn + i) = r;
+      }
+    out.x = map_points(data.basis, X, q);
+  }
+
+  // Heights along the vertical edges, for the stats.
+  const Eigen::MatrixX3d corners = reference_vertices(el.shape);
+  for (int v : data.bottom) {
+    Eigen::MatrixX3d ends(4, 3);
+    const std::vector<double>& z = z_of_vertex[v];
+    const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
+    for (int j = 0; j < 4; ++j) {
+      ends.row(j) = corners.row(v);
+      ends(j, d) = zs[j];
     }
-  const Eigen::MatrixX3d x = map_points(data.basis, X, q);
+    const Eigen::MatrixX3d p = map_points(data.basis, X, ends);
+    const double first = (p.row(1) - p.row(0)).norm(), last = (p.row(3) - p.row(2)).norm();
+    out.first_heights.push_back(first);
+    out.ratios.push_back(N > 1 ? std::pow(last / first, 1.0 / (N - 1)) : 1.0);
+  }
+  return out;
+}
+
+std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
+  const mesh::Element& el = in_.elements()[element];
+  const ShapeData& data = shapes_.at(el.shape);
+  const int P = in_.order(), N = distribution_.layers, d = direction_;
+  const std::vector<NodeId> coarse = in_.element_nodes(element);
+  const int nn = static_cast<int>(coarse.size());
+  const Eigen::MatrixX3d& x = geometry.x;
 
   std::vector<std::vector<NodeId>> subs(N, std::vector<NodeId>(nn));
   for (int k = 0; k < N; ++k)
@@ -190,21 +256,10 @@ std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element) {
       subs[k][i] = node_for(key, x.row(k * nn + i).transpose());
     }
 
-  // Heights along the vertical edges, for the stats.
-  const Eigen::MatrixX3d corners = reference_vertices(el.shape);
-  for (int v : data.bottom) {
-    Eigen::MatrixX3d ends(4, 3);
-    const std::vector<double>& z = z_of_vertex[v];
-    const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
-    for (int j = 0; j < 4; ++j) {
-      ends.row(j) = corners.row(v);
-      ends(j, d) = zs[j];
-    }
-    const Eigen::MatrixX3d p = map_points(data.basis, X, ends);
-    const double first = (p.row(1) - p.row(0)).norm(), last = (p.row(3) - p.row(2)).norm();
-    height_min_ = std::min(height_min_, first);
-    height_max_ = std::max(height_max_, first);
-    ratio_sum_ += N > 1 ? std::pow(last / first, 1.0 / (N - 1)) : 1.0;
+  for (std::size_t j = 0; j < geometry.first_heights.size(); ++j) {
+    height_min_ = std::min(height_min_, geometry.first_heights[j]);
+    height_max_ = std::max(height_max_, geometry.first_heights[j]);
+    ratio_sum_ += geometry.ratios[j];
     ++vertical_edges_;
   }
   return subs;
@@ -234,16 +289,33 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
 
+  // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
+  // nodes' positions (the costly part) in parallel, then node creation and elements serially in a
+  // fixed order, so the output does not depend on the thread count.
+  std::vector<std::size_t> ascending;
+  for (std::size_t e = 0; e < in_.elements().size(); ++e)
+    if (position[e] >= 0) ascending.push_back(e);
   std::vector<std::vector<std::vector<NodeId>>> subs(split.size());
-  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
-    const Shape s = in_.elements()[e].shape;
-    if (position[e] < 0) {
-      out_.add_element(s, in_.element_nodes(e));
-      continue;
+  std::size_t next = 0;  // next input element to emit
+  const auto copy_until = [&](std::size_t end) {
+    for (; next < end; ++next) out_.add_element(in_.elements()[next].shape, in_.element_nodes(next));
+  };
+  for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
+    const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
+    std::vector<std::vector<std::vector<double>>> interfaces(count);
+    for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k]);
+    std::vector<SplitGeometry> geometry(count);
+    detail::parallel_for(count, true,
+                         [&](std::size_t k) { geometry[k] = place_sub_nodes(ascending[first + k], interfaces[k]); });
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t e = ascending[first + k];
+      copy_until(e);
+      subs[position[e]] = split_element(e, geometry[k]);
+      for (const auto& nodes : subs[position[e]]) out_.add_element(in_.elements()[e].shape, nodes);
+      next = e + 1;
     }
-    subs[position[e]] = split_element(e);
-    for (const auto& nodes : subs[position[e]]) out_.add_element(s, nodes);
   }
+  copy_until(in_.elements().size());
 
   // Boundary faces: split with the element whose side face they are, copied otherwise.
   std::map<std::uint32_t, std::size_t> side_face_owner;  // input face id -> split element

@@ -8,12 +8,16 @@
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
+#ifdef SEMIMESH_HAVE_OCC
+#include "semimesh/occ/occ_backend.hpp"
+#endif
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 namespace semimesh::ho {
 namespace {
@@ -35,21 +39,22 @@ const Wing& wing() {
 }
 
 // One layer of prisms of thickness `thickness` over a chordwise x spanwise structured triangle mesh
-// of `upper` (chordwise nodes clustered at both ends by a cosine law when `cluster`); body vertices
-// carry their CAD attachment, skin vertices none; the body triangles form the group "wing".
-mesh::Mesh upper_layer(int chordwise, int spanwise, double thickness, bool cluster) {
-  const cad::Model& model = *wing().model;
+// of the `upper` surface of `model` (chordwise nodes clustered at both ends by a cosine law when
+// `cluster`); body vertices carry their CAD attachment, skin vertices none; the body triangles form
+// the group "wing". Spanwise curves (LE, TE) are told from chordwise ones by their end points.
+mesh::Mesh upper_layer(const cad::Model& model, int chordwise, int spanwise, double thickness, bool cluster) {
+  const int upper = *model.find_surface("upper");
   std::vector<surface::CurveMesh> curves;
   for (int c = 0; c < model.num_curves(); ++c) {
-    const std::string& name = model.curve(c).name();
-    const bool spanwise_curve = name == "leading_edge" || name == "te_upper" || name == "te_lower";
+    const auto ends = model.curve_vertices(c);
+    const Eigen::Vector3d d = model.vertex(ends[1]).point - model.vertex(ends[0]).point;
+    const bool spanwise_curve = std::abs(d.z()) > std::abs(d.x());
     surface::CurveCount count{spanwise_curve ? spanwise : chordwise, {}};
     if (!spanwise_curve && cluster) count.bunching.law = surface::Bunching::Law::Cosine;
     curves.push_back(surface::discretise_curve(model, c, count));
   }
-  const surface::SurfaceMesh sm =
-      surface::mesh_surface_structured(model, wing().upper, surface::CurveMeshes(curves), true);
-  const cad::Surface& s = model.surface(wing().upper);
+  const surface::SurfaceMesh sm = surface::mesh_surface_structured(model, upper, surface::CurveMeshes(curves), true);
+  const cad::Surface& s = model.surface(upper);
   mesh::Mesh m(1);
   const int n = sm.num_nodes();
   for (int i = 0; i < n; ++i) {
@@ -59,7 +64,7 @@ mesh::Mesh upper_layer(int chordwise, int spanwise, double thickness, bool clust
     else if (sm.origin[i].on_boundary())
       a = {mesh::CadAttachment::Curve, sm.origin[i].curve, sm.origin[i].t, 0};
     else
-      a = {mesh::CadAttachment::Surface, wing().upper, sm.uv[i](0), sm.uv[i](1)};
+      a = {mesh::CadAttachment::Surface, upper, sm.uv[i](0), sm.uv[i](1)};
     m.add_node(sm.points[i], a);
   }
   for (int i = 0; i < n; ++i) m.add_node(sm.points[i] + thickness * s.normal(sm.uv[i]));
@@ -71,34 +76,39 @@ mesh::Mesh upper_layer(int chordwise, int spanwise, double thickness, bool clust
   return m;
 }
 
+mesh::Mesh upper_layer(int chordwise, int spanwise, double thickness, bool cluster) {
+  return upper_layer(*wing().model, chordwise, spanwise, thickness, cluster);
+}
+
 double distance_to_upper(const Eigen::Vector3d& x) {
   return wing().model->surface(wing().upper).project(x).distance;
 }
 
 TEST(CurveMesh, BoundaryNodesLieOnTheCad) {
   const mesh::Mesh linear = upper_layer(6, 2, 0.02, true);
-  for (int P = 2; P <= 4; ++P) {
-    CurvingStats stats;
-    const mesh::Mesh curved = curve_mesh(linear, *wing().model, {P, NodeSet::GLL, 50, 1e-10}, &stats);
-    EXPECT_EQ(curved.order(), P);
-    EXPECT_EQ(curved.elements().size(), linear.elements().size());
-    EXPECT_EQ(stats.edges_on_curves, 2 * 6 + 2 * 2);  // root, tip chordwise; LE, TE spanwise
-    EXPECT_GT(stats.edges_on_surfaces, 0);
-    EXPECT_EQ(stats.faces_on_surfaces, P >= 3 ? int(linear.boundary_faces().size()) : 0);
-    EXPECT_EQ(stats.optimisation_fallbacks, 0);
-    EXPECT_GT(stats.max_projection_distance, 1e-4);  // the straight sides really were moved
-    double worst = 0.0;
-    for (std::size_t b = 0; b < curved.boundary_faces().size(); ++b)
-      for (mesh::NodeId id : curved.boundary_face_nodes(b)) {
-        worst = std::max(worst, distance_to_upper(curved.node(id)));
-        const mesh::CadAttachment& a = curved.cad_attachment(id);
-        ASSERT_NE(a.kind, mesh::CadAttachment::None) << "node " << id << " at P = " << P;
-        if (a.kind == mesh::CadAttachment::Surface) {
-          EXPECT_LT((wing().model->surface(a.entity).point({a.u, a.v}) - curved.node(id)).norm(), 1e-12);
+  for (int P = 2; P <= 4; ++P)
+    for (NodePlacement placement : {NodePlacement::Parameter, NodePlacement::Springs}) {
+      CurvingStats stats;
+      const mesh::Mesh curved = curve_mesh(linear, *wing().model, {P, NodeSet::GLL, 50, 1e-10, placement}, &stats);
+      EXPECT_EQ(curved.order(), P);
+      EXPECT_EQ(curved.elements().size(), linear.elements().size());
+      EXPECT_EQ(stats.edges_on_curves, 2 * 6 + 2 * 2);  // root, tip chordwise; LE, TE spanwise
+      EXPECT_GT(stats.edges_on_surfaces, 0);
+      EXPECT_EQ(stats.faces_on_surfaces, P >= 3 ? int(linear.boundary_faces().size()) : 0);
+      EXPECT_EQ(stats.optimisation_fallbacks, 0);
+      EXPECT_GT(stats.max_projection_distance, 1e-4);  // the straight sides really were moved
+      double worst = 0.0;
+      for (std::size_t b = 0; b < curved.boundary_faces().size(); ++b)
+        for (mesh::NodeId id : curved.boundary_face_nodes(b)) {
+          worst = std::max(worst, distance_to_upper(curved.node(id)));
+          const mesh::CadAttachment& a = curved.cad_attachment(id);
+          ASSERT_NE(a.kind, mesh::CadAttachment::None) << "node " << id << " at P = " << P;
+          if (a.kind == mesh::CadAttachment::Surface) {
+            EXPECT_LT((wing().model->surface(a.entity).point({a.u, a.v}) - curved.node(id)).norm(), 1e-12);
+          }
         }
-      }
-    EXPECT_LT(worst, 1e-9) << "P = " << P;
-  }
+      EXPECT_LT(worst, 1e-9) << "P = " << P;
+    }
 }
 
 TEST(CurveMesh, SkinStaysStraightAndAllElementsAreValid) {
@@ -123,25 +133,49 @@ TEST(CurveMesh, SkinStaysStraightAndAllElementsAreValid) {
   }
 }
 
-TEST(CurveMesh, GeometricErrorConvergesUnderRefinement) {
-  // Chordwise refinement with cosine clustering (the leading-edge radius, 0.016 chord, must be
-  // resolved before the error is asymptotic); the surface is straight spanwise, so 2 spanwise
-  // segments do not limit the error. Expected: max error ~ h^(P+1). (P = 4 reaches 4.5 between 16
-  // and 32 but only 3.3 between 32 and 64, where the leading-edge faces have aspect ratio ~2500; see
-  // the report.)
-  for (int P : {2, 3}) {
-    std::vector<double> errors;
-    for (int n : {16, 32, 64}) {
-      CurvingStats st;
-      const mesh::Mesh curved = curve_mesh(upper_layer(n, 2, 0.02, true), *wing().model, {P, NodeSet::GLL, 50, 1e-10}, &st);
-      EXPECT_EQ(st.optimisation_fallbacks, 0);
-      errors.push_back(geometric_error(curved, *wing().model, 1.0, 8).max_rel);
-    }
-    std::printf("P = %d: max relative geometric error %.3e %.3e %.3e\n", P, errors[0], errors[1], errors[2]);
-    EXPECT_GE(std::log2(errors[0] / errors[1]), P + 0.5) << "P = " << P;
-    EXPECT_GE(std::log2(errors[1] / errors[2]), P + 0.5) << "P = " << P;
+// Max relative geometric error of the curved upper layer for each chordwise count.
+std::vector<double> errors_under_refinement(const cad::Model& model, int P, const std::vector<int>& chordwise) {
+  std::vector<double> errors;
+  for (int n : chordwise) {
+    CurvingStats st;
+    const mesh::Mesh curved = curve_mesh(upper_layer(model, n, 2, 0.02, true), model, {P, NodeSet::GLL, 50, 1e-10}, &st);
+    EXPECT_EQ(st.optimisation_fallbacks, 0) << "P = " << P << ", " << n << " chordwise";
+    errors.push_back(geometric_error(curved, model, 1.0, 8).max_rel);
+  }
+  return errors;
+}
+
+// Chordwise refinement with cosine clustering (the leading-edge radius, 0.016 chord, must be resolved
+// before the error is asymptotic); the surface is straight spanwise, so 2 spanwise segments do not
+// limit the error. Expected: max error ~ h^(P+1), every observed rate >= P + 0.5 (8 chordwise cells
+// are not asymptotic yet at P = 1, 3). At 64 cells P = 4 is at ~1e-11, still above the ~1e-13 floor
+// of the projections that measure it. The default placement (Parameter) is tested; with Springs the
+// rate at P = 3, 4 drops to ~3 next to the leading edge (see curve_mesh.hpp).
+void expect_convergence(const cad::Model& model, const char* backend, const std::vector<int>& levels) {
+  for (int P = 1; P <= 4; ++P) {
+    const std::vector<double> e = errors_under_refinement(model, P, levels);
+    std::printf("%s P = %d: max relative geometric error", backend, P);
+    for (double x : e) std::printf(" %.3e", x);
+    std::printf("; rates");
+    for (std::size_t k = 1; k < e.size(); ++k) std::printf(" %.2f", std::log2(e[k - 1] / e[k]));
+    std::printf("\n");
+    for (std::size_t k = 1; k < e.size(); ++k)
+      EXPECT_GE(std::log2(e[k - 1] / e[k]), P + 0.5) << backend << " P = " << P << " level " << k;
   }
 }
+
+TEST(CurveMesh, GeometricErrorConvergesUnderRefinement) {
+  expect_convergence(*wing().model, "analytic", {16, 32, 64});
+}
+
+#ifdef SEMIMESH_HAVE_OCC
+TEST(CurveMesh, GeometricErrorConvergesUnderRefinementOnOccBSplines) {
+  cad::Source source;
+  source.params.set("naca.farfield", "false");
+  const std::unique_ptr<cad::Model> model = occ::load_occ(source);
+  expect_convergence(*model, "occ", {16, 32});  // OCC projections are slower: one rate per order
+}
+#endif
 
 TEST(CurveMesh, GeometricErrorFallsWithOrder) {
   const mesh::Mesh linear = upper_layer(8, 2, 0.02, true);
