@@ -69,6 +69,37 @@ TEST(OccErrors, BrepWithoutFacesHasNoGeometry) {
   EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << error.what();
 }
 
+TEST(OccErrors, FileWithoutBrepHeaderIsUnreadable) {
+  const std::string path = temp_path("not_topology.brep");
+  std::ofstream(path) << "solid cube\nendsolid\n";
+  const CadError error = load_error(path);
+  std::remove(path.c_str());
+  EXPECT_EQ(error.kind(), CadError::Kind::FileUnreadable);
+  EXPECT_NE(std::string(error.what()).find("not a BREP file"), std::string::npos) << error.what();
+}
+
+// OCC's readers report through its default messenger, which prints to stdout; a `--json`
+// consumer of the CLI must see nothing but our output, so loading prints nothing at all.
+TEST(OccErrors, LoadingPrintsNothing) {
+  const std::string corrupt = temp_path("noisy.stp"), empty = temp_path("empty.brep"), good = temp_path("edge.step");
+  std::ofstream(corrupt) << "ISO-10303-21;\nHEADER;\nthis is not a STEP file at all ((((\n";
+  std::ofstream(empty).flush();
+  STEPControl_Writer writer;
+  writer.Transfer(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge(), STEPControl_AsIs);
+  ASSERT_EQ(writer.Write(good.c_str()), IFSelect_RetDone);
+  testing::internal::CaptureStdout();
+  for (const std::string& path : {corrupt, empty, good}) {
+    try {
+      load_occ(cad::Source{path, {}});
+    } catch (const CadError&) {
+      // expected for all three; only the output matters here
+    }
+  }
+  const std::string printed = testing::internal::GetCapturedStdout();
+  for (const std::string& path : {corrupt, empty, good}) std::remove(path.c_str());
+  EXPECT_EQ(printed, "");
+}
+
 TEST(OccErrors, UnknownExtensionIsNamed) {
   const CadError error = load_error("wing.xyz");
   EXPECT_EQ(error.kind(), CadError::Kind::BadParameter);

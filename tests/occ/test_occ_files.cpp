@@ -149,6 +149,35 @@ TEST(OccStep, NektarProjectionsRespectTrimming) {
   EXPECT_GT(in_hole, 0);
 }
 
+// Regression: on the wing skin (a surface of extrusion) OCC's extremum search stopped at u = 0,
+// 3.07 mm away, for points of the trailing-edge curve edge_17, whose true foot is at u ~ 2488
+// with distance ~1e-9 mm. Every point of a face's boundary curve lies on the face.
+TEST(OccStep, NektarUnguidedProjectionFindsTheFootOnTheExtrusion) {
+  SKIP_WITHOUT(kNektar);
+  auto model = load(kNektar);
+  ASSERT_GT(model->num_surfaces(), 8);
+  const cad::Surface& skin = model->surface(8);
+  ASSERT_EQ(skin.name(), "Join.13_8");
+  ASSERT_EQ(skin.kind(), cad::SurfaceKind::Extrusion);
+  int edge = -1;
+  for (int c = 0; c < model->num_curves(); ++c)
+    if (model->curve(c).name() == "edge_17") edge = c;
+  ASSERT_GE(edge, 0);
+  bool bounds_skin = false;
+  for (const cad::SurfaceUse& use : model->surfaces_of_curve(edge)) bounds_skin = bounds_skin || use.surface == 8;
+  ASSERT_TRUE(bounds_skin) << "edge_17 should be a boundary curve of Join.13_8";
+
+  const cad::Curve& curve = model->curve(edge);
+  for (int k = 0; k <= 8; ++k) {
+    const double t = curve.bounds().lo + curve.bounds().length() * k / 8.0;
+    const cad::SurfaceProjection p = skin.project(curve.point(t));
+    EXPECT_LT(p.distance, 1e-6) << "t = " << t << " projected to uv = " << p.uv.transpose();
+    EXPECT_NEAR(p.uv.x(), 2488.1, 0.01) << "t = " << t;
+    EXPECT_TRUE(p.inside) << "t = " << t;
+    EXPECT_TRUE(p.converged) << "t = " << t;
+  }
+}
+
 TEST(OccStep, OneraM6LoadsAsClosedSolid) {
   SKIP_WITHOUT(kOnera);
   auto model = load(kOnera);

@@ -6,13 +6,18 @@
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
+#include <ShapeAnalysis_Edge.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace semimesh::occ {
 namespace {
@@ -35,6 +40,43 @@ cad::SurfaceKind kind_of(GeomAbs_SurfaceType type) {
   }
 }
 
+/// Grid nodes along u (or v): a few per polynomial span so that every bump of a B-spline is seen,
+/// never fewer than a coarse default nor so many that a query scans a large grid.
+int samples_along(const GeomAdaptor_Surface& box, bool along_u) {
+  constexpr int kPerSpan = 3, kMin = 25, kMax = 65;
+  int spans = 1;
+  try {
+    spans = along_u ? box.NbUIntervals(GeomAbs_C2) : box.NbVIntervals(GeomAbs_C2);
+  } catch (const Standard_Failure&) {
+    // not split into intervals: the default count
+  }
+  return std::clamp(kPerSpan * spans + 1, kMin, kMax);
+}
+
+/// A length covering the face's tolerance, its edges' tolerances and, twice over, the largest
+/// measured gap between an edge's 3D curve and its pcurve on the face.
+double boundary_tolerance(const TopoDS_Face& face) {
+  double tolerance = BRep_Tool::Tolerance(face);
+  ShapeAnalysis_Edge check;
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+    tolerance = std::max(tolerance, BRep_Tool::Tolerance(edge));
+    double deviation = 0.0;  // measured even when the check fails (a deviation above tolerance)
+    if (!BRep_Tool::Degenerated(edge)) check.CheckSameParameter(edge, face, deviation);
+    tolerance = std::max(tolerance, 2.0 * deviation);
+
+  }
+  return tolerance;
+}
+
+/// Ranking of unguided projection results: converged and inside the trimmed face first, then
+/// converged, then the rest; nearest first within each group.
+bool preferred(const cad::SurfaceProjection& a, const cad::SurfaceProjection& b) {
+  const auto group = [](const cad::SurfaceProjection& p) { return p.converged ? (p.inside ? 0 : 1) : 2; };
+  if (group(a) != group(b)) return group(a) < group(b);
+  return a.distance < b.distance;
+}
+
 }  // namespace
 
 OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
@@ -47,10 +89,18 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   BRepTools::UVBounds(face_, u0, u1, v0, v1);
   bounds_ = {cad::Interval{u0, u1}, cad::Interval{v0, v1}};
   classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, BRep_Tool::Tolerance(face_));
-  GeomAbs_SurfaceType type = GeomAdaptor_Surface(surface_).GetType();
+  GeomAdaptor_Surface box_adaptor(surface_, u0, u1, v0, v1);
+  // The stricter of the two parameter directions, so no point much further than the tolerance
+  // from a trimming curve counts as on it.
+  const double tolerance = boundary_tolerance(face_);
+  const double uv_tolerance = std::min(box_adaptor.UResolution(tolerance), box_adaptor.VResolution(tolerance));
+  tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance);
+  GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
   mutable_evaluator_ = type == GeomAbs_SurfaceOfRevolution || type == GeomAbs_SurfaceOfExtrusion ||
                        type == GeomAbs_OffsetSurface;
+  grid_ = std::make_unique<SampleGrid>(bounds_, samples_along(box_adaptor, true), samples_along(box_adaptor, false),
+                                       [this](const cad::Vec2& uv) { return point(uv); });
 }
 
 cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
@@ -65,8 +115,31 @@ bool OccSurface::contains(const cad::Vec2& uv) const {
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
+bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
+  const TopAbs_State state = tolerant_classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+  return state == TopAbs_IN || state == TopAbs_ON;
+}
+
 cad::SurfaceProjection OccSurface::project(const cad::Vec3& x, std::optional<cad::Vec2> guess) const {
   if (guess) return cad::Surface::project(x, guess);
+  std::optional<cad::SurfaceProjection> best;
+  const auto settled = [&] { return best && best->inside && best->converged; };
+  const auto start_from = [&](const cad::Vec2& uv) {
+    cad::SurfaceProjection p = cad::Surface::project(x, uv);
+    p.inside = p.inside || within_tolerance_of_face(p.uv);
+    if (!best || preferred(p, *best)) best = p;
+  };
+  for (const GridSeed& seed : grid_->local_minima(x, kGridSeeds)) {
+    if (settled() && seed.distance - grid_->cell_reach() > best->distance) break;  // nearest first
+    start_from(seed.uv);
+  }
+  if (!settled())
+    for (const cad::Vec2& uv : extremum_starts(x)) start_from(uv);
+  if (!best) start_from(cad::Vec2(0.5 * (bounds_[0].lo + bounds_[0].hi), 0.5 * (bounds_[1].lo + bounds_[1].hi)));
+  return *best;
+}
+
+std::vector<cad::Vec2> OccSurface::extremum_starts(const cad::Vec3& x) const {
   std::optional<cad::Vec2> best_inside, best_any;
   double d_inside = std::numeric_limits<double>::max(), d_any = d_inside;
   try {
@@ -75,17 +148,18 @@ cad::SurfaceProjection OccSurface::project(const cad::Vec3& x, std::optional<cad
     for (int i = 1; i <= extrema.NbPoints(); ++i) {
       double u, v;
       extrema.Parameters(i, u, v);
-      double d = extrema.Distance(i);
-      cad::Vec2 uv(u, v);
+      const double d = extrema.Distance(i);
+      const cad::Vec2 uv(u, v);
       if (d < d_any) { d_any = d; best_any = uv; }
       if (d < d_inside && contains(uv)) { d_inside = d; best_inside = uv; }
     }
   } catch (const Standard_Failure&) {
-    // OCC gave up (e.g. at a singular point): fall through to the generic sampled start.
+    // OCC gave up (e.g. at a singular point): the grid's starts stand alone.
   }
-  if (best_inside) return cad::Surface::project(x, best_inside);
-  if (best_any) return cad::Surface::project(x, best_any);
-  return cad::Surface::project(x);
+  std::vector<cad::Vec2> starts;
+  if (best_inside) starts.push_back(*best_inside);
+  if (best_any && best_any != best_inside) starts.push_back(*best_any);
+  return starts;
 }
 
 }  // namespace semimesh::occ

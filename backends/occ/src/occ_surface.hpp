@@ -2,6 +2,7 @@
 // on its wires, built once) and the orientation that makes normal() point into the fluid.
 #pragma once
 
+#include "sample_grid.hpp"
 #include "semimesh/cad/surface.hpp"
 
 #include <BRepTopAdaptor_FClass2d.hxx>
@@ -9,6 +10,7 @@
 #include <TopoDS_Face.hxx>
 
 #include <memory>
+#include <vector>
 
 namespace semimesh::occ {
 
@@ -21,8 +23,10 @@ class OccSurface final : public cad::Surface {
   std::array<cad::Interval, 2> bounds() const override { return bounds_; }
   cad::SurfaceDerivatives derivatives(const cad::Vec2& uv) const override;
   bool contains(const cad::Vec2& uv) const override;
-  /// Without a guess: every extremum GeomAPI_ProjectPointOnSurf finds on the face's parameter
-  /// box, the nearest one inside the trimmed face preferred; then the generic Newton polish.
+  /// Without a guess: Newton from the few nearest local minima of the sample grid; when none of
+  /// them lands inside the trimmed face, also from every extremum GeomAPI_ProjectPointOnSurf
+  /// finds. The nearest converged result inside the face wins, else the nearest one. Here a
+  /// foot within the face's boundary tolerance counts as inside (within_tolerance_of_face).
   /// With a guess: the local Newton only.
   cad::SurfaceProjection project(const cad::Vec3& x, std::optional<cad::Vec2> guess = std::nullopt) const override;
 
@@ -30,10 +34,21 @@ class OccSurface final : public cad::Surface {
   bool has_mutable_evaluator() const { return mutable_evaluator_; }
 
  private:
+  static constexpr int kGridSeeds = 3;  // local minima of the grid polished by Newton per query
+
+  /// Classified with a parameter tolerance covering how far the wires' pcurves stray from their
+  /// edges' 3D curves: STEP files may hold pcurves less accurate than the edge tolerance claims,
+  /// and the exact foot of a point of such an edge must count as inside.
+  bool within_tolerance_of_face(const cad::Vec2& uv) const;
+  /// Starts from OCC's extrema: the nearest inside the trimmed face, then the nearest overall.
+  std::vector<cad::Vec2> extremum_starts(const cad::Vec3& x) const;
+
   TopoDS_Face face_;  // FORWARD, so that trimming is classified against the surface as stored
   Handle(Geom_Surface) surface_;
   std::array<cad::Interval, 2> bounds_;
-  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;
+  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;           // face tolerance: contains()
+  std::unique_ptr<BRepTopAdaptor_FClass2d> tolerant_classifier_;  // boundary tolerance: project()
+  std::unique_ptr<SampleGrid> grid_;  // built once after surface_ and bounds_
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
   bool mutable_evaluator_ = false;
 };

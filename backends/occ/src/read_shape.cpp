@@ -1,5 +1,6 @@
 #include "read_shape.hpp"
 
+#include "quiet_messages.hpp"
 #include "semimesh/cad/error.hpp"
 
 #include <BRepTools.hxx>
@@ -102,7 +103,21 @@ ReadShape read_iges(const std::string& path) {
   return out;
 }
 
+/// Whether the file starts like an OCC text BREP: BRepTools::Write puts "CASCADE Topology V<n>"
+/// on its first or second line (after "DBRep_DrawableShape"); BRepTools::Read would otherwise
+/// print its complaint and return an empty shape.
+bool has_brep_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find("CASCADE Topology V") != std::string::npos;
+}
+
 ReadShape read_brep(const std::string& path) {
+  if (!has_brep_header(path))
+    throw CadError(CadError::Kind::FileUnreadable,
+                   "'" + path + "': not a BREP file (no 'CASCADE Topology V...' header in its first lines)");
   ReadShape out;
   BRep_Builder builder;
   if (!BRepTools::Read(out.shape, path.c_str(), builder))
@@ -134,6 +149,7 @@ ReadShape read_shape(const std::string& path) {
     throw CadError(CadError::Kind::BadParameter, "'" + path + "': unknown CAD file extension '" + ext +
                                                      "' (the occ backend reads .step .stp .iges .igs .brep .brp .fcstd)");
   require_readable(path);
+  const QuietMessages quiet;
   try {
     return reader(path);
   } catch (const Standard_Failure& failure) {
