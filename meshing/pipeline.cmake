@@ -1,7 +1,7 @@
 # `semimesh run` as a library: configuration (TOML), the stage-by-stage pipeline, the mesh checks
 # and the report. Included from meshing/CMakeLists.txt; paths are relative to this file's folder.
 # The checks need only the mesh and surface data models; the pipeline needs every stage (semimesh_io
-# is defined later, in io/, and linked by name).
+# is defined later, in io/, and linked by name; semimesh_ho_mesh comes from highorder/, added first).
 find_package(Threads REQUIRED)
 add_library(semimesh_checks
   ${CMAKE_CURRENT_LIST_DIR}/src/checks/face_nodes.cpp
@@ -19,7 +19,7 @@ add_library(semimesh_config ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/config.cpp)
 target_include_directories(semimesh_config PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_config PRIVATE tomlplusplus::tomlplusplus fmt::fmt semimesh_warnings)
 
-if(TARGET semimesh_nearfield AND TARGET semimesh_farfield)
+if(TARGET semimesh_nearfield AND TARGET semimesh_farfield AND TARGET semimesh_ho_mesh)
   add_library(semimesh_pipeline
     ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/pipeline.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/report.cpp)
@@ -27,6 +27,7 @@ if(TARGET semimesh_nearfield AND TARGET semimesh_farfield)
   target_include_directories(semimesh_pipeline PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
   target_link_libraries(semimesh_pipeline
     PUBLIC semimesh_config semimesh_checks semimesh_meshing
-    PRIVATE semimesh_backends semimesh_surface_mesh semimesh_nearfield semimesh_farfield semimesh_io fmt::fmt
+    PRIVATE semimesh_backends semimesh_surface_mesh semimesh_nearfield semimesh_farfield semimesh_ho_mesh semimesh_io
+            fmt::fmt
             semimesh_warnings)
 endif()

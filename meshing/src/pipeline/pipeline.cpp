@@ -3,6 +3,9 @@
 #include "semimesh/backends/builtin.hpp"
 #include "semimesh/cad/error.hpp"
 #include "semimesh/farfield/far_field.hpp"
+#include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/curving/geometric_error.hpp"
+#include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
@@ -19,12 +22,20 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <type_traits>
 
 namespace semimesh::pipeline {
 namespace {
+
+// Samples per boundary-face edge for the geometric error: enough to see the largest deviation of
+// an order-8 face, cheap next to the curving itself.
+constexpr int kGeometricErrorSamples = 6;
+// Bound on |curved body volume - triangulated body volume| / triangulated body volume.
+constexpr double kCurvedBodyVolumeFraction = 0.02;
 
 // Runs one stage: reports its start and end, and turns its exceptions into RunError.
 template <typename Stage>
@@ -169,6 +180,48 @@ farfield::FarFieldParams far_params(const FarFieldConfig& f) {
   return p;
 }
 
+ho::CurvingParams curving_params(const HighOrderConfig& h) {
+  ho::CurvingParams p;
+  p.order = h.order;
+  p.node_set = h.node_set == "gll" ? ho::NodeSet::GLL : ho::NodeSet::Equispaced;
+  return p;
+}
+
+// The near-field shell is the mesh's prisms (the far field holds tets and pyramids only).
+std::vector<std::size_t> shell_prisms(const mesh::Mesh& mesh) {
+  std::vector<std::size_t> prisms;
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e)
+    if (mesh.elements()[e].shape == ho::Shape::Prism) prisms.push_back(e);
+  return prisms;
+}
+
+// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms. split_layers
+// replaces the k-th split prism (input index i) by `layers` elements from the body outwards, so its
+// first-layer element is at i + k (layers - 1).
+double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<std::size_t>& prisms, int layers) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < prisms.size(); ++k) {
+    const mesh::Element& e = split.elements()[prisms[k] + k * static_cast<std::size_t>(layers - 1)];
+    auto x = [&](int v) -> const Eigen::Vector3d& { return split.node(e.vertices[v]); };
+    const double longest = std::max({(x(1) - x(0)).norm(), (x(2) - x(1)).norm(), (x(0) - x(2)).norm()});
+    const double height = ((x(3) - x(0)).norm() + (x(4) - x(1)).norm() + (x(5) - x(2)).norm()) / 3.0;
+    worst = std::max(worst, longest / height);
+  }
+  return worst;
+}
+
+// The chord for a generated wing; otherwise the streamwise (x) extent of the body's surface nodes.
+double reference_length(const GeometryConfig& g, const std::vector<const surface::SurfaceMesh*>& body) {
+  if (g.source.empty() && (g.backend == "naca" || g.backend == "occ")) return g.naca.chord;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const surface::SurfaceMesh* s : body)
+    for (const Eigen::Vector3d& p : s->points) {
+      lo = std::min(lo, p.x());
+      hi = std::max(hi, p.x());
+    }
+  return hi > lo ? hi - lo : 1.0;
+}
+
 double peak_memory_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -237,11 +290,29 @@ RunResult run(const Config& config, Progress& progress) {
   stage("far field", progress, result, [&] {
     farfield::build_far_field(*model, near, far_params(config.farfield), roles.farfield, roles.wall);
   });
+  // The far field stays straight-sided and so does the skin: curving moves only nodes on the CAD.
   result.mesh = std::move(near.mesh);
   if (config.highorder.order > 1)
-    result.warnings.push_back(fmt::format("highorder.order = {}: the high-order stages (curving, splitting into {} "
-                                          "layers) are not in this build yet; the mesh is linear (order 1)",
-                                          config.highorder.order, config.boundary_layer.layers));
+    result.mesh = stage("curve", progress, result, [&] {
+      return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder));
+    });
+
+  // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
+  const int layers = config.boundary_layer.layers;
+  result.layers.layers = layers;
+  if (layers > 1) {
+    const std::vector<std::size_t> prisms = shell_prisms(result.mesh);
+    const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
+    ho::SplitStats split{};
+    result.mesh = stage("split", progress, result, [&] {
+      return ho::split_layers(result.mesh, prisms, ho::LayerDistribution{layers, ratio}, {}, &split);
+    });
+    result.layers.requested_ratio = ratio;
+    result.layers.achieved_ratio = split.achieved_ratio;
+    result.layers.first_cell_height_min = split.first_cell_height_min;
+    result.layers.first_cell_height_max = split.first_cell_height_max;
+    result.layers.max_first_layer_aspect = max_first_layer_aspect(result.mesh, prisms, layers);
+  }
 
   stage("checks", progress, result, [&] {
     result.conformity = checks::check_conformity(result.mesh);
@@ -249,7 +320,15 @@ RunResult run(const Config& config, Progress& progress) {
     for (int s : roles.body) body.push_back(&surfaces.surfaces[s]);
     for (int s : roles.farfield) box.push_back(&surfaces.surfaces[s]);
     result.volume = checks::check_volume(result.mesh, body, box, surfaces.surfaces[roles.wall]);
+    // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
+    // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
+    if (result.mesh.order() > 1)
+      result.expected_volume_tolerance =
+          kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh);
+    const double chord = reference_length(config.geometry, body);
+    const ho::GeometricError error = ho::geometric_error(result.mesh, *model, chord, kGeometricErrorSamples);
+    result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
   for (std::size_t e = 0; e < result.mesh.elements().size(); ++e)
     ++result.elements_by_type[ho::to_string(result.mesh.elements()[e].shape)];

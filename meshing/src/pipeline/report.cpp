@@ -63,6 +63,15 @@ std::string summary_table(const RunResult& r) {
   t += fmt::format("{:<28} {:>12.3e}\n", "volume error vs box - body", r.volume.expected_relative_error());
   t += fmt::format("{:<28} {:>12.4g}\n", "layer thickness min", r.thickness_min);
   t += fmt::format("{:<28} {:>12.4g}\n", "layer thickness max", r.thickness_max);
+  t += fmt::format("{:<28} {:>12}\n", "boundary layers", r.layers.layers);
+  if (r.layers.layers > 1) {
+    t += fmt::format("{:<28} {:>12.4g}\n", "first cell height min", r.layers.first_cell_height_min);
+    t += fmt::format("{:<28} {:>12.4g}\n", "first cell height max", r.layers.first_cell_height_max);
+    t += fmt::format("{:<28} {:>12.4f}\n", "layer ratio (achieved)", r.layers.achieved_ratio);
+    t += fmt::format("{:<28} {:>12.4g}\n", "max first-layer aspect", r.layers.max_first_layer_aspect);
+  }
+  t += fmt::format("{:<28} {:>12.3e}\n", "geometric error max / chord", r.geometric_error.max_rel);
+  t += fmt::format("{:<28} {:>12.3e}\n", "geometric error rms / chord", r.geometric_error.rms_rel);
   for (const StageTiming& s : r.stages) t += fmt::format("  time {:<21} {:>10.3f} s\n", s.name, s.seconds);
   t += fmt::format("{:<28} {:>10.3f} s\n", "time total", r.total_seconds());
   t += fmt::format("{:<28} {:>9.1f} MB\n", "peak memory", r.peak_memory_mb);
@@ -81,6 +90,15 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
   j += fmt::format("  \"thickness_min\": {},\n  \"thickness_max\": {},\n", json_number(r.thickness_min),
                    json_number(r.thickness_max));
+  j += fmt::format("  \"layers\": {},\n  \"layer_ratio\": {},\n  \"achieved_layer_ratio\": {},\n", r.layers.layers,
+                   json_number(r.layers.requested_ratio), json_number(r.layers.achieved_ratio));
+  j += fmt::format("  \"first_cell_height_min\": {},\n  \"first_cell_height_max\": {},\n",
+                   json_number(r.layers.first_cell_height_min), json_number(r.layers.first_cell_height_max));
+  j += fmt::format("  \"max_first_layer_aspect_ratio\": {},\n", json_number(r.layers.max_first_layer_aspect));
+  j += fmt::format("  \"geometric_error\": {{\"max_rel\": {}, \"rms_rel\": {}, \"reference_length\": {}, "
+                   "\"samples\": {}}},\n",
+                   json_number(r.geometric_error.max_rel), json_number(r.geometric_error.rms_rel),
+                   json_number(r.geometric_error.reference_length), r.geometric_error.samples);
   j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
   j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));

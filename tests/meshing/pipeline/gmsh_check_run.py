@@ -5,7 +5,9 @@ with Gmsh (Debian's /usr/bin/python3 has the module), counts the elements by typ
 report.json, and asks Gmsh's own AnalyseMeshQuality plugin (certified Jacobian bounds) for the
 min J / max J of every element: all must be positive. Then checks exit codes of bad inputs.
 
-  gmsh_check_run.py --exe SEMIMESH --config CASE.toml --workdir DIR
+  gmsh_check_run.py --exe SEMIMESH --config CASE.toml --workdir DIR [--set KEY=VALUE ...]
+
+--set options go to the main run only (e.g. highorder.order=2 for a curved mesh).
 """
 import argparse
 import json
@@ -59,11 +61,13 @@ def main():
     parser.add_argument("--exe", required=True)
     parser.add_argument("--config", required=True)
     parser.add_argument("--workdir", required=True)
+    parser.add_argument("--set", action="append", default=[], help="config override for the main run")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     out = os.path.join(args.workdir, "out")
 
-    code, stdout, stderr = run_cli(args.exe, ["run", args.config, "-o", out])
+    overrides = [a for kv in args.set for a in ("--set", kv)]
+    code, stdout, stderr = run_cli(args.exe, ["run", args.config, "-o", out] + overrides)
     if code != 0:
         fail("semimesh run exited with %d\n%s\n%s" % (code, stdout, stderr))
     for stage in ("load CAD", "surface mesh", "near field", "far field", "checks", "write"):
@@ -84,6 +88,8 @@ def main():
         # Ours is a certified lower bound of the same ratio: it may not exceed Gmsh's.
         if report["min_scaled_jacobian"] > worst + 1e-9:
             fail("%s: report min scaled Jacobian %g above gmsh's %g" % (msh, report["min_scaled_jacobian"], worst))
+        if report["order"] != report["requested_order"]:
+            fail("report.json: order %d, requested %d" % (report["order"], report["requested_order"]))
         print("%s: %s, gmsh min J/max J = %.4g, report %.4g" % (msh, counts, worst, report["min_scaled_jacobian"]))
 
     bad = os.path.join(args.workdir, "bad")

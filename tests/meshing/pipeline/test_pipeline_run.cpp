@@ -1,9 +1,10 @@
-// End-to-end `run` on a coarse NACA 0012 case (order 1, a few thousand elements) and the
-// comparison of the analytic and OCC-built wings.
+// End-to-end `run` on a coarse NACA 0012 case (order 1 and order 2, a few thousand elements) and
+// the comparison of the analytic and OCC-built wings.
 #include "semimesh/pipeline/pipeline.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -88,6 +89,58 @@ TEST(PipelineRun, CoarseWingIsAValidConformingHybridMesh) {
   text << report.rdbuf();
   EXPECT_NE(text.str().find("\"invalid_elements\": 0"), std::string::npos);
   EXPECT_NE(text.str().find("\"checks_passed\": true"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Order 2, shell split into 3 layers of ratio 2, against the same case at order 1 without a split.
+TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
+  CountingProgress progress;
+  const fs::path linear_dir = fresh_directory("linear_one_layer");
+  const RunResult linear =
+      run(coarse_config(linear_dir, {"boundary_layer.layers=1", "output.formats=[\"msh41\"]"}), progress);
+  const fs::path dir = fresh_directory("order2");
+  const RunResult r = run(coarse_config(dir, {"highorder.order=2", "boundary_layer.layers=3",
+                                              "boundary_layer.ratio=2", "output.formats=[\"msh41\"]"}),
+                          progress);
+
+  EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "curve"), progress.finished.end());
+  EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "split"), progress.finished.end());
+  EXPECT_EQ(r.mesh.order(), 2);
+  EXPECT_EQ(r.validity.invalid, 0u);
+  EXPECT_GT(r.validity.min_scaled_jacobian, 0.0);
+  EXPECT_TRUE(r.conformity.ok()) << r.conformity.problems.front().describe(r.mesh);
+  EXPECT_TRUE(r.checks_passed());
+  EXPECT_EQ(r.elements_by_type.at("prism"), 3 * linear.elements_by_type.at("prism"));
+  EXPECT_EQ(r.elements_by_type.at("tetrahedron"), linear.elements_by_type.at("tetrahedron"));
+  for (const char* group : {"wing", "wall", "farfield"}) EXPECT_GT(r.boundary_faces_by_group.count(group), 0u) << group;
+  EXPECT_EQ(r.boundary_faces_by_group.at("wing"), linear.boundary_faces_by_group.at("wing"));
+
+  // Curving brings the wing's faces onto the CAD: the error must drop well below the linear one.
+  EXPECT_GT(linear.geometric_error.max_rel, 0.0);
+  EXPECT_LT(r.geometric_error.max_rel, 0.5 * linear.geometric_error.max_rel);
+  EXPECT_LT(r.geometric_error.rms_rel, linear.geometric_error.rms_rel);
+
+  // Layers 1 : 2 : 4 of the 0.05 shell: the first cell is 0.05 / 7 where the shell is not thinned.
+  EXPECT_EQ(r.layers.layers, 3);
+  EXPECT_NEAR(r.layers.achieved_ratio, 2.0, 0.05);
+  EXPECT_NEAR(r.layers.first_cell_height_max, 0.05 / 7.0, 0.05 / 7.0 * 0.05);
+  EXPECT_GT(r.layers.first_cell_height_min, 0.0);
+  EXPECT_LE(r.layers.first_cell_height_min, r.layers.first_cell_height_max);
+  EXPECT_GT(r.layers.max_first_layer_aspect, 1.0);
+
+  const std::string report = read_text(dir / "report.json");
+  for (const char* key : {"\"order\": 2", "\"layers\": 3", "\"first_cell_height_min\"", "\"first_cell_height_max\"",
+                          "\"achieved_layer_ratio\"", "\"max_first_layer_aspect_ratio\"", "\"geometric_error\"",
+                          "\"max_rel\"", "\"rms_rel\"", "\"invalid_elements\": 0"})
+    EXPECT_NE(report.find(key), std::string::npos) << key;
+  fs::remove_all(linear_dir);
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,5 @@
 // `semimesh run` as a library call: CAD -> size field -> surface meshes -> near-field shell ->
-// far field -> checks -> files. Each stage is a function of the previous one's value; only loading
+// far field -> curving (order > 1) -> splitting of the shell into layers -> checks -> files. Each stage is a function of the previous one's value; only loading
 // the CAD model and writing the files touch the file system.
 #pragma once
 
@@ -50,6 +50,27 @@ class Progress {
 constexpr double kBoundaryVolumeTolerance = 1e-9;
 constexpr double kExpectedVolumeTolerance = 1e-6;
 
+/// The boundary-layer split of the near-field prisms (ho::split_layers). Heights are straight
+/// distances along the prisms' vertical edges; the aspect ratio of a first-layer prism is its
+/// longest body-side edge over its mean vertical edge.
+struct LayerFigures {
+  int layers = 1;                      ///< N of the split (1: the shell was not split)
+  double requested_ratio = 1.0;        ///< r used (boundary_layer.ratio or from first_cell_height)
+  double achieved_ratio = 1.0;         ///< mean over the vertical edges (ho::SplitStats)
+  double first_cell_height_min = 0.0;
+  double first_cell_height_max = 0.0;
+  double max_first_layer_aspect = 0.0;
+};
+
+/// Distance from the boundary faces to their CAD surfaces relative to reference_length (the
+/// chord: geometry.naca.chord for a generated wing, else the streamwise extent of the body).
+struct GeometricErrorFigures {
+  double reference_length = 1.0;
+  double max_rel = 0.0;
+  double rms_rel = 0.0;
+  int samples = 0;
+};
+
 struct RunResult {
   mesh::Mesh mesh{1};
   std::vector<StageTiming> stages;
@@ -62,13 +83,18 @@ struct RunResult {
   checks::ConformityResult conformity;
   checks::VolumeCheck volume;
   checks::ValidityResult validity;
+  LayerFigures layers;
+  GeometricErrorFigures geometric_error;
+  /// Tolerance of the element volume against box - body of the linear surface meshes: round-off for
+  /// a linear mesh; a curved body's volume differs from its triangulation's (see pipeline.cpp).
+  double expected_volume_tolerance = kExpectedVolumeTolerance;
   std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
   std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
   double peak_memory_mb = 0.0;             ///< peak resident set size of the process (getrusage)
 
   bool volume_ok() const {
     return volume.mesh.boundary_relative_error() <= kBoundaryVolumeTolerance &&
-           volume.expected_relative_error() <= kExpectedVolumeTolerance;
+           volume.expected_relative_error() <= expected_volume_tolerance;
   }
   bool checks_passed() const { return conformity.ok() && validity.ok() && volume_ok(); }
   double total_seconds() const;
