@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <stdexcept>
 #include <unistd.h>
 #include <vector>
@@ -30,6 +31,11 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   const int fd = ::mkstemp(name.data());
   if (fd < 0) throw os_error("cannot create a temporary file in directory", directory_of(path));
   temp_path_ = name.data();
+  // mkstemp creates the file 0600; a mesh file should get the usual 0666 less the umask (umask has
+  // no read-only query, so it is set and restored; writers run one at a time).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   file_ = ::fdopen(fd, "wb");
   if (!file_) {
     ::close(fd);

@@ -16,6 +16,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace {
@@ -125,6 +126,20 @@ TEST(AtomicFile, FailureLeavesTheOldFileAndNoTemporary) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent_dir_for_semimesh"), std::string::npos) << e.what();
   }
+}
+
+TEST(AtomicFile, CommittedFileHasTheUsualPermissions) {
+  const std::string path = temp_dir() + "/mesh.msh";
+  const mode_t mask = ::umask(022);
+  {
+    semimesh::io::AtomicFile out(path);
+    out.print("x\n");
+    out.commit();
+  }
+  ::umask(mask);
+  struct stat info {};
+  ASSERT_EQ(::stat(path.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0644u);
 }
 
 TEST(Msh, WriteFailureKeepsExistingFile) {

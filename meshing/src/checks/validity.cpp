@@ -12,8 +12,12 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
   std::vector<double> scaled(n);
   std::vector<char> valid(n), proven(n);
 
-  auto certify_range = [&](std::size_t begin, std::size_t end) {
-    for (std::size_t e = begin; e < end; ++e) {
+  // Strided, not blocked: elements of one kind (curved prisms, straight tets) come in long runs of
+  // very different cost, so contiguous blocks would leave one worker with most of the work.
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(threads > 0 ? threads : std::thread::hardware_concurrency(), n / 1000 + 1));
+  auto certify_stride = [&](std::size_t first) {
+    for (std::size_t e = first; e < n; e += workers) {
       const ho::ElementQuality q =
           ho::element_quality(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e));
       scaled[e] = q.scaled_jacobian;
@@ -21,11 +25,9 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
       proven[e] = q.bounds.proven;
     }
   };
-  const std::size_t workers =
-      std::max<std::size_t>(1, std::min<std::size_t>(threads > 0 ? threads : std::thread::hardware_concurrency(), n / 1000 + 1));
   std::vector<std::thread> pool;
-  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(certify_range, n * w / workers, n * (w + 1) / workers);
-  certify_range(0, n / workers);
+  for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(certify_stride, w);
+  certify_stride(0);
   for (std::thread& t : pool) t.join();
 
   ValidityResult result;
