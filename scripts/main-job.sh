@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The main job: install the dependencies, build semimesh (Release, build/), run it on the
-# reference case. For now the reference case is the CAD model of the paper's wing (analytic NACA
-# 0012 on a wall in its far-field box); the meshing case replaces it when the mesher lands.
+# The main job: install the dependencies, build semimesh (Release, build/) and mesh the paper's case:
+# a NACA 0012 wing (chord 1, squared-off trailing edge) standing on a wall, far field about 10 chords
+# away, O-type near field curved at order 4 and split into 5 layers with ratio 2. Writes the mesh
+# (MSH 4.1, VTU, Nektar++ XML) and report.json into out/naca0012_wing/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)" --target semimesh
-./build/apps/semimesh cad-info --backend naca
+./build/apps/semimesh run examples/naca0012_wing.toml -o out/naca0012_wing
