@@ -121,6 +121,25 @@ PlaneFrame wall_frame(const cad::Surface& wall) {
   return f;
 }
 
+// Puts the wall's outer loop in an order that does not depend on the CAD backend's loop start and
+// direction: counter-clockwise in the wall frame, starting at the lowest (x, y) node (compared on
+// rounded coordinates so 1e-13 differences between backends do not change the start). The annulus
+// triangulation, and so TetGen's input, then comes out the same for equivalent models.
+void canonicalise_outer_loop(std::vector<NodeId>& ids, const PlaneFrame& frame, const mesh::Mesh& mesh) {
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const Eigen::Vector2d p = frame.to_2d(mesh.node(ids[i])), q = frame.to_2d(mesh.node(ids[(i + 1) % ids.size()]));
+    twice_area += p.x() * q.y() - q.x() * p.y();
+  }
+  if (twice_area < 0) std::reverse(ids.begin(), ids.end());
+  auto key = [&](NodeId id) {
+    const Eigen::Vector2d p = frame.to_2d(mesh.node(id));
+    return std::make_pair(std::round(p.x() * 1e8), std::round(p.y() * 1e8));
+  };
+  std::rotate(ids.begin(), std::min_element(ids.begin(), ids.end(), [&](NodeId a, NodeId b) { return key(a) < key(b); }),
+              ids.end());
+}
+
 // The far-field part of the wall; triangles returned with their normal out of the domain.
 std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
                                 const FarFieldParams& params, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
@@ -133,6 +152,7 @@ std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const
     const int n = curve_nodes.segments(use.curve);
     for (int k = 0; k < n; ++k) ids.push_back(curve_nodes.node(use.curve, use.forward ? k : n - k));
   }
+  canonicalise_outer_loop(ids, frame, mesh);
   for (NodeId id : ids) outer.push_back(frame.to_2d(mesh.node(id)));
 
   const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());

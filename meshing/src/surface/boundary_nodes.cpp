@@ -2,9 +2,12 @@
 
 #include "semimesh/surface/error.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 
 namespace semimesh::surface::detail {
 
@@ -69,6 +72,75 @@ std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int su
   }
   if (loops.empty()) throw SurfaceMeshError(surface_label(model, surface) + " has no boundary loop");
   return loops;
+}
+
+double parameter_grid_step(const cad::Surface& face, const SurfaceMesh& mesh) {
+  const auto bounds = face.bounds();
+  double extent = std::max(bounds[0].length(), bounds[1].length());
+  if (!std::isfinite(extent) || !(extent > 0.0)) {
+    Vec2 lo = mesh.uv.front(), hi = lo;
+    for (const Vec2& uv : mesh.uv) {
+      lo = lo.cwiseMin(uv);
+      hi = hi.cwiseMax(uv);
+    }
+    extent = (hi - lo).maxCoeff();
+  }
+  if (!(extent > 0.0) || !std::isfinite(extent)) return 0.0;
+  // The factor keeps round extents (1, 2, 0.5, ...) away from the power-of-two steps, where
+  // extents differing by rounding noise would choose different grids.
+  int exponent = 0;
+  std::frexp(extent * (1.0 + 1e-6), &exponent);
+  return std::ldexp(1.0, exponent - 32);
+}
+
+Vec2 snap_to_grid(const Vec2& uv, double step) {
+  if (!(step > 0.0)) return uv;
+  // Division and multiplication by a power of two are exact: only the rounding moves the point.
+  return Vec2(std::round(uv.x() / step) * step, std::round(uv.y() / step) * step);
+}
+
+void canonicalise_boundary(double grid_step, SurfaceMesh& mesh, std::vector<std::vector<int>>& loops) {
+  // Snapped copies decide; mesh.uv keeps the projections, which map exactly onto the curve points.
+  std::vector<Vec2> snapped;  // [nodes]
+  for (const Vec2& uv : mesh.uv) snapped.push_back(snap_to_grid(uv, grid_step));
+  auto lower = [&](int a, int b) {
+    return std::make_pair(snapped[a].x(), snapped[a].y()) < std::make_pair(snapped[b].x(), snapped[b].y());
+  };
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    std::vector<int>& loop = loops[l];
+    double twice_area = 0.0;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Vec2 &p = snapped[loop[i]], &q = snapped[loop[(i + 1) % loop.size()]];
+      twice_area += p.x() * q.y() - q.x() * p.y();
+    }
+    const bool outer = l == 0;  // the model lists the outer loop first
+    if ((twice_area > 0.0) != outer) std::reverse(loop.begin(), loop.end());
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), lower), loop.end());
+  }
+  if (loops.size() > 2)
+    std::sort(loops.begin() + 1, loops.end(), [&](const auto& a, const auto& b) { return lower(a.front(), b.front()); });
+
+  std::vector<int> new_id(mesh.uv.size(), -1), order;  // [nodes] new id of each node; old ids in new order
+  order.reserve(mesh.uv.size());
+  auto visit = [&](int node) {
+    if (new_id[node] >= 0) return;
+    new_id[node] = static_cast<int>(order.size());
+    order.push_back(node);
+  };
+  for (const auto& loop : loops)
+    for (int node : loop) visit(node);
+  for (int node = 0; node < static_cast<int>(mesh.uv.size()); ++node) visit(node);
+  SurfaceMesh permuted;
+  for (int node : order) {
+    permuted.uv.push_back(mesh.uv[node]);
+    permuted.points.push_back(mesh.points[node]);
+    permuted.origin.push_back(mesh.origin[node]);
+  }
+  mesh.uv.swap(permuted.uv);
+  mesh.points.swap(permuted.points);
+  mesh.origin.swap(permuted.origin);
+  for (auto& loop : loops)
+    for (int& node : loop) node = new_id[node];
 }
 
 }  // namespace semimesh::surface::detail

@@ -14,6 +14,21 @@ namespace semimesh::surface::detail {
 std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int surface, const CurveMeshes& curves,
                                                  SurfaceMesh& mesh);
 
+/// Spacing of the grid that parameter coordinates are snapped to: a power of two near 2^-32 of the
+/// surface's parameter box (of the boundary nodes' (u, v) box where the surface is unbounded), so
+/// that snapping is exact arithmetic and does not depend on where the box starts.
+double parameter_grid_step(const cad::Surface& face, const SurfaceMesh& mesh);
+
+/// (u, v) rounded to the nearest multiple of `step`.
+Vec2 snap_to_grid(const Vec2& uv, double step);
+
+/// Makes the mesher's input independent of how the CAD backend describes the same face: turns
+/// each loop so the face lies on its left in (u, v), starts it at its lowest node in (u, v) order,
+/// sorts the holes by that node and renumbers the nodes in the resulting walking order. Positions
+/// are compared snapped to the grid, so two models agreeing to ~1e-13 decide alike. Updates
+/// `loops` to the new ids; mesh.uv stays unsnapped.
+void canonicalise_boundary(double grid_step, SurfaceMesh& mesh, std::vector<std::vector<int>>& loops);
+
 /// "surface 3 ('wall')": how errors name a surface.
 std::string surface_label(const cad::Model& model, int surface);
 

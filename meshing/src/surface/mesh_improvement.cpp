@@ -19,6 +19,10 @@ constexpr int kMaxSwapPasses = 20;
 // Interior edges shorter than this fraction of the size are merged when that helps the angles.
 constexpr double kCollapseFraction = 0.6;
 constexpr double kMinGain = 1e-6;  // in sine of the minimum angle: ignore changes in the noise
+// Quality changes below this are rounding noise (e.g. two CAD backends agreeing to 1e-13): moves
+// and collapses that keep the quality within it count as ties and are taken, so that noise does
+// not decide them.
+constexpr double kQualityNoise = 1e-10;
 // Relative area below which a (u, v) triangle counts as flat (not valid).
 constexpr double kMinRelativeArea = 1e-12;
 
@@ -149,7 +153,7 @@ int collapse_short_edges(const cad::Surface& face, const SizeField& size, Surfac
         ok = ok && positive_uv(mesh, renamed[0], renamed[1], renamed[2]);
         after = std::min(after, quality(mesh, renamed));
       }
-      if (!ok || after < before) {
+      if (!ok || after < before - kQualityNoise) {
         mesh.uv[a] = uv_a;
         mesh.points[a] = point_a;
         continue;
@@ -241,7 +245,7 @@ int smooth_nodes(const cad::Surface& face, SurfaceMesh& mesh) {
         ok = ok && positive_uv(mesh, tri[0], tri[1], tri[2]);
         after = std::min(after, quality(mesh, tri));
       }
-      accepted = ok && after >= before;
+      accepted = ok && after >= before - kQualityNoise;
     }
     if (accepted) {
       ++moved;

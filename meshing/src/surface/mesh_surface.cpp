@@ -19,8 +19,10 @@ SurfaceMesh mesh_surface(const cad::Model& model, int surface, const CurveMeshes
   const cad::Surface& face = model.surface(surface);
   SurfaceMesh mesh;
   mesh.surface = surface;
-  const auto loops = detail::add_boundary_nodes(model, surface, curves, mesh);
-  detail::triangulate_parameter_space(model, surface, loops, size, options.split_factor, mesh);
+  auto loops = detail::add_boundary_nodes(model, surface, curves, mesh);
+  const double grid_step = detail::parameter_grid_step(face, mesh);
+  detail::canonicalise_boundary(grid_step, mesh, loops);
+  detail::triangulate_parameter_space(model, surface, loops, size, options.split_factor, grid_step, mesh);
   for (int pass = 0; pass < options.improvement_passes; ++pass) {
     const int collapses = detail::collapse_short_edges(face, size, mesh);
     const int swaps = detail::swap_edges(mesh);

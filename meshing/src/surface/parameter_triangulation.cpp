@@ -10,9 +10,12 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <deque>
+#include <numeric>
 #include <optional>
+#include <utility>
 
 namespace semimesh::surface::detail {
 namespace {
@@ -70,8 +73,9 @@ void mark_domain(Cdt& cdt) {
 
 class Refiner {
  public:
-  Refiner(const cad::Surface& face, const SizeField& size, double split_factor, SurfaceMesh& mesh, Cdt& cdt)
-      : face_(face), size_(size), split_factor_(split_factor), mesh_(mesh), cdt_(cdt) {}
+  Refiner(const cad::Surface& face, const SizeField& size, double split_factor, double grid_step, SurfaceMesh& mesh,
+          Cdt& cdt)
+      : face_(face), size_(size), split_factor_(split_factor), grid_step_(grid_step), mesh_(mesh), cdt_(cdt) {}
 
   void run() {
     for (FaceHandle f : cdt_.finite_face_handles())
@@ -97,7 +101,7 @@ class Refiner {
     const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     if (longest <= split_factor_ * h) return;
     for (const std::optional<Vec2>& candidate : {metric_circumcentre(f), longest_free_edge_midpoint(f), centroid(f)})
-      if (candidate && try_insert(*candidate, f, h)) return;
+      if (candidate && try_insert(snap_to_grid(*candidate, grid_step_), f, h)) return;
   }
 
   // Circumcentre in the tangent-plane metric at the centroid: where the 3D circumcentre would be.
@@ -177,6 +181,7 @@ class Refiner {
   const cad::Surface& face_;
   const SizeField& size_;
   double split_factor_;
+  double grid_step_;
   SurfaceMesh& mesh_;
   Cdt& cdt_;
   std::deque<Key> queue_;
@@ -185,24 +190,43 @@ class Refiner {
 }  // namespace
 
 void triangulate_parameter_space(const cad::Model& model, int surface, const std::vector<std::vector<int>>& loops,
-                                 const SizeField& size, double split_factor, SurfaceMesh& mesh) {
+                                 const SizeField& size, double split_factor, double grid_step, SurfaceMesh& mesh) {
+  // Cocircular ties (common on evenly spaced boundaries) are broken by the insertion order and
+  // the exact predicates: the boundary goes in snapped to the grid, in (u, v) order, constraints
+  // sorted, so two models agreeing to ~1e-13 listing their loops any way give the same result.
+  std::vector<Vec2> snapped;  // [nodes]
+  for (const Vec2& uv : mesh.uv) snapped.push_back(snap_to_grid(uv, grid_step));
+  auto lower = [&](int a, int b) {
+    return std::make_pair(snapped[a].x(), snapped[a].y()) < std::make_pair(snapped[b].x(), snapped[b].y());
+  };
+  std::vector<int> by_position(mesh.num_nodes());
+  std::iota(by_position.begin(), by_position.end(), 0);
+  std::sort(by_position.begin(), by_position.end(), lower);
   Cdt cdt;
   std::vector<VertexHandle> handles(mesh.num_nodes());
-  for (int node = 0; node < mesh.num_nodes(); ++node) {
-    handles[node] = cdt.insert(Point(mesh.uv[node].x(), mesh.uv[node].y()));
+  for (int node : by_position) {
+    handles[node] = cdt.insert(Point(snapped[node].x(), snapped[node].y()));
     if (handles[node]->info().node != -1)
       throw SurfaceMeshError(surface_label(model, surface) + ": boundary nodes " + std::to_string(handles[node]->info().node) +
                              " and " + std::to_string(node) + " coincide in parameter space (degenerate edge or pole?)");
     handles[node]->info().node = node;
   }
+  std::vector<std::pair<int, int>> segments;  // [segments] (lower node, upper node) in (u, v) order
   for (const auto& loop : loops)
-    for (std::size_t i = 0; i < loop.size(); ++i)
-      cdt.insert_constraint(handles[loop[i]], handles[loop[(i + 1) % loop.size()]]);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      segments.push_back(lower(a, b) ? std::make_pair(a, b) : std::make_pair(b, a));
+    }
+  std::sort(segments.begin(), segments.end(), [&](const auto& s, const auto& t) {
+    if (s.first != t.first) return lower(s.first, t.first);
+    return lower(s.second, t.second);
+  });
+  for (const auto& [a, b] : segments) cdt.insert_constraint(handles[a], handles[b]);
   if (static_cast<int>(cdt.number_of_vertices()) != mesh.num_nodes())
     throw SurfaceMeshError(surface_label(model, surface) +
                            ": boundary loops intersect in parameter space (curves crossing, or too coarse for the trim)");
   mark_domain(cdt);
-  Refiner(model.surface(surface), size, split_factor, mesh, cdt).run();
+  Refiner(model.surface(surface), size, split_factor, grid_step, mesh, cdt).run();
 
   for (FaceHandle f : cdt.finite_face_handles())
     if (f->info().in_domain())

@@ -194,7 +194,7 @@ TEST(PipelineRun, OutputPathsFollowTheFormats) {
 // curve meshes, the OCC lower surface's interior nodes land up to 0.13 chord away from the
 // analytic ones (its parameter-space triangulation differs), and TetGen then gives a different
 // number of tetrahedra. Run with --gtest_also_run_disabled_tests.
-TEST(PipelineRun, DISABLED_AnalyticAndOccWingsGiveTheSameMesh) {
+TEST(PipelineRun, AnalyticAndOccWingsGiveTheSameMesh) {
   const std::vector<std::string> uniform = {"sizing.le_size=0", "sizing.te_size=0", "sizing.curvature_segments=0",
                                             "sizing.max_size=0.3", "geometry.naca.box=[-2,-2,0,3,2,2]",
                                             "farfield.box_size=0.6", "output.formats=[\"msh41\"]"};
