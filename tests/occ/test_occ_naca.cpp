@@ -1,5 +1,6 @@
 // The OCC B-spline NACA wing against the analytic one (mock_cad): same surfaces in the same
-// order, points within 1e-7 chord, normals on the same side, a closed valid shell.
+// order, points within 1e-7 chord, normals on the same side, curves named by role as in the
+// analytic model, a closed valid shell.
 #include "occ_test_support.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/occ/occ_backend.hpp"
@@ -10,6 +11,10 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
 
 namespace semimesh::occ::test {
 namespace {
@@ -47,6 +52,30 @@ TEST_P(OccNaca, MatchesTheAnalyticWing) {
     }
     EXPECT_LT(worst, 1e-7 * chord) << mine.name();
   }
+}
+
+// The size field clusters by curve name (leading_edge, te_*), so each OCC curve must carry the
+// analytic name of the curve it lies on.
+TEST_P(OccNaca, CurvesCarryTheAnalyticNames) {
+  const cad::Params& params = GetParam().params;
+  auto occ_model = load_occ(cad::Source{"", params});
+  auto exact = mock_cad::load_naca(cad::Source{"", params});
+  const double chord = mock_cad::naca_params_from(params).chord;
+
+  std::map<std::string, int> exact_curves;  // name -> id
+  for (int c = 0; c < exact->num_curves(); ++c) exact_curves[exact->curve(c).name()] = c;
+  std::set<std::string> seen;
+  for (int c = 0; c < occ_model->num_curves(); ++c) {
+    const cad::Curve& mine = occ_model->curve(c);
+    EXPECT_TRUE(seen.insert(mine.name()).second) << "two OCC curves named " << mine.name();
+    const auto match = exact_curves.find(mine.name());
+    ASSERT_NE(match, exact_curves.end()) << "OCC curve " << c << " '" << mine.name() << "' is not an analytic curve";
+    const cad::Interval t = mine.bounds();
+    const cad::Vec3 midpoint = mine.point(0.5 * (t.lo + t.hi));
+    EXPECT_LT(exact->curve(match->second).project(midpoint).distance, 1e-7 * chord)
+        << mine.name() << ": midpoint " << midpoint.transpose() << " is off the analytic curve";
+  }
+  EXPECT_EQ(seen.size(), exact_curves.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(

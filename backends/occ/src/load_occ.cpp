@@ -1,4 +1,5 @@
 // The registry factory: read (or generate), scale once, sew, heal, map onto a cadapi Model.
+#include "naca_edge_names.hpp"
 #include "prepare_shape.hpp"
 #include "read_shape.hpp"
 #include "semimesh/cad/error.hpp"
@@ -88,6 +89,7 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
   int index = 0;
   for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) options.face_names.emplace_back(f.Current(), names.at(index++));
   shape = scale_shape(shape, scale, options.face_names);
+  options.edge_names = naca_wing_edge_names(shape, options.face_names);  // the analytic curve names
   options.scale_applied = scale;
   options.units = source.params.get_string("occ.units", scale == 1.0 ? "chord" : "chord x " + number_label(scale));
   return model_from_shape(shape, kBackend, options);

@@ -76,21 +76,24 @@ FaceOrientations fluid_orientations(const TopoDS_Shape& shape, FluidSide side) {
   return out;
 }
 
-std::vector<std::string> unique_face_names(const TopTools_IndexedMapOfShape& faces, const ModelOptions& options) {
-  NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher> given;
-  for (const auto& [face, name] : options.face_names)
-    if (!given.IsBound(face)) given.Bind(face, name);
-  std::vector<std::string> names;
-  std::set<std::string> taken;
-  for (int i = 1; i <= faces.Extent(); ++i) {
-    const int id = i - 1;
-    std::string name = given.IsBound(faces(i)) ? given.Find(faces(i)) : std::string();
-    if (name.empty() || name == "NONE") name = "face_" + std::to_string(id);
-    if (taken.count(name)) name += "_" + std::to_string(id);
-    taken.insert(name);
-    names.push_back(name);
-  }
-  return names;
+using ShapeNames = NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher>;
+
+ShapeNames name_map(const std::vector<std::pair<TopoDS_Shape, std::string>>& names) {
+  ShapeNames out;
+  for (const auto& [shape, name] : names)
+    if (!out.IsBound(shape)) out.Bind(shape, name);
+  return out;
+}
+
+/// The given name of `shape`, or "<prefix>_<id>" when it has none (or "NONE"); a name already
+/// `taken` gets "_<id>" appended.
+std::string unique_name(const ShapeNames& given, const TopoDS_Shape& shape, const std::string& prefix, int id,
+                        std::set<std::string>& taken) {
+  std::string name = given.IsBound(shape) ? given.Find(shape) : std::string();
+  if (name.empty() || name == "NONE") name = prefix + "_" + std::to_string(id);
+  if (taken.count(name)) name += "_" + std::to_string(id);
+  taken.insert(name);
+  return name;
 }
 
 }  // namespace
@@ -113,12 +116,14 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
     model->add_vertex(cad::Vec3(p.X(), p.Y(), p.Z()));
   }
 
+  const ShapeNames edge_names = name_map(options.edge_names);
+  std::set<std::string> curve_names_taken;
   std::vector<int> curve_of_edge(edges.Extent() + 1, -1);  // map index -> curve id; -1: degenerated
   for (int i = 1; i <= edges.Extent(); ++i) {
     TopoDS_Edge edge = TopoDS::Edge(edges(i).Oriented(TopAbs_FORWARD));
     if (BRep_Tool::Degenerated(edge)) continue;
     const int id = model->num_curves();
-    auto curve = std::make_unique<OccCurve>(id, "edge_" + std::to_string(id), edge);
+    auto curve = std::make_unique<OccCurve>(id, unique_name(edge_names, edges(i), "edge", id, curve_names_taken), edge);
     thread_safe = thread_safe && !curve->has_mutable_evaluator();
     TopoDS_Vertex first, last;
     TopExp::Vertices(edge, first, last);
@@ -130,7 +135,8 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
   }
 
   const FaceOrientations fluid = fluid_orientations(shape, options.fluid_side);
-  const std::vector<std::string> names = unique_face_names(faces, options);
+  const ShapeNames face_names = name_map(options.face_names);
+  std::set<std::string> surface_names_taken;
   for (int i = 1; i <= faces.Extent(); ++i) {
     const int id = i - 1;
     TopoDS_Face face = TopoDS::Face(faces(i).Oriented(fluid.Find(faces(i))));
@@ -150,7 +156,7 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
     if (!outer.IsNull()) add_loop(outer);
     for (TopoDS_Iterator w(face); w.More(); w.Next())
       if (w.Value().ShapeType() == TopAbs_WIRE && !w.Value().IsSame(outer)) add_loop(TopoDS::Wire(w.Value()));
-    auto surface = std::make_unique<OccSurface>(id, names[id], face);
+    auto surface = std::make_unique<OccSurface>(id, unique_name(face_names, faces(i), "face", id, surface_names_taken), face);
     thread_safe = thread_safe && !surface->has_mutable_evaluator();
     model->add_surface(std::move(surface), std::move(loops));
   }

@@ -48,6 +48,9 @@ struct ModelOptions {
   /// Face names (faces matched with TopoDS_Shape::IsSame). Unnamed faces, and names that are
   /// empty or "NONE", become "face_<id>"; a name already taken gets "_<id>" appended.
   std::vector<std::pair<TopoDS_Shape, std::string>> face_names;
+  /// Curve names, likewise (edges of the shape as given, matched with IsSame); unnamed edges
+  /// become "edge_<id>".
+  std::vector<std::pair<TopoDS_Shape, std::string>> edge_names;
 };
 
 /// Registry factory. source.path: .step/.stp/.iges/.igs/.brep/.brp/.fcstd (any case); empty path:
