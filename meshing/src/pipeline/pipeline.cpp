@@ -4,6 +4,8 @@
 #include "semimesh/cad/error.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/mesh_validity.hpp"
+#include "semimesh/ho/repair.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
@@ -295,6 +297,17 @@ RunResult run(const Config& config, Progress& progress) {
   if (config.highorder.order > 1)
     result.mesh = stage("curve", progress, result, [&] {
       return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder));
+    });
+  // Curving can fold an element between its nodes; relax its free nodes until it is proven valid.
+  // What cannot be repaired stays invalid and is reported by the checks (exit code 2).
+  if (config.highorder.order > 1)
+    stage("repair", progress, result, [&] {
+      const ho::MeshValidity validity = ho::certify_mesh(result.mesh);
+      if (validity.all_valid()) return;
+      const ho::RepairStats repair = ho::repair_invalid(result.mesh, *model, validity.invalid_elements);
+      result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
+                                            validity.invalid, repair.repaired_interior + repair.repaired_free_nodes,
+                                            repair.failures.size()));
     });
 
   // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).

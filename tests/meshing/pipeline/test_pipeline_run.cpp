@@ -111,6 +111,7 @@ TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
                           progress);
 
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "curve"), progress.finished.end());
+  EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "repair"), progress.finished.end());
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "split"), progress.finished.end());
   EXPECT_EQ(r.mesh.order(), 2);
   EXPECT_EQ(r.validity.invalid, 0u);
