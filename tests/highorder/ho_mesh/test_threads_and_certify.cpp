@@ -71,15 +71,20 @@ TEST(HoMeshThreads, OneAndTwoThreadsGiveByteIdenticalMeshes) {
 
 TEST(CertifyMesh, AgreesWithASerialLoopAndLocatesInvalidElements) {
   mesh::Mesh curved = curve_mesh(shell().field.mesh, *shell().model, {2, NodeSet::GLL, 50, 1e-10});
-  // Make two elements invalid by pushing a free (non-CAD) node of each far through the element.
+  // Make two elements invalid for certain: the midnode m of the layer edge from body vertex 0 to
+  // skin vertex 3 (not on the CAD) goes to 2 x0 - x3, which reverses dx/dzeta at vertex 0
+  // ((-3 x0 + 4 m - x3) / 2 = -5/2 (x3 - x0)) while the body-face derivatives there stay: det J < 0
+  // at a vertex, a value the certification must see.
+  const auto& prism_edges = ho::edges(Shape::Prism);
+  const std::size_t layer_edge =
+      static_cast<std::size_t>(std::find(prism_edges.begin(), prism_edges.end(), std::array<int, 2>{0, 3}) - prism_edges.begin());
+  ASSERT_LT(layer_edge, prism_edges.size());
   const std::size_t bad[2] = {3, curved.elements().size() / 2};
   for (std::size_t e : bad) {
     const std::vector<mesh::NodeId> ids = curved.element_nodes(e);
-    for (std::size_t i = 6; i < ids.size(); ++i)
-      if (curved.cad_attachment(ids[i]).kind == mesh::CadAttachment::None) {
-        curved.place_node(ids[i], curved.node(ids[i]) + Eigen::Vector3d(0.0, 0.0, 5.0));
-        break;
-      }
+    const mesh::NodeId mid = ids[6 + layer_edge];  // order 2: one node per edge, in edge order
+    ASSERT_EQ(curved.cad_attachment(mid).kind, mesh::CadAttachment::None) << e;
+    curved.place_node(mid, 2.0 * curved.node(ids[0]) - curved.node(ids[3]));
   }
   const MeshValidity v = certify_mesh(curved);
   ASSERT_EQ(v.bounds.size(), curved.elements().size());
