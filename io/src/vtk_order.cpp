@@ -13,6 +13,24 @@ namespace {
 
 using Point = std::array<int, 3>;  // VTK lattice coordinates times the order P
 
+/// The lattice point i/n of the way from a to b (exact: the lattice has n steps along a->b).
+Point lerp(const Point& a, const Point& b, int i, int n) {
+  Point p{};
+  for (int k = 0; k < 3; ++k) p[k] = a[k] + (b[k] - a[k]) * i / n;
+  return p;
+}
+
+/// Corners of the order n-3 triangle inside the order-n triangle (a, b, c): each corner moved one
+/// lattice step along both of its edges.
+std::array<Point, 3> inner_triangle(const Point& a, const Point& b, const Point& c, int n) {
+  const std::array<Point, 3> t{a, b, c};
+  std::array<Point, 3> inner{};
+  for (int v = 0; v < 3; ++v)
+    for (int k = 0; k < 3; ++k)
+      inner[v][k] = t[v][k] + ((t[(v + 1) % 3][k] - t[v][k]) + (t[(v + 2) % 3][k] - t[v][k])) / n;
+  return inner;
+}
+
 /// Recursive simplex ordering shared by VTK's triangle and the faces/interior of its tetrahedron:
 /// the corners, the points inside each edge (a->b), then the same pattern on the inner triangle.
 /// corners: lattice points of the sub-triangle's vertices; n: its order (0 = single point).
@@ -22,21 +40,11 @@ void triangle_points(const std::array<Point, 3>& c, int n, std::vector<Point>& o
     out.push_back(c[0]);
     return;
   }
-  auto lerp = [&](const Point& a, const Point& b, int i) {
-    Point p{};
-    for (int k = 0; k < 3; ++k) p[k] = a[k] + (b[k] - a[k]) * i / n;
-    return p;
-  };
   for (const auto& v : c) out.push_back(v);
   for (int e = 0; e < 3; ++e)
-    for (int i = 1; i < n; ++i) out.push_back(lerp(c[e], c[(e + 1) % 3], i));
+    for (int i = 1; i < n; ++i) out.push_back(lerp(c[e], c[(e + 1) % 3], i, n));
   if (n < 3) return;
-  // Inner triangle of order n-3: each corner moved one step along both of its edges.
-  std::array<Point, 3> inner{};
-  for (int v = 0; v < 3; ++v)
-    for (int k = 0; k < 3; ++k)
-      inner[v][k] = c[v][k] + ((c[(v + 1) % 3][k] - c[v][k]) + (c[(v + 2) % 3][k] - c[v][k])) / n;
-  triangle_points(inner, n - 3, out);
+  triangle_points(inner_triangle(c[0], c[1], c[2], n), n - 3, out);
 }
 
 void tetra_points(const std::array<Point, 4>& c, int n, std::vector<Point>& out) {
@@ -45,25 +53,14 @@ void tetra_points(const std::array<Point, 4>& c, int n, std::vector<Point>& out)
     out.push_back(c[0]);
     return;
   }
-  auto lerp = [&](const Point& a, const Point& b, int i) {
-    Point p{};
-    for (int k = 0; k < 3; ++k) p[k] = a[k] + (b[k] - a[k]) * i / n;
-    return p;
-  };
   for (const auto& v : c) out.push_back(v);
   static constexpr int kEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
   for (const auto& e : kEdges)
-    for (int i = 1; i < n; ++i) out.push_back(lerp(c[e[0]], c[e[1]], i));
+    for (int i = 1; i < n; ++i) out.push_back(lerp(c[e[0]], c[e[1]], i, n));
   if (n < 3) return;
   // Faces with their starting corner as VTK lists them.
   static constexpr int kFaces[4][3] = {{0, 1, 3}, {2, 3, 1}, {0, 3, 2}, {0, 2, 1}};
-  for (const auto& f : kFaces) {
-    std::array<Point, 3> inner{};
-    for (int v = 0; v < 3; ++v)
-      for (int k = 0; k < 3; ++k)
-        inner[v][k] = c[f[v]][k] + ((c[f[(v + 1) % 3]][k] - c[f[v]][k]) + (c[f[(v + 2) % 3]][k] - c[f[v]][k])) / n;
-    triangle_points(inner, n - 3, out);
-  }
+  for (const auto& f : kFaces) triangle_points(inner_triangle(c[f[0]], c[f[1]], c[f[2]], n), n - 3, out);
   if (n < 4) return;
   std::array<Point, 4> inner{};
   for (int v = 0; v < 4; ++v)

@@ -52,16 +52,16 @@ double solid_angle(const Surface& s, const Vec3& q) {
   const auto box = s.bounds();
   constexpr int kBase = 8, kMaxLevel = 16;
   constexpr size_t kMaxCells = 400000;
-  std::vector<Cell> todo;
+  std::vector<Cell> pending;  // cells still to test or split
   for (int i = 0; i < kBase; ++i)
     for (int j = 0; j < kBase; ++j)
-      todo.push_back(Cell{box[0].lo + box[0].length() * i / kBase, box[0].lo + box[0].length() * (i + 1) / kBase,
+      pending.push_back(Cell{box[0].lo + box[0].length() * i / kBase, box[0].lo + box[0].length() * (i + 1) / kBase,
                           box[1].lo + box[1].length() * j / kBase, box[1].lo + box[1].length() * (j + 1) / kBase, 0});
   double sum = 0.0;
   size_t visited = 0;
-  while (!todo.empty()) {
-    Cell c = todo.back();
-    todo.pop_back();
+  while (!pending.empty()) {
+    Cell c = pending.back();
+    pending.pop_back();
     if (++visited > kMaxCells) throw std::runtime_error("winding number: too many cells on surface '" + s.name() + "'");
     const double hu = 0.5 * (c.u1 - c.u0), hv = 0.5 * (c.v1 - c.v0);
     const auto mid = s.derivatives(Vec2(c.u0 + hu, c.v0 + hv));
@@ -89,10 +89,10 @@ double solid_angle(const Surface& s, const Vec3& q) {
     if (c.level < kMaxLevel && size > ratio * distance) {
       const double um = c.u0 + hu, vm = c.v0 + hv;
       const int l = c.level + 1;
-      todo.push_back(Cell{c.u0, um, c.v0, vm, l});
-      todo.push_back(Cell{um, c.u1, c.v0, vm, l});
-      todo.push_back(Cell{c.u0, um, vm, c.v1, l});
-      todo.push_back(Cell{um, c.u1, vm, c.v1, l});
+      pending.push_back(Cell{c.u0, um, c.v0, vm, l});
+      pending.push_back(Cell{um, c.u1, c.v0, vm, l});
+      pending.push_back(Cell{c.u0, um, vm, c.v1, l});
+      pending.push_back(Cell{um, c.u1, vm, c.v1, l});
     } else {
       sum += cell * hu * hv;
     }
