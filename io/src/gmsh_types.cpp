@@ -9,18 +9,18 @@ namespace {
 
 struct Row {
   ho::Shape shape;
-  std::array<int, kMaxMshOrder> types;  // orders 1..6
+  std::array<int, kMaxMshOrder> types;  // orders 1..kMaxMshOrder
 };
 
 // gmsh.model.mesh.getElementType(family, order) for family Triangle, Quadrangle, Tetrahedron,
-// Pyramid, Prism, Hexahedron and order 1..6 (gmsh 4.8).
+// Pyramid, Prism, Hexahedron and order 1..9 (gmsh 4.8; prisms, pyramids and hexes stop at 9).
 constexpr std::array<Row, 6> kTable = {{
-    {ho::Shape::Triangle, {2, 9, 21, 23, 25, 42}},
-    {ho::Shape::Quadrilateral, {3, 10, 36, 37, 38, 47}},
-    {ho::Shape::Tetrahedron, {4, 11, 29, 30, 31, 71}},
-    {ho::Shape::Pyramid, {7, 14, 118, 119, 120, 121}},
-    {ho::Shape::Prism, {6, 13, 90, 91, 106, 107}},
-    {ho::Shape::Hexahedron, {5, 12, 92, 93, 94, 95}},
+    {ho::Shape::Triangle, {2, 9, 21, 23, 25, 42, 43, 44, 45}},
+    {ho::Shape::Quadrilateral, {3, 10, 36, 37, 38, 47, 48, 49, 50}},
+    {ho::Shape::Tetrahedron, {4, 11, 29, 30, 31, 71, 72, 73, 74}},
+    {ho::Shape::Pyramid, {7, 14, 118, 119, 120, 121, 122, 123, 124}},
+    {ho::Shape::Prism, {6, 13, 90, 91, 106, 107, 108, 109, 110}},
+    {ho::Shape::Hexahedron, {5, 12, 92, 93, 94, 95, 96, 97, 98}},
 }};
 
 }  // namespace

@@ -1,6 +1,6 @@
 """Structural check of the Nektar++ XML writer (no Nektar++ is installed), with Python's XML parser.
 
-For each sample element (orders 1..6): VERTEX/EDGE/FACE/ELEMENT ids are consistent; each face's
+For each sample element (orders 1..9): VERTEX/EDGE/FACE/ELEMENT ids are consistent; each face's
 edges form a closed loop; each element's faces have the types of Nektar's local faces (e.g. a
 prism is Q T Q T Q) and a right-handed numbering of its vertices exists that gives exactly
 Nektar's local faces (TetGeom/PyrGeom/PrismGeom/HexGeom face-vertex tables); every CURVED point
@@ -128,7 +128,7 @@ def main():
     d = write_samples(sys.argv[1])
     f = Failures()
     for name in SHAPES:
-        for p in range(1, 7):
+        for p in range(1, 10):
             check_file(f, os.path.join(d, f"{name}_{p}.xml"), name, p)
     f.finish("verify_nektar")
 

@@ -1,6 +1,6 @@
 """Independent check of the VTU writer with VTK's own reader and Lagrange cells (python3-vtk9).
 
-Each sample element (orders 1..6) is read with vtkXMLUnstructuredGridReader; VTK evaluates the
+Each sample element (orders 1..9) is read with vtkXMLUnstructuredGridReader; VTK evaluates the
 cell at random parametric points (vtkCell.EvaluateLocation) and the result must equal the known
 map at the same point (VTK's parametric cube/prism [0,1] -> Gmsh's [-1,1]). A wrong node
 permutation gives errors of order 0.01-1. Pyramids are linear VTK_PYRAMID cells: their 5 points
@@ -16,6 +16,9 @@ import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sample_map import SHAPES, Failures, curved_map, face_point, inside_points, reference_of_vertex, write_samples
+
+# Equispaced interpolation of order 9 loses ~1e-9 to round-off; a wrong node order costs >= 1e-3.
+INTERPOLATION_TOLERANCE = 1e-8
 
 LAGRANGE = {"tet": 71, "hex": 72, "pri": 73}
 
@@ -51,7 +54,7 @@ def main():
     d = write_samples(writer)
     f = Failures()
     for name in SHAPES:
-        for p in range(1, 7):
+        for p in range(1, 10):
             path = os.path.join(d, f"{name}_{p}.vtu")
             reader = vtk.vtkXMLUnstructuredGridReader()
             reader.SetFileName(path)
@@ -69,7 +72,7 @@ def main():
                 uvw = inside_points(name)
                 got = np.array([evaluate(cell, gmsh_to_vtk(name, r)) for r in uvw])
                 err = np.abs(got - curved_map(uvw, p)).max()
-                f.check(err < 1e-9, f"{path}: VTK evaluation differs from the map by {err:.3g}")
+                f.check(err < INTERPOLATION_TOLERANCE, f"{path}: VTK evaluation differs from the map by {err:.3g}")
             for c in range(1, grid.GetNumberOfCells()):
                 face = grid.GetCell(c)
                 quad = face.GetCellType() == 70
@@ -79,7 +82,7 @@ def main():
                 for uv in ([(-0.3, 0.2), (0.5, -0.6)] if quad else [(0.2, 0.3), (0.6, 0.1)]):
                     pc = [(uv[0] + 1) / 2, (uv[1] + 1) / 2, 0] if quad else [uv[0], uv[1], 0]
                     err = np.abs(evaluate(face, pc) - curved_map([face_point(refv, uv, quad)], p)[0]).max()
-                    f.check(err < 1e-9, f"{path}: boundary cell {c} off the map by {err:.3g}")
+                    f.check(err < INTERPOLATION_TOLERANCE, f"{path}: boundary cell {c} off the map by {err:.3g}")
     f.finish("verify_vtu")
 
 

@@ -4,12 +4,13 @@
 // the same map and compare.
 //
 // usage: io_write_samples OUTDIR
-//   OUTDIR/{tet,pyr,pri,hex}_P.msh       MSH 4.1, P = 1..6, equispaced nodes
+//   OUTDIR/{tet,pyr,pri,hex}_P.msh       MSH 4.1, P = 1..9 (kMaxMshOrder), equispaced nodes
 //   OUTDIR/{...}_P_v22.msh               MSH 2.2
 //   OUTDIR/{...}_P_gll.msh               MSH 4.1 written from a GLL-node mesh (resampled), P >= 2
 //   OUTDIR/{...}_P_invalid.msh           MSH 4.1 of a folded element (det J = 1 - 3 y < 0 in part), P >= 2
 //   OUTDIR/{...}_P.vtu, {...}_P.xml      VTU and Nektar++ XML
 // Each file also holds every face of the element as a boundary face (groups "tri", "quad").
+#include "semimesh/io/gmsh_types.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
@@ -30,8 +31,8 @@ Eigen::Vector3d curved_map(const Eigen::Vector3d& r, int p) {
   const double s1 = 0.3 * a + 0.5 * b - 0.2 * c + 0.1;
   const double s2 = -0.4 * a + 0.2 * b + 0.6 * c - 0.3;
   const double s3 = 0.5 * a - 0.3 * b + 0.4 * c + 0.2;
-  return {a + 0.1 * std::pow(s1, p) + 0.05 * s2, b + 0.1 * std::pow(s2, p) + 0.05 * s3,
-          c + 0.1 * std::pow(s3, p) + 0.05 * s1};
+  const double k = 0.1 / p;  // keeps det J > 0 on every reference element up to order 9
+  return {a + k * std::pow(s1, p) + 0.05 * s2, b + k * std::pow(s2, p) + 0.05 * s3, c + k * std::pow(s3, p) + 0.05 * s1};
 }
 
 // Folded: y' = y - 1.5 y^2, so det J = 1 - 3y changes sign inside every reference element.
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
       {Shape::Tetrahedron, "tet"}, {Shape::Pyramid, "pyr"}, {Shape::Prism, "pri"}, {Shape::Hexahedron, "hex"}};
   try {
     for (const auto& [shape, name] : shapes)
-      for (int p = 1; p <= 6; ++p) {
+      for (int p = 1; p <= semimesh::io::kMaxMshOrder; ++p) {
         const std::string base = dir + "/" + name + "_" + std::to_string(p);
         auto curved = [p](const Eigen::Vector3d& r) { return curved_map(r, p); };
         const auto mesh = one_element(shape, p, NodeSet::Equispaced, curved);

@@ -1,4 +1,5 @@
-// Gmsh element type numbers of complete (non-serendipity) Lagrange elements, orders 1..6.
+// Gmsh element type numbers of complete (non-serendipity) Lagrange elements, orders 1..9
+// (the highest order Gmsh 4.8 has for prisms, pyramids and hexes).
 // Values from gmsh's GmshDefines.h, verified with gmsh.model.mesh.getElementType(family, order)
 // (python3-gmsh 4.8) and by tests/io/verify_msh.py.
 #pragma once
@@ -7,9 +8,9 @@
 
 namespace semimesh::io {
 
-constexpr int kMaxMshOrder = 6;
+constexpr int kMaxMshOrder = 9;
 
-/// Gmsh type of (shape, order); throws std::invalid_argument for Segment or order outside [1, 6].
+/// Gmsh type of (shape, order); throws std::invalid_argument for Segment or order outside [1, kMaxMshOrder].
 int gmsh_element_type(ho::Shape shape, int order);
 
 /// Inverse of gmsh_element_type: false if `type` is not one of those elements (points, lines,

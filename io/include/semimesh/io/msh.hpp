@@ -5,7 +5,7 @@
 // boundary group, one volume), $Nodes (every mesh node, tag = NodeId + 1, equispaced positions),
 // $Elements (volume elements first, then boundary faces, in mesh order; element tags from 1).
 // Node order inside an element is the canonical Gmsh order, so it is written as stored.
-// Orders 1..6. A GLL mesh is resampled to equispaced nodes first (io::to_equispaced).
+// Orders 1..9 (kMaxMshOrder). A GLL mesh is resampled to equispaced nodes first (io::to_equispaced).
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
@@ -26,7 +26,7 @@ void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion versi
 /// Reads an ASCII MSH 4.1 or 2.2 file: 3D elements become mesh elements, triangles and quads
 /// become boundary faces in the group named by their physical group ("surface_<tag>" when the
 /// group has no name, "unassigned" without a physical group); points and lines are skipped.
-/// All elements must have one order (1..6). The node set is Equispaced. Throws std::runtime_error
+/// All elements must have one order (1..9). The node set is Equispaced. Throws std::runtime_error
 /// "FILE:LINE: what was expected" on malformed input.
 mesh::Mesh read_msh(const std::string& path);
 
