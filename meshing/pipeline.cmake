@@ -26,8 +26,8 @@ if(TARGET semimesh_nearfield AND TARGET semimesh_farfield AND TARGET semimesh_ho
   add_library(semimesh::pipeline ALIAS semimesh_pipeline)
   target_include_directories(semimesh_pipeline PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
   target_link_libraries(semimesh_pipeline
-    PUBLIC semimesh_config semimesh_checks semimesh_meshing
-    PRIVATE semimesh_backends semimesh_surface_mesh semimesh_nearfield semimesh_farfield semimesh_ho_mesh semimesh_io
+    PUBLIC semimesh_config semimesh_checks semimesh_meshing semimesh_ho_mesh
+    PRIVATE semimesh_backends semimesh_surface_mesh semimesh_nearfield semimesh_farfield semimesh_io
             fmt::fmt
             semimesh_warnings)
 endif()

@@ -40,7 +40,8 @@ TEST(CertifyJacobian, AffineElementsHaveConstantDetJ) {
       for (int order : {1, 2, 3, 5, 8}) {
         const Eigen::MatrixX3d nodes =
             mapped_nodes(shape, order, set, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return a * x + shift; });
-        const JacobianBounds b = certify_jacobian(shape, order, set, nodes);
+        // The Bernstein path itself (certify_jacobian takes the affine fast path here).
+        const JacobianBounds b = certify_jacobian_by_subdivision(shape, order, set, nodes);
         SCOPED_TRACE(label(shape, order) + (set == NodeSet::GLL ? " GLL" : " equispaced"));
         // Equispaced nodes of order 8 make the node-to-Bezier conversion ill-conditioned (norm ~1e8).
         const double tolerance = (set == NodeSet::Equispaced && order == 8 ? 1e-7 : 1e-9) * expected;
@@ -51,6 +52,52 @@ TEST(CertifyJacobian, AffineElementsHaveConstantDetJ) {
         EXPECT_NEAR(b.min_upper, expected, tolerance);
         EXPECT_NEAR(b.max_upper, expected, tolerance);
         EXPECT_NEAR(scaled_jacobian(b), 1.0, 2 * tolerance / expected);
+      }
+}
+
+// The affine fast path against the Bernstein reference: the same verdict and bounds on random affine
+// elements (valid and inverted) of every shape, order and node set, and no fast path as soon as one
+// node leaves the affine image or the element is nearly flat.
+TEST(CertifyJacobian, AffineFastPathAgreesWithSubdivision) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (Shape shape : kShapes)
+    for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL})
+      for (int order : {1, 2, 4, 6}) {
+        SCOPED_TRACE(label(shape, order) + (set == NodeSet::GLL ? " GLL" : " equispaced"));
+        for (int trial = 0; trial < 4; ++trial) {
+          Eigen::Matrix3d a = Eigen::Matrix3d::Identity() * 2.0;
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) a(i, j) += 0.6 * u(rng);
+          if (trial == 3) a.col(0) *= -1.0;  // inverted
+          const Eigen::Vector3d shift(5.0 * u(rng), 5.0 * u(rng), 5.0 * u(rng));
+          Eigen::MatrixX3d nodes =
+              mapped_nodes(shape, order, set, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return a * x + shift; });
+          JacobianBounds fast;
+          ASSERT_TRUE(affine_jacobian(shape, order, set, nodes, fast));
+          const JacobianBounds slow = certify_jacobian_by_subdivision(shape, order, set, nodes);
+          EXPECT_EQ(fast.valid, slow.valid);
+          EXPECT_EQ(fast.proven, slow.proven);
+          const double tolerance = 1e-7 * std::abs(a.determinant());
+          EXPECT_NEAR(fast.min_lower, slow.min_lower, tolerance);
+          EXPECT_NEAR(fast.max_upper, slow.max_upper, tolerance);
+          EXPECT_NEAR(scaled_jacobian(fast), scaled_jacobian(slow), 1e-7);
+          if (order > 1) {  // one node off the affine image: the general path decides
+            nodes(nodes.rows() - 1, 1) += 1e-6;
+            JacobianBounds unused;
+            EXPECT_FALSE(affine_jacobian(shape, order, set, nodes, unused));
+          }
+        }
+        // Thin (1e-9) and far from the origin: the round-off of the node positions is then large
+        // against the element's smallest stretch, so it is left to the general path.
+        Eigen::Matrix3d thin = Eigen::Matrix3d::Identity();
+        thin(2, 2) = 1e-9;
+        const Eigen::Vector3d far(1e3, 1e3, 1e3);
+        JacobianBounds unused;
+        EXPECT_FALSE(affine_jacobian(
+            shape, order, set,
+            mapped_nodes(shape, order, set, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return thin * x + far; }),
+            unused));
       }
 }
 

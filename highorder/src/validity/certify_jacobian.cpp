@@ -56,6 +56,13 @@ std::array<int, 3> longest_edge(const Piece& piece) {
 
 JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
                                 int max_depth) {
+  JacobianBounds bounds;
+  if (affine_jacobian(shape, order, set, element_nodes, bounds)) return bounds;
+  return certify_jacobian_by_subdivision(shape, order, set, element_nodes, max_depth);
+}
+
+JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet set,
+                                               const Eigen::MatrixX3d& element_nodes, int max_depth) {
   const int max_bisections = 3 * std::max(0, max_depth);
   JacobianBounds bounds;
   bounds.min_lower = std::numeric_limits<double>::infinity();

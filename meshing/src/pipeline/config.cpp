@@ -307,6 +307,10 @@ void read_highorder(Section s, HighOrderConfig& h) {
   s.require(h.order >= 1 && h.order <= 8, "order", "an integer in [1, 8]");
   s.string("node_set", h.node_set);
   s.require(one_of(h.node_set, {"gll", "equispaced"}), "node_set", "\"gll\" or \"equispaced\"");
+  s.string("node_placement", h.node_placement);
+  s.require(one_of(h.node_placement, {"parameter", "springs"}), "node_placement", "\"parameter\" or \"springs\"");
+  s.integer("spring_iterations", h.spring_iterations);
+  s.require(h.spring_iterations >= 1 && h.spring_iterations <= 10000, "spring_iterations", "an integer in [1, 10000]");
   s.reject_unknown();
 }
 

@@ -186,6 +186,8 @@ ho::CurvingParams curving_params(const HighOrderConfig& h) {
   ho::CurvingParams p;
   p.order = h.order;
   p.node_set = h.node_set == "gll" ? ho::NodeSet::GLL : ho::NodeSet::Equispaced;
+  p.placement = h.node_placement == "springs" ? ho::NodePlacement::Springs : ho::NodePlacement::Parameter;
+  p.spring_iterations = h.spring_iterations;
   return p;
 }
 
@@ -296,8 +298,13 @@ RunResult run(const Config& config, Progress& progress) {
   result.mesh = std::move(near.mesh);
   if (config.highorder.order > 1)
     result.mesh = stage("curve", progress, result, [&] {
-      return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder));
+      return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder), &result.curving);
     });
+  if (config.highorder.order > 1) result.node_placement = config.highorder.node_placement;
+  if (result.curving.optimisation_fallbacks > 0)
+    result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
+                                          "within {} iterations; they keep their parameter-space positions",
+                                          result.curving.optimisation_fallbacks, config.highorder.spring_iterations));
   // Curving can fold an element between its nodes; relax its free nodes until it is proven valid.
   // What cannot be repaired stays invalid and is reported by the checks (exit code 2).
   if (config.highorder.order > 1)

@@ -70,6 +70,12 @@ std::string summary_table(const RunResult& r) {
     t += fmt::format("{:<28} {:>12.4f}\n", "layer ratio (achieved)", r.layers.achieved_ratio);
     t += fmt::format("{:<28} {:>12.4g}\n", "max first-layer aspect", r.layers.max_first_layer_aspect);
   }
+  if (r.mesh.order() > 1) {
+    t += fmt::format("{:<28} {:>12}\n", "node placement", r.node_placement);
+    t += fmt::format("{:<28} {:>12.4g}\n", "max node move onto CAD", r.curving.max_projection_distance);
+    if (r.curving.optimisation_fallbacks > 0)
+      t += fmt::format("{:<28} {:>12}\n", "spring fallbacks", r.curving.optimisation_fallbacks);
+  }
   t += fmt::format("{:<28} {:>12.3e}\n", "geometric error max / chord", r.geometric_error.max_rel);
   t += fmt::format("{:<28} {:>12.3e}\n", "geometric error rms / chord", r.geometric_error.rms_rel);
   for (const StageTiming& s : r.stages) t += fmt::format("  time {:<21} {:>10.3f} s\n", s.name, s.seconds);
@@ -99,6 +105,11 @@ std::string report_json(const RunResult& r, const Config& config) {
                    "\"samples\": {}}},\n",
                    json_number(r.geometric_error.max_rel), json_number(r.geometric_error.rms_rel),
                    json_number(r.geometric_error.reference_length), r.geometric_error.samples);
+  j += fmt::format("  \"curving\": {{\"node_placement\": {}, \"edges_on_curves\": {}, \"edges_on_surfaces\": {}, "
+                   "\"faces_on_surfaces\": {}, \"spring_fallbacks\": {}, \"max_node_move\": {}}},\n",
+                   json_string(r.node_placement), r.curving.edges_on_curves, r.curving.edges_on_surfaces,
+                   r.curving.faces_on_surfaces, r.curving.optimisation_fallbacks,
+                   json_number(r.curving.max_projection_distance));
   j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
   j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));

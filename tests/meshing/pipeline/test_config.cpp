@@ -36,6 +36,8 @@ TEST(Config, DefaultsAreThePapersCase) {
   EXPECT_FALSE(c.boundary_layer.first_cell_height.has_value());
   EXPECT_EQ(c.highorder.order, 4);
   EXPECT_EQ(c.highorder.node_set, "gll");
+  EXPECT_EQ(c.highorder.node_placement, "parameter");
+  EXPECT_EQ(c.highorder.spring_iterations, 50);
   // Far field about ten chords from the wing.
   EXPECT_LE(c.geometry.naca.box[0], -9.0);
   EXPECT_GE(c.geometry.naca.box[3], 10.0);
@@ -86,6 +88,8 @@ max_volume = 2.5
 [highorder]
 order = 3
 node_set = "equispaced"
+node_placement = "springs"
+spring_iterations = 20
 [output]
 formats = ["msh22", "nektar"]
 directory = "out"
@@ -127,6 +131,8 @@ allow_invalid = true
   EXPECT_EQ(c.farfield.max_volume, 2.5);
   EXPECT_EQ(c.highorder.order, 3);
   EXPECT_EQ(c.highorder.node_set, "equispaced");
+  EXPECT_EQ(c.highorder.node_placement, "springs");
+  EXPECT_EQ(c.highorder.spring_iterations, 20);
   EXPECT_EQ(c.output.formats, (std::vector<std::string>{"msh22", "nektar"}));
   EXPECT_EQ(c.output.directory, "out");
   EXPECT_EQ(c.output.basename, "wing");
@@ -156,6 +162,11 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
   EXPECT_EQ(message, "config error: case.toml:2: boundary_layer.ratio = 0.5: expected >= 1");
   EXPECT_NE(error_of("[highorder]\norder = 9\n").find("highorder.order = 9: expected an integer in [1, 8]"),
             std::string::npos);
+  EXPECT_NE(error_of("[highorder]\nnode_placement = \"geodesic\"\n")
+                .find("highorder.node_placement = \"geodesic\": expected \"parameter\" or \"springs\""),
+            std::string::npos)
+      << error_of("[highorder]\nnode_placement = \"geodesic\"\n");
+  EXPECT_NE(error_of("[highorder]\nspring_iterations = 0\n").find("highorder.spring_iterations = 0"), std::string::npos);
   EXPECT_NE(error_of("[sizing]\nmax_size = 0.1\nmin_size = 0.2\n").find("sizing.min_size = 0.2"), std::string::npos);
   EXPECT_NE(error_of("[output]\nformats = [\"stl\"]\n").find("output.formats"), std::string::npos);
   EXPECT_NE(error_of("[nearfield]\nthickness = -1\n").find("nearfield.thickness = -1: expected > 0"), std::string::npos);

@@ -41,8 +41,27 @@ struct JacobianBounds {
 /// (the analogue of one split into 8 children), so the smallest piece is about 2^-max_depth of the
 /// element across; at most kMaxCertificationPieces pieces are examined in all.
 /// Throws std::invalid_argument for a 2D shape, a bad order or a wrong number of nodes.
+/// Fast path: an element whose nodes are an affine image of the reference nodes (every straight-sided
+/// tet, and the far field is made of them) has the constant det J = det A, returned without the
+/// Bernstein expansion (see affine_jacobian); everything else goes to certify_jacobian_by_subdivision.
 JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
                                 int max_depth = 8);
+
+/// The general path of certify_jacobian (Bernstein coefficients and bisection), for every element;
+/// the reference the affine fast path is tested against.
+JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet set,
+                                               const Eigen::MatrixX3d& element_nodes, int max_depth = 8);
+
+/// When every node is within kAffineTolerance x sigma_min(A) (bounded below by 2 |det A| / |A|_F^2)
+/// of the image of its reference node
+/// under one affine map x = A r + b (fitted on four vertices), returns the bounds min_lower =
+/// min_upper = max_upper = det A (proven, subdivisions 0); otherwise false. Why that is a proof: the
+/// true J = A + E with |E| <= L d, d the largest node deviation and L the largest sum of the
+/// reference gradients of the Lagrange basis (< 1e4 for orders <= 10), so |E| < 1e-6 sigma_min(A)
+/// and det J has the sign of det A with a relative error below 3e-6.
+constexpr double kAffineTolerance = 1e-10;
+bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
+                     JacobianBounds& bounds);
 
 constexpr int kMaxCertificationPieces = 200000;
 

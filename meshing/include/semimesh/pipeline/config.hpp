@@ -84,6 +84,10 @@ struct FarFieldConfig {
 struct HighOrderConfig {
   int order = 4;                 ///< P in 1..8
   std::string node_set = "gll";  ///< "gll" | "equispaced"
+  /// "parameter" (the CAD parametrisation's smooth node map, optimal geometric accuracy) |
+  /// "springs" (the paper's spring optimisation); see docs/config.md and ho/curving/curve_mesh.hpp
+  std::string node_placement = "parameter";
+  int spring_iterations = 50;    ///< Gauss-Newton iterations per edge or face before a fallback
 };
 
 /// [output]

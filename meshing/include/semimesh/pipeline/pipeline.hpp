@@ -6,6 +6,7 @@
 #include "semimesh/checks/conformity.hpp"
 #include "semimesh/checks/validity.hpp"
 #include "semimesh/checks/volume.hpp"
+#include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/pipeline/config.hpp"
 
@@ -84,6 +85,8 @@ struct RunResult {
   checks::VolumeCheck volume;
   checks::ValidityResult validity;
   LayerFigures layers;
+  std::string node_placement;  ///< highorder.node_placement used by the curve stage; empty at order 1
+  ho::CurvingStats curving;    ///< zeros at order 1
   GeometricErrorFigures geometric_error;
   /// Tolerance of the element volume against box - body of the linear surface meshes: round-off for
   /// a linear mesh; a curved body's volume differs from its triangulation's (see pipeline.cpp).

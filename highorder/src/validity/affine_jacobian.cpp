@@ -1,0 +1,64 @@
+#include "semimesh/ho/validity.hpp"
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <limits>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
+
+namespace semimesh::ho {
+namespace {
+
+const Eigen::MatrixX3d& cached_reference_nodes(Shape shape, int order, NodeSet set) {
+  static std::mutex mutex;
+  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<Eigen::MatrixX3d>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[{shape, order, set}];
+  if (!slot) slot = std::make_unique<Eigen::MatrixX3d>(reference_nodes(shape, order, set));
+  return *slot;
+}
+
+/// Four vertices spanning the element (vertex 0 and its three neighbours along edges), Gmsh order.
+std::array<int, 4> spanning_vertices(Shape shape) {
+  switch (shape) {
+    case Shape::Pyramid:
+    case Shape::Hexahedron: return {0, 1, 3, 4};
+    default: return {0, 1, 2, 3};  // tetrahedron, prism
+  }
+}
+
+}  // namespace
+
+bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
+                     JacobianBounds& bounds) {
+  if (dimension(shape) != 3 || order < 1 || order > kMaxOrder || element_nodes.rows() != num_nodes(shape, order))
+    return false;  // certify_jacobian_by_subdivision reports the bad input
+  const Eigen::MatrixX3d& r = cached_reference_nodes(shape, order, set);
+  const std::array<int, 4> v = spanning_vertices(shape);
+  Eigen::Matrix3d dr, dx;
+  for (int k = 0; k < 3; ++k) {
+    dr.col(k) = (r.row(v[k + 1]) - r.row(v[0])).transpose();
+    dx.col(k) = (element_nodes.row(v[k + 1]) - element_nodes.row(v[0])).transpose();
+  }
+  const Eigen::Matrix3d a = dx * dr.inverse();
+  // sigma_min = |det A| / (sigma_1 sigma_2) >= 2 |det A| / |A|_F^2: a lower bound, no SVD needed.
+  const double det = a.determinant();
+  const double smallest_stretch = 2.0 * std::abs(det) / a.squaredNorm();
+  const Eigen::RowVector3d b = element_nodes.row(v[0]) - r.row(v[0]) * a.transpose();
+  // The deviation as computed, plus what rounding at the coordinates' magnitude can hide from it.
+  const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * element_nodes.rowwise().norm().maxCoeff();
+  const double deviation =
+      ((r * a.transpose()).rowwise() + b - element_nodes).rowwise().norm().maxCoeff() + rounding;
+  if (!(smallest_stretch > 0.0) || !(deviation <= kAffineTolerance * smallest_stretch)) return false;
+  bounds = JacobianBounds{};
+  bounds.min_lower = bounds.min_upper = bounds.max_upper = det;
+  bounds.valid = det > 0.0;
+  bounds.proven = true;
+  return true;
+}
+
+}  // namespace semimesh::ho
