@@ -6,7 +6,6 @@ find_package(OpenMP REQUIRED COMPONENTS CXX)
 add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/reference_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/curving/reference_quadrature.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp

@@ -6,7 +6,6 @@ find_package(Threads REQUIRED)
 add_library(semimesh_checks
   ${CMAKE_CURRENT_LIST_DIR}/src/checks/face_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/checks/conformity.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/checks/quadrature.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/checks/volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/checks/validity.cpp)
 add_library(semimesh::checks ALIAS semimesh_checks)

@@ -1,6 +1,6 @@
 #include "harmonic_extension.hpp"
 
-#include "reference_quadrature.hpp"
+#include "semimesh/ho/quadrature.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 

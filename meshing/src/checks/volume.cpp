@@ -1,6 +1,6 @@
 #include "semimesh/checks/volume.hpp"
 
-#include "quadrature.hpp"
+#include "semimesh/ho/quadrature.hpp"
 
 #include "semimesh/ho/basis.hpp"
 
@@ -27,8 +27,18 @@ struct FaceRule {
   Eigen::Vector3d t1, t2;
 };
 
-ShapeRule pull(const ho::LagrangeBasis& basis, const detail::QuadratureRule& q) {
+ShapeRule pull(const ho::LagrangeBasis& basis, const ho::Quadrature& q) {
   return ShapeRule{q.weights, basis.values(q.points), basis.gradients(q.points)};
+}
+
+// On the unit triangle (0,0) (1,0) (0,1), Gmsh's reference triangle, or on the unit square [0, 1]^2
+// (Gmsh's reference quadrangle [-1, 1]^2 halved).
+ho::Quadrature unit_face_quadrature(bool triangle, int n) {
+  if (triangle) return ho::reference_quadrature(ho::Shape::Triangle, n);
+  ho::Quadrature q = ho::reference_quadrature(ho::Shape::Quadrilateral, n);
+  q.points.leftCols<2>() = (q.points.leftCols<2>().array() + 1.0) / 2.0;
+  q.weights /= 4.0;
+  return q;
 }
 
 // Points per direction: det J of an order-P element has degree <= 3P per variable; the collapsed
@@ -43,7 +53,7 @@ class RuleCache {
     auto it = volume_.find(shape);
     if (it == volume_.end()) {
       ho::LagrangeBasis basis(shape, order_, set_);
-      it = volume_.emplace(shape, pull(basis, detail::volume_rule(shape, points_per_direction(order_)))).first;
+      it = volume_.emplace(shape, pull(basis, ho::reference_quadrature(shape, points_per_direction(order_)))).first;
     }
     return it->second;
   }
@@ -62,7 +72,7 @@ class RuleCache {
       const Eigen::Vector3d t1 = Eigen::Vector3d(vertices.row(f[1])) - r0;
       const Eigen::Vector3d t2 = Eigen::Vector3d(vertices.row(f[triangle ? 2 : 3])) - r0;
       const int n = points_per_direction(order_);
-      detail::QuadratureRule q = triangle ? detail::unit_triangle_rule(n) : detail::unit_square_rule(n);
+      ho::Quadrature q = unit_face_quadrature(triangle, n);
       Eigen::MatrixX3d points(q.points.rows(), 3);
       for (int i = 0; i < q.points.rows(); ++i) points.row(i) = (r0 + q.points(i, 0) * t1 + q.points(i, 1) * t2).transpose();
       q.points = points;

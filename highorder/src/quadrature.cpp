@@ -1,10 +1,10 @@
-#include "reference_quadrature.hpp"
+#include "semimesh/ho/quadrature.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
-namespace semimesh::ho::detail {
+namespace semimesh::ho {
 namespace {
 
 struct Rule1d {
@@ -52,7 +52,7 @@ Quadrature reference_quadrature(Shape shape, int n) {
     for (int j = 0; j < ny; ++j)
       for (int k = 0; k < nz; ++k) {
         const double a = g.x[i], b = g.x[j], c = g.x[k];
-        const double w = g.w[i] * (ny > 1 ? g.w[j] : 1.0) * (nz > 1 ? g.w[k] : 1.0);
+        const double w = g.w[i] * (dimension(shape) >= 2 ? g.w[j] : 1.0) * (dimension(shape) == 3 ? g.w[k] : 1.0);
         switch (shape) {
           case Shape::Segment: add(a, 0, 0, w); break;
           case Shape::Quadrilateral: add(a, b, 0, w); break;
@@ -78,4 +78,4 @@ Quadrature reference_quadrature(Shape shape, int n) {
   return q;
 }
 
-}  // namespace semimesh::ho::detail
+}  // namespace semimesh::ho
