@@ -265,6 +265,20 @@ void read_boundary_layer(Section s, BoundaryLayerConfig& b, double thickness) {
               fmt::format("<= nearfield.thickness / layers = {}", thickness / b.layers) +
                   " (the layers must fit in the shell with a ratio >= 1)");
   }
+  s.real("ratio_end", b.ratio_end);
+  if (s.has("ratio_line")) {
+    std::array<double, 6> line{};
+    s.reals("ratio_line", line);
+    b.ratio_line = line;
+    const double length2 = (line[3] - line[0]) * (line[3] - line[0]) + (line[4] - line[1]) * (line[4] - line[1]) +
+                           (line[5] - line[2]) * (line[5] - line[2]);
+    s.require(length2 > 0.0, "ratio_line", "[xa, ya, za, xb, yb, zb] with A != B");
+    s.require(b.ratio_end.has_value(), "ratio_line", "together with boundary_layer.ratio_end (the ratio at B)");
+  }
+  if (b.ratio_end) {
+    s.require(*b.ratio_end >= 1.0, "ratio_end", ">= 1");
+    s.require(b.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
+  }
   s.reject_unknown();
 }
 

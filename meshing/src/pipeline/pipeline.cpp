@@ -191,6 +191,19 @@ ho::CurvingParams curving_params(const HighOrderConfig& h) {
   return p;
 }
 
+// boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
+// `ratio_at_a` at A to ratio_end at B; no field (the uniform ratio) without them.
+ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
+  if (!b.ratio_line || !b.ratio_end) return {};
+  const std::array<double, 6>& l = *b.ratio_line;
+  const Eigen::Vector3d a(l[0], l[1], l[2]), ab = Eigen::Vector3d(l[3], l[4], l[5]) - a;
+  const double ratio_at_b = *b.ratio_end;
+  return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return ratio_at_a + t * (ratio_at_b - ratio_at_a);
+  };
+}
+
 // The near-field shell is the mesh's prisms (the far field holds tets and pyramids only).
 std::vector<std::size_t> shell_prisms(const mesh::Mesh& mesh) {
   std::vector<std::size_t> prisms;
@@ -325,9 +338,11 @@ RunResult run(const Config& config, Progress& progress) {
     const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
     ho::SplitStats split{};
     result.mesh = stage("split", progress, result, [&] {
-      return ho::split_layers(result.mesh, prisms, ho::LayerDistribution{layers, ratio}, {}, &split);
+      return ho::split_layers(result.mesh, prisms, ho::LayerDistribution{layers, ratio},
+                              ratio_field(config.boundary_layer, ratio), &split);
     });
     result.layers.requested_ratio = ratio;
+    result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
     result.layers.achieved_ratio = split.achieved_ratio;
     result.layers.first_cell_height_min = split.first_cell_height_min;
     result.layers.first_cell_height_max = split.first_cell_height_max;

@@ -98,6 +98,7 @@ std::string report_json(const RunResult& r, const Config& config) {
                    json_number(r.thickness_max));
   j += fmt::format("  \"layers\": {},\n  \"layer_ratio\": {},\n  \"achieved_layer_ratio\": {},\n", r.layers.layers,
                    json_number(r.layers.requested_ratio), json_number(r.layers.achieved_ratio));
+  j += fmt::format("  \"layer_ratio_end\": {},\n", json_number(r.layers.requested_ratio_end));
   j += fmt::format("  \"first_cell_height_min\": {},\n  \"first_cell_height_max\": {},\n",
                    json_number(r.layers.first_cell_height_min), json_number(r.layers.first_cell_height_max));
   j += fmt::format("  \"max_first_layer_aspect_ratio\": {},\n", json_number(r.layers.max_first_layer_aspect));

@@ -172,6 +172,25 @@ TEST(PipelineRun, SpringPlacementIsValidButLessAccurateThanParameterPlacement) {
   fs::remove_all(dir);
 }
 
+// boundary_layer.ratio_line: r = 2 at the root (z = 0), 1 at the tip (z = 1 = span); the first
+// cell is 0.05 / 7 at the root (1 : 2 : 4) and 0.05 / 3 at the tip (three equal layers).
+TEST(PipelineRun, RatioVaryingAlongTheSpan) {
+  CountingProgress progress;
+  const fs::path dir = fresh_directory("ratio_line");
+  const RunResult r = run(coarse_config(dir, {"boundary_layer.layers=3", "boundary_layer.ratio=2",
+                                              "boundary_layer.ratio_line=[0, 0, 0, 0, 0, 1]",
+                                              "boundary_layer.ratio_end=1", "output.formats=[\"msh41\"]"}),
+                          progress);
+  EXPECT_TRUE(r.checks_passed());
+  EXPECT_NEAR(r.layers.first_cell_height_min, 0.05 / 7.0, 0.05 / 7.0 * 0.02);
+  EXPECT_NEAR(r.layers.first_cell_height_max, 0.05 / 3.0, 0.05 / 3.0 * 0.02);
+  EXPECT_EQ(r.layers.requested_ratio, 2.0);
+  EXPECT_EQ(r.layers.requested_ratio_end, 1.0);
+  EXPECT_GT(r.layers.achieved_ratio, 1.0);
+  EXPECT_LT(r.layers.achieved_ratio, 2.0);
+  fs::remove_all(dir);
+}
+
 TEST(PipelineRun, BadInputIsReportedAsSuch) {
   const fs::path dir = fresh_directory("bad");
   CountingProgress progress;

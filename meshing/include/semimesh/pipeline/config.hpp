@@ -57,6 +57,11 @@ struct BoundaryLayerConfig {
   int layers = 5;                             ///< N >= 1
   double ratio = 2.0;                         ///< r >= 1, growth of consecutive layers
   std::optional<double> first_cell_height;    ///< instead of ratio: height of the first layer
+  /// Optional: the ratio varies linearly along the segment A -> B = ratio_line (xa, ya, za, xb, yb,
+  /// zb): `ratio` (or the one from first_cell_height) at A, ratio_end at B, by the projection of
+  /// each body vertex onto the segment, constant beyond its ends. Both keys or neither.
+  std::optional<std::array<double, 6>> ratio_line;
+  std::optional<double> ratio_end;
 };
 
 /// [sizing]: the surface size field.

@@ -57,6 +57,7 @@ constexpr double kExpectedVolumeTolerance = 1e-6;
 struct LayerFigures {
   int layers = 1;                      ///< N of the split (1: the shell was not split)
   double requested_ratio = 1.0;        ///< r used (boundary_layer.ratio or from first_cell_height)
+  double requested_ratio_end = 1.0;    ///< r at the end of boundary_layer.ratio_line (= requested_ratio without)
   double achieved_ratio = 1.0;         ///< mean over the vertical edges (ho::SplitStats)
   double first_cell_height_min = 0.0;
   double first_cell_height_max = 0.0;
