@@ -2,9 +2,9 @@
 
 #include <Eigen/LU>
 
+#include <array>
 #include <cmath>
 #include <limits>
-
 #include <map>
 #include <memory>
 #include <mutex>

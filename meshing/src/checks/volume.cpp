@@ -147,14 +147,14 @@ MeshVolume mesh_volume(const mesh::Mesh& mesh) {
   std::vector<const ShapeRule*> batch_rules;  // looked up before the threads: the cache is not thread-safe
   for (const ElementBatch& batch : batches) batch_rules.push_back(&rules.volume(batch.shape));
   std::vector<double> partial(batches.size(), 0.0);
-  const std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), batches.size());
+  const std::size_t workers =
+      std::max<std::size_t>(1, std::min<std::size_t>(std::thread::hardware_concurrency(), batches.size()));
   auto integrate_stride = [&](std::size_t first) {
-    for (std::size_t b = first; b < batches.size(); b += std::max<std::size_t>(workers, 1))
-      partial[b] = batch_volume(mesh, batches[b], *batch_rules[b]);
+    for (std::size_t b = first; b < batches.size(); b += workers) partial[b] = batch_volume(mesh, batches[b], *batch_rules[b]);
   };
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(integrate_stride, w);
-  if (workers > 0) integrate_stride(0);
+  integrate_stride(0);
   for (std::thread& t : pool) t.join();
   for (double v : partial) result.element_volume += v;  // in batch order: independent of the threads
 
