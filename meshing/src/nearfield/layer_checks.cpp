@@ -3,6 +3,8 @@
 #include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <queue>
 #include <unordered_set>
 
@@ -64,30 +66,85 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
   return (p - (a + ab * (vb * denominator) + ac * (vc * denominator))).norm();
 }
 
-std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
-                                const std::vector<Vec3>& outer, const std::vector<double>& thickness) {
-  // Bounding sphere of each triangle: a cheap lower bound of the distance.
-  const int triangles = static_cast<int>(body.triangles.size());
-  std::vector<Vec3> centre(triangles);
-  std::vector<double> radius(triangles);
-  for (int t = 0; t < triangles; ++t) {
-    const auto& v = body.triangles[t];
-    centre[t] = (body.points[v[0]] + body.points[v[1]] + body.points[v[2]]) / 3.0;
-    radius[t] = 0.0;
-    for (int i : v) radius[t] = std::max(radius[t], (body.points[i] - centre[t]).norm());
+namespace {
+
+// Bounding sphere of each triangle: a cheap lower bound of the distance to it.
+struct TriangleSpheres {
+  std::vector<Vec3> centre;
+  std::vector<double> radius;
+};
+
+TriangleSpheres triangle_spheres(const BodyMesh& body) {
+  TriangleSpheres s;
+  for (const auto& v : body.triangles) {
+    const Vec3 c = (body.points[v[0]] + body.points[v[1]] + body.points[v[2]]) / 3.0;
+    double r = 0.0;
+    for (int i : v) r = std::max(r, (body.points[i] - c).norm());
+    s.centre.push_back(c);
+    s.radius.push_back(r);
   }
+  return s;
+}
+
+// Whether triangle t, not in the node's own neighbourhood, is closer than `limit` to p. `own` is
+// filled on the first triangle that passes the sphere test (most nodes never need it).
+bool crowds(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours, const TriangleSpheres& spheres,
+            int node, const Vec3& p, double limit, double own_radius, int t, std::unordered_set<int>& own,
+            bool& own_known) {
+  if ((p - spheres.centre[t]).norm() - spheres.radius[t] >= limit) return false;
+  if (!own_known) own = nodes_within(body, neighbours, node, own_radius), own_known = true;
+  const auto& v = body.triangles[t];
+  if (own.count(v[0]) || own.count(v[1]) || own.count(v[2])) return false;
+  return point_triangle_distance(p, body.points[v[0]], body.points[v[1]], body.points[v[2]]) < limit;
+}
+
+}  // namespace
+
+std::vector<char> crowded_nodes_by_scan(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
+                                        const std::vector<Vec3>& outer, const std::vector<double>& thickness) {
+  const TriangleSpheres spheres = triangle_spheres(body);
   std::vector<char> crowded(body.num_nodes(), 0);
   for (int i = 0; i < body.num_nodes(); ++i) {
-    const double limit = 0.5 * thickness[i];
-    std::unordered_set<int> own;  // filled on the first near triangle only
+    std::unordered_set<int> own;
     bool own_known = false;
-    for (int t = 0; t < triangles && !crowded[i]; ++t) {
-      if ((outer[i] - centre[t]).norm() - radius[t] >= limit) continue;
-      if (!own_known) own = nodes_within(body, neighbours, i, 1.5 * thickness[i]), own_known = true;
-      const auto& v = body.triangles[t];
-      if (own.count(v[0]) || own.count(v[1]) || own.count(v[2])) continue;
-      crowded[i] = point_triangle_distance(outer[i], body.points[v[0]], body.points[v[1]], body.points[v[2]]) < limit;
-    }
+    for (int t = 0; t < static_cast<int>(body.triangles.size()) && !crowded[i]; ++t)
+      crowded[i] = crowds(body, neighbours, spheres, i, outer[i], 0.5 * thickness[i], 1.5 * thickness[i], t, own, own_known);
+  }
+  return crowded;
+}
+
+std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
+                                const std::vector<Vec3>& outer, const std::vector<double>& thickness) {
+  const TriangleSpheres spheres = triangle_spheres(body);
+  std::vector<char> crowded(body.num_nodes(), 0);
+  if (body.triangles.empty()) return crowded;
+  // A triangle can crowd node i only if its centre is within limit_i + its radius of outer[i]: with
+  // cells of that largest reach, the 3 x 3 x 3 cells around the point hold every candidate.
+  const double largest_limit = 0.5 * *std::max_element(thickness.begin(), thickness.end());
+  const double largest_radius = *std::max_element(spheres.radius.begin(), spheres.radius.end());
+  const double cell = std::max(largest_limit + largest_radius, 1e-300);
+  const auto cell_of = [cell](const Vec3& p) {
+    return std::array<long long, 3>{static_cast<long long>(std::floor(p.x() / cell)),
+                                    static_cast<long long>(std::floor(p.y() / cell)),
+                                    static_cast<long long>(std::floor(p.z() / cell))};
+  };
+  std::map<std::array<long long, 3>, std::vector<int>> grid;
+  for (int t = 0; t < static_cast<int>(body.triangles.size()); ++t) grid[cell_of(spheres.centre[t])].push_back(t);
+  for (int i = 0; i < body.num_nodes(); ++i) {
+    std::unordered_set<int> own;
+    bool own_known = false;
+    const std::array<long long, 3> c = cell_of(outer[i]);
+    for (long long dx = -1; dx <= 1 && !crowded[i]; ++dx)
+      for (long long dy = -1; dy <= 1 && !crowded[i]; ++dy)
+        for (long long dz = -1; dz <= 1 && !crowded[i]; ++dz) {
+          const auto found = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (found == grid.end()) continue;
+          for (int t : found->second)
+            if (crowds(body, neighbours, spheres, i, outer[i], 0.5 * thickness[i], 1.5 * thickness[i], t, own, own_known)) {
+              crowded[i] = 1;
+              break;
+            }
+        }
   }
   return crowded;
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -70,6 +71,42 @@ TEST(LayerChecks, FacingPlatesAreCrowdedBeyondTwoThirdsOfTheGap) {
   };
   for (char c : crowded_at(0.6)) EXPECT_FALSE(c);
   for (char c : crowded_at(0.7)) EXPECT_TRUE(c);
+}
+
+// The grid search against the full scan on two wavy sheets 0.5 apart, 1922 nodes, with thicknesses
+// from 0.2 to 0.8: some offsets reach the other sheet, some do not; both must find the same nodes.
+TEST(LayerChecks, GridSearchFindsWhatTheScanFinds) {
+  BodyMesh body;
+  const int n = 31;
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = 3.0 * i / (n - 1), y = 3.0 * j / (n - 1);
+        body.points.emplace_back(x, y, sheet == 0 ? 0.1 * std::sin(3 * x) : 0.5 + 0.1 * std::cos(2 * y));
+      }
+  for (int sheet = 0; sheet < 2; ++sheet)
+    for (int j = 0; j + 1 < n; ++j)
+      for (int i = 0; i + 1 < n; ++i) {
+        const int a = sheet * n * n + j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+        if (sheet == 0) body.triangles.push_back({a, b, c}), body.triangles.push_back({a, c, d});
+        else body.triangles.push_back({a, c, b}), body.triangles.push_back({a, d, c});
+      }
+  body.node_surface.assign(body.points.size(), 0);
+  body.triangle_surface.assign(body.triangles.size(), 0);
+  body.cad.resize(body.points.size());
+  const auto neighbours = node_neighbours(body);
+  std::vector<Vec3> outer(body.points.size());
+  std::vector<double> thickness(body.points.size());
+  for (std::size_t k = 0; k < body.points.size(); ++k) {
+    thickness[k] = 0.2 + 0.6 * std::fmod(0.618034 * static_cast<double>(k), 1.0);
+    outer[k] = body.points[k] + Vec3(0, 0, k < static_cast<std::size_t>(n * n) ? thickness[k] : -thickness[k]);
+  }
+  const std::vector<char> fast = crowded_nodes(body, neighbours, outer, thickness);
+  const std::vector<char> slow = crowded_nodes_by_scan(body, neighbours, outer, thickness);
+  EXPECT_EQ(fast, slow);
+  const auto crowded = std::count(slow.begin(), slow.end(), 1);
+  EXPECT_GT(crowded, 100);
+  EXPECT_LT(crowded, static_cast<long>(body.points.size()) - 100);
 }
 
 }  // namespace
