@@ -225,13 +225,15 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   field.warnings = offsets.warnings;
   mesh::Mesh& m = field.mesh;
   m.reserve(ho::Shape::Prism, body.triangles.size() + n);
+  const int layer_region = m.region_index("wing_layer"), junction_region = m.region_index("junction");
   for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
   const auto offset = static_cast<NodeId>(count);
   for (int i = 0; i < count; ++i) m.add_node(offsets.outer[i]);
   auto id = [](int v) { return static_cast<NodeId>(v); };
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
     const auto& v = body.triangles[t];
-    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset});
+    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+                  layer_region);
     field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
     field.element_surface.push_back(body.triangle_surface[t]);
     m.add_boundary_face("wing", ho::Shape::Triangle, {id(v[0]), id(v[2]), id(v[1])});
@@ -264,7 +266,7 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
                            " would be inverted: the root loop turns too sharply there for thickness " +
                            number_label(delta_wing) + " and wall layer thickness " + number_label(delta_wall) +
                            "; use thinner layers or a finer root mesh");
-    m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()));
+    m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), junction_region);
     field.stacks.push_back({field.element_surface.size(),
                             {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
     field.element_surface.push_back(body.node_surface[loop[a]]);
