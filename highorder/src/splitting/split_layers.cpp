@@ -72,15 +72,20 @@ constexpr std::size_t kSplitBlock = 1024;
 
 class Splitter {
  public:
-  Splitter(const mesh::Mesh& in, int direction, const LayerDistribution& distribution, const RatioField& ratio,
-           std::string caller)
-      : in_(in), direction_(direction), distribution_(distribution), ratio_(ratio), caller_(std::move(caller)),
+  Splitter(const mesh::Mesh& in, const LayerDistribution& distribution, const RatioField& ratio, std::string caller)
+      : in_(in), distribution_(distribution), ratio_(ratio), caller_(std::move(caller)),
         out_(in.order(), in.node_set()) {}
 
-  mesh::Mesh run(const std::vector<std::size_t>& split, SplitStats* stats);
+  mesh::Mesh run(const std::vector<DirectedSplit>& split, SplitStats* stats, std::vector<std::size_t>* first_piece);
 
  private:
-  const ShapeData& shape_data(Shape shape);
+  const ShapeData& shape_data(Shape shape, int direction);
+  const ShapeData& data_of(std::size_t element) const {
+    return shapes_.at({in_.elements()[element].shape, direction_of_[element]});
+  }
+  /// Throws naming both elements when a split element's side face is shared with an element not
+  /// split the same way (same distribution, the face a side face with the same body-side vertices).
+  void check_side_faces(const std::vector<DirectedSplit>& split);
   /// Positions of the sub-element nodes of one coarse element and its first-layer figures; pure
   /// (runs in parallel).
   struct SplitGeometry {
@@ -97,21 +102,21 @@ class Splitter {
   double ratio_at(const Eigen::Vector3d& x, std::size_t element) const;
 
   const mesh::Mesh& in_;
-  int direction_;
+  std::vector<int> direction_of_;  // [input elements] split direction, -1 when not split
   LayerDistribution distribution_;
   RatioField ratio_;
   std::string caller_;
   mesh::Mesh out_;
-  std::map<Shape, ShapeData> shapes_;
+  std::map<std::pair<Shape, int>, ShapeData> shapes_;
   std::map<NodeKey, NodeId> created_;
   double height_min_ = 1e300, height_max_ = 0.0, ratio_sum_ = 0.0;
   int vertical_edges_ = 0;
 };
 
-const ShapeData& Splitter::shape_data(Shape shape) {
-  auto it = shapes_.find(shape);
+const ShapeData& Splitter::shape_data(Shape shape, int direction) {
+  auto it = shapes_.find({shape, direction});
   if (it != shapes_.end()) return it->second;
-  ShapeData data = make_shape_data(shape, in_.order(), in_.node_set(), direction_);
+  ShapeData data = make_shape_data(shape, in_.order(), in_.node_set(), direction);
   if (!ratio_) {
     const int N = distribution_.layers, nn = static_cast<int>(data.reference.rows());
     const std::vector<double> z = layer_interfaces(N, distribution_.ratio);
@@ -119,12 +124,12 @@ const ShapeData& Splitter::shape_data(Shape shape) {
     for (int k = 0; k < N; ++k)
       for (int i = 0; i < nn; ++i) {
         Eigen::RowVector3d r = data.reference.row(i);
-        r(direction_) = z[k] + 0.5 * (r(direction_) + 1.0) * (z[k + 1] - z[k]);
+        r(direction) = z[k] + 0.5 * (r(direction) + 1.0) * (z[k + 1] - z[k]);
         q.row(k * nn + i) = r;
       }
     data.uniform_values = data.basis.values(q);
   }
-  return shapes_.emplace(shape, std::move(data)).first->second;
+  return shapes_.emplace(std::make_pair(shape, direction), std::move(data)).first->second;
 }
 
 double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element) const {
@@ -145,7 +150,7 @@ NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
 
 std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
   const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shape_data(el.shape);
+  const ShapeData& data = shape_data(el.shape, direction_of_[element]);
   std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
   for (int v : data.bottom)
     z_of_vertex[v] = layer_interfaces(distribution_.layers, ratio_at(in_.node(el.vertices[v]), element));
@@ -155,8 +160,8 @@ std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
 Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
                                                   const std::vector<std::vector<double>>& z_of_vertex) const {
   const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shapes_.at(el.shape);
-  const int N = distribution_.layers, d = direction_;
+  const ShapeData& data = data_of(element);
+  const int N = distribution_.layers, d = direction_of_[element];
   const Eigen::MatrixX3d X = in_.element_coordinates(element);
   const int nn = static_cast<int>(X.rows());
 
@@ -206,9 +211,8 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
 }
 
 std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
-  const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shapes_.at(el.shape);
-  const int P = in_.order(), N = distribution_.layers, d = direction_;
+  const ShapeData& data = data_of(element);
+  const int P = in_.order(), N = distribution_.layers, d = direction_of_[element];
   const std::vector<NodeId> coarse = in_.element_nodes(element);
   const int nn = static_cast<int>(coarse.size());
   const Eigen::MatrixX3d& x = geometry.x;
@@ -265,26 +269,81 @@ std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, co
   return subs;
 }
 
-mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stats) {
+void Splitter::check_side_faces(const std::vector<DirectedSplit>& split) {
+  // Elements using each face (at most two in a conforming mesh).
+  std::vector<std::array<long, 2>> users(in_.faces().size(), {-1, -1});
+  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
+    const mesh::Element& el = in_.elements()[e];
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+      auto& u = users[el.faces[f]];
+      (u[0] < 0 ? u[0] : u[1]) = static_cast<long>(e);
+    }
+  }
+  // The vertices of a face at -1 of an element's split direction, or empty when the face is the
+  // element's bottom or top (not cut by the split).
+  const auto body_side = [&](std::size_t e, std::uint32_t face) {
+    const mesh::Element& el = in_.elements()[e];
+    const ShapeData& data = data_of(e);
+    std::vector<NodeId> bottom;
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+      if (el.faces[f] != face) continue;
+      int on_bottom = 0;
+      for (int v : faces(el.shape)[f])
+        if (data.top_of[v] >= 0) bottom.push_back(el.vertices[v]), ++on_bottom;
+      if (on_bottom == 0 || on_bottom == static_cast<int>(faces(el.shape)[f].size())) bottom.clear();
+    }
+    std::sort(bottom.begin(), bottom.end());
+    return bottom;
+  };
+  for (const DirectedSplit& s : split) {
+    const mesh::Element& el = in_.elements()[s.element];
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+      const std::vector<NodeId> mine = body_side(s.element, el.faces[f]);
+      if (mine.empty()) continue;
+      const auto& u = users[el.faces[f]];
+      const long other = u[0] == static_cast<long>(s.element) ? u[1] : u[0];
+      if (other < 0) continue;
+      if (direction_of_[other] >= 0 && body_side(static_cast<std::size_t>(other), el.faces[f]) == mine) continue;
+      throw std::invalid_argument(
+          caller_ + ": element " + std::to_string(s.element) + " (" + to_string(el.shape) +
+          ") is split across its face shared with element " + std::to_string(other) + " (" +
+          to_string(in_.elements()[other].shape) + "), which is " +
+          (direction_of_[other] < 0 ? "not split" : "split in another direction") +
+          ": the shared face would crack; split both the same way");
+    }
+  }
+}
+
+mesh::Mesh Splitter::run(const std::vector<DirectedSplit>& split, SplitStats* stats,
+                         std::vector<std::size_t>* first_piece) {
   if (distribution_.layers < 1)
     throw std::invalid_argument(caller_ + ": LayerDistribution::layers = " + std::to_string(distribution_.layers) +
                                 " must be >= 1");
   if (!ratio_) ratio_at(Eigen::Vector3d::Zero(), 0);  // checks the constant ratio up front
   std::vector<int> position(in_.elements().size(), -1);  // [elements] index into `split` or -1
+  direction_of_.assign(in_.elements().size(), -1);
   for (std::size_t j = 0; j < split.size(); ++j) {
-    const std::size_t e = split[j];
+    const std::size_t e = split[j].element;
+    const int direction = split[j].direction;
     if (e >= in_.elements().size())
       throw std::invalid_argument(caller_ + ": element index " + std::to_string(e) + " out of range (mesh has " +
                                   std::to_string(in_.elements().size()) + " elements)");
     const Shape s = in_.elements()[e].shape;
-    if (s != Shape::Hexahedron && !(s == Shape::Prism && direction_ == 2))
+    if (direction < 0 || direction > 2)
+      throw std::invalid_argument(caller_ + ": direction " + std::to_string(direction) + " of element " +
+                                  std::to_string(e) + " must be 0 (xi), 1 (eta) or 2 (zeta)");
+    if (s != Shape::Hexahedron && !(s == Shape::Prism && direction == 2))
       throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is a " + to_string(s) +
-                                  (direction_ == 2 ? "; only prisms and hexahedra" : "; only hexahedra") +
+                                  (direction == 2 ? "; only prisms and hexahedra" : "; only hexahedra") +
                                   " can be split in this direction");
     if (position[e] >= 0)
       throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
+    direction_of_[e] = direction;
+    shape_data(s, direction);
   }
+  check_side_faces(split);
+  if (first_piece) first_piece->assign(in_.elements().size(), 0);
 
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
@@ -299,8 +358,10 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
   std::vector<std::vector<std::vector<NodeId>>> subs(split.size());
   std::size_t next = 0;  // next input element to emit
   const auto copy_until = [&](std::size_t end) {
-    for (; next < end; ++next)
+    for (; next < end; ++next) {
+      if (first_piece) (*first_piece)[next] = out_.elements().size();
       out_.add_element(in_.elements()[next].shape, in_.element_nodes(next), in_.elements()[next].region);
+    }
   };
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
@@ -313,6 +374,7 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
       const std::size_t e = ascending[first + k];
       copy_until(e);
       subs[position[e]] = split_element(e, geometry[k]);
+      if (first_piece) (*first_piece)[e] = out_.elements().size();
       for (const auto& nodes : subs[position[e]])
         out_.add_element(in_.elements()[e].shape, nodes, in_.elements()[e].region);
       next = e + 1;
@@ -322,9 +384,10 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
 
   // Boundary faces: split with the element whose side face they are, copied otherwise.
   std::map<std::uint32_t, std::size_t> side_face_owner;  // input face id -> split element
-  for (std::size_t e : split) {
+  for (const DirectedSplit& s : split) {
+    const std::size_t e = s.element;
     const mesh::Element& el = in_.elements()[e];
-    const ShapeData& data = shape_data(el.shape);
+    const ShapeData& data = data_of(e);
     for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
       const auto& fv = faces(el.shape)[f];
       const bool all_bottom = std::all_of(fv.begin(), fv.end(), [&](int v) { return data.top_of[v] >= 0; });
@@ -363,7 +426,16 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,
                         const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats) {
-  return Splitter(mesh, 2, distribution, ratio, "split_layers").run(layer_elements, stats);
+  std::vector<DirectedSplit> split;
+  split.reserve(layer_elements.size());
+  for (std::size_t e : layer_elements) split.push_back({e, 2});
+  return Splitter(mesh, distribution, ratio, "split_layers").run(split, stats, nullptr);
+}
+
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<DirectedSplit>& split,
+                        const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats,
+                        std::vector<std::size_t>* first_piece) {
+  return Splitter(mesh, distribution, ratio, "split_layers").run(split, stats, first_piece);
 }
 
 mesh::Mesh split_hex_direction(const mesh::Mesh& mesh, const std::vector<std::size_t>& hexes, int direction,
@@ -371,7 +443,9 @@ mesh::Mesh split_hex_direction(const mesh::Mesh& mesh, const std::vector<std::si
   if (direction < 0 || direction > 2)
     throw std::invalid_argument("split_hex_direction: direction " + std::to_string(direction) +
                                 " must be 0 (xi), 1 (eta) or 2 (zeta)");
-  return Splitter(mesh, direction, distribution, {}, "split_hex_direction").run(hexes, stats);
+  std::vector<DirectedSplit> split;
+  for (std::size_t e : hexes) split.push_back({e, direction});
+  return Splitter(mesh, distribution, {}, "split_hex_direction").run(split, stats, nullptr);
 }
 
 }  // namespace semimesh::ho

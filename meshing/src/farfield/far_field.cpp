@@ -3,6 +3,7 @@
 #include "pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "wall_annulus.hpp"
+#include "wall_layer.hpp"
 
 #include "semimesh/surface/curve_mesh.hpp"
 #include "semimesh/surface/error.hpp"
@@ -21,7 +22,6 @@ namespace {
 
 using mesh::CadAttachment;
 using mesh::NodeId;
-using Triangle = std::array<NodeId, 3>;
 
 void check_params(const cad::Model& model, const nearfield::NearField& nf, const FarFieldParams& p,
                   const std::vector<int>& box_surfaces, int wall_surface) {
@@ -33,6 +33,8 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   require(p.growth >= 1, "growth must be >= 1, got " + std::to_string(p.growth));
   require(p.radius_edge_ratio >= 1, "radius_edge_ratio must be >= 1, got " + std::to_string(p.radius_edge_ratio));
   require(p.max_volume >= 0, "max_volume must be >= 0 (0: no bound), got " + std::to_string(p.max_volume));
+  require(p.wall_layer_thickness >= 0 && std::isfinite(p.wall_layer_thickness),
+          "wall_layer_thickness must be >= 0 (0: no wall layer), got " + std::to_string(p.wall_layer_thickness));
   require(nf.mesh.order() == 1, "the near-field mesh must be linear (order 1) when the far field is built, it has order " +
                                     std::to_string(nf.mesh.order()));
   require(nf.footprint.size() >= 3, "the near field's footprint has " + std::to_string(nf.footprint.size()) +
@@ -217,9 +219,16 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   const surface::CurveMeshes curves = surface::discretise_all_curves(model, size);
   CurveNodes curve_nodes(model, curves, mesh);
 
-  const std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
+  std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
   const std::vector<Triangle> wall = mesh_wall(model, wall_surface, nf, params, curve_nodes, mesh);
   const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
+  // With a wall layer, its tops stand between the wall and the tetrahedra.
+  std::vector<Triangle> wall_side = wall;
+  if (params.wall_layer_thickness > 0) {
+    const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, params.wall_layer_thickness, wall, box, nf);
+    wall_side = layer.tops;
+    stats.wall_layer_prisms = layer.prisms;
+  }
 
   // The closed boundary of the tetrahedral region, numbered densely for TetGen.
   TetgenInput input;
@@ -227,7 +236,8 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   input.max_volume = params.max_volume;
   std::unordered_map<NodeId, int> plc_index;
   std::vector<NodeId> plc_node;
-  for (const auto* group : {&skin, &wall, &box})
+  const std::vector<Triangle>* groups[] = {&skin, &wall_side, &box};
+  for (const std::vector<Triangle>* group : groups)
     for (const Triangle& t : *group) {
       std::array<int, 3> local;
       for (int k = 0; k < 3; ++k) {

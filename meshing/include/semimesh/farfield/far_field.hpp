@@ -25,6 +25,8 @@ struct FarFieldParams {
   double growth = 1.2;             ///< size gradation from the skin outwards, >= 1
   double radius_edge_ratio = 1.5;  ///< TetGen quality bound (-q), >= 1.0 (TetGen's own lower limit)
   double max_volume = 0.0;         ///< TetGen volume bound (-a); 0: none
+  double wall_layer_thickness = 0.0;  ///< > 0: prisms of this thickness on the wall (C-type near field,
+                                      ///< whose footprint_top gives their tops over the footprint); 0: none
 };
 
 struct FarFieldStats {
@@ -32,6 +34,7 @@ struct FarFieldStats {
   int pyramids = 0;
   int wall_triangles = 0;
   int box_triangles = 0;
+  int wall_layer_prisms = 0;
   double seconds_tetgen = 0;
 };
 
@@ -45,6 +48,8 @@ struct FarFieldStats {
 /// Tetrahedron sizes grow from the local skin edge length towards the box size by TetGen's quality
 /// bound alone (-q radius_edge_ratio; no background size, which over-refined about 8 times on the
 /// NACA0012 case); `growth` grades the wall region and the box curves.
+/// With a wall layer (params.wall_layer_thickness > 0) the wall triangles carry prisms instead
+/// (wall_layer.hpp): their tops bound the tetrahedra, the box faces start on the layer's top.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets).
 FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,

@@ -55,6 +55,23 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& 
                         const LayerDistribution& distribution, const RatioField& ratio = {},
                         SplitStats* stats = nullptr);
 
+/// An element to split and the reference direction to split it along (0 xi, 1 eta, 2 zeta; prisms: 2).
+struct DirectedSplit {
+  std::size_t element = 0;
+  int direction = 2;
+};
+
+/// The same in one pass for elements with their own directions (e.g. the wing layer's prisms along
+/// zeta and the root junction's hexes along their wing-normal direction), all with `distribution`.
+/// A split element whose side face (cut by its split) is shared with an element that is not split,
+/// or not split so that the face is cut the same way (same body-side vertices), is refused
+/// (std::invalid_argument naming both elements): its neighbour would not conform. When
+/// `first_piece` is given, (*first_piece)[e] is the output index of input element e's first
+/// (body-side) piece, or of its copy when it is not split.
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<DirectedSplit>& split,
+                        const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats,
+                        std::vector<std::size_t>* first_piece);
+
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a
 /// direction outside 0..2.
