@@ -21,6 +21,7 @@ target_link_libraries(semimesh_config PRIVATE tomlplusplus::tomlplusplus fmt::fm
 if(TARGET semimesh_nearfield AND TARGET semimesh_farfield AND TARGET semimesh_ho_mesh)
   add_library(semimesh_pipeline
     ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/pipeline.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/split_stacks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/src/pipeline/report.cpp)
   add_library(semimesh::pipeline ALIAS semimesh_pipeline)
   target_include_directories(semimesh_pipeline PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
