@@ -187,8 +187,9 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
   if (!(strip < 0.5 * tip))
-    throw NearFieldError("near field: the root strip (height " + number_label(strip) + ") takes more than half of the body's height " +
-                         number_label(tip) + " above the wall; use a thinner wall layer");
+    throw NearFieldError("near field: the root strip (height " + number_label(strip) + ") for the wall layer thickness " +
+                         number_label(delta_wall) + " takes more than half of the body's height " + number_label(tip) +
+                         " above the wall; use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
   const std::vector<CadAttachment> unlifted_cad = body.cad;
   std::vector<char> on_root(count, 0);

@@ -182,3 +182,68 @@ TEST(CShell, ElementsAreValidAndHexesShareTheirFacesWithThePrisms) {
 
 }  // namespace
 }  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// The message of the NearFieldError thrown by building the C-shell with these parameters.
+std::string c_shell_error(const WingCase& c, const BodyRoles& roles, double thickness, const JunctionParams& j) {
+  try {
+    build_c_shell(*c.model, c.meshes, roles, shell(thickness), j);
+  } catch (const NearFieldError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CShellBadInput, RootCurveOutsideTheSupportedAnglesNamesCurveAndAngle) {
+  const WingCase c = wing_case(naca("0012", false));
+  JunctionParams j = junction(0.04);
+  j.min_angle_deg = 100;  // the analytic wing stands at 90 degrees on its wall
+  const std::string what = c_shell_error(c, c.roles, 0.06, j);
+  EXPECT_TRUE(contains(what, "curve 'root_")) << what;
+  EXPECT_TRUE(contains(what, " 90 degrees")) << what;
+}
+
+TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
+  const WingCase c = wing_case(naca("0012", false));
+  BodyRoles roles;
+  roles.wall_surface = *c.model->find_surface("upper");
+  for (const std::string name : {"lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
+  const std::string what = c_shell_error(c, roles, 0.06, junction(0.04));
+  EXPECT_TRUE(contains(what, "surface 'upper'")) << what;
+  EXPECT_TRUE(contains(what, "not planar")) << what;
+}
+
+TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
+  const WingCase c = wing_case(naca("0012", false));
+  const std::string what = c_shell_error(c, c.roles, 0.06, junction(0.9));
+  EXPECT_TRUE(contains(what, "0.9")) << what;
+}
+
+TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
+  mock_cad::NacaWingParams tiny = naca("0012", true);
+  tiny.chord = 0.05;
+  const WingCase c = wing_case(tiny);
+  const std::string what = c_shell_error(c, c.roles, 0.6, junction(0.04));
+  EXPECT_TRUE(contains(what, "surface '") || contains(what, "curve '")) << what;
+  EXPECT_TRUE(contains(what, "0.6")) << what;
+}
+
+TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
+  for (const auto& wing : {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
+    const Built b{wing_case(wing), {}};
+    const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), junction(0.03));
+    expect_valid_linear_elements(f);
+    EXPECT_EQ(static_cast<std::size_t>(f.junction_hexes), f.footprint.size());
+    for (NodeId h : f.footprint_top) {
+      EXPECT_NEAR(f.mesh.node(h).z(), 0.03, 1e-12);
+      EXPECT_NEAR(nearest_on_surfaces(*b.c.model, b.c.roles.body_surfaces, f.mesh.node(h)).distance, 0.05, 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield

@@ -13,7 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
@@ -102,9 +102,6 @@ void expect_sound(const mesh::Mesh& m, const Case& c, double volume_tolerance) {
   const checks::ValidityResult validity = checks::check_validity(m);
   EXPECT_EQ(validity.invalid, 0u) << "min scaled Jacobian " << validity.min_scaled_jacobian;
   const checks::MeshVolume volume = checks::mesh_volume(m);
-  for (const auto& [name, count] : elements_by_region(m)) std::cout << name << " " << count << "\n";
-  std::cout << "volume " << volume.element_volume << " boundary " << volume.boundary_volume << " expected "
-            << expected_volume(c) << " min sJ " << validity.min_scaled_jacobian << "\n";
   EXPECT_LT(volume.boundary_relative_error(), 1e-9);
   EXPECT_NEAR(volume.element_volume, expected_volume(c), volume_tolerance);
 }
@@ -137,6 +134,59 @@ TEST(CTypeEndToEnd, CurvedAndSplitInBothDirections) {
   EXPECT_EQ(after.at("wall_layer"), before.at("wall_layer") * n_wall);
   EXPECT_EQ(after.at("farfield"), before.at("farfield"));
   expect_sound(split.mesh, c, 2e-3);
+}
+
+}  // namespace
+}  // namespace semimesh
+
+namespace semimesh {
+namespace {
+
+class CTypeVariants : public ::testing::TestWithParam<Case> {};
+
+TEST_P(CTypeVariants, ConformingValidMeshWithTheRightVolume) {
+  const Case c = GetParam();
+  if (c.backend == "occ" && !backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  const Built b = build(c, 0.05, 0.04);
+  const auto regions = elements_by_region(b.near.mesh);
+  EXPECT_EQ(regions.at("junction"), b.near.junction_hexes);
+  EXPECT_EQ(regions.at("wall_layer"), b.far.wall_layer_prisms);
+  expect_sound(b.near.mesh, c, 3e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Wings, CTypeVariants,
+                         ::testing::Values(Case{"naca", "0012", "sharp"}, Case{"naca", "2412", "blunt"},
+                                           Case{"naca", "2412", "sharp"}, Case{"naca", "0012", "blunt", 0.5, 30.0},
+                                           Case{"occ", "0012", "blunt"}, Case{"occ", "2412", "sharp"},
+                                           Case{"occ", "0012", "sharp", 0.5, 30.0}));
+
+// At order 3, every face a junction piece shares with a wing- or wall-layer piece is one face
+// entity (the very same high-order nodes): W-H strips N_wing per hex, L-H strips N_wall per hex.
+TEST(CTypeEndToEnd, JunctionPiecesShareTheirFacesWithTheSplitPrismsNodeForNode) {
+  const Case c;
+  const Built b = build(c, 0.05, 0.04);
+  ho::CurvingParams curving;
+  curving.order = 3;
+  const mesh::Mesh curved = ho::curve_mesh(b.near.mesh, *b.model, curving);
+  const int n_wing = 3, n_wall = 4;
+  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.near.stacks, {{n_wing, 2.0}, {}}, {{n_wall, 1.5}, {}});
+  const mesh::Mesh& m = split.mesh;
+  const auto region = [&](const std::string& name) {
+    return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) - m.region_names().begin());
+  };
+  const int junction = region("junction"), wing = region("wing_layer"), wall = region("wall_layer");
+  std::map<std::uint32_t, std::vector<int>> users;  // face -> regions of its elements
+  for (const auto& el : m.elements())
+    for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f) users[el.faces[f]].push_back(el.region);
+  int with_wing = 0, with_wall = 0;
+  for (const auto& [face, regions] : users) {
+    if (regions.size() != 2 || std::count(regions.begin(), regions.end(), junction) != 1) continue;
+    with_wing += std::count(regions.begin(), regions.end(), wing) > 0;
+    with_wall += std::count(regions.begin(), regions.end(), wall) > 0;
+  }
+  EXPECT_EQ(with_wing, b.near.junction_hexes * n_wing);
+  EXPECT_EQ(with_wall, b.near.junction_hexes * n_wall);
+  EXPECT_TRUE(checks::check_conformity(m).ok());
 }
 
 }  // namespace
