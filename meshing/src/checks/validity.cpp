@@ -49,6 +49,11 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
                    [](const InvalidElement& a, const InvalidElement& b) { return a.scaled_jacobian < b.scaled_jacobian; });
   if (result.worst.size() > max_listed) result.worst.resize(max_listed);
 
+  for (std::size_t e = 0; e < n; ++e) {
+    const std::string& region = mesh.region_names()[mesh.elements()[e].region];
+    const auto [it, added] = result.min_scaled_jacobian_by_region.try_emplace(region, scaled[e]);
+    if (!added) it->second = std::min(it->second, scaled[e]);
+  }
   if (n > 0) {
     result.min_scaled_jacobian = *std::min_element(scaled.begin(), scaled.end());
     std::nth_element(scaled.begin(), scaled.begin() + n / 2, scaled.end());

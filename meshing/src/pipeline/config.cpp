@@ -236,9 +236,8 @@ void read_geometry(Section s, Config& c, const std::string& base_directory) {
 void read_nearfield(Section s, NearFieldConfig& n) {
   s.string("topology", n.topology);
   s.require(one_of(n.topology, {"O", "C", "H"}), "topology", "\"O\", \"C\" or \"H\"");
-  s.require(n.topology == "O", "topology",
-            "\"O\": the C-type (root junction block) and H-type (trailing-edge wake block) topologies are not "
-            "implemented yet");
+  s.require(n.topology != "H", "topology",
+            "\"O\" or \"C\": the H-type (trailing-edge wake block) topology is not implemented yet");
   s.real("thickness", n.thickness);
   s.require(n.thickness > 0.0, "thickness", "> 0");
   s.integer("smoothing_passes", n.smoothing_passes);
@@ -249,6 +248,31 @@ void read_nearfield(Section s, NearFieldConfig& n) {
   s.require(n.reduction_factor > 0.0 && n.reduction_factor < 1.0, "reduction_factor", "in (0, 1)");
   s.real("gradation", n.gradation);
   s.require(n.gradation > 0.0, "gradation", "> 0");
+  s.real("concave_angle", n.concave_angle);
+  s.require(n.concave_angle > 0.0 && n.concave_angle <= 180.0, "concave_angle", "in (0, 180] degrees");
+  s.real("junction_min_angle", n.junction_min_angle);
+  s.real("junction_max_angle", n.junction_max_angle);
+  s.require(n.junction_min_angle > 0.0 && n.junction_min_angle < n.junction_max_angle, "junction_min_angle",
+            "> 0 and < junction_max_angle");
+  s.require(n.junction_max_angle <= n.concave_angle, "junction_max_angle", "<= concave_angle");
+  s.reject_unknown();
+}
+
+void read_wall_layer(Section s, WallLayerConfig& w) {
+  s.real("thickness", w.thickness);
+  s.require(w.thickness >= 0.0, "thickness", ">= 0 (0: a slip wall, no wall layer)");
+  s.integer("layers", w.layers);
+  s.require(w.layers >= 1 && w.layers <= 100, "layers", "an integer in [1, 100]");
+  s.real("ratio", w.ratio);
+  s.require(w.ratio >= 1.0, "ratio", ">= 1");
+  s.real("first_cell_height", w.first_cell_height);
+  if (w.first_cell_height) {
+    s.require(!s.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
+    s.require(*w.first_cell_height > 0.0, "first_cell_height", "> 0");
+    s.require(*w.first_cell_height * w.layers <= w.thickness, "first_cell_height",
+              fmt::format("<= wall_layer.thickness / layers = {}", w.thickness / w.layers) +
+                  " (the layers must fit in the wall layer with a ratio >= 1)");
+  }
   s.reject_unknown();
 }
 
@@ -358,18 +382,19 @@ Config parse_config(const std::string& text, const std::string& source_name, con
   Origin origin{source_name, {}};
   for (const std::string& o : overrides) apply_override(root, o, origin);
 
-  static const std::set<std::string> sections = {"geometry", "nearfield", "boundary_layer", "sizing",
+  static const std::set<std::string> sections = {"geometry", "nearfield", "boundary_layer", "wall_layer", "sizing",
                                                   "farfield", "highorder", "output"};
   for (const auto& [k, node] : root)
     if (!sections.count(std::string(k.str())))
       throw ConfigError("config error: " + location(origin, std::string(k.str()), &node) + ": unknown key " +
                         std::string(k.str()) +
-                        " (sections: geometry, nearfield, boundary_layer, sizing, farfield, highorder, output)");
+                        " (sections: geometry, nearfield, boundary_layer, wall_layer, sizing, farfield, highorder, output)");
 
   Config c;
   read_geometry(Section(origin, root, "geometry", "geometry"), c, base_directory);
   read_nearfield(Section(origin, root, "nearfield", "nearfield"), c.nearfield);
   read_boundary_layer(Section(origin, root, "boundary_layer", "boundary_layer"), c.boundary_layer, c.nearfield.thickness);
+  read_wall_layer(Section(origin, root, "wall_layer", "wall_layer"), c.wall_layer);
   read_sizing(Section(origin, root, "sizing", "sizing"), c.sizing);
   read_farfield(Section(origin, root, "farfield", "farfield"), c.farfield);
   read_highorder(Section(origin, root, "highorder", "highorder"), c.highorder);
@@ -399,6 +424,18 @@ double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness)
     (total(mid) < thickness ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+double effective_wall_ratio(const WallLayerConfig& layer) {
+  BoundaryLayerConfig as_layer;
+  as_layer.layers = layer.layers;
+  as_layer.ratio = layer.ratio;
+  as_layer.first_cell_height = layer.first_cell_height;
+  return effective_layer_ratio(as_layer, layer.thickness);
+}
+
+bool builds_junction(const Config& config) {
+  return config.nearfield.topology == "C" && config.wall_layer.thickness > 0.0;
 }
 
 }  // namespace semimesh::pipeline

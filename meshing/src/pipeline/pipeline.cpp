@@ -13,8 +13,10 @@
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
 #include "semimesh/nearfield/error.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/report.hpp"
+#include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/error.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
@@ -172,6 +174,15 @@ nearfield::ShellParams shell_params(const NearFieldConfig& n) {
   return p;
 }
 
+nearfield::JunctionParams junction_params(const Config& c) {
+  nearfield::JunctionParams p;
+  p.wall_thickness = c.wall_layer.thickness;
+  p.concave_below_deg = c.nearfield.concave_angle;
+  p.min_angle_deg = c.nearfield.junction_min_angle;
+  p.max_angle_deg = c.nearfield.junction_max_angle;
+  return p;
+}
+
 farfield::FarFieldParams far_params(const FarFieldConfig& f) {
   farfield::FarFieldParams p;
   p.box_size = f.box_size;
@@ -204,21 +215,13 @@ ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
   };
 }
 
-// The near-field shell is the mesh's prisms (the far field holds tets and pyramids only).
-std::vector<std::size_t> shell_prisms(const mesh::Mesh& mesh) {
-  std::vector<std::size_t> prisms;
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e)
-    if (mesh.elements()[e].shape == ho::Shape::Prism) prisms.push_back(e);
-  return prisms;
-}
-
-// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms. split_layers
-// replaces the k-th split prism (input index i) by `layers` elements from the body outwards, so its
-// first-layer element is at i + k (layers - 1).
-double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<std::size_t>& prisms, int layers) {
+// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms of the wing.
+double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<nearfield::LayerStack>& stacks,
+                              const std::vector<std::size_t>& first_layer) {
   double worst = 0.0;
-  for (std::size_t k = 0; k < prisms.size(); ++k) {
-    const mesh::Element& e = split.elements()[prisms[k] + k * static_cast<std::size_t>(layers - 1)];
+  for (std::size_t k = 0; k < stacks.size(); ++k) {
+    const mesh::Element& e = split.elements()[first_layer[k]];
+    if (e.shape != ho::Shape::Prism || stacks[k].directions.front().family != nearfield::LayerFamily::Wing) continue;
     auto x = [&](int v) -> const Eigen::Vector3d& { return split.node(e.vertices[v]); };
     const double longest = std::max({(x(1) - x(0)).norm(), (x(2) - x(1)).norm(), (x(0) - x(2)).norm()});
     const double height = ((x(3) - x(0)).norm() + (x(4) - x(1)).norm() + (x(5) - x(2)).norm()) / 3.0;
@@ -294,10 +297,14 @@ RunResult run(const Config& config, Progress& progress) {
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
 
+  const bool junction = builds_junction(config);
   nearfield::NearField near = stage("near field", progress, result, [&] {
-    return nearfield::build_o_shell(*model, surfaces, nearfield::BodyRoles{roles.body, roles.wall},
-                                    shell_params(config.nearfield));
+    const nearfield::BodyRoles body_roles{roles.body, roles.wall};
+    return junction ? nearfield::build_c_shell(*model, surfaces, body_roles, shell_params(config.nearfield),
+                                               junction_params(config))
+                    : nearfield::build_o_shell(*model, surfaces, body_roles, shell_params(config.nearfield));
   });
+  result.junction_hexes = near.junction_hexes;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
@@ -305,7 +312,9 @@ RunResult run(const Config& config, Progress& progress) {
                                           w.where.y(), w.where.z()));
 
   stage("far field", progress, result, [&] {
-    farfield::build_far_field(*model, near, far_params(config.farfield), roles.farfield, roles.wall);
+    farfield::FarFieldParams far = far_params(config.farfield);
+    if (junction) far.wall_layer_thickness = config.wall_layer.thickness;
+    farfield::build_far_field(*model, near, far, roles.farfield, roles.wall);
   });
   // The far field stays straight-sided and so does the skin: curving moves only nodes on the CAD.
   result.mesh = std::move(near.mesh);
@@ -333,20 +342,31 @@ RunResult run(const Config& config, Progress& progress) {
   // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
   const int layers = config.boundary_layer.layers;
   result.layers.layers = layers;
-  if (layers > 1) {
-    const std::vector<std::size_t> prisms = shell_prisms(result.mesh);
+  const int wall_layers = junction ? config.wall_layer.layers : 1;
+  if (junction) result.wall_layers.layers = wall_layers;
+  if (layers > 1 || wall_layers > 1) {
     const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
-    ho::SplitStats split{};
-    result.mesh = stage("split", progress, result, [&] {
-      return ho::split_layers(result.mesh, prisms, ho::LayerDistribution{layers, ratio},
-                              ratio_field(config.boundary_layer, ratio), &split);
+    const double wall_ratio = junction ? effective_wall_ratio(config.wall_layer) : 1.0;
+    StackSplit split = stage("split", progress, result, [&] {
+      return split_stacks(result.mesh, near.stacks,
+                          {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
+                          {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
     });
-    result.layers.requested_ratio = ratio;
-    result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
-    result.layers.achieved_ratio = split.achieved_ratio;
-    result.layers.first_cell_height_min = split.first_cell_height_min;
-    result.layers.first_cell_height_max = split.first_cell_height_max;
-    result.layers.max_first_layer_aspect = max_first_layer_aspect(result.mesh, prisms, layers);
+    result.mesh = std::move(split.mesh);
+    if (layers > 1) {
+      result.layers.requested_ratio = ratio;
+      result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
+      result.layers.achieved_ratio = split.wing.achieved_ratio;
+      result.layers.first_cell_height_min = split.wing.first_cell_height_min;
+      result.layers.first_cell_height_max = split.wing.first_cell_height_max;
+      result.layers.max_first_layer_aspect = max_first_layer_aspect(result.mesh, near.stacks, split.first_layer);
+    }
+    if (wall_layers > 1) {
+      result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
+      result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
+      result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
+      result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;
+    }
   }
 
   stage("checks", progress, result, [&] {
@@ -365,8 +385,10 @@ RunResult run(const Config& config, Progress& progress) {
     const ho::GeometricError error = ho::geometric_error(result.mesh, *model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
-  for (std::size_t e = 0; e < result.mesh.elements().size(); ++e)
+  for (std::size_t e = 0; e < result.mesh.elements().size(); ++e) {
     ++result.elements_by_type[ho::to_string(result.mesh.elements()[e].shape)];
+    ++result.elements_by_region[result.mesh.region_names()[result.mesh.elements()[e].region]];
+  }
   for (const mesh::BoundaryFace& f : result.mesh.boundary_faces())
     ++result.boundary_faces_by_group[result.mesh.group_names()[f.group]];
 

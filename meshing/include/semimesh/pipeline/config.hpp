@@ -44,12 +44,24 @@ struct GeometryConfig {
 
 /// [nearfield]: the one-layer shell around the body.
 struct NearFieldConfig {
-  std::string topology = "O";         ///< "O" (implemented), "C", "H" (rejected for now)
+  std::string topology = "O";         ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
   double thickness = 0.1;             ///< shell thickness delta, model units
   int smoothing_passes = 10;          ///< Laplacian smoothing passes of the node normals
   double min_thickness_fraction = 0.1;  ///< local reduction may not go below this fraction of delta
   double reduction_factor = 0.7;      ///< thickness multiplier per local reduction round, in (0, 1)
   double gradation = 0.5;             ///< |delta_x - delta_y| <= gradation |x - y| after a reduction
+  double concave_angle = 170.0;       ///< C: body-wall curves below this dihedral angle (degrees) are concave corners
+  double junction_min_angle = 60.0;   ///< C: supported dihedral angles of the root curves, degrees
+  double junction_max_angle = 150.0;
+};
+
+/// [wall_layer]: the wall's boundary layer (C topology): one prism layer of `thickness` on the
+/// wall, split like the wing's. thickness = 0: a slip wall (no wall layer, the O-type root).
+struct WallLayerConfig {
+  double thickness = 0.1;                     ///< delta_wall, model units, >= 0
+  int layers = 5;                             ///< N_wall >= 1
+  double ratio = 2.0;                         ///< r_wall >= 1
+  std::optional<double> first_cell_height;    ///< instead of ratio
 };
 
 /// [boundary_layer]: splitting of the shell into N layers (used by the high-order stage).
@@ -107,6 +119,7 @@ struct Config {
   GeometryConfig geometry;
   NearFieldConfig nearfield;
   BoundaryLayerConfig boundary_layer;
+  WallLayerConfig wall_layer;
   SizingConfig sizing;
   FarFieldConfig farfield;
   HighOrderConfig highorder;
@@ -126,5 +139,9 @@ Config load_config(const std::string& path, const std::vector<std::string>& over
 /// Ratio of the boundary layer: `ratio`, or the r solving h1 (r^N - 1) / (r - 1) = thickness when
 /// first_cell_height h1 is given.
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness);
+/// The same for the wall layer.
+double effective_wall_ratio(const WallLayerConfig& layer);
+/// Whether the run builds the C-type junction (topology "C" and a wall layer of thickness > 0).
+bool builds_junction(const Config& config);
 
 }  // namespace semimesh::pipeline
