@@ -198,7 +198,8 @@ TEST(SplitLayers, RefusesASplitElementWhoseSideFaceNeighbourIsNotSplitTheSameWay
     EXPECT_NE(what.find("element 0"), std::string::npos) << what;
   }
   std::vector<std::size_t> first_piece;
-  const mesh::Mesh fine = split_layers(coarse, std::vector<DirectedSplit>{{0, 2}, {1, 2}}, {3, 1.5}, {}, nullptr, &first_piece);
+  const mesh::Mesh fine = split_layers(coarse, std::vector<LayerSplit>{{0, {2, -1}, {0, 0}}, {1, {2, -1}, {0, 0}}},
+                                       {SplitFamily{{3, 1.5}, {}}}, nullptr, &first_piece);
   EXPECT_EQ(first_piece, (std::vector<std::size_t>{0, 3}));
   EXPECT_EQ(fine.elements().size(), 6u);
 }

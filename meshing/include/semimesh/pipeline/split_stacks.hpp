@@ -1,7 +1,7 @@
-// Splitting the near field's layer stacks (near_field.hpp) into their boundary layers: every
-// element along its own direction(s), the wing family first (wing prisms along zeta, junction hexes
-// along their wing-normal direction), then the wall family (wall prisms, and each junction piece
-// along its wall-normal direction), so every face shared by two stacks is cut the same way.
+// Splitting the near field's layer stacks (near_field.hpp) into their boundary layers in one pass
+// (ho::split_layers): every element along its own direction(s) with its family's layers (wing
+// prisms along zeta into the wing's layers, wall prisms into the wall's, junction hexes across
+// both), so every face shared by two stacks is cut the same way.
 #pragma once
 
 #include "semimesh/ho/splitting/split_layers.hpp"
@@ -22,8 +22,7 @@ struct StackSplit {
   /// [stacks] output index of each stack's first-layer piece (the one touching its body face in
   /// every direction)
   std::vector<std::size_t> first_layer;
-  ho::SplitStats wing, wall;  ///< per family (elements_in/out of its pass); zero when none was split
-  int split_passes = 0;
+  ho::SplitStats wing, wall;  ///< first-cell figures per family (zero when nothing of it was split)
 };
 
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it

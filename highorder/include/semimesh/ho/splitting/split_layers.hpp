@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -55,21 +56,33 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& 
                         const LayerDistribution& distribution, const RatioField& ratio = {},
                         SplitStats* stats = nullptr);
 
-/// An element to split and the reference direction to split it along (0 xi, 1 eta, 2 zeta; prisms: 2).
-struct DirectedSplit {
-  std::size_t element = 0;
-  int direction = 2;
+/// A layer distribution with its optional per-vertex ratio field: one boundary layer (a family:
+/// e.g. the wing's, the wall's).
+struct SplitFamily {
+  LayerDistribution distribution;
+  RatioField ratio;
 };
 
-/// The same in one pass for elements with their own directions (e.g. the wing layer's prisms along
-/// zeta and the root junction's hexes along their wing-normal direction), all with `distribution`.
-/// A split element whose side face (cut by its split) is shared with an element that is not split,
-/// or not split so that the face is cut the same way (same body-side vertices), is refused
-/// (std::invalid_argument naming both elements): its neighbour would not conform. When
-/// `first_piece` is given, (*first_piece)[e] is the output index of input element e's first
-/// (body-side) piece, or of its copy when it is not split.
-mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<DirectedSplit>& split,
-                        const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats,
+/// An element to split, along one reference direction (0 xi, 1 eta, 2 zeta; prisms: 2) or two
+/// (hexes: direction[1] >= 0, e.g. a root junction hex across both wall normals), each with the
+/// family (index into the families) whose layers it takes. A ratio field is allowed on the first
+/// direction only.
+struct LayerSplit {
+  std::size_t element = 0;
+  std::array<int, 2> direction{2, -1};
+  std::array<int, 2> family{0, 0};
+};
+
+/// Splits every listed element in one pass, each along its own direction(s): an element split in
+/// one direction into N pieces (the family's layers), in two into N_a x N_b pieces, ordered
+/// k_b N_a + k_a (k = 0 the body side of each direction). Every face cut by a split is cut the same
+/// way from both sides, so the pieces conform node for node at any order. A split element whose
+/// cut face is shared with an element that does not cut it the same way (not split, or split by
+/// another family or with other body-side vertices) is refused (std::invalid_argument naming both
+/// elements). `stats` gets one SplitStats per family (first-cell heights along its directions);
+/// (*first_piece)[e] is the output index of input element e's first piece (its copy when not split).
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
