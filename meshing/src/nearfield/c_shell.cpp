@@ -38,10 +38,11 @@ void check_junction_params(const cad::Model& model, const BodyRoles& roles, cons
          " is not planar; the C-type near field builds its wall layer on a planar wall only (use topology \"O\")");
 }
 
-// The root curves: every body-wall curve, each of which must be a concave corner of a supported angle.
+// The root curves: every body-wall curve, each of which must be a concave corner (from the CAD,
+// concave_wall_curves) of a supported angle. Returns curve -> its body surface.
 std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j) {
   std::map<int, int> surface_of;
-  for (const WallCurve& w : wall_curves(model, roles.body_surfaces, roles.wall_surface)) {
+  for (const WallCurve& w : concave_wall_curves(model, roles.body_surfaces, roles.wall_surface, j.concave_below_deg)) {
     const double worst = w.min_angle_deg < j.min_angle_deg ? w.min_angle_deg : w.max_angle_deg;
     if (w.min_angle_deg < j.min_angle_deg || w.max_angle_deg > j.max_angle_deg)
       throw NearFieldError("near field: " + curve_label(model, w.curve) + " between " +
@@ -50,6 +51,13 @@ std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles&
                            number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) + " degrees");
     surface_of[w.curve] = w.body_surface;
   }
+  for (const WallCurve& w : wall_curves(model, roles.body_surfaces, roles.wall_surface))
+    if (!surface_of.count(w.curve))
+      throw NearFieldError("near field: " + curve_label(model, w.curve) + " between " +
+                           surface_label(model, w.body_surface) + " and the wall meets the wall at up to " +
+                           number_label(w.max_angle_deg) + " degrees (seen from the fluid): not a concave corner (below " +
+                           number_label(j.concave_below_deg) +
+                           " degrees); the junction block needs the whole root loop concave");
   return surface_of;
 }
 

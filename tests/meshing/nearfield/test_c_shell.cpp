@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <set>
@@ -241,6 +242,48 @@ TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
     for (NodeId h : f.footprint_top) {
       EXPECT_NEAR(f.mesh.node(h).z(), 0.03, 1e-12);
       EXPECT_NEAR(nearest_on_surfaces(*b.c.model, b.c.roles.body_surfaces, f.mesh.node(h)).distance, 0.05, 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// Unswept untapered wings stand upright on z = 0: every root curve is a 90 degree concave corner.
+TEST(WallCurves, RootCurvesOfStraightWingsAreConcaveRightAngles) {
+  for (const auto& wing : {naca("0012", false), naca("2412", true)}) {
+    const WingCase c = wing_case(wing);
+    const auto all = wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface);
+    const auto concave = concave_wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface, 170.0);
+    EXPECT_EQ(all.size(), wing.sharp_te ? 2u : 3u);  // root_upper, root_lower (, the TE base's root)
+    EXPECT_EQ(concave.size(), all.size());
+    for (const WallCurve& w : all) {
+      EXPECT_NEAR(w.min_angle_deg, 90.0, 1e-6) << c.model->curve(w.curve).name();
+      EXPECT_NEAR(w.max_angle_deg, 90.0, 1e-6) << c.model->curve(w.curve).name();
+    }
+    EXPECT_TRUE(concave_wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface, 80.0).empty());
+  }
+}
+
+// A swept tapered wing leans over the wall: by the LE sweep (30 degrees: up to 120 degrees seen from
+// the fluid ahead) at the leading edge and the other way by the TE sweep at the trailing edge,
+// where the flat TE base meets the wall at exactly 90 - atan(tan 30 - (1 - taper) chord / span).
+TEST(WallCurves, SweptTaperedWingLeansByItsSweepAngles) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const double pi = std::acos(-1.0);
+  const double te_sweep = std::atan(std::tan(30.0 * pi / 180.0) - 0.5 / 1.5) * 180.0 / pi;
+  for (const WallCurve& w : wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface)) {
+    if (c.model->surface(w.body_surface).name() == "te_base") {
+      EXPECT_NEAR(w.min_angle_deg, 90.0 - te_sweep, 1e-6);
+      EXPECT_NEAR(w.max_angle_deg, 90.0 - te_sweep, 1e-6);
+    } else {
+      EXPECT_GT(w.max_angle_deg, 110.0) << c.model->curve(w.curve).name();  // near the leading edge
+      EXPECT_LE(w.max_angle_deg, 120.0 + 1e-9) << c.model->curve(w.curve).name();
+      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();   // near the trailing edge
+      EXPECT_GE(w.min_angle_deg, 90.0 - te_sweep - 1e-9) << c.model->curve(w.curve).name();
     }
   }
 }

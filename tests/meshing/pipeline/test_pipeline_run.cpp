@@ -291,6 +291,7 @@ TEST(PipelineRunCType, OrderTwoReportsRegionsAndBothLayers) {
                                               "output.formats=[\"msh41\"]"}),
                           progress);
   EXPECT_TRUE(r.checks_passed());
+  EXPECT_LT(r.geometric_error.max_rel, 1e-4);  // every boundary face, the hexes' wing and wall quads included
   EXPECT_GT(r.junction_hexes, 10);
   EXPECT_EQ(r.elements_by_region.at("junction"), static_cast<std::size_t>(r.junction_hexes * 3 * 3));
   EXPECT_EQ(r.elements_by_type.at("hexahedron"), r.elements_by_region.at("junction"));
