@@ -3,7 +3,7 @@
 #include "curving/cad_classification.hpp"
 #include "curving/harmonic_extension.hpp"
 #include "curving/spring_optimisation.hpp"
-#include "mesh_validity/parallel_for.hpp"
+#include "parallel_for.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 

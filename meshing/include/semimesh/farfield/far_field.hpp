@@ -6,6 +6,8 @@
 // semimesh_farfield, so that the rest of semimesh does not.
 #pragma once
 
+#include "semimesh/error.hpp"
+
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/near_field.hpp"
 
@@ -14,9 +16,9 @@
 
 namespace semimesh::farfield {
 
-class FarFieldError : public std::runtime_error {
+class FarFieldError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 struct FarFieldParams {

@@ -1,7 +1,6 @@
 #include "semimesh/pipeline/pipeline.hpp"
 
 #include "semimesh/backends/builtin.hpp"
-#include "semimesh/cad/error.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -12,12 +11,10 @@
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
-#include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
-#include "semimesh/surface/error.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <fmt/format.h>
@@ -51,8 +48,8 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     result.stages.push_back(timing);
     progress.stage_finished(timing);
   };
-  auto fail = [&](RunError::Kind kind, const std::string& what) -> RunError {
-    return RunError(kind, name, name + ": " + what);
+  auto fail = [&](Error::Cause cause, const std::string& what) -> RunError {
+    return RunError(cause, name, name + ": " + what);
   };
   try {
     if constexpr (std::is_void_v<decltype(body())>) {
@@ -65,20 +62,12 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     }
   } catch (const RunError&) {
     throw;
-  } catch (const cad::CadError& e) {
-    throw fail(e.kind() == cad::CadError::Kind::Geometry ? RunError::Kind::Internal : RunError::Kind::BadInput, e.what());
-  } catch (const ConfigError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const surface::SurfaceMeshError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const nearfield::NearFieldError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const farfield::FarFieldError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
+  } catch (const Error& e) {
+    throw fail(e.cause(), e.what());
   } catch (const std::filesystem::filesystem_error& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
+    throw fail(Error::Cause::BadInput, e.what());  // the output folder cannot be made or written
   } catch (const std::exception& e) {
-    throw fail(RunError::Kind::Internal, e.what());
+    throw fail(Error::Cause::Internal, e.what());
   }
 }
 

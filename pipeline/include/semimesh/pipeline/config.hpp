@@ -6,6 +6,8 @@
 // expected and where it was written (file:line, or the --set option).
 #pragma once
 
+#include "semimesh/error.hpp"
+
 #include <array>
 #include <optional>
 #include <stdexcept>
@@ -14,9 +16,9 @@
 
 namespace semimesh::pipeline {
 
-class ConfigError : public std::runtime_error {
+class ConfigError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 /// [geometry.naca]: the analytic wing (backends "naca" and "occ" without a source file).
