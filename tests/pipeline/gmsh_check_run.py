@@ -98,7 +98,7 @@ def main():
         print("ok")
         return
     bad = os.path.join(args.workdir, "bad")
-    for override, expected in (("nearfield.topology=C", "not implemented yet"),
+    for override, expected in (("nearfield.topology=H", "not implemented yet"),
                                ("boundary_layer.ratio=0.5", "boundary_layer.ratio = 0.5: expected >= 1"),
                                ("geometry.wall=floor", "no surface named 'floor'")):
         code, _, stderr = run_cli(args.exe, ["run", args.config, "-o", bad, "--set", override])
