@@ -119,6 +119,88 @@ bool hex_corners_valid(const std::array<Vec3, 8>& x) {
   return ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, nodes).valid;
 }
 
+// The root loop: the body mesh's open edges, all on the wall, chained in their direction
+// (counter-clockwise seen from the fluid); body node ids.
+std::vector<int> root_loop(const cad::Model& model, const BodyMesh& body, const std::vector<std::pair<int, int>>& open,
+                           int wall) {
+  for (const auto& [a, b] : open)
+    for (int v : {a, b})
+      if (!detail::on_wall(model, body.cad[v], wall))
+        throw NearFieldError("near field: the body mesh is open at " + point_label(body.points[v]) + " on " +
+                             surface_label(model, body.node_surface[v]) + " away from the wall " +
+                             surface_label(model, wall) + "; list every surface of the body");
+  std::vector<int> loop;
+  for (NodeId v : detail::footprint_loop(body, open, 0)) loop.push_back(static_cast<int>(v));
+  if (loop.size() < 3) throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, wall));
+  return loop;
+}
+
+// Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
+// plane away from the body (bisecting the two root segments' outward normals).
+JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles, const std::map<int, int>& root_surface,
+                                 const BodyMesh& body, int r, const Vec3& outward, const Frame& wall,
+                                 double delta_wing, double delta_wall) {
+  JunctionNode j;
+  j.root = body.points[r];
+  j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
+  const cad::Surface& wall_face = model.surface(roles.wall_surface);
+  const auto foot = wall_face.project(j.halo - delta_wall * wall.normal);
+  j.wall_foot = foot.point;
+  j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
+  const CadAttachment& at = body.cad[r];
+  if (at.kind == CadAttachment::Vertex) {
+    const int c = spanwise_curve(model, at.entity, roles.wall_surface);
+    const auto p = model.curve(c).project(j.halo);
+    j.strip_top = p.point;
+    j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
+  } else {
+    const auto it = root_surface.find(at.entity);
+    if (at.kind != CadAttachment::Curve || it == root_surface.end())
+      throw NearFieldError("near field: the root node at " + point_label(j.root) + " is not on a body-wall curve");
+    const cad::Surface& face = model.surface(it->second);
+    const auto p = face.project(j.halo, face.project(j.root).uv);
+    if (!p.inside)
+      throw NearFieldError("near field: the top of the root strip above " + point_label(j.root) + " falls off " +
+                           surface_label(model, it->second) + " (wall layer thickness " + number_label(delta_wall) +
+                           ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
+    j.strip_top = p.point;
+    j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
+  }
+  if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
+    throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
+                         surface_label(model, body.node_surface[r]) + " has no height");
+  return j;
+}
+
+// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
+// the strip is too tall for the body or a triangle would fold.
+void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
+                     const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
+  double tip = 0.0, strip = 0.0;
+  for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
+  for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
+  if (!(strip < 0.5 * tip))
+    throw NearFieldError("near field: the root strip (height " + number_label(strip) + ") for the wall layer thickness " +
+                         number_label(delta_wall) + " takes more than half of the body's height " + number_label(tip) +
+                         " above the wall; use a thinner wall layer");
+  const std::vector<Vec3> unlifted = body.points;
+  std::vector<char> on_root(body.num_nodes(), 0);
+  for (int r : loop) on_root[r] = 1;
+  for (int v = 0; v < body.num_nodes(); ++v)
+    if (!on_root[v]) body.points[v] = lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
+  for (const auto& t : body.triangles) {
+    const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
+    const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
+    if (!(before.dot(after) > 0.0))
+      throw NearFieldError("near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
+                           ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
+                           surface_label(model, body.node_surface[t[0]]) +
+                           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
+  }
+}
+
 }  // namespace
 
 NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
@@ -135,85 +217,26 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const Frame wall{wall_face.normal(wall_mid), wall_face.point(wall_mid)};
   const double delta_wing = params.thickness, delta_wall = junction.wall_thickness;
 
-  // The root loop, in the direction of the open edges (counter-clockwise seen from the fluid).
-  for (const auto& [a, b] : open)
-    for (int v : {a, b})
-      if (!detail::on_wall(model, body.cad[v], roles.wall_surface))
-        throw NearFieldError("near field: the body mesh is open at " + point_label(body.points[v]) + " on " +
-                             surface_label(model, body.node_surface[v]) + " away from the wall " +
-                             surface_label(model, roles.wall_surface) + "; list every surface of the body");
-  std::vector<int> loop;
-  for (NodeId v : detail::footprint_loop(body, open, 0)) loop.push_back(static_cast<int>(v));
+  // Junction geometry per root node, then the wing mesh lifted onto the strip tops.
+  const std::vector<int> loop = root_loop(model, body, open, roles.wall_surface);
   const int n = static_cast<int>(loop.size());
-  if (n < 3) throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, roles.wall_surface));
   std::map<std::pair<int, int>, int> triangle_of_edge;
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) triangle_of_edge[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
-  auto triangle_normal = [&](int a, int b) {
+  auto outward = [&](int a, int b) {  // of the root segment a -> b
     const auto& t = body.triangles[triangle_of_edge.at({a, b})];
-    return Vec3((body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized());
+    const Vec3 n_tri = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
+    return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
   };
-
-  // Halo, strip top and wall foot of every root node.
   std::vector<JunctionNode> nodes(n);
   for (int i = 0; i < n; ++i) {
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
-    JunctionNode& j = nodes[i];
-    j.root = body.points[r];
-    const Vec3 e = (segment_outward(body.points[prev], j.root, triangle_normal(prev, r), wall.normal) +
-                    segment_outward(j.root, body.points[next], triangle_normal(r, next), wall.normal)).normalized();
-    j.halo = medial_halo(model, roles.body_surfaces, j.root, e, wall.normal, delta_wing, delta_wall);
-    const auto foot = wall_face.project(j.halo - delta_wall * wall.normal);
-    j.wall_foot = foot.point;
-    j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
-    const CadAttachment& at = body.cad[r];
-    if (at.kind == CadAttachment::Vertex) {
-      const int c = spanwise_curve(model, at.entity, roles.wall_surface);
-      const auto p = model.curve(c).project(j.halo);
-      j.strip_top = p.point;
-      j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
-    } else {
-      const auto it = root_surface.find(at.entity);
-      if (at.kind != CadAttachment::Curve || it == root_surface.end())
-        throw NearFieldError("near field: the root node at " + point_label(j.root) + " is not on a body-wall curve");
-      const cad::Surface& face = model.surface(it->second);
-      const auto p = face.project(j.halo, face.project(j.root).uv);
-      if (!p.inside)
-        throw NearFieldError("near field: the top of the root strip above " + point_label(j.root) + " falls off " +
-                             surface_label(model, it->second) + " (wall layer thickness " + number_label(delta_wall) +
-                             ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
-      j.strip_top = p.point;
-      j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
-    }
-    if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
-      throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
-                           surface_label(model, body.node_surface[r]) + " has no height");
+    nodes[i] = place_junction_node(model, roles, root_surface, body, r, (outward(prev, r) + outward(r, next)).normalized(),
+                                   wall, delta_wing, delta_wall);
   }
-
-  // Lift the wing mesh off the wall onto the strip tops.
-  double tip = 0.0, strip = 0.0;
-  for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
-  for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
-  if (!(strip < 0.5 * tip))
-    throw NearFieldError("near field: the root strip (height " + number_label(strip) + ") for the wall layer thickness " +
-                         number_label(delta_wall) + " takes more than half of the body's height " + number_label(tip) +
-                         " above the wall; use a thinner wall layer");
-  const std::vector<Vec3> unlifted = body.points;
-  const std::vector<CadAttachment> unlifted_cad = body.cad;
-  std::vector<char> on_root(count, 0);
-  for (int i = 0; i < n; ++i) on_root[loop[i]] = 1;
-  for (int v = 0; v < count; ++v)
-    if (!on_root[v]) body.points[v] = lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
-  for (int i = 0; i < n; ++i) body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
-  for (const auto& t : body.triangles) {
-    const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
-    const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
-    if (!(before.dot(after) > 0.0))
-      throw NearFieldError("near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
-                           ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
-                           surface_label(model, body.node_surface[t[0]]) +
-                           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
-  }
+  std::vector<CadAttachment> root_cad(n);
+  for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
+  lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
 
   // The wing layer on the lifted mesh, the strip tops' offsets pinned at the halo.
   const auto neighbours = node_neighbours(body);
@@ -253,7 +276,7 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   // gives a positive volume.
   std::vector<NodeId> root_id(n), foot_id(n);
   for (int i = 0; i < n; ++i) {
-    root_id[i] = m.add_node(nodes[i].root, unlifted_cad[loop[i]]);
+    root_id[i] = m.add_node(nodes[i].root, root_cad[i]);
     foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
   }
   auto hex_of = [&](int a, int b) {
