@@ -5,7 +5,8 @@
 //
 //   bench_c_type [ORDER [LAYERS [SIZE]]]   defaults: order 2, 5 layers, size factor 1 (the coarse
 //                                          CLI case: ~18k linear elements; 0.5 about doubles it)
-// Prints one row per topology and the C-type's overhead in percent of the O-type's total.
+// Prints one row per topology and the C-type's overhead in percent of the O-type's total and per
+// element (the wall layer is a new block of elements: its cost grows with them).
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "usage: bench_c_type [ORDER 1..8 [LAYERS >= 1 [SIZE > 0]]]\n");
     return 1;
   }
-  double totals[2] = {0, 0};
+  double totals[2] = {0, 0}, elements[2] = {0, 0};
   const char* topologies[2] = {"O", "C"};
   for (int k = 0; k < 2; ++k) {
     const std::string line = capture(fmt::format("'{}' {} {} {} {}", argv[0], topologies[k], order, layers, size));
@@ -96,9 +97,13 @@ int main(int argc, char** argv) {
       fields.push_back(rest.substr(start, end - start));
     }
     totals[k] = std::atof(fields[0].c_str());
+    elements[k] = std::atof(fields[1].c_str());
     fmt::print("{}-type: total {} s, {} elements, peak {} MB, checks passed {}\n  stages (s): {}\n", topologies[k],
                fields[0], fields[1], fields[2], fields.size() > 3 ? fields[3] : "?", stages);
   }
-  fmt::print("C-type over O-type total: {:+.1f} %\n", 100.0 * (totals[1] - totals[0]) / totals[0]);
+  fmt::print("C-type over O-type total: {:+.1f} %; per element: {:+.1f} % (the wall layer adds {:.0f} % elements)\n",
+             100.0 * (totals[1] - totals[0]) / totals[0],
+             100.0 * (totals[1] / elements[1] - totals[0] / elements[0]) / (totals[0] / elements[0]),
+             100.0 * (elements[1] - elements[0]) / elements[0]);
   return 0;
 }
