@@ -120,7 +120,6 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
       top[k] = it->second;
     }
     nf.stacks.push_back({mesh.elements().size(), {nearfield::LayerDirection{2, nearfield::LayerFamily::Wall}}});
-    nf.element_surface.push_back(wall_surface);
     mesh.add_element(ho::Shape::Prism, {bottom[0], bottom[1], bottom[2], top[0], top[1], top[2]}, region);
     layer.tops.push_back(top);
     ++layer.prisms;

@@ -61,9 +61,10 @@ struct NearField {
                                             ///< plane, counter-clockwise seen from the fluid side of the wall
   std::vector<mesh::NodeId> footprint_top;  ///< [footprint] C-type: the node at the wall-layer thickness above
                                             ///< each footprint node (its halo point); empty for O-type
-  std::vector<LayerStack> stacks;           ///< every layer element of the mesh, with its direction(s)
-  std::vector<int> element_surface;         ///< [elements] CAD surface id of each element's body face
-                                            ///< (junction hexes: the wing surface of their R-W face)
+  std::vector<LayerStack> stacks;           ///< every layer element of the mesh, with its direction(s) (the
+                                            ///< far field appends its wall-layer prisms)
+  std::vector<int> element_surface;         ///< [elements the shell built] CAD surface id of each one's body
+                                            ///< face (junction hexes: the wing surface of their R-W face)
   int junction_hexes = 0;                   ///< C-type: hexes along the root loop(s)
   double thickness_min = 0.0;               ///< smallest layer thickness used (after local reduction)
   double thickness_max = 0.0;               ///< largest layer thickness used
