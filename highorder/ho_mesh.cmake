@@ -6,6 +6,7 @@ find_package(OpenMP REQUIRED COMPONENTS CXX)
 add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/reference_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/splitting/layer_keys.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp

@@ -1,5 +1,7 @@
 #include "semimesh/pipeline/config.hpp"
 
+#include "semimesh/pipeline/output_formats.hpp"
+
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -8,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -54,66 +57,11 @@ class Section {
   }
 
   std::string key(const std::string& k) const { return name_ + "." + k; }
+  const Origin& origin() const { return origin_; }
 
   const toml::node* take(const std::string& k) {
     known_.insert(k);
     return table_ ? table_->get(k) : nullptr;
-  }
-
-  void real(const std::string& k, double& out) {
-    if (const toml::node* n = take(k)) {
-      if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer()) && std::isfinite(*v))
-        out = *v;
-      else
-        reject(origin_, key(k), n, "a finite number");
-    }
-  }
-  void real(const std::string& k, std::optional<double>& out) {
-    if (take(k)) {
-      double v = 0.0;
-      real(k, v);
-      out = v;
-    }
-  }
-  void integer(const std::string& k, int& out) {
-    if (const toml::node* n = take(k)) {
-      auto v = n->as_integer();
-      if (!v || v->get() < -1000000000 || v->get() > 1000000000) reject(origin_, key(k), n, "an integer");
-      out = static_cast<int>(v->get());
-    }
-  }
-  void boolean(const std::string& k, bool& out) {
-    if (const toml::node* n = take(k)) {
-      if (!n->is_boolean()) reject(origin_, key(k), n, "true or false");
-      out = n->as_boolean()->get();
-    }
-  }
-  void string(const std::string& k, std::string& out) {
-    if (const toml::node* n = take(k)) {
-      if (!n->is_string()) reject(origin_, key(k), n, "a string");
-      out = n->as_string()->get();
-    }
-  }
-  void strings(const std::string& k, std::vector<std::string>& out) {
-    if (const toml::node* n = take(k)) {
-      const toml::array* a = n->as_array();
-      if (!a || a->empty() || !a->is_homogeneous(toml::node_type::string))
-        reject(origin_, key(k), n, "a non-empty array of strings");
-      out.clear();
-      for (const toml::node& e : *a) out.push_back(e.as_string()->get());
-    }
-  }
-  template <std::size_t N>
-  void reals(const std::string& k, std::array<double, N>& out) {
-    if (const toml::node* n = take(k)) {
-      const toml::array* a = n->as_array();
-      if (!a || a->size() != N) reject(origin_, key(k), n, "an array of " + std::to_string(N) + " numbers");
-      for (std::size_t i = 0; i < N; ++i) {
-        auto v = (*a)[i].value<double>();
-        if (!v || !std::isfinite(*v)) reject(origin_, key(k), n, "an array of " + std::to_string(N) + " numbers");
-        out[i] = *v;
-      }
-    }
   }
 
   /// A nested table [name.sub] read by its own Section.
@@ -156,10 +104,6 @@ class Section {
   std::set<std::string> known_;
 };
 
-bool one_of(const std::string& value, std::initializer_list<const char*> allowed) {
-  return std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return value == a; });
-}
-
 // Sets `dotted.key` in `root` to the TOML value of `value_text` (a bare word becomes a string).
 void apply_override(toml::table& root, const std::string& assignment, Origin& origin) {
   const auto eq = assignment.find('=');
@@ -195,180 +139,243 @@ void apply_override(toml::table& root, const std::string& assignment, Origin& or
   origin.overrides[key] = assignment;
 }
 
-void read_geometry(Section s, Config& c, const std::string& base_directory) {
-  GeometryConfig& g = c.geometry;
-  s.string("backend", g.backend);
-  s.require(!g.backend.empty(), "backend", "a backend name: naca, occ or vendor");
-  s.string("source", g.source);
-  if (!g.source.empty() && !base_directory.empty() && std::filesystem::path(g.source).is_relative())
-    g.source = (std::filesystem::path(base_directory) / g.source).lexically_normal().string();
-  s.string("units", g.units);
-  s.require(!g.units.empty(), "units", "a unit name, e.g. chord, m, mm");
-  s.real("scale", g.scale);
-  s.require(g.scale > 0.0, "scale", "> 0");
-
-  Section n = s.sub("naca");
-  NacaConfig& a = g.naca;
-  n.string("code", a.code);
-  n.real("chord", a.chord);
-  n.require(a.chord > 0.0, "chord", "> 0");
-  n.real("span", a.span);
-  n.require(a.span > 0.0, "span", "> 0");
-  n.real("taper", a.taper);
-  n.require(a.taper > 0.0, "taper", "> 0");
-  n.real("sweep", a.sweep);
-  n.require(std::abs(a.sweep) < 80.0, "sweep", "a sweep angle in degrees with |sweep| < 80");
-  n.string("te", a.te);
-  n.require(one_of(a.te, {"blunt", "sharp"}), "te", "\"blunt\" or \"sharp\"");
-  n.reals("box", a.box);
-  n.require(a.box[0] < a.box[3] && a.box[1] < a.box[4] && a.box[2] < a.box[5], "box",
-            "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
-  n.reject_unknown();
-
-  if (a.te == "sharp" && !s.has("body")) g.body.erase(std::remove(g.body.begin(), g.body.end(), "te_base"), g.body.end());
-  s.strings("body", g.body);
-  s.string("wall", g.wall);
-  s.require(!g.wall.empty(), "wall", "the name of the wall surface");
-  s.strings("farfield", g.farfield);
-  s.reject_unknown();
+// The TOML node as a params::Value of the key's type, or a rejection naming what was expected.
+params::Value value_of(const Origin& origin, const std::string& key, const toml::node& n, params::Type type,
+                       std::size_t count) {
+  const std::string expected = params::type_text(type, count);
+  switch (type) {
+    case params::Type::Real:
+      if (auto v = n.value<double>(); v && (n.is_floating_point() || n.is_integer()) && std::isfinite(*v)) return *v;
+      break;
+    case params::Type::Integer:
+      if (auto* v = n.as_integer(); v && v->get() >= -1000000000 && v->get() <= 1000000000)
+        return static_cast<long long>(v->get());
+      break;
+    case params::Type::Boolean:
+      if (n.is_boolean()) return n.as_boolean()->get();
+      break;
+    case params::Type::String:
+      if (n.is_string()) return n.as_string()->get();
+      break;
+    case params::Type::Strings:
+      if (const toml::array* a = n.as_array(); a && !a->empty() && a->is_homogeneous(toml::node_type::string)) {
+        std::vector<std::string> out;
+        for (const toml::node& e : *a) out.push_back(e.as_string()->get());
+        return out;
+      }
+      break;
+    case params::Type::Reals:
+      if (const toml::array* a = n.as_array(); a && (count == 0 || a->size() == count)) {
+        std::vector<double> out;
+        for (const toml::node& e : *a) {
+          auto v = e.value<double>();
+          if (!v || !std::isfinite(*v)) reject(origin, key, &n, expected);
+          out.push_back(*v);
+        }
+        return out;
+      }
+      break;
+  }
+  reject(origin, key, &n, expected);
 }
 
-void read_nearfield(Section s, NearFieldConfig& n) {
-  s.string("topology", n.topology);
-  s.require(one_of(n.topology, {"O", "C", "H"}), "topology", "\"O\", \"C\" or \"H\"");
-  s.require(n.topology != "H", "topology",
+// Reads every key of a table that the section holds: type, then range (as the table writes it).
+template <class P>
+void read_keys(Section& s, const params::Table<P>& table, P& target) {
+  for (const params::Key<P>& k : table) {
+    const toml::node* n = s.take(k.name);
+    if (!n) continue;
+    const params::Value v = value_of(s.origin(), s.key(k.name), *n, k.type, k.count);
+    if (!params::in_range(v, k.range)) reject(s.origin(), s.key(k.name), n, params::expected_text(k.range, k.type));
+    k.set(target, v);
+  }
+}
+
+template <class Outer, class Inner>
+void append(params::Table<Outer>& table, Inner Outer::*member, const params::Table<Inner>& inner) {
+  for (auto& k : params::nested(member, inner)) table.push_back(std::move(k));
+}
+
+params::Table<Config> geometry_keys() {
+  params::Table<GeometryConfig> g = {
+      params::string("backend", &GeometryConfig::backend, "non-empty",
+                     "CAD kernel from the registry: naca (analytic wing), occ (OpenCASCADE), vendor"),
+      params::string("source", &GeometryConfig::source, "",
+                     "CAD file, relative to the config file's folder; empty: the generated wing"),
+      params::string("units", &GeometryConfig::units, "non-empty", "label of the model's unit"),
+      params::real("scale", &GeometryConfig::scale, "> 0", "factor applied to a CAD file's coordinates at load"),
+      params::strings("body", &GeometryConfig::body, "non-empty", "surfaces wrapped by the near-field shell"),
+      params::string("wall", &GeometryConfig::wall, "non-empty", "the planar wall the body stands on"),
+      params::strings("farfield", &GeometryConfig::farfield, "non-empty", "the outer boundary's surfaces"),
+  };
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
+params::Table<Config> naca_keys() {
+  params::Table<NacaConfig> n = {
+      params::string("code", &NacaConfig::code, "", "NACA 4-digit section MPTT"),
+      params::real("chord", &NacaConfig::chord, "> 0", "root chord"),
+      params::real("span", &NacaConfig::span, "> 0", "wing height above the wall z = 0"),
+      params::real("taper", &NacaConfig::taper, "> 0", "tip chord / root chord"),
+      params::real("sweep", &NacaConfig::sweep, "(-80, 80)", "leading-edge sweep, degrees"),
+      params::string("te", &NacaConfig::te, "\"blunt\" | \"sharp\"",
+                     "squared-off trailing edge (with a te_base face) or closed"),
+      params::reals("box", &NacaConfig::box, "",
+                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0"),
+  };
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::naca, n);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
+params::Table<Config> nearfield_keys() {
+  params::Table<NearFieldConfig> n = {
+      params::string("topology", &NearFieldConfig::topology, "\"O\" | \"C\" | \"H\"",
+                     "near-field partition: O one prism layer, C plus the root junction and the wall layer (H is not implemented yet)"),
+  };
+  append(n, &NearFieldConfig::shell, nearfield::shell_keys());
+  append(n, &NearFieldConfig::junction, nearfield::junction_keys());
+  params::Table<Config> table;
+  append(table, &Config::nearfield, n);
+  return table;
+}
+
+params::Table<Config> boundary_layer_keys() {
+  params::Table<BoundaryLayerConfig> b;
+  append(b, &BoundaryLayerConfig::split, ho::layer_keys());
+  b.push_back(params::real("first_cell_height", &BoundaryLayerConfig::first_cell_height, "> 0",
+                           "instead of ratio: height of the first layer"));
+  b.push_back(params::reals("ratio_line", &BoundaryLayerConfig::ratio_line, "",
+                            "[xa, ya, za, xb, yb, zb]: the ratio varies linearly from A to B (with ratio_end)"));
+  b.push_back(params::real("ratio_end", &BoundaryLayerConfig::ratio_end, ">= 1", "the ratio at B of ratio_line"));
+  params::Table<Config> table;
+  append(table, &Config::boundary_layer, b);
+  return table;
+}
+
+params::Table<Config> wall_layer_keys() {
+  params::Table<WallLayerConfig> w = {
+      params::real("thickness", &WallLayerConfig::thickness, ">= 0",
+                   "C: the wall layer's thickness δ_wall, model units; 0: a slip wall (no wall layer, the O-type root)"),
+  };
+  append(w, &WallLayerConfig::split, ho::layer_keys());
+  w.push_back(params::real("first_cell_height", &WallLayerConfig::first_cell_height, "> 0",
+                           "instead of ratio: height of the first wall layer"));
+  params::Table<Config> table;
+  append(table, &Config::wall_layer, w);
+  return table;
+}
+
+params::Table<Config> sizing_keys() {
+  params::Table<SizingConfig> z;
+  append(z, &SizingConfig::size, surface::size_keys());
+  z.push_back(params::integer("chordwise", &SizingConfig::chordwise, ">= 0",
+                              "segments on each root/tip section curve (NACA curve names); 0: from the size field"));
+  z.push_back(params::integer("spanwise", &SizingConfig::spanwise, ">= 0",
+                              "segments on each spanwise edge (NACA curve names); 0: from the size field"));
+  params::Table<Config> table;
+  append(table, &Config::sizing, z);
+  return table;
+}
+
+params::Table<Config> output_keys() {
+  std::vector<std::string> names;
+  for (const OutputFormat& f : output_formats()) names.push_back(f.name);
+  params::Table<OutputConfig> o = {
+      params::strings("formats", &OutputConfig::formats, "each of " + params::choice_range(names),
+                      "mesh files to write, each format at most once"),
+      params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
+      params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
+      params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),
+  };
+  params::Table<Config> table;
+  append(table, &Config::output, o);
+  return table;
+}
+
+template <class P>
+params::Table<Config> stage_keys(P Config::*member, const params::Table<P>& keys) {
+  params::Table<Config> table;
+  append(table, member, keys);
+  return table;
+}
+
+// What the rows cannot say: conditions between keys, and the sharp TE's default body.
+void check_across_keys(Config& c, const std::map<std::string, Section*>& sections, const std::string& base_directory) {
+  Section& g = *sections.at("geometry");
+  GeometryConfig& geo = c.geometry;
+  if (!geo.source.empty() && !base_directory.empty() && std::filesystem::path(geo.source).is_relative())
+    geo.source = (std::filesystem::path(base_directory) / geo.source).lexically_normal().string();
+  if (geo.naca.te == "sharp" && !g.has("body"))
+    geo.body.erase(std::remove(geo.body.begin(), geo.body.end(), "te_base"), geo.body.end());
+  const auto& box = geo.naca.box;
+  sections.at("geometry.naca")
+      ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",
+                "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
+
+  Section& n = *sections.at("nearfield");
+  n.require(c.nearfield.topology != "H", "topology",
             "\"O\" or \"C\": the H-type (trailing-edge wake block) topology is not implemented yet");
-  s.real("thickness", n.thickness);
-  s.require(n.thickness > 0.0, "thickness", "> 0");
-  s.integer("smoothing_passes", n.smoothing_passes);
-  s.require(n.smoothing_passes >= 0, "smoothing_passes", ">= 0");
-  s.real("min_thickness_fraction", n.min_thickness_fraction);
-  s.require(n.min_thickness_fraction > 0.0 && n.min_thickness_fraction <= 1.0, "min_thickness_fraction", "in (0, 1]");
-  s.real("reduction_factor", n.reduction_factor);
-  s.require(n.reduction_factor > 0.0 && n.reduction_factor < 1.0, "reduction_factor", "in (0, 1)");
-  s.real("gradation", n.gradation);
-  s.require(n.gradation > 0.0, "gradation", "> 0");
-  s.real("concave_angle", n.concave_angle);
-  s.require(n.concave_angle > 0.0 && n.concave_angle <= 180.0, "concave_angle", "in (0, 180] degrees");
-  s.real("junction_min_angle", n.junction_min_angle);
-  s.real("junction_max_angle", n.junction_max_angle);
-  s.require(n.junction_min_angle > 0.0 && n.junction_min_angle < n.junction_max_angle, "junction_min_angle",
-            "> 0 and < junction_max_angle");
-  s.require(n.junction_max_angle <= n.concave_angle, "junction_max_angle", "<= concave_angle");
-  s.reject_unknown();
-}
+  const nearfield::JunctionParams& junction = c.nearfield.junction;
+  n.require(junction.min_angle_deg < junction.max_angle_deg, "junction_min_angle", "< nearfield.junction_max_angle");
+  n.require(junction.max_angle_deg <= junction.concave_below_deg, "junction_max_angle", "<= nearfield.concave_angle");
 
-void read_wall_layer(Section s, WallLayerConfig& w) {
-  s.real("thickness", w.thickness);
-  s.require(w.thickness >= 0.0, "thickness", ">= 0 (0: a slip wall, no wall layer)");
-  s.integer("layers", w.layers);
-  s.require(w.layers >= 1 && w.layers <= 100, "layers", "an integer in [1, 100]");
-  s.real("ratio", w.ratio);
-  s.require(w.ratio >= 1.0, "ratio", ">= 1");
-  s.real("first_cell_height", w.first_cell_height);
-  if (w.first_cell_height) {
-    s.require(!s.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
-    s.require(*w.first_cell_height > 0.0, "first_cell_height", "> 0");
-    s.require(*w.first_cell_height * w.layers <= w.thickness, "first_cell_height",
-              fmt::format("<= wall_layer.thickness / layers = {}", w.thickness / w.layers) +
+  Section& w = *sections.at("wall_layer");
+  const WallLayerConfig& wall = c.wall_layer;
+  if (wall.first_cell_height) {
+    w.require(!w.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
+    w.require(*wall.first_cell_height * wall.split.layers <= wall.thickness, "first_cell_height",
+              fmt::format("<= wall_layer.thickness / layers = {}", wall.thickness / wall.split.layers) +
                   " (the layers must fit in the wall layer with a ratio >= 1)");
   }
-  s.reject_unknown();
-}
 
-void read_boundary_layer(Section s, BoundaryLayerConfig& b, double thickness) {
-  s.integer("layers", b.layers);
-  s.require(b.layers >= 1 && b.layers <= 100, "layers", "an integer in [1, 100]");
-  s.real("ratio", b.ratio);
-  s.require(b.ratio >= 1.0, "ratio", ">= 1");
-  s.real("first_cell_height", b.first_cell_height);
-  if (b.first_cell_height) {
-    s.require(!s.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
-    s.require(*b.first_cell_height > 0.0, "first_cell_height", "> 0");
-    s.require(*b.first_cell_height * b.layers <= thickness, "first_cell_height",
-              fmt::format("<= nearfield.thickness / layers = {}", thickness / b.layers) +
+  Section& b = *sections.at("boundary_layer");
+  const BoundaryLayerConfig& layer = c.boundary_layer;
+  const double thickness = c.nearfield.shell.thickness;
+  if (layer.first_cell_height) {
+    b.require(!b.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
+    b.require(*layer.first_cell_height * layer.split.layers <= thickness, "first_cell_height",
+              fmt::format("<= nearfield.thickness / layers = {}", thickness / layer.split.layers) +
                   " (the layers must fit in the shell with a ratio >= 1)");
   }
-  s.real("ratio_end", b.ratio_end);
-  if (s.has("ratio_line")) {
-    std::array<double, 6> line{};
-    s.reals("ratio_line", line);
-    b.ratio_line = line;
-    const double length2 = (line[3] - line[0]) * (line[3] - line[0]) + (line[4] - line[1]) * (line[4] - line[1]) +
-                           (line[5] - line[2]) * (line[5] - line[2]);
-    s.require(length2 > 0.0, "ratio_line", "[xa, ya, za, xb, yb, zb] with A != B");
-    s.require(b.ratio_end.has_value(), "ratio_line", "together with boundary_layer.ratio_end (the ratio at B)");
+  if (layer.ratio_line) {
+    const auto& l = *layer.ratio_line;
+    const double length2 = (l[3] - l[0]) * (l[3] - l[0]) + (l[4] - l[1]) * (l[4] - l[1]) + (l[5] - l[2]) * (l[5] - l[2]);
+    b.require(length2 > 0.0, "ratio_line", "[xa, ya, za, xb, yb, zb] with A != B");
+    b.require(layer.ratio_end.has_value(), "ratio_line", "together with boundary_layer.ratio_end (the ratio at B)");
   }
-  if (b.ratio_end) {
-    s.require(*b.ratio_end >= 1.0, "ratio_end", ">= 1");
-    s.require(b.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
-  }
-  s.reject_unknown();
-}
+  if (layer.ratio_end)
+    b.require(layer.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
 
-void read_sizing(Section s, SizingConfig& z) {
-  s.real("max_size", z.max_size);
-  s.require(z.max_size > 0.0, "max_size", "> 0");
-  s.real("min_size", z.min_size);
-  s.require(z.min_size > 0.0 && z.min_size <= z.max_size, "min_size", "in (0, sizing.max_size]");
-  s.real("curvature_segments", z.curvature_segments);
-  s.require(z.curvature_segments >= 0.0, "curvature_segments", ">= 0 (0 disables curvature sizing)");
-  s.real("gradation", z.gradation);
-  s.require(z.gradation >= 1.0, "gradation", ">= 1");
-  s.real("le_size", z.le_size);
-  s.require(z.le_size >= 0.0, "le_size", ">= 0 (0: no leading-edge source)");
-  s.real("te_size", z.te_size);
-  s.require(z.te_size >= 0.0, "te_size", ">= 0 (0: no trailing-edge source)");
-  s.integer("chordwise", z.chordwise);
-  s.require(z.chordwise >= 0, "chordwise", ">= 0 (0: from the size field)");
-  s.integer("spanwise", z.spanwise);
-  s.require(z.spanwise >= 0, "spanwise", ">= 0 (0: from the size field)");
-  s.reject_unknown();
-}
+  sections.at("sizing")->require(c.sizing.size.min_size <= c.sizing.size.max_size, "min_size",
+                                 "in (0, sizing.max_size]");
 
-void read_farfield(Section s, FarFieldConfig& f) {
-  s.real("box_size", f.box_size);
-  s.require(f.box_size > 0.0, "box_size", "> 0");
-  s.real("wall_size", f.wall_size);
-  s.require(f.wall_size > 0.0, "wall_size", "> 0");
-  s.real("growth", f.growth);
-  s.require(f.growth >= 1.0, "growth", ">= 1");
-  s.real("radius_edge_ratio", f.radius_edge_ratio);
-  s.require(f.radius_edge_ratio >= 1.0, "radius_edge_ratio", ">= 1 (TetGen's quality bound; 1.5 to 2 is usual)");
-  s.real("max_volume", f.max_volume);
-  s.require(f.max_volume >= 0.0, "max_volume", ">= 0 (0: no bound)");
-  s.reject_unknown();
-}
-
-void read_highorder(Section s, HighOrderConfig& h) {
-  s.integer("order", h.order);
-  s.require(h.order >= 1 && h.order <= 8, "order", "an integer in [1, 8]");
-  s.string("node_set", h.node_set);
-  s.require(one_of(h.node_set, {"gll", "equispaced"}), "node_set", "\"gll\" or \"equispaced\"");
-  s.string("node_placement", h.node_placement);
-  s.require(one_of(h.node_placement, {"parameter", "springs"}), "node_placement", "\"parameter\" or \"springs\"");
-  s.integer("spring_iterations", h.spring_iterations);
-  s.require(h.spring_iterations >= 1 && h.spring_iterations <= 10000, "spring_iterations", "an integer in [1, 10000]");
-  s.reject_unknown();
-}
-
-void read_output(Section s, OutputConfig& o) {
-  s.strings("formats", o.formats);
-  for (const std::string& f : o.formats)
-    s.require(one_of(f, {"msh41", "msh22", "vtu", "nektar"}), "formats",
-              "formats among \"msh41\", \"msh22\", \"vtu\", \"nektar\" (got \"" + f + "\")");
-  std::set<std::string> distinct(o.formats.begin(), o.formats.end());
-  s.require(distinct.size() == o.formats.size(), "formats", "each format at most once");
-  s.string("directory", o.directory);
-  s.require(!o.directory.empty(), "directory", "a folder name (\".\" for the current one)");
-  s.string("basename", o.basename);
-  s.require(!o.basename.empty() && o.basename.find('/') == std::string::npos, "basename",
-            "a file name without folder, e.g. \"wing\"");
-  s.boolean("allow_invalid", o.allow_invalid);
-  s.reject_unknown();
+  Section& o = *sections.at("output");
+  const std::set<std::string> distinct(c.output.formats.begin(), c.output.formats.end());
+  o.require(distinct.size() == c.output.formats.size(), "formats", "each format at most once");
+  o.require(c.output.basename.find('/') == std::string::npos, "basename", "a file name without folder, e.g. \"wing\"");
 }
 
 }  // namespace
+
+const std::vector<ConfigSection>& config_sections() {
+  static const std::vector<ConfigSection> sections = {
+      {"geometry", geometry_keys()},
+      {"geometry.naca", naca_keys()},
+      {"nearfield", nearfield_keys()},
+      {"boundary_layer", boundary_layer_keys()},
+      {"wall_layer", wall_layer_keys()},
+      {"sizing", sizing_keys()},
+      {"farfield", stage_keys(&Config::farfield, farfield::far_field_keys())},
+      {"highorder", stage_keys(&Config::highorder, ho::curving_keys())},
+      {"output", output_keys()},
+  };
+  return sections;
+}
 
 Config parse_config(const std::string& text, const std::string& source_name, const std::string& base_directory,
                     const std::vector<std::string>& overrides) {
@@ -382,23 +389,35 @@ Config parse_config(const std::string& text, const std::string& source_name, con
   Origin origin{source_name, {}};
   for (const std::string& o : overrides) apply_override(root, o, origin);
 
-  static const std::set<std::string> sections = {"geometry", "nearfield", "boundary_layer", "wall_layer", "sizing",
-                                                  "farfield", "highorder", "output"};
+  std::set<std::string> top;
+  for (const ConfigSection& section : config_sections())
+    if (section.name.find('.') == std::string::npos) top.insert(section.name);
   for (const auto& [k, node] : root)
-    if (!sections.count(std::string(k.str())))
+    if (!top.count(std::string(k.str()))) {
+      std::string names;
+      for (const ConfigSection& section : config_sections())
+        if (top.count(section.name)) names += (names.empty() ? "" : ", ") + section.name;
       throw ConfigError("config error: " + location(origin, std::string(k.str()), &node) + ": unknown key " +
-                        std::string(k.str()) +
-                        " (sections: geometry, nearfield, boundary_layer, wall_layer, sizing, farfield, highorder, output)");
+                        std::string(k.str()) + " (sections: " + names + ")");
+    }
 
+  // Sections in file order; a nested one ([geometry.naca]) is read from its parent's table.
   Config c;
-  read_geometry(Section(origin, root, "geometry", "geometry"), c, base_directory);
-  read_nearfield(Section(origin, root, "nearfield", "nearfield"), c.nearfield);
-  read_boundary_layer(Section(origin, root, "boundary_layer", "boundary_layer"), c.boundary_layer, c.nearfield.thickness);
-  read_wall_layer(Section(origin, root, "wall_layer", "wall_layer"), c.wall_layer);
-  read_sizing(Section(origin, root, "sizing", "sizing"), c.sizing);
-  read_farfield(Section(origin, root, "farfield", "farfield"), c.farfield);
-  read_highorder(Section(origin, root, "highorder", "highorder"), c.highorder);
-  read_output(Section(origin, root, "output", "output"), c.output);
+  std::map<std::string, std::unique_ptr<Section>> sections;
+  for (const ConfigSection& section : config_sections()) {
+    const auto dot = section.name.rfind('.');
+    std::unique_ptr<Section> s;
+    if (dot == std::string::npos)
+      s = std::make_unique<Section>(origin, root, section.name, section.name);
+    else
+      s = std::make_unique<Section>(sections.at(section.name.substr(0, dot))->sub(section.name.substr(dot + 1)));
+    read_keys(*s, section.keys, c);
+    sections[section.name] = std::move(s);
+  }
+  std::map<std::string, Section*> by_name;
+  for (auto& [name, s] : sections) by_name[name] = s.get();
+  check_across_keys(c, by_name, base_directory);
+  for (const ConfigSection& section : config_sections()) sections.at(section.name)->reject_unknown();
   return c;
 }
 
@@ -412,9 +431,9 @@ Config load_config(const std::string& path, const std::vector<std::string>& over
 }
 
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness) {
-  if (!layer.first_cell_height) return layer.ratio;
+  if (!layer.first_cell_height) return layer.split.ratio;
   const double h1 = *layer.first_cell_height;
-  const int n = layer.layers;
+  const int n = layer.split.layers;
   // Total height h1 (r^n - 1) / (r - 1) grows monotonically with r: bisection on [1, r_hi].
   auto total = [&](double r) { return std::abs(r - 1.0) < 1e-12 ? h1 * n : h1 * (std::pow(r, n) - 1.0) / (r - 1.0); };
   double lo = 1.0, hi = 2.0;
@@ -428,8 +447,7 @@ double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness)
 
 double effective_wall_ratio(const WallLayerConfig& layer) {
   BoundaryLayerConfig as_layer;
-  as_layer.layers = layer.layers;
-  as_layer.ratio = layer.ratio;
+  as_layer.split = layer.split;
   as_layer.first_cell_height = layer.first_cell_height;
   return effective_layer_ratio(as_layer, layer.thickness);
 }

@@ -8,11 +8,9 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
-#include "semimesh/io/msh.hpp"
-#include "semimesh/io/nektar.hpp"
-#include "semimesh/io/vtu.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
@@ -118,17 +116,6 @@ Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
   return roles;
 }
 
-surface::SizeParams size_params(const SizingConfig& s) {
-  surface::SizeParams p;
-  p.max_size = s.max_size;
-  p.min_size = s.min_size;
-  p.curvature_segments = s.curvature_segments;
-  p.gradation = s.gradation;
-  p.le_size = s.le_size;
-  p.te_size = s.te_size;
-  return p;
-}
-
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
 surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConfig& s) {
   surface::ModelMeshOptions options;
@@ -151,44 +138,6 @@ surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConf
   for (auto& [curve, count] : options.curve_counts) count.bunching.law = surface::Bunching::Law::Cosine;
   prescribe(s.spanwise, "sizing.spanwise", {"leading_edge", "te_upper", "te_lower", "trailing_edge"});
   return options;
-}
-
-nearfield::ShellParams shell_params(const NearFieldConfig& n) {
-  nearfield::ShellParams p;
-  p.thickness = n.thickness;
-  p.normal_smoothing_passes = n.smoothing_passes;
-  p.min_thickness_fraction = n.min_thickness_fraction;
-  p.reduction_factor = n.reduction_factor;
-  p.gradation = n.gradation;
-  return p;
-}
-
-nearfield::JunctionParams junction_params(const Config& c) {
-  nearfield::JunctionParams p;
-  p.wall_thickness = c.wall_layer.thickness;
-  p.concave_below_deg = c.nearfield.concave_angle;
-  p.min_angle_deg = c.nearfield.junction_min_angle;
-  p.max_angle_deg = c.nearfield.junction_max_angle;
-  return p;
-}
-
-farfield::FarFieldParams far_params(const FarFieldConfig& f) {
-  farfield::FarFieldParams p;
-  p.box_size = f.box_size;
-  p.wall_size = f.wall_size;
-  p.growth = f.growth;
-  p.radius_edge_ratio = f.radius_edge_ratio;
-  p.max_volume = f.max_volume;
-  return p;
-}
-
-ho::CurvingParams curving_params(const HighOrderConfig& h) {
-  ho::CurvingParams p;
-  p.order = h.order;
-  p.node_set = h.node_set == "gll" ? ho::NodeSet::GLL : ho::NodeSet::Equispaced;
-  p.placement = h.node_placement == "springs" ? ho::NodePlacement::Springs : ho::NodePlacement::Parameter;
-  p.spring_iterations = h.spring_iterations;
-  return p;
 }
 
 // boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
@@ -237,13 +186,6 @@ double peak_memory_mb() {
   return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
 }
 
-void write_mesh_file(const mesh::Mesh& mesh, const std::string& format, const std::string& path) {
-  if (format == "msh41") io::write_msh(mesh, path, io::MshVersion::V41);
-  if (format == "msh22") io::write_msh(mesh, path, io::MshVersion::V22);
-  if (format == "vtu") io::write_vtu(mesh, path);
-  if (format == "nektar") io::write_nektar_xml(mesh, path);
-}
-
 }  // namespace
 
 double RunResult::total_seconds() const {
@@ -254,16 +196,15 @@ double RunResult::total_seconds() const {
 
 std::vector<std::string> output_paths(const OutputConfig& output) {
   const std::filesystem::path dir(output.directory);
-  const bool both_msh = std::count(output.formats.begin(), output.formats.end(), "msh41") &&
-                        std::count(output.formats.begin(), output.formats.end(), "msh22");
   std::vector<std::string> paths;
   for (const std::string& f : output.formats) {
-    std::string name = output.basename;
-    if (f == "msh41") name += ".msh";
-    if (f == "msh22") name += both_msh ? ".v22.msh" : ".msh";
-    if (f == "vtu") name += ".vtu";
-    if (f == "nektar") name += ".xml";
-    paths.push_back((dir / name).string());
+    const OutputFormat& format = output_format(f);
+    const bool shared = std::any_of(output.formats.begin(), output.formats.end(), [&](const std::string& g) {
+      return g != f && output_format(g).extension == format.extension;
+    });
+    const std::string& extension = shared && !format.extension_when_shared.empty() ? format.extension_when_shared
+                                                                                  : format.extension;
+    paths.push_back((dir / (output.basename + extension)).string());
   }
   paths.push_back((dir / "report.json").string());
   return paths;
@@ -279,7 +220,7 @@ RunResult run(const Config& config, Progress& progress) {
   const Roles roles = stage("roles", progress, result, [&] { return resolve_roles(*model, config.geometry); });
 
   const surface::SizeField size =
-      stage("size field", progress, result, [&] { return surface::SizeField(*model, size_params(config.sizing)); });
+      stage("size field", progress, result, [&] { return surface::SizeField(*model, config.sizing.size); });
   const surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
     return surface::mesh_model_surfaces(*model, size, mesh_options(*model, config.sizing));
   });
@@ -289,9 +230,9 @@ RunResult run(const Config& config, Progress& progress) {
   const bool junction = builds_junction(config);
   nearfield::NearField near = stage("near field", progress, result, [&] {
     const nearfield::BodyRoles body_roles{roles.body, roles.wall};
-    return junction ? nearfield::build_c_shell(*model, surfaces, body_roles, shell_params(config.nearfield),
-                                               junction_params(config))
-                    : nearfield::build_o_shell(*model, surfaces, body_roles, shell_params(config.nearfield));
+    return junction ? nearfield::build_c_shell(*model, surfaces, body_roles, config.nearfield.shell,
+                                               config.nearfield.junction, config.wall_layer.thickness)
+                    : nearfield::build_o_shell(*model, surfaces, body_roles, config.nearfield.shell);
   });
   result.junction_hexes = near.junction_hexes;
   result.thickness_min = near.thickness_min;
@@ -301,7 +242,7 @@ RunResult run(const Config& config, Progress& progress) {
                                           w.where.y(), w.where.z()));
 
   stage("far field", progress, result, [&] {
-    farfield::FarFieldParams far = far_params(config.farfield);
+    farfield::FarFieldParams far = config.farfield;
     if (junction) far.wall_layer_thickness = config.wall_layer.thickness;
     farfield::build_far_field(*model, near, far, roles.farfield, roles.wall);
   });
@@ -309,9 +250,10 @@ RunResult run(const Config& config, Progress& progress) {
   result.mesh = std::move(near.mesh);
   if (config.highorder.order > 1)
     result.mesh = stage("curve", progress, result, [&] {
-      return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder), &result.curving);
+      return ho::curve_mesh(result.mesh, *model, config.highorder, &result.curving);
     });
-  if (config.highorder.order > 1) result.node_placement = config.highorder.node_placement;
+  if (config.highorder.order > 1)
+    result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
   if (result.curving.optimisation_fallbacks > 0)
     result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
                                           "within {} iterations; they keep their parameter-space positions",
@@ -329,12 +271,12 @@ RunResult run(const Config& config, Progress& progress) {
     });
 
   // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
-  const int layers = config.boundary_layer.layers;
+  const int layers = config.boundary_layer.split.layers;
   result.layers.layers = layers;
-  const int wall_layers = junction ? config.wall_layer.layers : 1;
+  const int wall_layers = junction ? config.wall_layer.split.layers : 1;
   if (junction) result.wall_layers.layers = wall_layers;
   if (layers > 1 || wall_layers > 1) {
-    const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
+    const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
     const double wall_ratio = junction ? effective_wall_ratio(config.wall_layer) : 1.0;
     StackSplit split = stage("split", progress, result, [&] {
       return split_stacks(result.mesh, near.stacks,
@@ -391,7 +333,7 @@ RunResult run(const Config& config, Progress& progress) {
     try {
       std::filesystem::create_directories(config.output.directory);
       for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        write_mesh_file(result.mesh, config.output.formats[i], paths[i]);
+        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
         result.written_files.push_back(paths[i]);
       }
       result.peak_memory_mb = peak_memory_mb();

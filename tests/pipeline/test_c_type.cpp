@@ -63,9 +63,7 @@ Built build(const Case& c, double thickness, double wall_thickness) {
     b.box.push_back(*b.model->find_surface(name));
   nearfield::ShellParams shell;
   shell.thickness = thickness;
-  nearfield::JunctionParams junction;
-  junction.wall_thickness = wall_thickness;
-  b.near = nearfield::build_c_shell(*b.model, meshes, roles, shell, junction);
+  b.near = nearfield::build_c_shell(*b.model, meshes, roles, shell, nearfield::JunctionParams{}, wall_thickness);
   farfield::FarFieldParams far;
   far.box_size = 1.0;
   far.wall_size = 0.6;

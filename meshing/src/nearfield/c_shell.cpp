@@ -23,15 +23,16 @@ std::string curve_label(const cad::Model& model, int c) {
   return "curve '" + model.curve(c).name() + "' (id " + std::to_string(c) + ")";
 }
 
-void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j) {
+void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
+                           double wall_thickness) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
-  if (!(j.wall_thickness > 0.0) || !std::isfinite(j.wall_thickness))
+  if (const auto bad = params::violation(j, junction_keys(), "nearfield")) fail(*bad);
+  if (!(j.min_angle_deg < j.max_angle_deg && j.max_angle_deg <= j.concave_below_deg))
+    fail("junction angles must satisfy junction_min_angle (" + number_label(j.min_angle_deg) + ") < junction_max_angle (" +
+         number_label(j.max_angle_deg) + ") <= concave_angle (" + number_label(j.concave_below_deg) + ")");
+  if (!(wall_thickness > 0.0) || !std::isfinite(wall_thickness))
     fail("the wall layer's thickness must be a finite number > 0 for a C-type junction, got " +
-         number_label(j.wall_thickness));
-  if (!(0.0 < j.min_angle_deg && j.min_angle_deg < j.max_angle_deg && j.max_angle_deg <= j.concave_below_deg &&
-        j.concave_below_deg <= 180.0))
-    fail("junction angles must satisfy 0 < min (" + number_label(j.min_angle_deg) + ") < max (" +
-         number_label(j.max_angle_deg) + ") <= concave threshold (" + number_label(j.concave_below_deg) + ") <= 180");
+         number_label(wall_thickness));
   if (roles.wall_surface < 0) fail("a C-type near field needs a wall surface");
   if (!model.surface(roles.wall_surface).is_planar())
     fail("the wall " + surface_label(model, roles.wall_surface) +
@@ -203,10 +204,22 @@ void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vect
 
 }  // namespace
 
+const params::Table<JunctionParams>& junction_keys() {
+  static const params::Table<JunctionParams> table = {
+      params::real("concave_angle", &JunctionParams::concave_below_deg, "(0, 180]",
+                   "C: a body-wall curve whose dihedral angle seen from the fluid stays below this (degrees) is a concave corner"),
+      params::real("junction_min_angle", &JunctionParams::min_angle_deg, "(0, 180)",
+                   "C: smallest supported dihedral angle of a root curve, degrees"),
+      params::real("junction_max_angle", &JunctionParams::max_angle_deg, "(0, 180]",
+                   "C: largest supported dihedral angle of a root curve, degrees"),
+  };
+  return table;
+}
+
 NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
-                        const ShellParams& params, const JunctionParams& junction) {
+                        const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
   detail::check_shell_params(model, roles, params);
-  check_junction_params(model, roles, junction);
+  check_junction_params(model, roles, junction, wall_thickness);
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction);
   BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
   const int count = body.num_nodes();
@@ -215,7 +228,7 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const cad::Vec2 wall_mid(0.5 * (wall_face.bounds()[0].lo + wall_face.bounds()[0].hi),
                            0.5 * (wall_face.bounds()[1].lo + wall_face.bounds()[1].hi));
   const Frame wall{wall_face.normal(wall_mid), wall_face.point(wall_mid)};
-  const double delta_wing = params.thickness, delta_wall = junction.wall_thickness;
+  const double delta_wing = params.thickness, delta_wall = wall_thickness;
 
   // Junction geometry per root node, then the wing mesh lifted onto the strip tops.
   const std::vector<int> loop = root_loop(model, body, open, roles.wall_surface);

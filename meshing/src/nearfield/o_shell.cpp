@@ -12,6 +12,21 @@
 
 namespace semimesh::nearfield {
 
+const params::Table<ShellParams>& shell_keys() {
+  static const params::Table<ShellParams> table = {
+      params::real("thickness", &ShellParams::thickness, "> 0", "shell thickness δ, model units"),
+      params::integer("smoothing_passes", &ShellParams::normal_smoothing_passes, ">= 0",
+                      "Laplacian smoothing passes of the node normals over the body mesh"),
+      params::real("min_thickness_fraction", &ShellParams::min_thickness_fraction, "(0, 1]",
+                   "local thickness reduction below this fraction of δ is an error"),
+      params::real("reduction_factor", &ShellParams::reduction_factor, "(0, 1)",
+                   "thickness multiplier per reduction round"),
+      params::real("gradation", &ShellParams::gradation, "> 0",
+                   "after a reduction, |δx − δy| <= gradation |x − y| between nodes x, y"),
+  };
+  return table;
+}
+
 NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params) {
   detail::check_shell_params(model, roles, params);

@@ -81,12 +81,7 @@ std::vector<Warning> reduction_warnings(const cad::Model& model, const BodyMesh&
 
 void check_shell_params(const cad::Model& model, const BodyRoles& roles, const ShellParams& p) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
-  if (!(p.thickness > 0.0) || !std::isfinite(p.thickness)) fail("'thickness' must be a finite number > 0");
-  if (p.normal_smoothing_passes < 0) fail("'normal_smoothing_passes' must be >= 0");
-  if (!(p.min_thickness_fraction > 0.0 && p.min_thickness_fraction <= 1.0))
-    fail("'min_thickness_fraction' must be in (0, 1]");
-  if (!(p.reduction_factor > 0.0 && p.reduction_factor < 1.0)) fail("'reduction_factor' must be in (0, 1)");
-  if (!(p.gradation > 0.0)) fail("'gradation' must be > 0");
+  if (const auto bad = params::violation(p, shell_keys(), "nearfield")) fail(*bad);
   if (roles.body_surfaces.empty()) fail("no body surfaces given");
   if (roles.wall_surface >= model.num_surfaces())
     fail("wall surface id " + std::to_string(roles.wall_surface) + " is not a surface of the model");

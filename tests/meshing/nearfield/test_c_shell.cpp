@@ -64,11 +64,6 @@ ShellParams shell(double thickness) {
   return p;
 }
 
-JunctionParams junction(double wall_thickness) {
-  JunctionParams j;
-  j.wall_thickness = wall_thickness;
-  return j;
-}
 
 // Distance from x to the wing's CAD by dense sampling of every body surface's parameter box and a
 // local refinement by golden sections along both parameters (independent of cadapi's projection).
@@ -112,7 +107,7 @@ struct Built {
 
 Built build(const mock_cad::NacaWingParams& wing, double thickness, double wall_thickness) {
   Built b{wing_case(wing), {}};
-  b.f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(thickness), junction(wall_thickness));
+  b.f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(thickness), JunctionParams{}, wall_thickness);
   return b;
 }
 
@@ -188,9 +183,10 @@ namespace semimesh::nearfield {
 namespace {
 
 // The message of the NearFieldError thrown by building the C-shell with these parameters.
-std::string c_shell_error(const WingCase& c, const BodyRoles& roles, double thickness, const JunctionParams& j) {
+std::string c_shell_error(const WingCase& c, const BodyRoles& roles, double thickness, const JunctionParams& j,
+                          double wall_thickness) {
   try {
-    build_c_shell(*c.model, c.meshes, roles, shell(thickness), j);
+    build_c_shell(*c.model, c.meshes, roles, shell(thickness), j, wall_thickness);
   } catch (const NearFieldError& e) {
     return e.what();
   }
@@ -201,9 +197,9 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 TEST(CShellBadInput, RootCurveOutsideTheSupportedAnglesNamesCurveAndAngle) {
   const WingCase c = wing_case(naca("0012", false));
-  JunctionParams j = junction(0.04);
+  JunctionParams j;
   j.min_angle_deg = 100;  // the analytic wing stands at 90 degrees on its wall
-  const std::string what = c_shell_error(c, c.roles, 0.06, j);
+  const std::string what = c_shell_error(c, c.roles, 0.06, j, 0.04);
   EXPECT_TRUE(contains(what, "curve 'root_")) << what;
   EXPECT_TRUE(contains(what, " 90 degrees")) << what;
 }
@@ -213,14 +209,14 @@ TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
   BodyRoles roles;
   roles.wall_surface = *c.model->find_surface("upper");
   for (const std::string name : {"lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
-  const std::string what = c_shell_error(c, roles, 0.06, junction(0.04));
+  const std::string what = c_shell_error(c, roles, 0.06, {}, 0.04);
   EXPECT_TRUE(contains(what, "surface 'upper'")) << what;
   EXPECT_TRUE(contains(what, "not planar")) << what;
 }
 
 TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
   const WingCase c = wing_case(naca("0012", false));
-  const std::string what = c_shell_error(c, c.roles, 0.06, junction(0.9));
+  const std::string what = c_shell_error(c, c.roles, 0.06, {}, 0.9);
   EXPECT_TRUE(contains(what, "0.9")) << what;
 }
 
@@ -228,7 +224,7 @@ TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
   mock_cad::NacaWingParams tiny = naca("0012", true);
   tiny.chord = 0.05;
   const WingCase c = wing_case(tiny);
-  const std::string what = c_shell_error(c, c.roles, 0.6, junction(0.04));
+  const std::string what = c_shell_error(c, c.roles, 0.6, {}, 0.04);
   EXPECT_TRUE(contains(what, "surface '") || contains(what, "curve '")) << what;
   EXPECT_TRUE(contains(what, "0.6")) << what;
 }
@@ -236,7 +232,7 @@ TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
   for (const auto& wing : {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
     const Built b{wing_case(wing), {}};
-    const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), junction(0.03));
+    const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), JunctionParams{}, 0.03);
     expect_valid_linear_elements(f);
     EXPECT_EQ(static_cast<std::size_t>(f.junction_hexes), f.footprint.size());
     for (NodeId h : f.footprint_top) {

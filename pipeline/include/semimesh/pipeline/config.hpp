@@ -1,16 +1,27 @@
-// The run configuration: a TOML file (docs/config.md documents every key) read into typed structs.
-// Defaults run the paper's case: a NACA 0012 wing of chord 1 with a blunt trailing edge on a wall,
-// far field about 10 chords away, order 4, N = 5 layers of ratio r = 2 in the boundary layer.
+// The run configuration: a TOML file (docs/config.md documents every key) read into the stages'
+// own params structs. Defaults run the paper's case: a NACA 0012 wing of chord 1 with a blunt
+// trailing edge on a wall, far field about 10 chords away, order 4, N = 5 layers of ratio r = 2.
+//
+// Each key is declared once, as a row of its struct's table (semimesh/params/table.hpp): the
+// stages' tables (shell_keys, size_keys, far_field_keys, curving_keys, layer_keys) and the
+// pipeline's own below. Its default is the struct's member initialiser. Adding a key is one row
+// (and its doc line in docs/config.md, which a test compares with the tables).
 //
 // Unknown keys, wrong types and out-of-range values are errors naming the key, its value, what was
 // expected and where it was written (file:line, or the --set option).
 #pragma once
 
 #include "semimesh/error.hpp"
+#include "semimesh/farfield/far_field.hpp"
+#include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/params/table.hpp"
+#include "semimesh/surface/size_field.hpp"
 
 #include <array>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,74 +55,42 @@ struct GeometryConfig {
   std::vector<std::string> farfield = {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmax"};
 };
 
-/// [nearfield]: the one-layer shell around the body.
+/// [nearfield]: the partition (topology) and the one-layer shell around the body.
 struct NearFieldConfig {
-  std::string topology = "O";         ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
-  double thickness = 0.1;             ///< shell thickness delta, model units
-  int smoothing_passes = 10;          ///< Laplacian smoothing passes of the node normals
-  double min_thickness_fraction = 0.1;  ///< local reduction may not go below this fraction of delta
-  double reduction_factor = 0.7;      ///< thickness multiplier per local reduction round, in (0, 1)
-  double gradation = 0.5;             ///< |delta_x - delta_y| <= gradation |x - y| after a reduction
-  double concave_angle = 170.0;       ///< C: body-wall curves below this dihedral angle (degrees) are concave corners
-  double junction_min_angle = 60.0;   ///< C: supported dihedral angles of the root curves, degrees
-  double junction_max_angle = 150.0;
+  std::string topology = "O";  ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
+  nearfield::ShellParams shell;
+  nearfield::JunctionParams junction;  ///< C: which body-wall curves are concave corners, supported angles
 };
 
 /// [wall_layer]: the wall's boundary layer (C topology): one prism layer of `thickness` on the
 /// wall, split like the wing's. thickness = 0: a slip wall (no wall layer, the O-type root).
 struct WallLayerConfig {
-  double thickness = 0.1;                     ///< delta_wall, model units, >= 0
-  int layers = 5;                             ///< N_wall >= 1
-  double ratio = 2.0;                         ///< r_wall >= 1
-  std::optional<double> first_cell_height;    ///< instead of ratio
+  double thickness = 0.1;                   ///< delta_wall, model units
+  ho::LayerDistribution split;              ///< layers, ratio
+  std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
 };
 
-/// [boundary_layer]: splitting of the shell into N layers (used by the high-order stage).
+/// [boundary_layer]: splitting of the near-field elements into N layers.
 struct BoundaryLayerConfig {
-  int layers = 5;                             ///< N >= 1
-  double ratio = 2.0;                         ///< r >= 1, growth of consecutive layers
-  std::optional<double> first_cell_height;    ///< instead of ratio: height of the first layer
+  ho::LayerDistribution split;              ///< layers, ratio
+  std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
   /// Optional: the ratio varies linearly along the segment A -> B = ratio_line (xa, ya, za, xb, yb,
-  /// zb): `ratio` (or the one from first_cell_height) at A, ratio_end at B, by the projection of
+  /// zb): the ratio (or the one from first_cell_height) at A, ratio_end at B, by the projection of
   /// each body vertex onto the segment, constant beyond its ends. Both keys or neither.
   std::optional<std::array<double, 6>> ratio_line;
   std::optional<double> ratio_end;
 };
 
-/// [sizing]: the surface size field.
+/// [sizing]: the surface size field, and counts prescribed on the NACA wing's named curves.
 struct SizingConfig {
-  double max_size = 2.0;
-  double min_size = 0.005;
-  double curvature_segments = 4.0;  ///< segments per radian of turning; 0 disables
-  double gradation = 1.2;
-  double le_size = 0.02;            ///< 0: no leading-edge source
-  double te_size = 0.01;            ///< 0: no trailing-edge source
-  int chordwise = 0;                ///< segments on each root/tip section curve; 0: from the size field
-  int spanwise = 0;                 ///< segments on each spanwise edge; 0: from the size field
-};
-
-/// [farfield]: the TetGen region between the skin, the wall and the box.
-struct FarFieldConfig {
-  double box_size = 2.0;             ///< target edge length on the box faces
-  double wall_size = 1.0;            ///< target edge length on the wall, far from the wing
-  double growth = 1.2;               ///< size gradation from the skin outwards
-  double radius_edge_ratio = 1.5;    ///< TetGen quality bound (-q), >= 1
-  double max_volume = 0.0;           ///< TetGen volume bound (-a); 0: none
-};
-
-/// [highorder]
-struct HighOrderConfig {
-  int order = 4;                 ///< P in 1..8
-  std::string node_set = "gll";  ///< "gll" | "equispaced"
-  /// "parameter" (the CAD parametrisation's smooth node map, optimal geometric accuracy) |
-  /// "springs" (the paper's spring optimisation); see docs/config.md and ho/curving/curve_mesh.hpp
-  std::string node_placement = "parameter";
-  int spring_iterations = 50;    ///< Gauss-Newton iterations per edge or face before a fallback
+  surface::SizeParams size;
+  int chordwise = 0;  ///< segments on each root/tip section curve; 0: from the size field
+  int spanwise = 0;   ///< segments on each spanwise edge; 0: from the size field
 };
 
 /// [output]
 struct OutputConfig {
-  std::vector<std::string> formats = {"msh41", "vtu"};  ///< of "msh41", "msh22", "vtu", "nektar"
+  std::vector<std::string> formats = {"msh41", "vtu"};  ///< names from output_formats()
   std::string directory = ".";   ///< resolved against the current directory
   std::string basename = "mesh";
   bool allow_invalid = false;    ///< write the mesh even when a check fails
@@ -123,10 +102,19 @@ struct Config {
   BoundaryLayerConfig boundary_layer;
   WallLayerConfig wall_layer;
   SizingConfig sizing;
-  FarFieldConfig farfield;
-  HighOrderConfig highorder;
+  farfield::FarFieldParams farfield;
+  ho::CurvingParams highorder;
   OutputConfig output;
 };
+
+/// A [section] of the file: its dotted name and its keys (rows into Config).
+struct ConfigSection {
+  std::string name;
+  params::Table<Config> keys;
+};
+
+/// Every section and key, in file order (the source of reading, checking and the docs test).
+const std::vector<ConfigSection>& config_sections();
 
 /// Parses TOML text. `source_name` names the text in messages (a file name); relative geometry
 /// sources are resolved against `base_directory` (empty: left as written). `overrides` are
