@@ -189,3 +189,23 @@ TEST(CTypeEndToEnd, JunctionPiecesShareTheirFacesWithTheSplitPrismsNodeForNode) 
 
 }  // namespace
 }  // namespace semimesh
+
+namespace semimesh {
+namespace {
+
+// The OCC-built wing (B-splines) curved at order 2 and split in both directions: the junction's
+// quads on the wing and the wall are curved on the OCC faces like the prisms' triangles.
+TEST(CTypeEndToEnd, OccWingCurvedAndSplit) {
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  const Case c{"occ", "2412", "blunt"};
+  const Built b = build(c, 0.05, 0.04);
+  ho::CurvingParams curving;
+  curving.order = 2;
+  const mesh::Mesh curved = ho::curve_mesh(b.near.mesh, *b.model, curving);
+  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.near.stacks, {{3, 1.5}, {}}, {{2, 2.0}, {}});
+  EXPECT_EQ(elements_by_region(split.mesh).at("junction"), b.near.junction_hexes * 3 * 2);
+  expect_sound(split.mesh, c, 3e-3);
+}
+
+}  // namespace
+}  // namespace semimesh
