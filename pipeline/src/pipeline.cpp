@@ -9,10 +9,12 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
+#include "semimesh/pipeline/weld_nodes.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <fmt/format.h>
@@ -35,6 +37,9 @@ namespace {
 constexpr int kGeometricErrorSamples = 6;
 // Bound on |curved body volume - triangulated body volume| / triangulated body volume.
 constexpr double kCurvedBodyVolumeFraction = 0.02;
+// Nodes closer than this (relative to the chord) are one node after the H-type split: the split and
+// the pre-cut skin compute the same points up to round-off.
+constexpr double kWeldTolerance = 1e-9;
 
 // Runs one stage: reports its start and end, and turns its exceptions into RunError.
 template <typename Stage>
@@ -117,8 +122,12 @@ Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
 }
 
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
-surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConfig& s) {
+surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config) {
+  const SizingConfig& s = config.sizing;
   surface::ModelMeshOptions options;
+  // H-type: the trailing-edge base as structured quads, swept into the wake block.
+  if (config.nearfield.topology == "H")
+    if (auto te = model.find_surface(config.wake.te_base)) options.structured_surfaces.insert(*te);
   auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
     if (segments == 0) return;
     int found = 0;
@@ -150,6 +159,36 @@ ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
   return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
     const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return ratio_at_a + t * (ratio_at_b - ratio_at_a);
+  };
+}
+
+// H-type: the wing's ratio (`upstream`, or the constant `ratio`) up to the trailing edge, then
+// linear with the distance downstream to `ratio_end` at the wake's far end (paper, section 4).
+double wake_ratio(const nearfield::WakeBlock& wake, const ho::RatioField& upstream, double ratio, double ratio_end,
+                  const Eigen::Vector3d& x) {
+  const double at_te = upstream ? upstream(x) : ratio;
+  return at_te + nearfield::wake_fraction(wake, x) * (ratio_end - at_te);
+}
+
+ho::RatioField wake_ratio_field(const nearfield::WakeBlock& wake, const ho::RatioField& upstream, double ratio,
+                                double ratio_end) {
+  return [wake, upstream, ratio, ratio_end](const Eigen::Vector3d& x) {
+    return wake_ratio(wake, upstream, ratio, ratio_end, x);
+  };
+}
+
+// The wing layer's split interfaces along a layer edge from x, as the split will place them (its
+// reference interfaces mapped to [0, 1]); empty when the layer is not split.
+nearfield::LayerFractions layer_fractions(const Config& config) {
+  const int layers = config.boundary_layer.split.layers;
+  if (layers <= 1) return {};
+  const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
+  const ho::RatioField upstream = ratio_field(config.boundary_layer, ratio);
+  const double ratio_end = config.wake.ratio_end;
+  return [=](const Eigen::Vector3d& x, const nearfield::WakeBlock& wake) {
+    std::vector<double> f = ho::layer_interfaces(layers, wake_ratio(wake, upstream, ratio, ratio_end, x));
+    for (double& z : f) z = 0.5 * (z + 1.0);
+    return f;
   };
 }
 
@@ -222,7 +261,7 @@ RunResult run(const Config& config, Progress& progress) {
   const surface::SizeField size =
       stage("size field", progress, result, [&] { return surface::SizeField(*model, config.sizing.size); });
   const surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
-    return surface::mesh_model_surfaces(*model, size, mesh_options(*model, config.sizing));
+    return surface::mesh_model_surfaces(*model, size, mesh_options(*model, config));
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -230,11 +269,18 @@ RunResult run(const Config& config, Progress& progress) {
   const bool junction = builds_junction(config);
   nearfield::NearField near = stage("near field", progress, result, [&] {
     const nearfield::BodyRoles body_roles{roles.body, roles.wall};
+    if (junction && config.nearfield.topology == "H")
+      return nearfield::build_h_shell(*model, surfaces, body_roles, config.nearfield.shell, config.nearfield.junction,
+                                      config.wall_layer.thickness, config.wake, model->bbox(), layer_fractions(config));
     return junction ? nearfield::build_c_shell(*model, surfaces, body_roles, config.nearfield.shell,
                                                config.nearfield.junction, config.wall_layer.thickness)
                     : nearfield::build_o_shell(*model, surfaces, body_roles, config.nearfield.shell);
   });
   result.junction_hexes = near.junction_hexes;
+  result.wake.hexes = near.wake.hexes;
+  result.wake.length = near.wake.length;
+  result.wake.streamwise_cells = near.wake.streamwise_cells;
+  result.wake.gap = near.wake.gap;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
@@ -278,12 +324,22 @@ RunResult run(const Config& config, Progress& progress) {
   if (layers > 1 || wall_layers > 1) {
     const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
     const double wall_ratio = junction ? effective_wall_ratio(config.wall_layer) : 1.0;
+    ho::RatioField wing_ratio = ratio_field(config.boundary_layer, ratio);
+    if (near.wake.hexes > 0) {
+      wing_ratio = wake_ratio_field(near.wake, wing_ratio, ratio, config.wake.ratio_end);
+      result.wake.ratio_first = ratio;
+      result.wake.ratio_last = config.wake.ratio_end;
+    }
     StackSplit split = stage("split", progress, result, [&] {
-      return split_stacks(result.mesh, near.stacks,
-                          {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
+      return split_stacks(result.mesh, near.stacks, {ho::LayerDistribution{layers, ratio}, wing_ratio},
                           {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
     });
     result.mesh = std::move(split.mesh);
+    // H-type: the far field stands on skin quads cut like the split; make their nodes the split's.
+    if (near.wake.hexes > 0 && layers > 1)
+      result.mesh = stage("weld", progress, result, [&] {
+        return weld_coincident_nodes(result.mesh, kWeldTolerance * reference_length(config.geometry, {})).mesh;
+      });
     if (layers > 1) {
       result.layers.requested_ratio = ratio;
       result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);

@@ -13,13 +13,7 @@
 #include <tuple>
 
 namespace semimesh::ho {
-namespace {
 
-using detail::LatticePoint;
-using mesh::NodeId;
-
-/// Reference positions z_0 = -1 < z_1 < ... < z_N = 1 of the layer interfaces: thicknesses h r^k,
-/// k = 0..N-1, summing to the reference length 2.
 std::vector<double> layer_interfaces(int layers, double ratio) {
   std::vector<double> thickness(layers);
   double total = 0.0, h = 1.0;
@@ -33,6 +27,12 @@ std::vector<double> layer_interfaces(int layers, double ratio) {
   z[layers] = 1.0;
   return z;
 }
+
+namespace {
+
+using detail::LatticePoint;
+using mesh::NodeId;
+
 
 /// The body side of a shape for one split direction.
 struct DirectionData {

@@ -5,19 +5,23 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <sstream>
 
 namespace semimesh::farfield {
 
+constexpr double kHeightPerShortestEdge = 0.3;
+
 Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
-  double perimeter = 0.0;
+  double perimeter = 0.0, shortest = 1e300;
   for (int i = 0; i < 4; ++i) {
     const Eigen::Vector3d& p = quad[i];
     const Eigen::Vector3d& q = quad[(i + 1) % 4];
     centroid += 0.25 * p;
     normal += p.cross(q);  // Newell: twice the vector area of the (possibly warped) quad
     perimeter += (q - p).norm();
+    shortest = std::min(shortest, (q - p).norm());
   }
   std::ostringstream where;
   where << "(" << centroid.x() << ", " << centroid.y() << ", " << centroid.z() << ")";
@@ -27,7 +31,10 @@ Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
 
   Eigen::MatrixX3d nodes(5, 3);
   for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
-  double height = 0.5 * perimeter / 4.0;
+  // Two pyramids on skin quads meeting at a right-angled concave corner (the H-type's wake root and
+  // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
+  // degrees: 2 height / edge <= 0.6 for every edge.
+  double height = kHeightPerShortestEdge * shortest;
   constexpr int kHalvings = 6;
   for (int attempt = 0; attempt <= kHalvings; ++attempt, height *= 0.5) {
     const Eigen::Vector3d apex = centroid + height * normal;
