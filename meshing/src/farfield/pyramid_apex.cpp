@@ -34,10 +34,10 @@ Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
   // Two pyramids on skin quads meeting at a right-angled concave corner (the H-type's wake root and
   // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
   // degrees: 2 height / edge <= 0.6 for every edge.
-  double height = kHeightPerShortestEdge * shortest;
-  constexpr int kHalvings = 6;
-  for (int attempt = 0; attempt <= kHalvings; ++attempt, height *= 0.5) {
-    const Eigen::Vector3d apex = centroid + height * normal;
+  // Lower first (flat quads), then higher: a warped quad needs the apex above all four corner planes.
+  const double start = kHeightPerShortestEdge * shortest;
+  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) {
+    const Eigen::Vector3d apex = centroid + factor * start * normal;
     nodes.row(4) = apex.transpose();
     if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
   }

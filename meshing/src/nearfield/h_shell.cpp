@@ -90,12 +90,24 @@ std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>> lay
 
 double wake_fraction(const WakeBlock& wake, const Eigen::Vector3d& x) {
   if (wake.origins.empty() || !(wake.length > 0.0)) return 0.0;
+  // The distance across `direction` is at least the one along span_axis: search outwards from x's
+  // place in the sorted origins and stop where that bound exceeds the best distance found.
+  const double key = x.dot(wake.span_axis);
+  const auto& o = wake.origins;
+  const auto start = std::lower_bound(o.begin(), o.end(), key, [&](const Eigen::Vector3d& p, double k) {
+                       return p.dot(wake.span_axis) < k;
+                     }) - o.begin();
   double best = 1e300, s = 0.0;
-  for (const Eigen::Vector3d& o : wake.origins) {
-    const double along = (x - o).dot(wake.direction);
-    const double across = (x - o - along * wake.direction).squaredNorm();
+  auto visit = [&](long i) {
+    const double gap = o[i].dot(wake.span_axis) - key;
+    if (gap * gap > best) return false;
+    const double along = (x - o[i]).dot(wake.direction);
+    const double across = (x - o[i] - along * wake.direction).squaredNorm();
     if (across < best) best = across, s = along;
-  }
+    return true;
+  };
+  for (long i = start; i < static_cast<long>(o.size()) && visit(i); ++i) {}
+  for (long i = start - 1; i >= 0 && visit(i); --i) {}
   return std::clamp(s / wake.length, 0.0, 1.0);
 }
 
@@ -254,6 +266,10 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   w.gap = lowest - wall_thickness;
   for (const Section& c : section)  // the trailing-edge nodes: rear interfaces' body side, base quads
     for (int k = 0; k < (c.layer ? 2 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
+  const Vec3 span = js.wall.normal - js.wall.normal.dot(d) * d;
+  w.span_axis = span.norm() > 1e-6 ? Vec3(span.normalized()) : d.unitOrthogonal();
+  std::sort(w.origins.begin(), w.origins.end(),
+            [&](const Vec3& p, const Vec3& q) { return p.dot(w.span_axis) < q.dot(w.span_axis); });
 
   // The skin: faces used by one element that are not body or wall faces and do not stand on the
   // footprint (those the wall layer's prisms share), plus the exposed base.

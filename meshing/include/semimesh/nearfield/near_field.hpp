@@ -57,8 +57,10 @@ struct Warning {
 /// H-type: the wake block swept from the trailing edge (h_shell.hpp), for the ratio along it and
 /// the report. Empty (length 0) for the other topologies.
 struct WakeBlock {
-  std::vector<Eigen::Vector3d> origins;                  ///< trailing-edge nodes the block is swept from
+  std::vector<Eigen::Vector3d> origins;                  ///< trailing-edge nodes the block is swept from,
+                                                         ///< sorted by their coordinate along span_axis
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< unit
+  Eigen::Vector3d span_axis = Eigen::Vector3d::UnitZ();  ///< unit, across `direction` (the wall normal's part)
   double length = 0.0;
   int streamwise_cells = 0;
   int hexes = 0;

@@ -14,9 +14,10 @@ struct Welded {
   std::size_t merged = 0;  ///< nodes replaced by an equal one
 };
 
-/// A copy of `mesh` in which every node used by an element or boundary face that lies within
-/// `tolerance` of a used node of smaller id is replaced by that node (ids and CAD attachments kept;
-/// the replaced ones stay unreferenced). Throws std::invalid_argument (from Mesh::add_element)
+/// A copy of `mesh` in which every node that lies within `tolerance` of a node seen before it is
+/// replaced by that node (ids and CAD attachments kept; the replaced ones stay unreferenced). Only
+/// elements with a vertex coinciding with another element's vertex are searched for their other
+/// nodes (a weld starts at the vertices). Throws std::invalid_argument (from Mesh::add_element)
 /// when two elements would then give one edge or face different nodes.
 Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance);
 
