@@ -160,7 +160,7 @@ void Repairer::repair(std::size_t e, RepairStats& stats) {
 
 }  // namespace
 
-RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements) {
+Repaired repair_invalid(const mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements) {
   for (std::size_t e : elements) {
     if (e >= mesh.elements().size())
       throw std::invalid_argument("repair_invalid: element index " + std::to_string(e) + " out of range (mesh has " +
@@ -169,10 +169,10 @@ RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std:
       throw std::invalid_argument("repair_invalid: element " + std::to_string(e) + " is a " +
                                   to_string(mesh.elements()[e].shape) + "; only 3D elements can be repaired");
   }
-  RepairStats stats;
-  Repairer repairer(mesh, model);
-  for (std::size_t e : elements) repairer.repair(e, stats);
-  return stats;
+  Repaired out{mesh, {}};
+  Repairer repairer(out.mesh, model);
+  for (std::size_t e : elements) repairer.repair(e, out.stats);
+  return out;
 }
 
 }  // namespace semimesh::ho

@@ -208,10 +208,11 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
 
 }  // namespace
 
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface) {
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface) {
+  const nearfield::NearField& nf = near;
   check_params(model, nf, params, box_surfaces, wall_surface);
-  mesh::Mesh& mesh = nf.mesh;
+  mesh::Mesh& mesh = near.mesh;
   FarFieldStats stats;
 
   // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
@@ -262,7 +263,7 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
-  return stats;
+  return {std::move(mesh), stats};
 }
 
 }  // namespace semimesh::farfield

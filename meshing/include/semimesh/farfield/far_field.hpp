@@ -42,10 +42,17 @@ struct FarFieldStats {
   double seconds_tetgen = 0;
 };
 
-/// Adds far-field nodes, pyramids (one on each quad of nf.skin, vertices 0..3 the quad, 4 the apex)
-/// and TetGen tetrahedra to nf.mesh, and the boundary faces "wall" (the far-field part of the
-/// wall, normal out of the domain) and "farfield" (the box faces, normal out of the domain).
+struct FarField {
+  mesh::Mesh mesh;  ///< the near field's mesh with the far field added
+  FarFieldStats stats;
+};
+
+/// The whole mesh: the near field's mesh with far-field nodes, pyramids (one on each quad of
+/// near.skin, vertices 0..3 the quad, 4 the apex) and TetGen tetrahedra (region "farfield"), and
+/// the boundary faces "wall" (the far-field part of the wall, normal out of the domain) and
+/// "farfield" (the box faces, normal out of the domain).
 /// The skin faces and the footprint are kept exactly: the far field conforms with the near field.
+/// The near field is taken by value: pass it with std::move when it is not needed afterwards.
 ///  box_surfaces  CAD surface ids of the box faces; their curve meshes are shared with the wall's
 ///                outer loop.
 ///  wall_surface  the planar wall; its outer loop bounds the wall region, nf.footprint the hole.
@@ -54,7 +61,7 @@ struct FarFieldStats {
 /// NACA0012 case); `growth` grades the wall region and the box curves.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets).
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface);
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface);
 
 }  // namespace semimesh::farfield
