@@ -1,5 +1,5 @@
 // The far field: the unstructured region between the near field's outer skin, the wall and the
-// far-field box (DESIGN.md section 1). Pyramids sit on the quads of the skin so that the rest of
+// far-field box (docs/architecture.md, section 1). Pyramids sit on the quads of the skin so that the rest of
 // the region can be filled with tetrahedra; the tetrahedra come from TetGen.
 //
 // Licence: this stage links TetGen 1.5 (AGPL-3.0-or-later) and lives in its own target,
