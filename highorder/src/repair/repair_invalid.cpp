@@ -1,5 +1,7 @@
 #include "semimesh/ho/repair.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mesh/node_layout.hpp"
@@ -117,7 +119,7 @@ RepairFailure Repairer::failure(std::size_t e) const {
   for (NodeId id : m_.element_nodes(e)) {
     const mesh::CadAttachment& a = m_.cad_attachment(id);
     if (a.kind != mesh::CadAttachment::Surface) continue;
-    const std::string name = "'" + model_.surface(a.entity).name() + "' (id " + std::to_string(a.entity) + ")";
+    const std::string name = cad::surface_label(model_, a.entity);
     if (surfaces.find(name) == std::string::npos) surfaces += (surfaces.empty() ? "" : ", ") + name;
   }
   std::ostringstream msg;

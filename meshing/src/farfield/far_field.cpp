@@ -1,5 +1,7 @@
 #include "semimesh/farfield/far_field.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "wall_annulus.hpp"
@@ -52,7 +54,7 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   require(wall_surface >= 0 && wall_surface < model.num_surfaces(),
           "wall surface id " + std::to_string(wall_surface) + " is not a surface of the model");
   require(model.surface(wall_surface).is_planar(),
-          "wall surface " + std::to_string(wall_surface) + " ('" + model.surface(wall_surface).name() + "') is not planar");
+          "the wall, " + cad::surface_label(model, wall_surface) + ", is not planar");
 }
 
 // One mesh node per CAD vertex and per inner curve-mesh node, so every surface using a curve

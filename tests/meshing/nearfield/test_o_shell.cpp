@@ -297,7 +297,7 @@ TEST(OShell, ImpossibleThicknessThrowsWithThePlace) {
   } catch (const NearFieldError& e) {
     const std::string what = e.what();
     std::cout << "error: " << what << "\n";
-    EXPECT_NE(what.find("surface '"), std::string::npos) << what;
+    EXPECT_NE(what.find("surface 1 ('lower')"), std::string::npos) << what;
     EXPECT_NE(what.find(" at ("), std::string::npos) << what;
     EXPECT_NE(what.find("min_thickness_fraction"), std::string::npos) << what;
   }
