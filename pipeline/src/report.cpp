@@ -94,6 +94,10 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"junction_hexes\": {},\n", r.junction_hexes);
   j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
+  j += fmt::format("  \"far_field\": {{\"tets\": {}, \"pyramids\": {}, \"wall_triangles\": {}, \"box_triangles\": {}, "
+                   "\"tetgen_seconds\": {}}},\n",
+                   r.far_field.tets, r.far_field.pyramids, r.far_field.wall_triangles, r.far_field.box_triangles,
+                   json_number(r.far_field.seconds_tetgen));
   j += fmt::format("  \"thickness_min\": {},\n  \"thickness_max\": {},\n", json_number(r.thickness_min),
                    json_number(r.thickness_max));
   j += fmt::format("  \"layers\": {},\n  \"layer_ratio\": {},\n  \"achieved_layer_ratio\": {},\n", r.layers.layers,

@@ -19,10 +19,6 @@ namespace {
 using mesh::CadAttachment;
 using mesh::NodeId;
 
-std::string curve_label(const cad::Model& model, int c) {
-  return "curve '" + model.curve(c).name() + "' (id " + std::to_string(c) + ")";
-}
-
 void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
                            double wall_thickness) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };

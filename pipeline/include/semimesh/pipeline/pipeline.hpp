@@ -6,6 +6,7 @@
 #include "semimesh/checks/conformity.hpp"
 #include "semimesh/checks/validity.hpp"
 #include "semimesh/checks/volume.hpp"
+#include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/pipeline/config.hpp"
@@ -88,6 +89,7 @@ struct RunResult {
   LayerFigures wall_layers;   ///< the wall's (C-type; layers = 1 and zeros without a wall layer)
   std::string node_placement;  ///< highorder.node_placement used by the curve stage; empty at order 1
   ho::CurvingStats curving;    ///< zeros at order 1
+  farfield::FarFieldStats far_field;
   GeometricErrorFigures geometric_error;
   /// Tolerance of the element volume against box - body of the linear surface meshes: round-off for
   /// a linear mesh; a curved body's volume differs from its triangulation's (see pipeline.cpp).
@@ -108,6 +110,10 @@ struct RunResult {
 /// (unless config.output.allow_invalid): the result says which check failed. Files are written
 /// atomically, report.json last; if one fails, the files this run had already written are removed.
 RunResult run(const Config& config, Progress& progress);
+
+/// The write stage of run(): the mesh files in config order, then report.json, atomically; on a
+/// failure the files this call wrote are removed and the error rethrown. Sets written_files.
+void write_outputs(const Config& config, Progress& progress, RunResult& result);
 
 /// Output file paths the configuration asks for, mesh formats in config order, then report.json.
 std::vector<std::string> output_paths(const OutputConfig& output);
