@@ -88,8 +88,9 @@ double expected_volume(const Case& c) {
   double area = 0.0;
   for (int i = 0; i < n; ++i) {
     const double x = (i + 0.5) / n;
-    const double yt = 5 * t * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
-                               (c.te == "sharp" ? 0.1036 : 0.1015) * x * x * x * x);
+    const double yt = 5 * t *
+                      (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+                       (c.te == "sharp" ? 0.1036 : 0.1015) * x * x * x * x);
     area += 2 * yt / n;
   }
   const double chord_area_factor = (1 + c.taper + c.taper * c.taper) / 3.0;  // mean of chord^2 over the span
@@ -115,8 +116,8 @@ TEST(CTypeEndToEnd, LinearMeshOnTheAnalyticWing) {
   EXPECT_EQ(regions.at("wall_layer"), b.far.stats.wall_layer_prisms);
   EXPECT_GT(regions.at("wing_layer"), 100);
   EXPECT_EQ(regions.at("farfield"), b.far.stats.tets + b.far.stats.pyramids);
-  EXPECT_EQ(b.far.stacks.size(), static_cast<std::size_t>(regions.at("junction") + regions.at("wall_layer") +
-                                                           regions.at("wing_layer")));
+  EXPECT_EQ(b.far.stacks.size(),
+            static_cast<std::size_t>(regions.at("junction") + regions.at("wall_layer") + regions.at("wing_layer")));
   expect_sound(m, c, 2e-3);
 }
 
@@ -127,7 +128,8 @@ TEST(CTypeEndToEnd, CurvedAndSplitInBothDirections) {
   curving.order = 2;
   const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
   const int n_wing = 3, n_wall = 2;
-  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 1.5}, {}}, {{n_wall, 2.0}, {}});
+  const pipeline::StackSplit split =
+      pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 1.5}, {}}, {{n_wall, 2.0}, {}});
   const auto before = elements_by_region(b.far.mesh), after = elements_by_region(split.mesh);
   EXPECT_EQ(after.at("junction"), before.at("junction") * n_wing * n_wall);
   EXPECT_EQ(after.at("wing_layer"), before.at("wing_layer") * n_wing);
@@ -146,7 +148,8 @@ class CTypeVariants : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CTypeVariants, ConformingValidMeshWithTheRightVolume) {
   const Case c = GetParam();
-  if (c.backend == "occ" && !backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  if (c.backend == "occ" && !backends::default_registry().available("occ"))
+    GTEST_SKIP() << "no OCC backend in this build";
   const Built b = build(c, 0.05, 0.04);
   const auto regions = elements_by_region(b.far.mesh);
   EXPECT_EQ(regions.at("junction"), b.junction_hexes);
@@ -169,10 +172,12 @@ TEST(CTypeEndToEnd, JunctionPiecesShareTheirFacesWithTheSplitPrismsNodeForNode) 
   curving.order = 3;
   const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
   const int n_wing = 3, n_wall = 4;
-  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 2.0}, {}}, {{n_wall, 1.5}, {}});
+  const pipeline::StackSplit split =
+      pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 2.0}, {}}, {{n_wall, 1.5}, {}});
   const mesh::Mesh& m = split.mesh;
   const auto region = [&](const std::string& name) {
-    return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) - m.region_names().begin());
+    return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) -
+                            m.region_names().begin());
   };
   const int junction = region("junction"), wing = region("wing_layer"), wall = region("wall_layer");
   std::map<std::uint32_t, std::vector<int>> users;  // face -> regions of its elements

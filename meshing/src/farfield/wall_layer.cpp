@@ -22,7 +22,8 @@ bool bounds_surface(const cad::Model& model, int curve, int surface) {
 }
 
 // Re-attaches a moved node to its CAD entity (projection from its old parameters).
-void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x, CadAttachment cad) {
+void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x,
+                     CadAttachment cad) {
   if (cad.kind == CadAttachment::Surface) {
     const auto p = model.surface(cad.entity).project(x, cad::Vec2(cad.u, cad.v));
     cad.u = p.uv.x(), cad.v = p.uv.y();
@@ -70,8 +71,9 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
     const auto fb = face.bounds();
     const Eigen::Vector3d n = face.normal({0.5 * (fb[0].lo + fb[0].hi), 0.5 * (fb[1].lo + fb[1].hi)});
     if (meets_wall && (!face.is_planar() || std::abs(n.dot(normal)) > 1e-9))
-      throw FarFieldError("far field: box " + cad::surface_label(model, s) +
-                          " meets the wall but is not a plane perpendicular to it; the wall layer needs such box sides");
+      throw FarFieldError(
+          "far field: box " + cad::surface_label(model, s) +
+          " meets the wall but is not a plane perpendicular to it; the wall layer needs such box sides");
   }
 
   // Lift the box: nodes on the wall get a top node, the others move up.
@@ -90,7 +92,8 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
     if (d >= box_height - tolerance) continue;
     if (d <= tolerance) {
       const NodeId top = mesh.add_node(x + thickness * normal);
-      place_on_entity(model, mesh, top, x + thickness * normal, top_entity(model, mesh.cad_attachment(v), wall_surface));
+      place_on_entity(model, mesh, top, x + thickness * normal,
+                      top_entity(model, mesh.cad_attachment(v), wall_surface));
       top_of[v] = top;
       continue;
     }

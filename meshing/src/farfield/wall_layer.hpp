@@ -14,8 +14,8 @@ namespace semimesh::farfield {
 using Triangle = std::array<mesh::NodeId, 3>;
 
 struct WallLayer {
-  std::vector<Triangle> tops;                  ///< [prisms] the layer's top faces, normal away from the wall
-  std::vector<nearfield::LayerStack> stacks;   ///< [prisms] each prism, split along zeta in the wall's layers
+  std::vector<Triangle> tops;                 ///< [prisms] the layer's top faces, normal away from the wall
+  std::vector<nearfield::LayerStack> stacks;  ///< [prisms] each prism, split along zeta in the wall's layers
 };
 
 /// Adds to `mesh` the wall-layer prisms (region "wall_layer") on `wall` (triangles facing out of

@@ -64,7 +64,6 @@ ShellParams shell(double thickness) {
   return p;
 }
 
-
 // Distance from x to the wing's CAD by dense sampling of every body surface's parameter box and a
 // local refinement by golden sections along both parameters (independent of cadapi's projection).
 double sampled_distance(const cad::Surface& s, const Vec3& x) {
@@ -208,7 +207,8 @@ TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
   const WingCase c = wing_case(naca("0012", false));
   BodyRoles roles;
   roles.wall_surface = *c.model->find_surface("upper");
-  for (const std::string name : {"lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
+  for (const std::string name : {"lower", "te_base", "tip"})
+    roles.body_surfaces.push_back(*c.model->find_surface(name));
   const std::string what = c_shell_error(c, roles, 0.06, {}, 0.04);
   EXPECT_TRUE(contains(what, "('upper')")) << what;
   EXPECT_TRUE(contains(what, "not planar")) << what;
@@ -230,7 +230,8 @@ TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
 }
 
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
-  for (const auto& wing : {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
+  for (const auto& wing :
+       {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
     const Built b{wing_case(wing), {}};
     const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), JunctionParams{}, 0.03);
     expect_valid_linear_elements(f);
@@ -278,7 +279,7 @@ TEST(WallCurves, SweptTaperedWingLeansByItsSweepAngles) {
     } else {
       EXPECT_GT(w.max_angle_deg, 110.0) << c.model->curve(w.curve).name();  // near the leading edge
       EXPECT_LE(w.max_angle_deg, 120.0 + 1e-9) << c.model->curve(w.curve).name();
-      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();   // near the trailing edge
+      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();  // near the trailing edge
       EXPECT_GE(w.min_angle_deg, 90.0 - te_sweep - 1e-9) << c.model->curve(w.curve).name();
     }
   }
