@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
         semimesh::io::write_msh(mesh, base + ".msh");
         semimesh::io::write_msh(mesh, base + "_v22.msh", semimesh::io::MshVersion::V22);
         semimesh::io::write_vtu(mesh, base + ".vtu");
-        semimesh::io::write_nektar_xml(mesh, base + ".xml");
+        semimesh::io::write_nektar_xml(mesh, base + ".xml", semimesh::io::NektarEncoding::Plain);
+        semimesh::io::write_nektar_xml(mesh, base + "_z.xml");
         if (p >= 2) {
           semimesh::io::write_msh(one_element(shape, p, NodeSet::GLL, curved), base + "_gll.msh");
           semimesh::io::write_msh(one_element(shape, p, NodeSet::Equispaced, folded_map), base + "_invalid.msh");
