@@ -1,4 +1,5 @@
 #include "nektar_numbering.hpp"
+#include "regions.hpp"
 #include "zlib_stream.hpp"
 
 #include "semimesh/io/atomic_file.hpp"
@@ -316,9 +317,10 @@ struct ElementComposite {
 std::vector<ElementComposite> element_composites(const mesh::Mesh& m) {
   std::map<std::pair<int, char>, std::vector<std::size_t>> groups;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
-    groups[{0, nektar_tag(m.elements()[e].shape)}].push_back(e);
+    groups[{element_region(m, e), nektar_tag(m.elements()[e].shape)}].push_back(e);
+  const auto names = region_names(m);
   std::vector<ElementComposite> out;
-  for (auto& [key, ids] : groups) out.push_back({"fluid", key.second, std::move(ids)});
+  for (auto& [key, ids] : groups) out.push_back({names[key.first], key.second, std::move(ids)});
   return out;
 }
 

@@ -8,7 +8,9 @@
 //   OUTDIR/{...}_P_v22.msh               MSH 2.2
 //   OUTDIR/{...}_P_gll.msh               MSH 4.1 written from a GLL-node mesh (resampled), P >= 2
 //   OUTDIR/{...}_P_invalid.msh           MSH 4.1 of a folded element (det J = 1 - 3 y < 0 in part), P >= 2
-//   OUTDIR/{...}_P.vtu, {...}_P.xml      VTU and Nektar++ XML
+//   OUTDIR/{...}_P_bin.msh               MSH 4.1 binary
+//   OUTDIR/{...}_P.vtu, {...}_P_z.vtu    VTU ASCII and compressed binary
+//   OUTDIR/{...}_P.xml, {...}_P_z.xml    Nektar++ XML plain and compressed
 // Each file also holds every face of the element as a boundary face (groups "tri", "quad").
 #include "semimesh/io/gmsh_types.hpp"
 #include "semimesh/io/msh.hpp"
@@ -70,7 +72,10 @@ int main(int argc, char** argv) {
         const auto mesh = one_element(shape, p, NodeSet::Equispaced, curved);
         semimesh::io::write_msh(mesh, base + ".msh");
         semimesh::io::write_msh(mesh, base + "_v22.msh", semimesh::io::MshVersion::V22);
-        semimesh::io::write_vtu(mesh, base + ".vtu");
+        semimesh::io::write_msh(mesh, base + "_bin.msh", semimesh::io::MshVersion::V41,
+                                semimesh::io::MshEncoding::Binary);
+        semimesh::io::write_vtu(mesh, base + ".vtu", semimesh::io::VtuEncoding::Ascii);
+        semimesh::io::write_vtu(mesh, base + "_z.vtu");
         semimesh::io::write_nektar_xml(mesh, base + ".xml", semimesh::io::NektarEncoding::Plain);
         semimesh::io::write_nektar_xml(mesh, base + "_z.xml");
         if (p >= 2) {

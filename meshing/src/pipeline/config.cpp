@@ -331,8 +331,9 @@ void read_highorder(Section s, HighOrderConfig& h) {
 void read_output(Section s, OutputConfig& o) {
   s.strings("formats", o.formats);
   for (const std::string& f : o.formats)
-    s.require(one_of(f, {"msh41", "msh22", "vtu", "nektar"}), "formats",
-              "formats among \"msh41\", \"msh22\", \"vtu\", \"nektar\" (got \"" + f + "\")");
+    s.require(one_of(f, {"msh41", "msh41-binary", "msh22", "vtu", "vtu-ascii", "nektar", "nektar-xml"}), "formats",
+              "formats among \"msh41\", \"msh41-binary\", \"msh22\", \"vtu\", \"vtu-ascii\", \"nektar\", "
+              "\"nektar-xml\" (got \"" + f + "\")");
   std::set<std::string> distinct(o.formats.begin(), o.formats.end());
   s.require(distinct.size() == o.formats.size(), "formats", "each format at most once");
   s.string("directory", o.directory);

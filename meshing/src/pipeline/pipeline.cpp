@@ -12,6 +12,7 @@
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
+#include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -247,9 +248,35 @@ double peak_memory_mb() {
 
 void write_mesh_file(const mesh::Mesh& mesh, const std::string& format, const std::string& path) {
   if (format == "msh41") io::write_msh(mesh, path, io::MshVersion::V41);
+  if (format == "msh41-binary") io::write_msh(mesh, path, io::MshVersion::V41, io::MshEncoding::Binary);
   if (format == "msh22") io::write_msh(mesh, path, io::MshVersion::V22);
-  if (format == "vtu") io::write_vtu(mesh, path);
-  if (format == "nektar") io::write_nektar_xml(mesh, path);
+  if (format == "vtu") io::write_vtu(mesh, path, io::VtuEncoding::CompressedBinary);
+  if (format == "vtu-ascii") io::write_vtu(mesh, path, io::VtuEncoding::Ascii);
+  if (format == "nektar") io::write_nektar_xml(mesh, path, io::NektarEncoding::Compressed);
+  if (format == "nektar-xml") io::write_nektar_xml(mesh, path, io::NektarEncoding::Plain);
+}
+
+/// File name ending of a format: its extension, with a tag in front when another format asked for
+/// shares the extension (the first of each kind keeps the plain one).
+std::string file_suffix(const std::string& format, const std::vector<std::string>& formats) {
+  struct Kind {
+    const char* format;
+    const char* extension;
+    const char* shared;  // when another format with this extension is asked for too
+  };
+  static const Kind kinds[] = {{"msh41", ".msh", ".msh"},           {"msh41-binary", ".msh", ".bin.msh"},
+                               {"msh22", ".msh", ".v22.msh"},       {"vtu", ".vtu", ".vtu"},
+                               {"vtu-ascii", ".vtu", ".ascii.vtu"}, {"nektar", ".xml", ".xml"},
+                               {"nektar-xml", ".xml", ".plain.xml"}};
+  const Kind* mine = nullptr;
+  for (const Kind& k : kinds)
+    if (format == k.format) mine = &k;
+  if (!mine) return "";
+  for (const Kind& k : kinds)
+    if (k.format != format && std::string(k.extension) == mine->extension &&
+        std::count(formats.begin(), formats.end(), k.format))
+      return mine->shared;
+  return mine->extension;
 }
 
 }  // namespace
@@ -262,17 +289,9 @@ double RunResult::total_seconds() const {
 
 std::vector<std::string> output_paths(const OutputConfig& output) {
   const std::filesystem::path dir(output.directory);
-  const bool both_msh = std::count(output.formats.begin(), output.formats.end(), "msh41") &&
-                        std::count(output.formats.begin(), output.formats.end(), "msh22");
   std::vector<std::string> paths;
-  for (const std::string& f : output.formats) {
-    std::string name = output.basename;
-    if (f == "msh41") name += ".msh";
-    if (f == "msh22") name += both_msh ? ".v22.msh" : ".msh";
-    if (f == "vtu") name += ".vtu";
-    if (f == "nektar") name += ".xml";
-    paths.push_back((dir / name).string());
-  }
+  for (const std::string& f : output.formats)
+    paths.push_back((dir / (output.basename + file_suffix(f, output.formats))).string());
   paths.push_back((dir / "report.json").string());
   return paths;
 }
@@ -338,8 +357,9 @@ RunResult run(const Config& config, Progress& progress) {
     const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
     ho::SplitStats split{};
     result.mesh = stage("split", progress, result, [&] {
-      return ho::split_layers(result.mesh, prisms, ho::LayerDistribution{layers, ratio},
-                              ratio_field(config.boundary_layer, ratio), &split);
+      // The coarse prisms' interior nodes are no longer used by any element: drop them.
+      return mesh::without_unreferenced_nodes(ho::split_layers(
+          result.mesh, prisms, ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio), &split));
     });
     result.layers.requested_ratio = ratio;
     result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);

@@ -97,7 +97,7 @@ struct HighOrderConfig {
 
 /// [output]
 struct OutputConfig {
-  std::vector<std::string> formats = {"msh41", "vtu"};  ///< of "msh41", "msh22", "vtu", "nektar"
+  std::vector<std::string> formats = {"msh41", "vtu"};  ///< see docs/config.md: msh41[-binary], msh22, vtu[-ascii], nektar[-xml]
   std::string directory = ".";   ///< resolved against the current directory
   std::string basename = "mesh";
   bool allow_invalid = false;    ///< write the mesh even when a check fails
