@@ -141,17 +141,17 @@ struct Geometry {
   }
   static mesh::NodeId kNoNodeId() { return mesh::kNoNode; }
 
-  /// Curved points of a face, as written.
+  /// Curved nodes of a face, in the order written.
   template <typename Emit>
-  void face_points(std::size_t f, Emit emit) const {
+  void face_nodes_written(std::size_t f, Emit emit) const {
     const auto ids = m.face_nodes(f);
     if (num_face_vertices(f) == 3) {
       const auto w = written_face_vertices(m, numbering, f);
       int s = 0;
       while (m.faces()[f].vertices[s] != w[0]) ++s;
-      for (int k : tri_point_order[s]) emit(m.node(ids[k]));
+      for (int k : tri_point_order[s]) emit(ids[k]);
     } else {
-      for (int k : quad_point_order) emit(m.node(ids[k]));
+      for (int k : quad_point_order) emit(ids[k]);
     }
   }
   bool face_is_curved(std::size_t f) const { return m.order() >= (num_face_vertices(f) == 3 ? 3 : 2); }
@@ -202,7 +202,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
     out.print("      <F ID=\"{}\" FACEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"{}\">", curve++, f,
               tri ? g.tri_point_order[0].size() : g.quad_point_order.size(),
               tri ? "NodalTriEvenlySpaced" : "PolyEvenlySpaced");
-    g.face_points(f, point);
+    g.face_nodes_written(f, [&](mesh::NodeId id) { point(m.node(id)); });
     out.print(" </F>\n");
   }
   out.print("    </CURVED>\n");
@@ -271,7 +271,14 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   if (m.order() < 2) return;
 
   // CURVED: MeshCurvedInfo records {id, entityid, npoints, ptid, ptoffset, ptype} for edges and
-  // faces, then DATAPOINTS: INDEX (point k is point k) and POINTS (MeshVertex records).
+  // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
+  // Curves share their points through INDEX: every edge/face node is stored once.
+  std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
+  std::vector<mesh::NodeId> point_node;
+  auto point_of = [&](mesh::NodeId id) {
+    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = static_cast<std::uint32_t>(point_node.size()), point_node.push_back(id);
+    return I(point_of_node[id]);
+  };
   const I p = m.order();
   I total = 0;
   out.print("    <CURVED {}>\n", kCompressed);
@@ -295,14 +302,13 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   }, false);
   out.print("      <DATAPOINTS ID=\"0\">\n");
   compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
-    for (I k = 0; k < total; ++k) z.add_value(k);
+    for (std::size_t e = 0; e < m.edges().size(); ++e)
+      for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
+    for (std::size_t f = 0; f < m.faces().size(); ++f)
+      if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
-    I k = 0;
-    for (std::size_t e = 0; e < m.edges().size(); ++e)
-      for (mesh::NodeId id : m.edge_nodes(e)) put_point(z, k++, m.node(id));
-    for (std::size_t f = 0; f < m.faces().size(); ++f)
-      if (g.face_is_curved(f)) g.face_points(f, [&](const Eigen::Vector3d& x) { put_point(z, k++, x); });
+    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), m.node(point_node[k]));
   }, false);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
 }
