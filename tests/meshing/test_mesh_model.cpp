@@ -214,6 +214,29 @@ TEST(MeshModel, CadAttachmentMovesWithTheNode) {
   mesh.place_node(on_curve, {4, 0, 0});
 }
 
+TEST(MeshModel, ElementsKeepTheirRegion) {
+  Mesh m(1);
+  NodeMaker maker{m, {}, {}};
+  EXPECT_EQ(m.region_names(), std::vector<std::string>{"fluid"});
+  const int layer = m.region_index("wing_layer");
+  const int far = m.region_index("farfield");
+  EXPECT_EQ(m.region_index("wing_layer"), layer);  // found, not created twice
+  const Eigen::Vector3d o(0, 0, 0), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  m.add_element(Shape::Tetrahedron, maker.element(Shape::Tetrahedron, 1, {o, x, y, z}), far);
+  m.add_element(Shape::Tetrahedron, maker.element(Shape::Tetrahedron, 1, {x, y, z, Eigen::Vector3d(1, 1, 1)}), layer);
+  EXPECT_EQ(m.elements()[0].region, far);
+  EXPECT_EQ(m.elements()[1].region, layer);
+  EXPECT_THROW(m.add_element(Shape::Tetrahedron, maker.element(Shape::Tetrahedron, 1, {o, x, y, -z}), 3),
+               std::invalid_argument);
+
+  Mesh copy(2);
+  copy.copy_regions_from(m);
+  EXPECT_EQ(copy.region_names(), m.region_names());
+  Mesh other(1);
+  other.region_index("wake");
+  EXPECT_THROW(other.copy_regions_from(m), std::logic_error);
+}
+
 TEST(MeshModel, MemoryPerElementIsModest) {
   // 2 x 2 x 2 hexes of order 4 on a shared lattice.
   Mesh mesh(4);

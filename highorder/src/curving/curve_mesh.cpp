@@ -264,6 +264,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
 
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
+  out_.copy_regions_from(in_);
   std::vector<char> edge_on_boundary(in_.edges().size(), 0), face_on_boundary(in_.faces().size(), 0);
   for (const mesh::BoundaryFace& bf : in_.boundary_faces()) {
     face_on_boundary[bf.face] = 1;
@@ -290,7 +291,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     const Shape shape = in_.elements()[e].shape;
     for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
       element_ids[e][j] = out_.add_node(interior[e].row(j).transpose());
-    out_.add_element(shape, element_ids[e]);
+    out_.add_element(shape, element_ids[e], in_.elements()[e].region);
   }
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];

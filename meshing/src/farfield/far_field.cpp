@@ -190,7 +190,7 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
     }
     if (face.count != 4) throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
     const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])}));
-    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex});
+    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, mesh.region_index("farfield"));
     ++pyramids;
     for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});
   }
@@ -244,8 +244,9 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   stats.seconds_tetgen = output.seconds;
   for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));
   mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
+  const int region = mesh.region_index("farfield");
   for (const auto& t : output.tets)
-    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]});
+    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]}, region);
   stats.tets = static_cast<int>(output.tets.size());
 
   for (const Triangle& t : wall) mesh.add_boundary_face("wall", ho::Shape::Triangle, {t[0], t[1], t[2]});

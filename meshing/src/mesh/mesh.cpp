@@ -74,6 +74,20 @@ void Mesh::place_node_on_cad(NodeId id, const Eigen::Vector3d& x, const CadAttac
     cad_[id] = cad;
 }
 
+int Mesh::region_index(const std::string& name) {
+  const auto it = std::find(regions_.begin(), regions_.end(), name);
+  if (it != regions_.end()) return static_cast<int>(it - regions_.begin());
+  regions_.push_back(name);
+  return static_cast<int>(regions_.size()) - 1;
+}
+
+void Mesh::copy_regions_from(const Mesh& other) {
+  const auto& theirs = other.regions_;
+  if (regions_.size() > theirs.size() || !std::equal(regions_.begin(), regions_.end(), theirs.begin()))
+    throw std::logic_error("Mesh::copy_regions_from: this mesh already has other regions");
+  regions_ = theirs;
+}
+
 int Mesh::group_index(const std::string& name) {
   const auto it = std::find(groups_.begin(), groups_.end(), name);
   if (it != groups_.end()) return static_cast<int>(it - groups_.begin());
@@ -156,10 +170,13 @@ void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, 
   }
 }
 
-std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes) {
+std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region) {
   if (ho::dimension(shape) != 3)
     throw std::invalid_argument("Mesh::add_element: " + ho::to_string(shape) +
                                 " is not a volume element (use add_boundary_face)");
+  if (region < 0 || static_cast<std::size_t>(region) >= regions_.size())
+    throw std::invalid_argument("Mesh::add_element: region " + std::to_string(region) + " does not exist (" +
+                                std::to_string(regions_.size()) + " regions)");
   const std::size_t index = elements_.size();
   const std::string who = element_name(shape, index);
   const int nv = ho::num_vertices(shape);
@@ -167,6 +184,7 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
     throw std::invalid_argument(who + ": fewer nodes than vertices");
   Element el;
   el.shape = shape;
+  el.region = static_cast<std::uint16_t>(region);
   std::copy(canonical_nodes.begin(), canonical_nodes.begin() + nv, el.vertices.begin());
   link_entities(shape, canonical_nodes, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(),
                 el.face_orientation.data(), who);
@@ -333,6 +351,7 @@ std::size_t Mesh::memory_bytes() const {
   bytes += map_bytes(edge_index_, sizeof(std::pair<const std::uint64_t, std::uint32_t>));
   bytes += map_bytes(face_index_, sizeof(std::pair<const std::array<NodeId, 4>, std::uint32_t>));
   for (const auto& g : groups_) bytes += sizeof(g) + g.capacity();
+  for (const auto& r : regions_) bytes += sizeof(r) + r.capacity();
   return bytes;
 }
 

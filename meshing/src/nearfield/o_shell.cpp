@@ -210,6 +210,7 @@ NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   field.warnings = reduction_warnings(model, body, neighbours, thickness, reasons, params.thickness);
   mesh::Mesh& m = field.mesh;
   m.reserve(ho::Shape::Prism, body.triangles.size());
+  const int layer_region = m.region_index("wing_layer");
   for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
   const auto offset = static_cast<mesh::NodeId>(count);
   for (int i = 0; i < count; ++i) {
@@ -220,7 +221,8 @@ NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   auto id = [](int v) { return static_cast<mesh::NodeId>(v); };
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
     const auto& v = body.triangles[t];
-    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset});
+    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+                  layer_region);
     field.element_surface.push_back(body.triangle_surface[t]);
     m.add_boundary_face("wing", ho::Shape::Triangle, {id(v[0]), id(v[2]), id(v[1])});
     field.skin.push_back({{id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset, mesh::kNoNode}, 3});

@@ -54,6 +54,9 @@ TEST(FarFieldNaca0012, ConformingClosedMeshAroundTheOShell) {
   const mesh::Mesh& m = nf.mesh;
   EXPECT_EQ(stats.pyramids, 0);  // the O-shell's skin is all triangles
   EXPECT_EQ(m.elements().size(), prisms + stats.tets);
+  // The shell's prisms are the wing layer, the far field's tets their own region.
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    ASSERT_EQ(m.region_names()[m.elements()[e].region], e < prisms ? "wing_layer" : "farfield") << "element " << e;
 
   std::map<FaceKey, int> element_faces;
   for (std::size_t e = 0; e < m.elements().size(); ++e) {

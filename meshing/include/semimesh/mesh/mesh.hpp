@@ -14,7 +14,9 @@
 //    orientation code) and owns its interior nodes.
 // All elements of a mesh share one order P and one node set.
 //
-// Boundary faces (triangles and quadrilaterals) belong to named groups ("wing", "wall", ...); they
+// Every element belongs to a named region (block: "wing_layer", "wall_layer", "junction", "wake",
+// "farfield"; region 0 is "fluid" until a builder names its own), which every stage keeps and every
+// writer emits. Boundary faces (triangles and quadrilaterals) belong to named groups ("wing", "wall", ...); they
 // reference the shared face entity and keep their own (outward) vertex order. Every node can carry
 // one CAD attachment; it is changed only together with the node position.
 #pragma once
@@ -64,6 +66,7 @@ struct Element {
   std::array<std::uint32_t, 6> faces{};       ///< face ids in ho::faces(shape) order
   std::array<std::uint8_t, 6> face_orientation{};  ///< code per face (node_layout.hpp)
   std::uint32_t first_node = 0;               ///< interior nodes: Mesh::interior_pool()[first_node, +n)
+  std::uint16_t region = 0;                   ///< index into Mesh::region_names(): the block it belongs to
 };
 
 struct BoundaryFace {
@@ -103,16 +106,22 @@ class Mesh {
   void clear_cad_attachments() { cad_.clear(); }
 
   // ---- building -------------------------------------------------------------------------------
-  /// Adds a 3D element from its full canonical (Gmsh-order) node list of num_nodes(shape, P) ids.
+  /// Adds a 3D element from its full canonical (Gmsh-order) node list of num_nodes(shape, P) ids,
+  /// in region `region` (an index from region_index; 0, "fluid", by default).
   /// Edges and faces are created or found by their vertices. If an edge/face already exists, the
   /// nodes given for it must be the stored ones or sit at the same place (else the elements do
   /// not conform: std::invalid_argument naming the element and the entity). Returns its index.
-  std::size_t add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
+  std::size_t add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region = 0);
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
   std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
   /// Index of a group, creating it if new.
   int group_index(const std::string& name);
+  /// Index of a region, creating it if new.
+  int region_index(const std::string& name);
+  /// Gives this mesh the regions of `other` with the same indices (for stages that copy elements
+  /// into a new mesh). Throws std::logic_error if this mesh already has different regions.
+  void copy_regions_from(const Mesh& other);
   /// Reserves storage for about this many elements of one shape (avoids rehashing; optional).
   void reserve(ho::Shape typical_shape, std::size_t num_elements);
 
@@ -122,6 +131,7 @@ class Mesh {
   const std::vector<Element>& elements() const { return elements_; }
   const std::vector<BoundaryFace>& boundary_faces() const { return boundary_; }
   const std::vector<std::string>& group_names() const { return groups_; }
+  const std::vector<std::string>& region_names() const { return regions_; }
   const std::vector<NodeId>& edge_pool() const { return edge_pool_; }
   const std::vector<NodeId>& face_pool() const { return face_pool_; }
   const std::vector<NodeId>& interior_pool() const { return interior_pool_; }
@@ -171,6 +181,7 @@ class Mesh {
   std::vector<Element> elements_;
   std::vector<BoundaryFace> boundary_;
   std::vector<std::string> groups_;
+  std::vector<std::string> regions_{"fluid"};
   std::vector<NodeId> edge_pool_, face_pool_, interior_pool_;
   std::unordered_map<std::uint64_t, std::uint32_t> edge_index_;
   std::unordered_map<std::array<NodeId, 4>, std::uint32_t, FaceKeyHash> face_index_;
