@@ -1,4 +1,3 @@
-#include "regions.hpp"
 
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
@@ -7,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -69,9 +69,18 @@ struct Tags {
 Tags make_tags(const mesh::Mesh& m) {
   Tags t;
   t.groups = m.group_names().size();
-  t.regions = region_names(m);
+  t.regions = m.region_names();
+  // Physical names must be unique too, ignoring case (PyFR: "Duplicate physical name"): a region
+  // named like a boundary group (the "farfield" region beside the "farfield" surface) is renamed.
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  for (std::string& r : t.regions)
+    for (const std::string& g : m.group_names())
+      if (lower(r) == lower(g)) r += "_volume";
   std::vector<char> used(t.regions.size(), 0);
-  for (std::size_t e = 0; e < m.elements().size(); ++e) used[element_region(m, e)] = 1;
+  for (std::size_t e = 0; e < m.elements().size(); ++e) used[m.elements()[e].region] = 1;
   t.volume_tag.assign(t.regions.size(), 0);
   for (std::size_t r = 0; r < t.regions.size(); ++r)
     if (used[r]) t.volume_tag[r] = ++t.num_volumes;
@@ -160,7 +169,7 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary) {
     for (ho::Shape s : kVolumeShapes) {
       std::size_t count = 0;
       for (std::size_t e = 0; e < m.elements().size(); ++e)
-        count += m.elements()[e].shape == s && element_region(m, e) == static_cast<int>(r);
+        count += m.elements()[e].shape == s && m.elements()[e].region == r;
       if (count) blocks.push_back({3, t.volume_tag[r], static_cast<int>(r), s, count});
     }
   for (std::size_t g = 0; g < num_groups; ++g)
@@ -183,7 +192,7 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary) {
     out.end_record();
     if (b.dim == 3) {
       for (std::size_t e = 0; e < m.elements().size(); ++e)
-        if (m.elements()[e].shape == b.shape && element_region(m, e) == b.region_or_group) {
+        if (m.elements()[e].shape == b.shape && int(m.elements()[e].region) == b.region_or_group) {
           m.element_nodes(e, ids);
           write_element(out, ++tag, ids);
         }
@@ -209,7 +218,7 @@ void write_v22(AtomicFile& out, const mesh::Mesh& m) {
   std::vector<mesh::NodeId> ids;
   for (std::size_t e = 0; e < m.elements().size(); ++e) {
     m.element_nodes(e, ids);
-    const int region = element_region(m, e);
+    const int region = int(m.elements()[e].region);
     out.print("{} {} 2 {} {}", ++tag, gmsh_element_type(m.elements()[e].shape, m.order()), t.volume_physical(region),
               t.volume_tag[region]);
     for (mesh::NodeId n : ids) out.print(" {}", n + 1);

@@ -1,5 +1,4 @@
 #include "nektar_numbering.hpp"
-#include "regions.hpp"
 #include "zlib_stream.hpp"
 
 #include "semimesh/io/atomic_file.hpp"
@@ -323,8 +322,8 @@ struct ElementComposite {
 std::vector<ElementComposite> element_composites(const mesh::Mesh& m) {
   std::map<std::pair<int, char>, std::vector<std::size_t>> groups;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
-    groups[{element_region(m, e), nektar_tag(m.elements()[e].shape)}].push_back(e);
-  const auto names = region_names(m);
+    groups[{int(m.elements()[e].region), nektar_tag(m.elements()[e].shape)}].push_back(e);
+  const auto names = m.region_names();
   std::vector<ElementComposite> out;
   for (auto& [key, ids] : groups) out.push_back({names[key.first], key.second, std::move(ids)});
   return out;

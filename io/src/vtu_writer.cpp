@@ -1,4 +1,3 @@
-#include "regions.hpp"
 #include "zlib_stream.hpp"
 
 #include "semimesh/io/atomic_file.hpp"
@@ -95,7 +94,7 @@ struct Arrays {
     for (const auto& bf : m.boundary_faces()) emit(bf.group);
   }
   void regions(const std::function<void(std::int32_t)>& emit) const {
-    for (std::size_t e = 0; e < m.elements().size(); ++e) emit(element_region(m, e));
+    for (std::size_t e = 0; e < m.elements().size(); ++e) emit(int(m.elements()[e].region));
     for (std::size_t b = 0; b < m.boundary_faces().size(); ++b) emit(-1);
   }
 };
@@ -111,7 +110,7 @@ void header(AtomicFile& out, const mesh::Mesh& m, bool compressed) {
 
 std::string region_legend(const mesh::Mesh& m) {
   std::string s;
-  const auto names = region_names(m);
+  const auto names = m.region_names();
   for (std::size_t r = 0; r < names.size(); ++r) s += (r ? " " : "") + std::to_string(r) + "=" + names[r];
   for (std::size_t k; (k = s.find("--")) != std::string::npos;) s[k] = '_';  // "--" would end the comment
   return s;

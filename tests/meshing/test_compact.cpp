@@ -28,7 +28,8 @@ Mesh mesh_with_orphans() {
   m.add_element(Shape::Tetrahedron, {id[0], id[1], id[2], id[3], m01, m12, m20, m30, m32, m31});
   const NodeId m41 = mid(4, 1), m42 = mid(4, 2), m43 = mid(4, 3);
   // Tet (1, 2, 3, 4): edges 1-2, 2-3, 3-1, 4-1, 4-3, 4-2.
-  m.add_element(Shape::Tetrahedron, {id[1], id[2], id[3], id[4], m12, m32, m31, m41, m43, m42});
+  m.add_element(Shape::Tetrahedron, {id[1], id[2], id[3], id[4], m12, m32, m31, m41, m43, m42},
+                m.region_index("farfield"));
   m.add_boundary_face("wall", Shape::Triangle, {id[0], id[2], id[1], m20, m12, m01});
   m.add_node(Eigen::Vector3d(7, 7, 7), CadAttachment{CadAttachment::Curve, 1, 0.5, 0});  // orphan at the end
   return m;
@@ -54,6 +55,10 @@ TEST(Compact, DropsExactlyTheOrphansAndKeepsElementsFacesAndCad) {
   EXPECT_EQ(element_points(out), element_points(source));
   ASSERT_EQ(out.boundary_faces().size(), 1u);
   EXPECT_EQ(out.group_names(), source.group_names());
+  EXPECT_EQ(out.region_names(), source.region_names());
+  ASSERT_EQ(out.elements().size(), 2u);
+  EXPECT_EQ(out.elements()[0].region, 0);
+  EXPECT_EQ(out.elements()[1].region, source.elements()[1].region);
   std::vector<double> face_in, face_out;
   for (NodeId id : source.boundary_face_nodes(0)) face_in.insert(face_in.end(), source.node(id).data(), source.node(id).data() + 3);
   for (NodeId id : out.boundary_face_nodes(0)) face_out.insert(face_out.end(), out.node(id).data(), out.node(id).data() + 3);

@@ -32,12 +32,13 @@ Mesh without_unreferenced_nodes(const Mesh& m) {
   for (NodeId id = 0; id < m.num_nodes(); ++id)
     if (used[id]) new_id[id] = out.add_node(m.node(id), m.cad_attachment(id));
   for (const std::string& g : m.group_names()) out.group_index(g);
+  out.copy_regions_from(m);
   if (!m.elements().empty()) out.reserve(m.elements().front().shape, m.elements().size());
   std::vector<NodeId> ids;
   for (std::size_t e = 0; e < m.elements().size(); ++e) {
     m.element_nodes(e, ids);
     for (NodeId& id : ids) id = new_id[id];
-    out.add_element(m.elements()[e].shape, ids);
+    out.add_element(m.elements()[e].shape, ids, m.elements()[e].region);
   }
   for (std::size_t b = 0; b < m.boundary_faces().size(); ++b) {
     ids = m.boundary_face_nodes(b);

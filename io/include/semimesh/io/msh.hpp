@@ -2,7 +2,8 @@
 //
 // Written: $MeshFormat, $PhysicalNames (one dim-2 group per boundary group, tags 1..G in the
 // mesh's group order, then one dim-3 group per volume region that has elements, tags G+1.. in
-// region order: physical tags are unique across dimensions, as PyFR requires), $Entities (4.1:
+// region order: physical tags are unique across dimensions, as PyFR requires, and so are names
+// ignoring case: a region named like a boundary group is written NAME_volume), $Entities (4.1:
 // one surface per boundary group, one volume per region), $Nodes (every mesh node, tag = NodeId + 1,
 // equispaced positions), $Elements (volume elements by region and shape, then boundary faces by
 // group and shape, in mesh order inside each block; element tags from 1).

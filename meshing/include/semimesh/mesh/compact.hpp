@@ -10,7 +10,7 @@ namespace semimesh::mesh {
 std::size_t count_unreferenced_nodes(const Mesh& mesh);
 
 /// A mesh with the same elements (same order, same shapes, same canonical node lists up to the
-/// renumbering), boundary faces and groups, whose nodes are only the referenced ones, kept in their
+/// renumbering), boundary faces, groups and regions, whose nodes are only the referenced ones, kept in their
 /// old relative order with their CAD attachments. Edge and face entities are rebuilt in element order.
 Mesh without_unreferenced_nodes(const Mesh& mesh);
 
