@@ -14,6 +14,7 @@ namespace semimesh::io {
 namespace {
 
 constexpr std::size_t kBlockBytes = 1 << 16;
+constexpr std::size_t kBatchBlocks = 64;  // compressed together, in parallel
 
 /// One data array in VTK's compressed layout (vtkZLibDataCompressor, header_type UInt64): the
 /// number of blocks, the block size, the size of a partial last block (0 if it is full), each
@@ -23,10 +24,14 @@ class CompressedArray {
   void add(const void* data, std::size_t bytes) {
     const char* c = static_cast<const char*>(data);
     while (bytes) {
-      const std::size_t take = std::min(bytes, kBlockBytes - block_.size());
-      block_.append(c, take);
+      if (batch_.empty() || batch_.back().size() == kBlockBytes) {
+        if (batch_.size() == kBatchBlocks) flush();
+        batch_.emplace_back();
+        batch_.back().reserve(kBlockBytes);
+      }
+      const std::size_t take = std::min(bytes, kBlockBytes - batch_.back().size());
+      batch_.back().append(c, take);
       c += take, bytes -= take, total_ += take;
-      if (block_.size() == kBlockBytes) flush();
     }
   }
   template <typename T>
@@ -34,7 +39,7 @@ class CompressedArray {
     add(&v, sizeof v);
   }
   std::string finish() {
-    if (!block_.empty()) flush();
+    flush();
     std::string out;
     auto put = [&](std::uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
     put(sizes_.size());
@@ -46,12 +51,14 @@ class CompressedArray {
 
  private:
   void flush() {
-    const std::string z = zlib_compress(block_.data(), block_.size());
-    sizes_.push_back(z.size());
-    data_ += z;
-    block_.clear();
+    for (const std::string& z : zlib_compress_blocks(batch_)) {
+      sizes_.push_back(z.size());
+      data_ += z;
+    }
+    batch_.clear();
   }
-  std::string block_, data_;
+  std::vector<std::string> batch_;
+  std::string data_;
   std::vector<std::uint64_t> sizes_;
   std::size_t total_ = 0;
 };
