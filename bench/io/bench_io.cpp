@@ -4,17 +4,19 @@
 // Prints MB, seconds and MB/s per format, the ASCII trio (msh41 + vtu-ascii + nektar-xml) against
 // the compact trio (msh41-binary + vtu + nektar), and the peak memory.
 // usage: bench_io [nx ny nz] [output-directory (default /tmp)]
-//        bench_io --msh FILE.msh [output-directory]
+//        bench_io --msh FILE.msh [output-directory [format...]]   (default: every format)
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <string>
+#include <vector>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -68,7 +70,9 @@ int main(int argc, char** argv) {
   int nx = 50, ny = 50, nz = 20;
   if (!from_file && argc >= 4) nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);
   std::string dir = "/tmp";
-  if (from_file && argc == 4) dir = argv[3];
+  if (from_file && argc >= 4) dir = argv[3];
+  std::vector<std::string> only;
+  for (int i = 4; from_file && i < argc; ++i) only.push_back(argv[i]);
   if (!from_file && (argc == 5 || argc == 2)) dir = argv[argc - 1];
 
   const auto t0 = Clock::now();
@@ -90,6 +94,7 @@ int main(int argc, char** argv) {
   };
   double ascii_mb = 0, ascii_s = 0, compact_mb = 0, compact_s = 0;
   for (const auto& [name, write] : writers) {
+    if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     const std::string path = dir + "/bench_io_" + std::to_string(::getpid()) + "." + name;
     const auto t = Clock::now();
     try {
@@ -108,9 +113,9 @@ int main(int argc, char** argv) {
     if (n == "msh41-binary" || n == "vtu" || n == "nektar") compact_mb += mb, compact_s += s;
     std::remove(path.c_str());
   }
-  std::printf("ASCII   (msh41 + vtu-ascii + nektar-xml):  %9.1f MB in %6.2f s\n", ascii_mb, ascii_s);
-  std::printf("compact (msh41-binary + vtu + nektar):     %9.1f MB in %6.2f s (%.2f of the bytes)\n", compact_mb,
-              compact_s, compact_mb / ascii_mb);
+  if (ascii_mb > 0) std::printf("ASCII   (msh41 + vtu-ascii + nektar-xml):  %9.1f MB in %6.2f s\n", ascii_mb, ascii_s);
+  if (compact_mb > 0) std::printf("compact (msh41-binary + vtu + nektar):     %9.1f MB in %6.2f s\n", compact_mb, compact_s);
+  if (ascii_mb > 0 && compact_mb > 0) std::printf("compact / ASCII bytes: %.3f\n", compact_mb / ascii_mb);
   std::printf("peak memory: %.0f MB after %s the mesh, %.0f MB after writing\n", memory_before,
               from_file ? "reading" : "building", peak_memory_mb());
   return 0;

@@ -37,17 +37,21 @@ std::vector<std::uint32_t> apex_heights(const mesh::Mesh& m) {
   std::vector<std::size_t> pyramids;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
     if (m.elements()[e].shape == ho::Shape::Pyramid) pyramids.push_back(e);
+  auto raise = [&](std::size_t e) {  // true if the apex had to move up
+    const auto& v = m.elements()[e].vertices;
+    const std::uint32_t need = 1 + std::max({h[v[0]], h[v[1]], h[v[2]], h[v[3]]});
+    return h[v[4]] < need ? (h[v[4]] = need, true) : false;
+  };
   for (std::size_t pass = 0; pass <= pyramids.size(); ++pass) {
     bool changed = false;
-    for (std::size_t e : pyramids) {
-      const auto& v = m.elements()[e].vertices;
-      const std::uint32_t need = 1 + std::max({h[v[0]], h[v[1]], h[v[2]], h[v[3]]});
-      if (h[v[4]] < need) h[v[4]] = need, changed = true;
-    }
+    for (std::size_t e : pyramids) changed = raise(e) || changed;
     if (!changed) return h;
   }
-  throw std::runtime_error("Nektar++ XML: pyramid apexes form a cycle (an apex is a base vertex of a pyramid "
-                           "whose apex is below it): no vertex numbering collapses every pyramid at its apex");
+  for (std::size_t e : pyramids)
+    if (raise(e))
+      throw element_error(e, "the pyramid's apex is a base vertex of a pyramid whose apex is below it (e.g. two "
+                             "pyramids sharing a triangle): no vertex numbering collapses both at their apexes");
+  return h;
 }
 
 double triple(const mesh::Mesh& m, const std::array<mesh::NodeId, 8>& v, int o, int a, int b, int c) {

@@ -124,12 +124,12 @@ struct Geometry {
     const auto& nek_faces = nektar_faces(el.shape);
     std::array<std::int64_t, 6> out{};
     for (std::size_t k = 0; k < nek_faces.size(); ++k) {
-      std::array<mesh::NodeId, 4> want{kNoNodeId(), kNoNodeId(), kNoNodeId(), kNoNodeId()};
+      std::array<mesh::NodeId, 4> want{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};
       for (std::size_t i = 0; i < nek_faces[k].size(); ++i) want[i] = v[nek_faces[k][i]];
       std::sort(want.begin(), want.end());
       out[k] = -1;
       for (std::size_t g = 0; g < gmsh_faces.size() && out[k] < 0; ++g) {
-        std::array<mesh::NodeId, 4> have{kNoNodeId(), kNoNodeId(), kNoNodeId(), kNoNodeId()};
+        std::array<mesh::NodeId, 4> have{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};
         for (std::size_t i = 0; i < gmsh_faces[g].size(); ++i) have[i] = el.vertices[gmsh_faces[g][i]];
         std::sort(have.begin(), have.end());
         if (have == want) out[k] = el.faces[g];
@@ -138,7 +138,6 @@ struct Geometry {
     }
     return out;
   }
-  static mesh::NodeId kNoNodeId() { return mesh::kNoNode; }
 
   /// Curved nodes of a face, in the order written.
   template <typename Emit>
@@ -210,8 +209,8 @@ void write_plain(AtomicFile& out, const Geometry& g) {
 /// <TAG attributes COMPRESSED...>base64(zlib(records))</TAG>
 template <typename Fill>
 void compressed_block(AtomicFile& out, const std::string& indent, const std::string& tag, Fill fill,
-                      bool attributes = true) {
-  ZlibStream z;
+                      bool attributes = true, Content content = Content::Integers) {
+  ZlibStream z(content);
   fill(z);
   out.print("{}<{}{}{}>", indent, tag, attributes ? " " : "", attributes ? kCompressed : "");
   write_base64(out, z.finish());
@@ -229,7 +228,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   out.print("    ");
   compressed_block(out, "", "VERTEX", [&](ZlibStream& z) {
     for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) put_point(z, I(i), m.node(g.numbering.vertex_node[i]));
-  });
+  }, true, Content::Doubles);
   out.print("    ");
   compressed_block(out, "", "EDGE", [&](ZlibStream& z) {
     for (std::size_t e = 0; e < m.edges().size(); ++e) {
@@ -308,7 +307,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
     for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), m.node(point_node[k]));
-  }, false);
+  }, false, Content::Doubles);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
 }
 

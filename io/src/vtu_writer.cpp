@@ -21,6 +21,7 @@ constexpr std::size_t kBatchBlocks = 64;  // compressed together, in parallel
 /// block's compressed size, then the blocks, each its own zlib stream.
 class CompressedArray {
  public:
+  explicit CompressedArray(Content content = Content::Integers) : content_(content) {}
   void add(const void* data, std::size_t bytes) {
     const char* c = static_cast<const char*>(data);
     while (bytes) {
@@ -51,12 +52,13 @@ class CompressedArray {
 
  private:
   void flush() {
-    for (const std::string& z : zlib_compress_blocks(batch_)) {
+    for (const std::string& z : zlib_compress_blocks(batch_, content_)) {
       sizes_.push_back(z.size());
       data_ += z;
     }
     batch_.clear();
   }
+  Content content_;
   std::vector<std::string> batch_;
   std::string data_;
   std::vector<std::uint64_t> sizes_;
@@ -148,7 +150,7 @@ void write_ascii(AtomicFile& out, const Arrays& a) {
 void write_compressed(AtomicFile& out, const Arrays& a) {
   std::vector<std::string> data(6);
   {
-    CompressedArray c;
+    CompressedArray c(Content::Doubles);
     a.points([&](double v) { c.add_value(v); });
     data[0] = c.finish();
   }

@@ -18,10 +18,12 @@ std::runtime_error zlib_error(const char* what, int code) {
 
 std::size_t num_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+int strategy(Content content) { return content == Content::Doubles ? Z_RLE : Z_DEFAULT_STRATEGY; }
+
 /// Raw deflate of one chunk, ended by a sync flush (more chunks follow) or the final block.
-std::string deflate_chunk(const std::string& in, bool last) {
+std::string deflate_chunk(const std::string& in, bool last, Content content) {
   z_stream z{};
-  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY);
+  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, -15, 8, strategy(content));
   if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
   std::string out(deflateBound(&z, in.size()) + 16, '\0');
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
@@ -36,13 +38,20 @@ std::string deflate_chunk(const std::string& in, bool last) {
   return out;
 }
 
-std::string compress_block(const std::string& in) {
-  uLongf size = compressBound(in.size());
-  std::string out(size, '\0');
-  const int rc = compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(in.data()),
-                           in.size(), Z_BEST_SPEED);
-  if (rc != Z_OK) throw zlib_error("compress2", rc);
-  out.resize(size);
+/// One whole zlib stream.
+std::string compress_block(const std::string& in, Content content) {
+  z_stream z{};
+  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15, 8, strategy(content));
+  if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
+  std::string out(deflateBound(&z, in.size()), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  rc = deflate(&z, Z_FINISH);
+  out.resize(out.size() - z.avail_out);
+  deflateEnd(&z);
+  if (rc != Z_STREAM_END) throw zlib_error("deflate", rc);
   return out;
 }
 
@@ -80,7 +89,7 @@ void ZlibStream::add(const void* data, std::size_t bytes) {
 
 void ZlibStream::deflate_pending(bool last) {
   const auto parts = parallel_map(pending_.size(), [&](std::size_t i) {
-    return deflate_chunk(pending_[i], last && i + 1 == pending_.size());
+    return deflate_chunk(pending_[i], last && i + 1 == pending_.size(), content_);
   });
   for (std::size_t i = 0; i < parts.size(); ++i) {
     body_ += parts[i];
@@ -102,8 +111,8 @@ const std::string& ZlibStream::finish() {
   return out_;
 }
 
-std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks) {
-  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i]); });
+std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
+  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
 }
 
 void write_base64(AtomicFile& out, const std::string& bytes) {

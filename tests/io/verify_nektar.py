@@ -4,8 +4,9 @@ For each sample element (orders 1..9): VERTEX/EDGE/FACE/ELEMENT ids are consiste
 edges form a closed loop; each element's faces have the types of Nektar's local faces (e.g. a
 prism is Q T Q T Q) and a right-handed numbering of its vertices exists that gives exactly
 Nektar's local faces (TetGeom/PyrGeom/PrismGeom/HexGeom face-vertex tables); every CURVED point
-lies on the known map at the reference point that Nektar's point order implies (edges v0->v1;
-triangles: vertices, edges, interior row by row = NodalTriEvenlySpaced; quads: tensor order);
+lies on the known map at the reference point that Nektar's point order implies (edges v0->v1,
+PolyEvenlySpaced; triangles NodalTriEvenlySpaced: vertices, edges, interior row by row; quads
+PolyEvenlySpaced, tensor order); Nektar++'s own load rules are checked by verify_nektar_rules.py;
 composites and domain are present.
 
 usage: verify_nektar.py IO_WRITE_SAMPLES IO_CHECK
