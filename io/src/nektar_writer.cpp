@@ -100,10 +100,53 @@ struct Geometry {
   NektarNumbering numbering;
   std::array<std::vector<int>, 3> tri_point_order;
   std::vector<int> quad_point_order;
+  // Only curved entities get a CURVED entry (as NekMesh writes): a straight one is the same
+  // geometry without it, and the straight-sided far field is most of a mesh.
+  std::vector<char> edge_curved, face_curved;
 
   explicit Geometry(const mesh::Mesh& mesh) : m(mesh), numbering(number_for_nektar(mesh)) {
-    if (m.order() >= 2) tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
+    if (m.order() < 2) return;
+    tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
+    edge_curved.resize(m.edges().size());
+    for (std::size_t e = 0; e < m.edges().size(); ++e) edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    face_curved.resize(m.faces().size());
+    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+      const bool tri = num_face_vertices(f) == 3;
+      face_curved[f] = m.order() >= (tri ? 3 : 2) &&
+                       !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
+    }
   }
+
+  /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
+  bool on_linear_map(ho::Shape shape, const std::vector<mesh::NodeId>& ids) const {
+    const Eigen::MatrixX3d& ref = reference(shape);
+    const int nv = shape == ho::Shape::Segment ? 2 : ho::num_vertices(shape);
+    Eigen::Vector3d x[4];
+    for (int k = 0; k < nv; ++k) x[k] = m.node(shape == ho::Shape::Segment ? ids[k ? ids.size() - 1 : 0] : ids[k]);
+    const double tolerance = 1e-12 * std::max(1.0, (x[1] - x[0]).cwiseAbs().maxCoeff() + (x[nv - 1] - x[0]).cwiseAbs().maxCoeff());
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      Eigen::Vector3d want;
+      if (shape == ho::Shape::Segment) {
+        const double t = double(i) / (ids.size() - 1);
+        want = (1 - t) * x[0] + t * x[1];
+      } else if (shape == ho::Shape::Triangle) {
+        want = (1 - ref(i, 0) - ref(i, 1)) * x[0] + ref(i, 0) * x[1] + ref(i, 1) * x[2];
+      } else {
+        const double s = (ref(i, 0) + 1) / 2, t = (ref(i, 1) + 1) / 2;
+        want = (1 - s) * (1 - t) * x[0] + s * (1 - t) * x[1] + s * t * x[2] + (1 - s) * t * x[3];
+      }
+      if ((m.node(ids[i]) - want).cwiseAbs().maxCoeff() > tolerance) return false;
+    }
+    return true;
+  }
+  const Eigen::MatrixX3d& reference(ho::Shape shape) const {
+    static const Eigen::MatrixX3d none;
+    if (shape == ho::Shape::Segment) return none;
+    auto& r = shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
+    if (r.rows() == 0) r = ho::reference_nodes(shape, m.order(), ho::NodeSet::Equispaced);
+    return r;
+  }
+  mutable Eigen::MatrixX3d tri_reference_, quad_reference_;
 
   int num_face_vertices(std::size_t f) const { return m.faces()[f].num_vertices; }
 
@@ -152,7 +195,11 @@ struct Geometry {
       for (int k : quad_point_order) emit(ids[k]);
     }
   }
-  bool face_is_curved(std::size_t f) const { return m.order() >= (num_face_vertices(f) == 3 ? 3 : 2); }
+  bool face_is_curved(std::size_t f) const { return m.order() >= 2 && face_curved[f]; }
+  bool edge_is_curved(std::size_t e) const { return m.order() >= 2 && edge_curved[e]; }
+  bool any_curved() const {
+    return std::count(edge_curved.begin(), edge_curved.end(), 1) + std::count(face_curved.begin(), face_curved.end(), 1);
+  }
 };
 
 void write_plain(AtomicFile& out, const Geometry& g) {
@@ -185,11 +232,12 @@ void write_plain(AtomicFile& out, const Geometry& g) {
     out.print(" </{}>\n", tag);
   }
   out.print("    </ELEMENT>\n");
-  if (m.order() < 2) return;
+  if (!g.any_curved()) return;
   out.print("    <CURVED>\n");
   std::size_t curve = 0;
   auto point = [&](const Eigen::Vector3d& x) { out.print(" {} {} {}", x[0], x[1], x[2]); };
   for (std::size_t e = 0; e < m.edges().size(); ++e) {
+    if (!g.edge_is_curved(e)) continue;
     out.print("      <E ID=\"{}\" EDGEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"PolyEvenlySpaced\">", curve++, e, m.order() + 1);
     for (mesh::NodeId id : m.edge_nodes(e)) point(m.node(id));
     out.print(" </E>\n");
@@ -266,7 +314,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
     });
   }
   out.print("    </ELEMENT>\n");
-  if (m.order() < 2) return;
+  if (!g.any_curved()) return;
 
   // CURVED: MeshCurvedInfo records {id, entityid, npoints, ptid, ptoffset, ptype} for edges and
   // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
@@ -281,8 +329,10 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   I total = 0;
   out.print("    <CURVED {}>\n", kCompressed);
   compressed_block(out, "      ", "E", [&](ZlibStream& z) {
+    I id = 0;
     for (std::size_t e = 0; e < m.edges().size(); ++e) {
-      const I rec[6] = {I(e), I(e), p + 1, 0, total, kPolyEvenlySpaced};
+      if (!g.edge_is_curved(e)) continue;
+      const I rec[6] = {id++, I(e), p + 1, 0, total, kPolyEvenlySpaced};
       z.add(rec, sizeof rec);
       total += p + 1;
     }
@@ -301,7 +351,8 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   out.print("      <DATAPOINTS ID=\"0\">\n");
   compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
     for (std::size_t e = 0; e < m.edges().size(); ++e)
-      for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
+      if (g.edge_is_curved(e))
+        for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
     for (std::size_t f = 0; f < m.faces().size(); ++f)
       if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
   }, false);

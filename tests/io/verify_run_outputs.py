@@ -2,7 +2,8 @@
 
 Runs the CLI on a config at one order, then:
   - Nektar++ (compressed, and plain when asked): nektar_rules.py finds no violation of Nektar++'s
-    load-time rules, and both encodings hold the same mesh;
+    load-time rules, and both encodings hold the same mesh; only the curved edges (the wing's,
+    not the straight far field's) have a CURVED entry;
   - MSH: gmsh reads the binary file with the same nodes, elements and physical groups as the ASCII
     one; every node gmsh reads is used by an element (no orphan nodes); the ASCII file meets PyFR's
     reader rules (pyfr_rules.py) up to order 4, and a copy with the old per-dimension physical tags
@@ -74,8 +75,12 @@ def main():
     path = lambda name: os.path.join(a.workdir, name)
     f = Failures()
 
-    bad = nektar_rules.check(nektar_rules.read(path("coarse.xml")))
+    nek = nektar_rules.read(path("coarse.xml"))
+    bad = nektar_rules.check(nek)
     f.check(not bad, f"coarse.xml breaks Nektar++'s rules: {bad[:5]} ({len(bad)} in all)")
+    curved = sum(1 for kind, _ in nek.curves if kind == "E")
+    f.check(0 < curved < len(nek.edges), f"{curved} of {len(nek.edges)} edges curved: the straight far field "
+                                         "needs no CURVED entry, the wing does")
     if a.all_formats:
         f.check(nektar_rules.read(path("coarse.xml")).same_as(nektar_rules.read(path("coarse.plain.xml"))),
                 "compressed and plain Nektar++ files differ")

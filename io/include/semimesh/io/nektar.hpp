@@ -4,7 +4,9 @@
 //  - VERTEX: element vertices, ids ranked so that the rules can hold; EDGE "v0 v1" in the edge's own
 //    direction; FACE T/Q as edge lists (a triangle rotated so its highest vertex id is third);
 //    ELEMENT A/P/R/H as face lists in Nektar's local face order (TetGeom/PyrGeom/PrismGeom/HexGeom).
-//  - CURVED (P >= 2): every edge, P+1 PolyEvenlySpaced points from its first vertex to its second;
+//  - CURVED (P >= 2), only for edges and faces whose nodes are off the straight-sided (affine /
+//    bilinear) map, as NekMesh writes: an edge, P+1 PolyEvenlySpaced points from its first vertex
+//    to its second;
 //    triangles (P >= 3) NodalTriEvenlySpaced, (P+1)(P+2)/2 points: the face's vertices, the points
 //    inside its edges 0-1, 1-2, 2-0, then the interior row by row (along 0->1 fastest, rows towards
 //    vertex 2), the order NekMesh writes since Nektar++ MR !576; quadrilaterals PolyEvenlySpaced,
