@@ -1,6 +1,6 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
-#include "mesh_validity/parallel_for.hpp"
+#include "parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "semimesh/ho/basis.hpp"
 

@@ -17,6 +17,19 @@
 #include <unordered_map>
 
 namespace semimesh::farfield {
+
+const params::Table<FarFieldParams>& far_field_keys() {
+  static const params::Table<FarFieldParams> table = {
+      params::real("box_size", &FarFieldParams::box_size, "> 0", "edge length on the box faces, model units"),
+      params::real("wall_size", &FarFieldParams::wall_size, "> 0", "edge length on the wall far from the body"),
+      params::real("growth", &FarFieldParams::growth, ">= 1", "size gradation from the skin outwards"),
+      params::real("radius_edge_ratio", &FarFieldParams::radius_edge_ratio, ">= 1",
+                   "TetGen quality bound (-q); 1.5 to 2 is usual"),
+      params::real("max_volume", &FarFieldParams::max_volume, ">= 0", "TetGen volume bound (-a); 0: none"),
+  };
+  return table;
+}
+
 namespace {
 
 using mesh::CadAttachment;
@@ -28,11 +41,7 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw FarFieldError("far field: " + what);
   };
-  require(p.box_size > 0, "box_size must be > 0, got " + std::to_string(p.box_size));
-  require(p.wall_size > 0, "wall_size must be > 0, got " + std::to_string(p.wall_size));
-  require(p.growth >= 1, "growth must be >= 1, got " + std::to_string(p.growth));
-  require(p.radius_edge_ratio >= 1, "radius_edge_ratio must be >= 1, got " + std::to_string(p.radius_edge_ratio));
-  require(p.max_volume >= 0, "max_volume must be >= 0 (0: no bound), got " + std::to_string(p.max_volume));
+  if (const auto bad = params::violation(p, far_field_keys(), "farfield")) require(false, *bad);
   require(nf.mesh.order() == 1, "the near-field mesh must be linear (order 1) when the far field is built, it has order " +
                                     std::to_string(nf.mesh.order()));
   require(nf.footprint.size() >= 3, "the near field's footprint has " + std::to_string(nf.footprint.size()) +

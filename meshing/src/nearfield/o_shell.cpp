@@ -22,12 +22,7 @@ enum Reason : unsigned { kFold = 1, kProximity = 2 };
 
 void check_params(const cad::Model& model, const BodyRoles& roles, const ShellParams& p) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
-  if (!(p.thickness > 0.0) || !std::isfinite(p.thickness)) fail("'thickness' must be a finite number > 0");
-  if (p.normal_smoothing_passes < 0) fail("'normal_smoothing_passes' must be >= 0");
-  if (!(p.min_thickness_fraction > 0.0 && p.min_thickness_fraction <= 1.0))
-    fail("'min_thickness_fraction' must be in (0, 1]");
-  if (!(p.reduction_factor > 0.0 && p.reduction_factor < 1.0)) fail("'reduction_factor' must be in (0, 1)");
-  if (!(p.gradation > 0.0)) fail("'gradation' must be > 0");
+  if (const auto bad = params::violation(p, shell_keys(), "nearfield")) fail(*bad);
   if (roles.body_surfaces.empty()) fail("no body surfaces given");
   if (roles.wall_surface >= model.num_surfaces())
     fail("wall surface id " + std::to_string(roles.wall_surface) + " is not a surface of the model");
@@ -133,6 +128,21 @@ std::vector<mesh::NodeId> footprint_loop(const BodyMesh& body, const std::vector
 }
 
 }  // namespace
+
+const params::Table<ShellParams>& shell_keys() {
+  static const params::Table<ShellParams> table = {
+      params::real("thickness", &ShellParams::thickness, "> 0", "shell thickness δ, model units"),
+      params::integer("smoothing_passes", &ShellParams::normal_smoothing_passes, ">= 0",
+                      "Laplacian smoothing passes of the node normals over the body mesh"),
+      params::real("min_thickness_fraction", &ShellParams::min_thickness_fraction, "(0, 1]",
+                   "local thickness reduction below this fraction of δ is an error"),
+      params::real("reduction_factor", &ShellParams::reduction_factor, "(0, 1)",
+                   "thickness multiplier per reduction round"),
+      params::real("gradation", &ShellParams::gradation, "> 0",
+                   "after a reduction, |δx − δy| <= gradation |x − y| between nodes x, y"),
+  };
+  return table;
+}
 
 NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params) {

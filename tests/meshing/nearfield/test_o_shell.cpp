@@ -295,7 +295,7 @@ TEST(OShell, BadInputsNameTheProblem) {
   };
   ShellParams bad_thickness;
   bad_thickness.thickness = -1.0;
-  EXPECT_NE(message_of(c.roles, bad_thickness).find("'thickness'"), std::string::npos);
+  EXPECT_NE(message_of(c.roles, bad_thickness).find("nearfield.thickness = -1: expected > 0"), std::string::npos);
   BodyRoles no_wall = c.roles;
   no_wall.wall_surface = -1;
   EXPECT_NE(message_of(no_wall, {}).find("no wall surface"), std::string::npos);

@@ -6,26 +6,33 @@
 // semimesh_farfield, so that the rest of semimesh does not.
 #pragma once
 
+#include "semimesh/error.hpp"
+
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/near_field.hpp"
+#include "semimesh/params/table.hpp"
 
 #include <stdexcept>
 #include <vector>
 
 namespace semimesh::farfield {
 
-class FarFieldError : public std::runtime_error {
+class FarFieldError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
+/// Keys, ranges and meanings: far_field_keys() (the config's [farfield] section).
 struct FarFieldParams {
-  double box_size = 1.0;           ///< target edge length on the box faces (model units), > 0
-  double wall_size = 0.5;          ///< target edge length on the far-field part of the wall, far from the body, > 0
-  double growth = 1.2;             ///< size gradation from the skin outwards, >= 1
-  double radius_edge_ratio = 1.5;  ///< TetGen quality bound (-q), >= 1.0 (TetGen's own lower limit)
-  double max_volume = 0.0;         ///< TetGen volume bound (-a); 0: none
+  double box_size = 2.0;
+  double wall_size = 1.0;
+  double growth = 1.2;
+  double radius_edge_ratio = 1.5;
+  double max_volume = 0.0;
 };
+
+/// One row per key of FarFieldParams (semimesh/params/table.hpp).
+const params::Table<FarFieldParams>& far_field_keys();
 
 struct FarFieldStats {
   int tets = 0;

@@ -25,7 +25,7 @@ import sys
 import gmsh
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "io"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
 from verify_msh import PYFR_PRI, pyfr_prism_reference  # noqa: E402
 
 # Gmsh element types of prisms of order 3..6 (gmsh.model.mesh.getElementType("Prism", P)).

@@ -326,7 +326,7 @@ TEST(Validity, InvertedElementIsCountedAndLocated) {
     m.add_node(p);
   m.add_element(ho::Shape::Tetrahedron, {0, 1, 2, 3});
   m.add_element(ho::Shape::Tetrahedron, {0, 1, 2, 4});  // negative orientation
-  const ValidityResult bad = check_validity(m, 2);
+  const ValidityResult bad = check_validity(m);
   EXPECT_EQ(bad.invalid, 1u);
   ASSERT_EQ(bad.worst.size(), 1u);
   EXPECT_EQ(bad.worst[0].element, 1u);

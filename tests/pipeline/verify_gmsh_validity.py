@@ -9,7 +9,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
-sys.path.insert(0, os.path.join(here, "..", "..", "io"))
+sys.path.insert(0, os.path.join(here, "..", "io"))
 from gmsh_validity import certified_ratios  # noqa: E402
 from sample_map import Failures, write_samples  # noqa: E402
 

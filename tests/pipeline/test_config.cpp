@@ -31,12 +31,12 @@ TEST(Config, DefaultsAreThePapersCase) {
   EXPECT_EQ(c.geometry.wall, "wall");
   EXPECT_EQ(c.geometry.farfield.size(), 5u);
   EXPECT_EQ(c.nearfield.topology, "O");
-  EXPECT_EQ(c.boundary_layer.layers, 5);
-  EXPECT_EQ(c.boundary_layer.ratio, 2.0);
+  EXPECT_EQ(c.boundary_layer.split.layers, 5);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
   EXPECT_FALSE(c.boundary_layer.first_cell_height.has_value());
   EXPECT_EQ(c.highorder.order, 4);
-  EXPECT_EQ(c.highorder.node_set, "gll");
-  EXPECT_EQ(c.highorder.node_placement, "parameter");
+  EXPECT_EQ(c.highorder.node_set, ho::NodeSet::GLL);
+  EXPECT_EQ(c.highorder.placement, ho::NodePlacement::Parameter);
   EXPECT_EQ(c.highorder.spring_iterations, 50);
   // Far field about ten chords from the wing.
   EXPECT_LE(c.geometry.naca.box[0], -9.0);
@@ -109,19 +109,19 @@ allow_invalid = true
   EXPECT_EQ(c.geometry.naca.sweep, 10.0);
   EXPECT_EQ(c.geometry.naca.te, "sharp");
   EXPECT_EQ(c.geometry.naca.box, (std::array<double, 6>{-5, -6, 0, 7, 8, 9}));
-  EXPECT_EQ(c.nearfield.thickness, 0.2);
-  EXPECT_EQ(c.nearfield.smoothing_passes, 3);
-  EXPECT_EQ(c.nearfield.min_thickness_fraction, 0.3);
-  EXPECT_EQ(c.nearfield.reduction_factor, 0.5);
-  EXPECT_EQ(c.nearfield.gradation, 0.25);
-  EXPECT_EQ(c.boundary_layer.layers, 7);
-  EXPECT_EQ(c.boundary_layer.ratio, 1.5);
-  EXPECT_EQ(c.sizing.max_size, 1.5);
-  EXPECT_EQ(c.sizing.min_size, 0.01);
-  EXPECT_EQ(c.sizing.curvature_segments, 6.0);
-  EXPECT_EQ(c.sizing.gradation, 1.3);
-  EXPECT_EQ(c.sizing.le_size, 0.03);
-  EXPECT_EQ(c.sizing.te_size, 0.02);
+  EXPECT_EQ(c.nearfield.shell.thickness, 0.2);
+  EXPECT_EQ(c.nearfield.shell.normal_smoothing_passes, 3);
+  EXPECT_EQ(c.nearfield.shell.min_thickness_fraction, 0.3);
+  EXPECT_EQ(c.nearfield.shell.reduction_factor, 0.5);
+  EXPECT_EQ(c.nearfield.shell.gradation, 0.25);
+  EXPECT_EQ(c.boundary_layer.split.layers, 7);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 1.5);
+  EXPECT_EQ(c.sizing.size.max_size, 1.5);
+  EXPECT_EQ(c.sizing.size.min_size, 0.01);
+  EXPECT_EQ(c.sizing.size.curvature_segments, 6.0);
+  EXPECT_EQ(c.sizing.size.gradation, 1.3);
+  EXPECT_EQ(c.sizing.size.le_size, 0.03);
+  EXPECT_EQ(c.sizing.size.te_size, 0.02);
   EXPECT_EQ(c.sizing.chordwise, 40);
   EXPECT_EQ(c.sizing.spanwise, 12);
   EXPECT_EQ(c.farfield.box_size, 3.0);
@@ -130,8 +130,8 @@ allow_invalid = true
   EXPECT_EQ(c.farfield.radius_edge_ratio, 1.8);
   EXPECT_EQ(c.farfield.max_volume, 2.5);
   EXPECT_EQ(c.highorder.order, 3);
-  EXPECT_EQ(c.highorder.node_set, "equispaced");
-  EXPECT_EQ(c.highorder.node_placement, "springs");
+  EXPECT_EQ(c.highorder.node_set, ho::NodeSet::Equispaced);
+  EXPECT_EQ(c.highorder.placement, ho::NodePlacement::Springs);
   EXPECT_EQ(c.highorder.spring_iterations, 20);
   EXPECT_EQ(c.output.formats, (std::vector<std::string>{"msh22", "nektar"}));
   EXPECT_EQ(c.output.directory, "out");
@@ -206,7 +206,7 @@ TEST(Config, SetOverridesTheFileAndIsNamedInErrors) {
   const Config c = parse_config("[boundary_layer]\nratio = 1.5\n", "case.toml", {},
                                 {"boundary_layer.ratio=1.25", "geometry.backend=occ", "geometry.naca.box=[-1,-1,0,2,1,1]",
                                  "output.formats=[\"vtu\"]", "highorder.order = 2"});
-  EXPECT_EQ(c.boundary_layer.ratio, 1.25);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 1.25);
   EXPECT_EQ(c.geometry.backend, "occ");  // a bare word is taken as a string
   EXPECT_EQ(c.geometry.naca.box, (std::array<double, 6>{-1, -1, 0, 2, 1, 1}));
   EXPECT_EQ(c.output.formats, (std::vector<std::string>{"vtu"}));
@@ -225,7 +225,7 @@ TEST(Config, FirstCellHeightGivesTheRatio) {
   ASSERT_TRUE(c.boundary_layer.first_cell_height.has_value());
   // With r = 2 the five layers are 1 + 2 + 4 + 8 + 16 = 31 first cells: h1 = thickness / 31.
   BoundaryLayerConfig layer;
-  layer.layers = 5;
+  layer.split.layers = 5;
   layer.first_cell_height = 0.1 / 31.0;
   EXPECT_NEAR(effective_layer_ratio(layer, 0.1), 2.0, 1e-10);
   layer.first_cell_height = 0.02;
@@ -250,9 +250,9 @@ TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
 TEST(Config, TheExampleParses) {
   const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing.toml");
   EXPECT_EQ(c.highorder.order, 4);
-  EXPECT_EQ(c.boundary_layer.layers, 5);
-  EXPECT_EQ(c.boundary_layer.ratio, 2.0);
-  EXPECT_NEAR(c.nearfield.thickness, 0.1, 0.05);
+  EXPECT_EQ(c.boundary_layer.split.layers, 5);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
+  EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "semimesh/pipeline/report.hpp"
 
+#include "semimesh/io/json.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -9,26 +11,8 @@
 namespace semimesh::pipeline {
 namespace {
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20)
-          out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        else
-          out += c;
-    }
-  }
-  return out + "\"";
-}
-
-// JSON has no infinity or NaN: such values become null.
-std::string json_number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : "null"; }
+using io::json_number;
+using io::json_string;
 
 template <typename Items, typename Format>
 std::string json_list(const Items& items, Format format) {

@@ -1,5 +1,5 @@
 // trimmed_area (cad-info's face areas) on faces whose area is known in closed form.
-#include "surface_area.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
 
 #include <gtest/gtest.h>
 
@@ -55,14 +55,14 @@ class SphereBand : public cad::Surface {
 TEST(TrimmedArea, UntrimmedSphereBandIsExactToQuadrature) {
   // r^2 * (u1 - u0) * (sin v1 - sin v0)
   const double expected = 4.0 * 2.0 * (std::sin(1.0) - std::sin(-0.5));
-  auto a = semimesh::app::trimmed_area(SphereBand(2.0));
+  auto a = cad::trimmed_area(SphereBand(2.0));
   EXPECT_NEAR(a.area, expected, 1e-8 * expected);
   EXPECT_LE(a.error_estimate, 2e-6 * expected);
 }
 
 TEST(TrimmedArea, DiscIsWithinItsErrorEstimate) {
   TrimmedPlane disc({cad::Interval{-1.5, 1.5}, cad::Interval{-1.5, 1.5}}, [](const cad::Vec2& uv) { return uv.squaredNorm() <= 1.0; });
-  auto a = semimesh::app::trimmed_area(disc);
+  auto a = cad::trimmed_area(disc);
   EXPECT_NEAR(a.area, kPi, 3 * a.error_estimate);
   EXPECT_LE(a.error_estimate, 3e-3 * kPi);
   EXPECT_NEAR(a.area, kPi, 1e-3 * kPi);
@@ -72,15 +72,15 @@ TEST(TrimmedArea, SquareWithRoundHole) {
   TrimmedPlane plate({cad::Interval{0, 4}, cad::Interval{0, 4}},
                      [](const cad::Vec2& uv) { return (uv - cad::Vec2(2.2, 1.9)).norm() >= 0.5; });
   const double expected = 16.0 - kPi * 0.25;
-  auto a = semimesh::app::trimmed_area(plate);
+  auto a = cad::trimmed_area(plate);
   EXPECT_NEAR(a.area, expected, 3 * a.error_estimate);
   EXPECT_NEAR(a.area, expected, 1e-4 * expected);
 }
 
 TEST(TrimmedArea, LooseToleranceStopsEarlier) {
   TrimmedPlane disc({cad::Interval{-1, 1}, cad::Interval{-1, 1}}, [](const cad::Vec2& uv) { return uv.squaredNorm() <= 1.0; });
-  auto loose = semimesh::app::trimmed_area(disc, 3e-2);
-  auto tight = semimesh::app::trimmed_area(disc);
+  auto loose = cad::trimmed_area(disc, 3e-2);
+  auto tight = cad::trimmed_area(disc);
   EXPECT_LT(tight.error_estimate, loose.error_estimate);
   EXPECT_NEAR(loose.area, kPi, 3e-2 * kPi);
   EXPECT_NEAR(tight.area, kPi, 1e-3 * kPi);

@@ -198,7 +198,7 @@ TEST(PipelineRun, BadInputIsReportedAsSuch) {
     run(coarse_config(dir, {"geometry.body=[\"upper\", \"lower\", \"fin\"]"}), progress);
     ADD_FAILURE() << "no RunError";
   } catch (const RunError& e) {
-    EXPECT_EQ(e.kind(), RunError::Kind::BadInput);
+    EXPECT_EQ(e.cause(), Error::Cause::BadInput);
     EXPECT_NE(std::string(e.what()).find("geometry.body"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("'fin'"), std::string::npos) << e.what();
   }
@@ -206,7 +206,7 @@ TEST(PipelineRun, BadInputIsReportedAsSuch) {
     run(coarse_config(dir, {"geometry.backend=parasolid"}), progress);
     ADD_FAILURE() << "no RunError";
   } catch (const RunError& e) {
-    EXPECT_EQ(e.kind(), RunError::Kind::BadInput);
+    EXPECT_EQ(e.cause(), Error::Cause::BadInput);
     EXPECT_EQ(e.stage(), "load CAD");
   }
   EXPECT_FALSE(fs::exists(dir));  // nothing written

@@ -4,7 +4,7 @@
 
 #include "semimesh/cad/surface.hpp"
 
-namespace semimesh::app {
+namespace semimesh::cad {
 
 struct TrimmedArea {
   double area = 0.0;
@@ -20,6 +20,6 @@ struct TrimmedArea {
 /// Accuracy: exact to the quadrature tolerance on untrimmed faces; on trimmed ones error_estimate
 /// is the change of the result over the last refinement (1e-5..1e-3 relative on the test faces). A trim
 /// feature (hole, notch, sliver) that no corner or centre of the 12 x 12 base grid sees is missed.
-TrimmedArea trimmed_area(const cad::Surface& surface, double relative_tolerance = 1e-6);
+TrimmedArea trimmed_area(const Surface& surface, double relative_tolerance = 1e-6);
 
-}  // namespace semimesh::app
+}  // namespace semimesh::cad

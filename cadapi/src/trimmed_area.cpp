@@ -1,10 +1,10 @@
-#include "surface_area.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
 
 #include <array>
 #include <cmath>
 #include <vector>
 
-namespace semimesh::app {
+namespace semimesh::cad {
 namespace {
 
 // 3-point Gauss-Legendre on [-1, 1] (Abramowitz & Stegun, table 25.4).
@@ -68,7 +68,7 @@ double inside_integral(const cad::Surface& s, const Cell& c, double whole, doubl
 
 }  // namespace
 
-TrimmedArea trimmed_area(const cad::Surface& surface, double relative_tolerance) {
+TrimmedArea trimmed_area(const Surface& surface, double relative_tolerance) {
   const auto box = surface.bounds();
   std::vector<Cell> cut;
   for (int i = 0; i < kBaseCells; ++i)
@@ -117,4 +117,4 @@ TrimmedArea trimmed_area(const cad::Surface& surface, double relative_tolerance)
   return out;
 }
 
-}  // namespace semimesh::app
+}  // namespace semimesh::cad

@@ -18,18 +18,15 @@
 
 namespace semimesh::pipeline {
 
-/// A failure of the run, classified for the exit code: bad input (config, CAD, a thickness that
-/// cannot work, TetGen rejecting the boundary) or an internal error. The message names the stage.
-class RunError : public std::runtime_error {
+/// A failure of the run: the stage's error (its cause: bad input such as the config, the CAD, a
+/// thickness that cannot work, TetGen rejecting the boundary; or internal), with the stage named.
+class RunError : public Error {
  public:
-  enum class Kind { BadInput, Internal };
-  RunError(Kind kind, std::string stage, const std::string& message)
-      : std::runtime_error(message), kind_(kind), stage_(std::move(stage)) {}
-  Kind kind() const { return kind_; }
+  RunError(Cause cause, std::string stage, const std::string& message)
+      : Error(cause, message), stage_(std::move(stage)) {}
   const std::string& stage() const { return stage_; }
 
  private:
-  Kind kind_;
   std::string stage_;
 };
 

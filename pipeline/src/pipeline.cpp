@@ -1,7 +1,6 @@
 #include "semimesh/pipeline/pipeline.hpp"
 
 #include "semimesh/backends/builtin.hpp"
-#include "semimesh/cad/error.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -9,14 +8,10 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
-#include "semimesh/io/msh.hpp"
-#include "semimesh/io/nektar.hpp"
-#include "semimesh/io/vtu.hpp"
 #include "semimesh/mesh/compact.hpp"
-#include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/report.hpp"
-#include "semimesh/surface/error.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <fmt/format.h>
@@ -50,8 +45,8 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     result.stages.push_back(timing);
     progress.stage_finished(timing);
   };
-  auto fail = [&](RunError::Kind kind, const std::string& what) -> RunError {
-    return RunError(kind, name, name + ": " + what);
+  auto fail = [&](Error::Cause cause, const std::string& what) -> RunError {
+    return RunError(cause, name, name + ": " + what);
   };
   try {
     if constexpr (std::is_void_v<decltype(body())>) {
@@ -64,20 +59,12 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     }
   } catch (const RunError&) {
     throw;
-  } catch (const cad::CadError& e) {
-    throw fail(e.kind() == cad::CadError::Kind::Geometry ? RunError::Kind::Internal : RunError::Kind::BadInput, e.what());
-  } catch (const ConfigError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const surface::SurfaceMeshError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const nearfield::NearFieldError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
-  } catch (const farfield::FarFieldError& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
+  } catch (const Error& e) {
+    throw fail(e.cause(), e.what());
   } catch (const std::filesystem::filesystem_error& e) {
-    throw fail(RunError::Kind::BadInput, e.what());
+    throw fail(Error::Cause::BadInput, e.what());  // the output folder cannot be made or written
   } catch (const std::exception& e) {
-    throw fail(RunError::Kind::Internal, e.what());
+    throw fail(Error::Cause::Internal, e.what());
   }
 }
 
@@ -128,17 +115,6 @@ Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
   return roles;
 }
 
-surface::SizeParams size_params(const SizingConfig& s) {
-  surface::SizeParams p;
-  p.max_size = s.max_size;
-  p.min_size = s.min_size;
-  p.curvature_segments = s.curvature_segments;
-  p.gradation = s.gradation;
-  p.le_size = s.le_size;
-  p.te_size = s.te_size;
-  return p;
-}
-
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
 surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConfig& s) {
   surface::ModelMeshOptions options;
@@ -161,35 +137,6 @@ surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConf
   for (auto& [curve, count] : options.curve_counts) count.bunching.law = surface::Bunching::Law::Cosine;
   prescribe(s.spanwise, "sizing.spanwise", {"leading_edge", "te_upper", "te_lower", "trailing_edge"});
   return options;
-}
-
-nearfield::ShellParams shell_params(const NearFieldConfig& n) {
-  nearfield::ShellParams p;
-  p.thickness = n.thickness;
-  p.normal_smoothing_passes = n.smoothing_passes;
-  p.min_thickness_fraction = n.min_thickness_fraction;
-  p.reduction_factor = n.reduction_factor;
-  p.gradation = n.gradation;
-  return p;
-}
-
-farfield::FarFieldParams far_params(const FarFieldConfig& f) {
-  farfield::FarFieldParams p;
-  p.box_size = f.box_size;
-  p.wall_size = f.wall_size;
-  p.growth = f.growth;
-  p.radius_edge_ratio = f.radius_edge_ratio;
-  p.max_volume = f.max_volume;
-  return p;
-}
-
-ho::CurvingParams curving_params(const HighOrderConfig& h) {
-  ho::CurvingParams p;
-  p.order = h.order;
-  p.node_set = h.node_set == "gll" ? ho::NodeSet::GLL : ho::NodeSet::Equispaced;
-  p.placement = h.node_placement == "springs" ? ho::NodePlacement::Springs : ho::NodePlacement::Parameter;
-  p.spring_iterations = h.spring_iterations;
-  return p;
 }
 
 // boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
@@ -246,39 +193,6 @@ double peak_memory_mb() {
   return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
 }
 
-void write_mesh_file(const mesh::Mesh& mesh, const std::string& format, const std::string& path) {
-  if (format == "msh41") io::write_msh(mesh, path, io::MshVersion::V41);
-  if (format == "msh41-binary") io::write_msh(mesh, path, io::MshVersion::V41, io::MshEncoding::Binary);
-  if (format == "msh22") io::write_msh(mesh, path, io::MshVersion::V22);
-  if (format == "vtu") io::write_vtu(mesh, path, io::VtuEncoding::CompressedBinary);
-  if (format == "vtu-ascii") io::write_vtu(mesh, path, io::VtuEncoding::Ascii);
-  if (format == "nektar") io::write_nektar_xml(mesh, path, io::NektarEncoding::Compressed);
-  if (format == "nektar-xml") io::write_nektar_xml(mesh, path, io::NektarEncoding::Plain);
-}
-
-/// File name ending of a format: its extension, with a tag in front when another format asked for
-/// shares the extension (the first of each kind keeps the plain one).
-std::string file_suffix(const std::string& format, const std::vector<std::string>& formats) {
-  struct Kind {
-    const char* format;
-    const char* extension;
-    const char* shared;  // when another format with this extension is asked for too
-  };
-  static const Kind kinds[] = {{"msh41", ".msh", ".msh"},           {"msh41-binary", ".msh", ".bin.msh"},
-                               {"msh22", ".msh", ".v22.msh"},       {"vtu", ".vtu", ".vtu"},
-                               {"vtu-ascii", ".vtu", ".ascii.vtu"}, {"nektar", ".xml", ".xml"},
-                               {"nektar-xml", ".xml", ".plain.xml"}};
-  const Kind* mine = nullptr;
-  for (const Kind& k : kinds)
-    if (format == k.format) mine = &k;
-  if (!mine) return "";
-  for (const Kind& k : kinds)
-    if (k.format != format && std::string(k.extension) == mine->extension &&
-        std::count(formats.begin(), formats.end(), k.format))
-      return mine->shared;
-  return mine->extension;
-}
-
 }  // namespace
 
 double RunResult::total_seconds() const {
@@ -290,8 +204,15 @@ double RunResult::total_seconds() const {
 std::vector<std::string> output_paths(const OutputConfig& output) {
   const std::filesystem::path dir(output.directory);
   std::vector<std::string> paths;
-  for (const std::string& f : output.formats)
-    paths.push_back((dir / (output.basename + file_suffix(f, output.formats))).string());
+  for (const std::string& f : output.formats) {
+    const OutputFormat& format = output_format(f);
+    const bool shared = std::any_of(output.formats.begin(), output.formats.end(), [&](const std::string& g) {
+      return g != f && output_format(g).extension == format.extension;
+    });
+    const std::string& extension = shared && !format.extension_when_shared.empty() ? format.extension_when_shared
+                                                                                  : format.extension;
+    paths.push_back((dir / (output.basename + extension)).string());
+  }
   paths.push_back((dir / "report.json").string());
   return paths;
 }
@@ -306,7 +227,7 @@ RunResult run(const Config& config, Progress& progress) {
   const Roles roles = stage("roles", progress, result, [&] { return resolve_roles(*model, config.geometry); });
 
   const surface::SizeField size =
-      stage("size field", progress, result, [&] { return surface::SizeField(*model, size_params(config.sizing)); });
+      stage("size field", progress, result, [&] { return surface::SizeField(*model, config.sizing.size); });
   const surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
     return surface::mesh_model_surfaces(*model, size, mesh_options(*model, config.sizing));
   });
@@ -315,7 +236,7 @@ RunResult run(const Config& config, Progress& progress) {
 
   nearfield::NearField near = stage("near field", progress, result, [&] {
     return nearfield::build_o_shell(*model, surfaces, nearfield::BodyRoles{roles.body, roles.wall},
-                                    shell_params(config.nearfield));
+                                    config.nearfield.shell);
   });
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
@@ -324,15 +245,16 @@ RunResult run(const Config& config, Progress& progress) {
                                           w.where.y(), w.where.z()));
 
   stage("far field", progress, result, [&] {
-    farfield::build_far_field(*model, near, far_params(config.farfield), roles.farfield, roles.wall);
+    farfield::build_far_field(*model, near, config.farfield, roles.farfield, roles.wall);
   });
   // The far field stays straight-sided and so does the skin: curving moves only nodes on the CAD.
   result.mesh = std::move(near.mesh);
   if (config.highorder.order > 1)
     result.mesh = stage("curve", progress, result, [&] {
-      return ho::curve_mesh(result.mesh, *model, curving_params(config.highorder), &result.curving);
+      return ho::curve_mesh(result.mesh, *model, config.highorder, &result.curving);
     });
-  if (config.highorder.order > 1) result.node_placement = config.highorder.node_placement;
+  if (config.highorder.order > 1)
+    result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
   if (result.curving.optimisation_fallbacks > 0)
     result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
                                           "within {} iterations; they keep their parameter-space positions",
@@ -350,11 +272,11 @@ RunResult run(const Config& config, Progress& progress) {
     });
 
   // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
-  const int layers = config.boundary_layer.layers;
+  const int layers = config.boundary_layer.split.layers;
   result.layers.layers = layers;
   if (layers > 1) {
     const std::vector<std::size_t> prisms = shell_prisms(result.mesh);
-    const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.thickness);
+    const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
     ho::SplitStats split{};
     result.mesh = stage("split", progress, result, [&] {
       // The coarse prisms' interior nodes are no longer used by any element: drop them.
@@ -400,7 +322,7 @@ RunResult run(const Config& config, Progress& progress) {
     try {
       std::filesystem::create_directories(config.output.directory);
       for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        write_mesh_file(result.mesh, config.output.formats[i], paths[i]);
+        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
         result.written_files.push_back(paths[i]);
       }
       result.peak_memory_mb = peak_memory_mb();
