@@ -8,6 +8,7 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
+#include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -296,8 +297,9 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, Progress& progr
   const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
   ho::SplitStats stats{};
   mesh::Mesh fine = stage("split", progress, result, [&] {
-    return ho::split_layers(coarse, prisms, ho::LayerDistribution{layers, ratio},
-                            ratio_field(config.boundary_layer, ratio), &stats);
+    // The coarse elements' inner nodes are no longer used by any element: drop them.
+    return mesh::without_unreferenced_nodes(ho::split_layers(coarse, prisms, ho::LayerDistribution{layers, ratio},
+                                                             ratio_field(config.boundary_layer, ratio), &stats));
   });
   result.layers.requested_ratio = ratio;
   result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
