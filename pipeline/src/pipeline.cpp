@@ -8,6 +8,7 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
+#include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
@@ -302,8 +303,12 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vect
   const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
   const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
   StackSplit split = stage("split", progress, result, [&] {
-    return split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
-                        {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+    StackSplit fine = split_stacks(coarse, stacks,
+                                   {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
+                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+    // The coarse elements' inner nodes are no longer used by any element: drop them.
+    fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
+    return fine;
   });
   if (layers > 1) {
     result.layers.requested_ratio = ratio;
