@@ -66,6 +66,7 @@ CLI::App* add_run_subcommand(CLI::App& app, RunOptions& options) {
   cmd->add_option("--set", options.overrides, "Override a key: dotted.key=value, value in TOML syntax (repeatable)")
       ->allow_extra_args(false);  // one value per --set, so a following CONFIG is not swallowed
   cmd->add_flag("--allow-invalid", options.allow_invalid, "Write the mesh even when a check fails (exit code stays 2)");
+  cmd->add_flag("--pictures", options.pictures, "Write SVG pictures beside the mesh (output.pictures)");
   return cmd;
 }
 
@@ -79,6 +80,7 @@ int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostr
   }
   if (!options.output_directory.empty()) config.output.directory = options.output_directory;
   if (options.allow_invalid) config.output.allow_invalid = true;
+  if (options.pictures) config.output.pictures = true;
 
   StageLines progress(out);
   try {

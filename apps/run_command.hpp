@@ -15,6 +15,7 @@ struct RunOptions {
   std::string output_directory;        ///< -o: overrides output.directory when set
   std::vector<std::string> overrides;  ///< --set key=value
   bool allow_invalid = false;
+  bool pictures = false;
 };
 
 /// Declares the `run` subcommand and its options on `app`; `options` receives them when parsed.

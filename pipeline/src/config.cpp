@@ -277,6 +277,10 @@ params::Table<Config> output_keys() {
       params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
       params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
       params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),
+      params::boolean("pictures", &OutputConfig::pictures,
+                      "SVG pictures beside the mesh: spanwise cuts, the body's surface mesh, a quality histogram"),
+      params::real("picture_station", &OutputConfig::picture_station, "(0, 1)",
+                   "where the spanwise cut of the pictures is, as a fraction of the span"),
   };
   params::Table<Config> table;
   append(table, &Config::output, o);

@@ -11,6 +11,7 @@
 #include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
+#include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
@@ -344,6 +345,16 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
         output_format(config.output.formats[i]).write(result.mesh, paths[i]);
         result.written_files.push_back(paths[i]);
       }
+      if (config.output.pictures)
+        for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
+          const std::string path =
+              (std::filesystem::path(config.output.directory) / (config.output.basename + picture.suffix)).string();
+          io::AtomicFile file(path);
+          file.write(picture.svg);
+          file.commit();
+          result.written_files.push_back(path);
+          result.pictures.push_back(path);
+        }
       result.peak_memory_mb = peak_memory_mb();
       io::AtomicFile report(paths.back());
       report.write(report_json(result, config));

@@ -117,6 +117,7 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"total_seconds\": {},\n", json_number(r.total_seconds()));
   j += fmt::format("  \"peak_memory_mb\": {},\n", json_number(r.peak_memory_mb));
   j += "  \"warnings\": " + json_list(r.warnings, json_string) + ",\n";
+  j += "  \"pictures\": " + json_list(r.pictures, json_string) + ",\n";
   j += "  \"files\": " + json_list(r.written_files, json_string) + "\n}\n";
   return j;
 }

@@ -25,6 +25,7 @@ struct ValidityResult {
   double min_scaled_jacobian = 1.0;
   double median_scaled_jacobian = 1.0;
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
+  std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
   bool ok() const { return invalid == 0; }
 };
 

@@ -84,6 +84,8 @@ struct OutputConfig {
   std::string directory = ".";   ///< resolved against the current directory
   std::string basename = "mesh";
   bool allow_invalid = false;    ///< write the mesh even when a check fails
+  bool pictures = false;         ///< SVG pictures beside the mesh (pictures.hpp)
+  double picture_station = 0.4;  ///< where the spanwise cut is, as a fraction of the span
 };
 
 struct Config {

@@ -93,6 +93,7 @@ struct RunResult {
   double expected_volume_tolerance = kExpectedVolumeTolerance;
   std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
   std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
+  std::vector<std::string> pictures;       ///< of written_files, the SVG pictures (output.pictures)
   double peak_memory_mb = 0.0;             ///< peak resident set size of the process (getrusage)
 
   bool volume_ok() const {
