@@ -292,10 +292,11 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 }
 
 // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
-mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, Progress& progress, RunResult& result) {
+mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, double chord, Progress& progress, RunResult& result) {
   const int layers = config.boundary_layer.split.layers;
   const std::vector<std::size_t> prisms = shell_prisms(coarse);
-  const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
+  const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
+  const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
   ho::SplitStats stats{};
   mesh::Mesh fine = stage("split", progress, result, [&] {
     // The coarse elements' inner nodes are no longer used by any element: drop them.
@@ -308,10 +309,23 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, Progress& progr
   result.layers.first_cell_height_min = stats.first_cell_height_min;
   result.layers.first_cell_height_max = stats.first_cell_height_max;
   result.layers.max_first_layer_aspect = max_first_layer_aspect(fine, prisms, layers);
+  if (layer.y_plus) {
+    const double length = layer.reference_length.value_or(chord);
+    result.layers.first_cell_height_target = *layer.first_cell_height;
+    result.layers.y_plus_min = y_plus_of_height(stats.first_cell_height_min, *layer.reynolds, length);
+    result.layers.y_plus_max = y_plus_of_height(stats.first_cell_height_max, *layer.reynolds, length);
+  }
   return fine;
 }
 
-void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, Progress& progress,
+// The chord: geometry.naca.chord for a generated wing, else the body's streamwise extent.
+double chord_of(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces) {
+  std::vector<const surface::SurfaceMesh*> body;
+  for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
+  return reference_length(config.geometry, body);
+}
+
+void check(const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord, Progress& progress,
            RunResult& result) {
   stage("checks", progress, result, [&] {
     result.conformity = checks::check_conformity(result.mesh);
@@ -325,7 +339,6 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh);
-    const double chord = reference_length(config.geometry, body);
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
@@ -377,8 +390,9 @@ RunResult run(const Config& config, Progress& progress) {
   result.mesh = build_linear_mesh(config, geometry, surfaces, progress, result);
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
-  if (result.layers.layers > 1) result.mesh = split(config, result.mesh, progress, result);
-  check(config, geometry, surfaces, progress, result);
+  const double chord = chord_of(config, geometry, surfaces);
+  if (result.layers.layers > 1) result.mesh = split(config, result.mesh, chord, progress, result);
+  check(geometry, surfaces, chord, progress, result);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

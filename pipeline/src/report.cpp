@@ -51,6 +51,9 @@ std::string summary_table(const RunResult& r) {
   if (r.layers.layers > 1) {
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height min", r.layers.first_cell_height_min);
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height max", r.layers.first_cell_height_max);
+    if (r.layers.first_cell_height_target > 0.0)
+      t += fmt::format("{:<28} {:>12.4g}\n{:<28} {:>5.3g} .. {:<5.3g}\n", "first cell height for y+",
+                       r.layers.first_cell_height_target, "y+ of the first cells", r.layers.y_plus_min, r.layers.y_plus_max);
     t += fmt::format("{:<28} {:>12.4f}\n", "layer ratio (achieved)", r.layers.achieved_ratio);
     t += fmt::format("{:<28} {:>12.4g}\n", "max first-layer aspect", r.layers.max_first_layer_aspect);
   }
@@ -89,6 +92,10 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"layer_ratio_end\": {},\n", json_number(r.layers.requested_ratio_end));
   j += fmt::format("  \"first_cell_height_min\": {},\n  \"first_cell_height_max\": {},\n",
                    json_number(r.layers.first_cell_height_min), json_number(r.layers.first_cell_height_max));
+  if (r.layers.first_cell_height_target > 0.0)
+    j += fmt::format("  \"first_cell_height_target\": {},\n  \"y_plus_min\": {},\n  \"y_plus_max\": {},\n",
+                     json_number(r.layers.first_cell_height_target), json_number(r.layers.y_plus_min),
+                     json_number(r.layers.y_plus_max));
   j += fmt::format("  \"max_first_layer_aspect_ratio\": {},\n", json_number(r.layers.max_first_layer_aspect));
   j += fmt::format("  \"geometric_error\": {{\"max_rel\": {}, \"rms_rel\": {}, \"reference_length\": {}, "
                    "\"samples\": {}}},\n",
