@@ -235,9 +235,10 @@ params::Table<Config> naca_keys() {
 params::Table<Config> nearfield_keys() {
   params::Table<NearFieldConfig> n = {
       params::string("topology", &NearFieldConfig::topology, "\"O\" | \"C\" | \"H\"",
-                     "near-field partition (C and H are not implemented yet)"),
+                     "near-field partition: O one prism layer, C plus the root junction and the wall layer (H is not implemented yet)"),
   };
   append(n, &NearFieldConfig::shell, nearfield::shell_keys());
+  append(n, &NearFieldConfig::junction, nearfield::junction_keys());
   params::Table<Config> table;
   append(table, &Config::nearfield, n);
   return table;
@@ -259,6 +260,19 @@ params::Table<Config> boundary_layer_keys() {
                            "length the Reynolds number is based on; unset: the chord"));
   params::Table<Config> table;
   append(table, &Config::boundary_layer, b);
+  return table;
+}
+
+params::Table<Config> wall_layer_keys() {
+  params::Table<WallLayerConfig> w = {
+      params::real("thickness", &WallLayerConfig::thickness, ">= 0",
+                   "C: the wall layer's thickness δ_wall, model units; 0: a slip wall (no wall layer, the O-type root)"),
+  };
+  append(w, &WallLayerConfig::split, ho::layer_keys());
+  w.push_back(params::real("first_cell_height", &WallLayerConfig::first_cell_height, "> 0",
+                           "instead of ratio: height of the first wall layer"));
+  params::Table<Config> table;
+  append(table, &Config::wall_layer, w);
   return table;
 }
 
@@ -314,9 +328,20 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
 
   Section& n = *sections.at("nearfield");
-  n.require(c.nearfield.topology == "O", "topology",
-            "\"O\": the C-type (root junction block) and H-type (trailing-edge wake block) topologies are not "
-            "implemented yet");
+  n.require(c.nearfield.topology != "H", "topology",
+            "\"O\" or \"C\": the H-type (trailing-edge wake block) topology is not implemented yet");
+  const nearfield::JunctionParams& junction = c.nearfield.junction;
+  n.require(junction.min_angle_deg < junction.max_angle_deg, "junction_min_angle", "< nearfield.junction_max_angle");
+  n.require(junction.max_angle_deg <= junction.concave_below_deg, "junction_max_angle", "<= nearfield.concave_angle");
+
+  Section& w = *sections.at("wall_layer");
+  const WallLayerConfig& wall = c.wall_layer;
+  if (wall.first_cell_height) {
+    w.require(!w.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
+    w.require(*wall.first_cell_height * wall.split.layers <= wall.thickness, "first_cell_height",
+              fmt::format("<= wall_layer.thickness / layers = {}", wall.thickness / wall.split.layers) +
+                  " (the layers must fit in the wall layer with a ratio >= 1)");
+  }
 
   Section& b = *sections.at("boundary_layer");
   const BoundaryLayerConfig& layer = c.boundary_layer;
@@ -359,6 +384,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"geometry.naca", naca_keys()},
       {"nearfield", nearfield_keys()},
       {"boundary_layer", boundary_layer_keys()},
+      {"wall_layer", wall_layer_keys()},
       {"sizing", sizing_keys()},
       {"farfield", stage_keys(&Config::farfield, farfield::far_field_keys())},
       {"highorder", stage_keys(&Config::highorder, ho::curving_keys())},
@@ -449,6 +475,17 @@ double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness)
     (total(mid) < thickness ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+double effective_wall_ratio(const WallLayerConfig& layer) {
+  BoundaryLayerConfig as_layer;
+  as_layer.split = layer.split;
+  as_layer.first_cell_height = layer.first_cell_height;
+  return effective_layer_ratio(as_layer, layer.thickness);
+}
+
+bool builds_junction(const Config& config) {
+  return config.nearfield.topology == "C" && config.wall_layer.thickness > 0.0;
 }
 
 }  // namespace semimesh::pipeline

@@ -193,13 +193,30 @@ TEST(Config, SyntaxErrorGivesTheLine) {
   EXPECT_EQ(message.rfind("config error: case.toml:2:", 0), 0u) << message;
 }
 
-TEST(Config, CAndHTopologiesAreRejectedClearly) {
-  for (const char* topology : {"C", "H"}) {
-    const std::string message = error_of(std::string("[nearfield]\ntopology = \"") + topology + "\"\n");
-    EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
-    EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
-  }
+TEST(Config, HTopologyIsRejectedClearly) {
+  const std::string message = error_of("[nearfield]\ntopology = \"H\"\n");
+  EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
+  EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
   EXPECT_NE(error_of("[nearfield]\ntopology = \"X\"\n").find("expected \"O\", \"C\" or \"H\""), std::string::npos);
+}
+
+TEST(Config, CTopologyWithItsWallLayer) {
+  const Config c = parse_config("[nearfield]\ntopology = \"C\"\njunction_min_angle = 70\n"
+                                "[wall_layer]\nthickness = 0.05\nlayers = 4\nfirst_cell_height = 0.002\n",
+                                "case.toml");
+  EXPECT_EQ(c.nearfield.topology, "C");
+  EXPECT_EQ(c.nearfield.junction.min_angle_deg, 70.0);
+  EXPECT_EQ(c.wall_layer.thickness, 0.05);
+  EXPECT_EQ(c.wall_layer.split.layers, 4);
+  EXPECT_TRUE(builds_junction(c));
+  const double r = effective_wall_ratio(c.wall_layer);
+  EXPECT_NEAR(0.002 * (std::pow(r, 4) - 1) / (r - 1), 0.05, 1e-9);
+  // thickness = 0: a slip wall, the O-type root.
+  EXPECT_FALSE(builds_junction(parse_config("[nearfield]\ntopology = \"C\"\n[wall_layer]\nthickness = 0\n", "c.toml")));
+  const std::string message = error_of("[wall_layer]\nthickness = -1\n");
+  EXPECT_NE(message.find("wall_layer.thickness"), std::string::npos) << message;
+  const std::string angles = error_of("[nearfield]\njunction_min_angle = 160\n");
+  EXPECT_NE(angles.find("nearfield.junction_min_angle"), std::string::npos) << angles;
 }
 
 TEST(Config, SetOverridesTheFileAndIsNamedInErrors) {

@@ -28,6 +28,12 @@ ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed) {
   std::stable_sort(result.worst.begin(), result.worst.end(),
                    [](const InvalidElement& a, const InvalidElement& b) { return a.scaled_jacobian < b.scaled_jacobian; });
   if (result.worst.size() > max_listed) result.worst.resize(max_listed);
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const std::string& region = mesh.region_names()[mesh.elements()[e].region];
+    const double scaled = ho::scaled_jacobian(certified.bounds[e]);
+    const auto [it, added] = result.min_scaled_jacobian_by_region.try_emplace(region, scaled);
+    if (!added) it->second = std::min(it->second, scaled);
+  }
   return result;
 }
 

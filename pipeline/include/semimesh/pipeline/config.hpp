@@ -15,6 +15,7 @@
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/params/table.hpp"
 #include "semimesh/surface/size_field.hpp"
@@ -56,8 +57,17 @@ struct GeometryConfig {
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.
 struct NearFieldConfig {
-  std::string topology = "O";  ///< "O" (implemented), "C", "H" (rejected for now)
+  std::string topology = "O";  ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
   nearfield::ShellParams shell;
+  nearfield::JunctionParams junction;  ///< C: which body-wall curves are concave corners, supported angles
+};
+
+/// [wall_layer]: the wall's boundary layer (C topology): one prism layer of `thickness` on the
+/// wall, split like the wing's. thickness = 0: a slip wall (no wall layer, the O-type root).
+struct WallLayerConfig {
+  double thickness = 0.1;                   ///< delta_wall, model units
+  ho::LayerDistribution split;              ///< layers, ratio
+  std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
 };
 
 /// [boundary_layer]: splitting of the near-field elements into N layers.
@@ -98,6 +108,7 @@ struct Config {
   GeometryConfig geometry;
   NearFieldConfig nearfield;
   BoundaryLayerConfig boundary_layer;
+  WallLayerConfig wall_layer;
   SizingConfig sizing;
   farfield::FarFieldParams farfield;
   ho::CurvingParams highorder;
@@ -140,5 +151,9 @@ BoundaryLayerConfig resolve_y_plus(BoundaryLayerConfig layer, double chord);
 /// Ratio of the boundary layer: `ratio`, or the r solving h1 (r^N - 1) / (r - 1) = thickness when
 /// first_cell_height h1 is given.
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness);
+/// The same for the wall layer.
+double effective_wall_ratio(const WallLayerConfig& layer);
+/// Whether the run builds the C-type junction (topology "C" and a wall layer of thickness > 0).
+bool builds_junction(const Config& config);
 
 }  // namespace semimesh::pipeline

@@ -78,6 +78,8 @@ struct RunResult {
   mesh::Mesh mesh{1};
   std::vector<StageTiming> stages;
   std::map<std::string, std::size_t> elements_by_type;  ///< "tetrahedron" -> count, ...
+  std::map<std::string, std::size_t> elements_by_region;  ///< "wing_layer" -> count, ...
+  int junction_hexes = 0;                 ///< C-type: hexes along the root before splitting
   std::map<std::string, std::size_t> boundary_faces_by_group;
   std::size_t surface_triangles = 0;
   std::size_t surface_quads = 0;
@@ -86,7 +88,8 @@ struct RunResult {
   checks::ConformityResult conformity;
   checks::VolumeCheck volume;
   checks::ValidityResult validity;
-  LayerFigures layers;
+  LayerFigures layers;        ///< the wing's boundary layer
+  LayerFigures wall_layers;   ///< the wall's (C-type; layers = 1 and zeros without a wall layer)
   std::string node_placement;  ///< highorder.node_placement used by the curve stage; empty at order 1
   ho::CurvingStats curving;    ///< zeros at order 1
   farfield::FarFieldStats far_field;
