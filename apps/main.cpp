@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <iostream>
 
 namespace {
@@ -53,7 +55,10 @@ int run(int argc, char** argv) {
     run_cad_info(semimesh::backends::default_registry(), cad_info, std::cout);
     return kExitOk;
   }
-  if (run_cmd->parsed()) return run_pipeline_command(run_options, std::cout, std::cerr);
+  if (run_cmd->parsed()) {
+    run_options.terminal = isatty(STDOUT_FILENO) != 0;
+    return run_pipeline_command(run_options, std::cout, std::cerr);
+  }
   if (check_cmd->parsed()) return run_check_command(check_options, std::cout, std::cerr);
   if (init_cmd->parsed()) return run_init_command(init_options, std::cout, std::cerr);
   return kExitBadInput;

@@ -12,6 +12,7 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
+#include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
@@ -298,9 +299,10 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
 mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vector<nearfield::LayerStack>& stacks,
-                 Progress& progress, RunResult& result) {
+                 double chord, Progress& progress, RunResult& result) {
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
-  const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
+  const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
+  const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
   const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
   StackSplit split = stage("split", progress, result, [&] {
     StackSplit fine = split_stacks(coarse, stacks,
@@ -317,6 +319,12 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vect
     result.layers.first_cell_height_min = split.wing.first_cell_height_min;
     result.layers.first_cell_height_max = split.wing.first_cell_height_max;
     result.layers.max_first_layer_aspect = max_first_layer_aspect(split.mesh, stacks, split.first_layer);
+    if (layer.y_plus) {
+      const double length = layer.reference_length.value_or(chord);
+      result.layers.first_cell_height_target = *layer.first_cell_height;
+      result.layers.y_plus_min = y_plus_of_height(split.wing.first_cell_height_min, *layer.reynolds, length);
+      result.layers.y_plus_max = y_plus_of_height(split.wing.first_cell_height_max, *layer.reynolds, length);
+    }
   }
   if (wall_layers > 1) {
     result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
@@ -327,7 +335,14 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vect
   return std::move(split.mesh);
 }
 
-void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, Progress& progress,
+// The chord: geometry.naca.chord for a generated wing, else the body's streamwise extent.
+double chord_of(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces) {
+  std::vector<const surface::SurfaceMesh*> body;
+  for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
+  return reference_length(config.geometry, body);
+}
+
+void check(const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord, Progress& progress,
            RunResult& result) {
   stage("checks", progress, result, [&] {
     result.conformity = checks::check_conformity(result.mesh);
@@ -341,7 +356,6 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh);
-    const double chord = reference_length(config.geometry, body);
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
@@ -364,6 +378,16 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
         output_format(config.output.formats[i]).write(result.mesh, paths[i]);
         result.written_files.push_back(paths[i]);
       }
+      if (config.output.pictures)
+        for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
+          const std::string path =
+              (std::filesystem::path(config.output.directory) / (config.output.basename + picture.suffix)).string();
+          io::AtomicFile file(path);
+          file.write(picture.svg);
+          file.commit();
+          result.written_files.push_back(path);
+          result.pictures.push_back(path);
+        }
       result.peak_memory_mb = peak_memory_mb();
       io::AtomicFile report(paths.back());
       report.write(report_json(result, config));
@@ -387,10 +411,11 @@ RunResult run(const Config& config, Progress& progress) {
   result.mesh = std::move(linear.mesh);
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
+  const double chord = chord_of(config, geometry, surfaces);
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
-    result.mesh = split(config, result.mesh, linear.stacks, progress, result);
-  check(config, geometry, surfaces, progress, result);
+    result.mesh = split(config, result.mesh, linear.stacks, chord, progress, result);
+  check(geometry, surfaces, chord, progress, result);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

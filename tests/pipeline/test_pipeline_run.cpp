@@ -213,6 +213,26 @@ TEST(PipelineRun, RatioVaryingAlongTheSpan) {
   fs::remove_all(dir);
 }
 
+// y+ = 30 at Re = 1e6 on the unit chord: h = 30 / (1e6 sqrt(Cf / 2)), Cf = 0.026 Re^(-1/7), by hand
+// 30 / (1e6 x 0.04250111) = 7.058640e-4; the four layers of the 0.05 shell then grow by r from it.
+TEST(PipelineRun, FirstCellFromYPlus) {
+  CountingProgress progress;
+  const fs::path dir = fresh_directory("y_plus");
+  const RunResult r = run(coarse_config(dir, {"boundary_layer.layers=4", "boundary_layer.y_plus=30",
+                                              "boundary_layer.reynolds=1e6", "output.formats=[\"msh41\"]"}),
+                          progress);
+  ASSERT_TRUE(r.checks_passed());
+  ASSERT_NEAR(r.thickness_min, r.thickness_max, 1e-12);
+  EXPECT_NEAR(r.layers.first_cell_height_min, 7.058640e-4, 7.058640e-4 * 1e-6);
+  EXPECT_NEAR(r.layers.first_cell_height_target, 7.058640e-4, 1e-10);
+  EXPECT_NEAR(r.layers.y_plus_min, 30.0, 1e-4);
+  const double q = r.layers.requested_ratio;  // h (q^4 - 1) / (q - 1) = 0.05
+  EXPECT_NEAR(7.058640e-4 * (std::pow(q, 4) - 1) / (q - 1), 0.05, 1e-8);
+  const std::string report = read_text(dir / "report.json");
+  EXPECT_NEAR(json_number(report, "y_plus_min"), 30.0, 1e-4) << report;
+  fs::remove_all(dir);
+}
+
 TEST(PipelineRun, BadInputIsReportedAsSuch) {
   const fs::path dir = fresh_directory("bad");
   CountingProgress progress;

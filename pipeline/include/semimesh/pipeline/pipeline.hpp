@@ -60,6 +60,9 @@ struct LayerFigures {
   double first_cell_height_min = 0.0;
   double first_cell_height_max = 0.0;
   double max_first_layer_aspect = 0.0;
+  double first_cell_height_target = 0.0;  ///< from boundary_layer.y_plus (0: not targeted)
+  double y_plus_min = 0.0;                ///< y+ of first_cell_height_min / _max at the configured Reynolds number
+  double y_plus_max = 0.0;
 };
 
 /// Distance from the boundary faces to their CAD surfaces relative to reference_length (the
@@ -96,6 +99,7 @@ struct RunResult {
   double expected_volume_tolerance = kExpectedVolumeTolerance;
   std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
   std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
+  std::vector<std::string> pictures;       ///< of written_files, the SVG pictures (output.pictures)
   double peak_memory_mb = 0.0;             ///< peak resident set size of the process (getrusage)
 
   bool volume_ok() const {
