@@ -252,6 +252,12 @@ params::Table<Config> boundary_layer_keys() {
   b.push_back(params::reals("ratio_line", &BoundaryLayerConfig::ratio_line, "",
                             "[xa, ya, za, xb, yb, zb]: the ratio varies linearly from A to B (with ratio_end)"));
   b.push_back(params::real("ratio_end", &BoundaryLayerConfig::ratio_end, ">= 1", "the ratio at B of ratio_line"));
+  b.push_back(params::real("y_plus", &BoundaryLayerConfig::y_plus, "> 0",
+                           "instead of ratio or first_cell_height: the first cell's y+ (with reynolds)"));
+  b.push_back(params::real("reynolds", &BoundaryLayerConfig::reynolds, "> 0",
+                           "Reynolds number based on reference_length, for y_plus"));
+  b.push_back(params::real("reference_length", &BoundaryLayerConfig::reference_length, "> 0",
+                           "length the Reynolds number is based on; unset: the chord"));
   params::Table<Config> table;
   append(table, &Config::boundary_layer, b);
   return table;
@@ -291,6 +297,10 @@ params::Table<Config> output_keys() {
       params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
       params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
       params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),
+      params::boolean("pictures", &OutputConfig::pictures,
+                      "SVG pictures beside the mesh: spanwise cuts, the body's surface mesh, a quality histogram"),
+      params::real("picture_station", &OutputConfig::picture_station, "(0, 1)",
+                   "where the spanwise cut of the pictures is, as a fraction of the span"),
   };
   params::Table<Config> table;
   append(table, &Config::output, o);
@@ -350,6 +360,12 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   }
   if (layer.ratio_end)
     b.require(layer.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
+  if (layer.y_plus) {
+    b.require(layer.reynolds.has_value(), "y_plus", "together with boundary_layer.reynolds");
+    b.require(!b.has("ratio") && !layer.first_cell_height, "y_plus",
+              "either y_plus, ratio or first_cell_height, one of them");
+  }
+  if (layer.reynolds) b.require(layer.y_plus.has_value(), "reynolds", "together with boundary_layer.y_plus");
 
   sections.at("sizing")->require(c.sizing.size.min_size <= c.sizing.size.max_size, "min_size",
                                  "in (0, sizing.max_size]");
@@ -429,6 +445,22 @@ Config load_config(const std::string& path, const std::vector<std::string>& over
   text << in.rdbuf();
   const std::string directory = std::filesystem::absolute(path).parent_path().string();
   return parse_config(text.str(), path, directory, overrides);
+}
+
+double flat_plate_skin_friction(double reynolds) { return 0.026 * std::pow(reynolds, -1.0 / 7.0); }
+
+double y_plus_first_cell_height(double y_plus, double reynolds, double length) {
+  return y_plus * length / (reynolds * std::sqrt(0.5 * flat_plate_skin_friction(reynolds)));
+}
+
+double y_plus_of_height(double height, double reynolds, double length) {
+  return height / y_plus_first_cell_height(1.0, reynolds, length);
+}
+
+BoundaryLayerConfig resolve_y_plus(BoundaryLayerConfig layer, double chord) {
+  if (layer.y_plus && layer.reynolds)
+    layer.first_cell_height = y_plus_first_cell_height(*layer.y_plus, *layer.reynolds, layer.reference_length.value_or(chord));
+  return layer;
 }
 
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness) {

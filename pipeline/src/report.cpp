@@ -67,6 +67,9 @@ std::string summary_table(const RunResult& r) {
   if (r.layers.layers > 1) {
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height min", r.layers.first_cell_height_min);
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height max", r.layers.first_cell_height_max);
+    if (r.layers.first_cell_height_target > 0.0)
+      t += fmt::format("{:<28} {:>12.4g}\n{:<28} {:>5.3g} .. {:<5.3g}\n", "first cell height for y+",
+                       r.layers.first_cell_height_target, "y+ of the first cells", r.layers.y_plus_min, r.layers.y_plus_max);
     t += fmt::format("{:<28} {:>12.4f}\n", "layer ratio (achieved)", r.layers.achieved_ratio);
     t += fmt::format("{:<28} {:>12.4g}\n", "max first-layer aspect", r.layers.max_first_layer_aspect);
   }
@@ -106,6 +109,10 @@ std::string report_json(const RunResult& r, const Config& config) {
                    json_number(r.wake.ratio_last), json_number(r.wake.gap));
   j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
+  j += fmt::format("  \"far_field\": {{\"tets\": {}, \"pyramids\": {}, \"wall_triangles\": {}, \"box_triangles\": {}, "
+                   "\"tetgen_seconds\": {}}},\n",
+                   r.far_field.tets, r.far_field.pyramids, r.far_field.wall_triangles, r.far_field.box_triangles,
+                   json_number(r.far_field.seconds_tetgen));
   j += fmt::format("  \"thickness_min\": {},\n  \"thickness_max\": {},\n", json_number(r.thickness_min),
                    json_number(r.thickness_max));
   j += fmt::format("  \"layers\": {},\n  \"layer_ratio\": {},\n  \"achieved_layer_ratio\": {},\n", r.layers.layers,
@@ -113,6 +120,10 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"layer_ratio_end\": {},\n", json_number(r.layers.requested_ratio_end));
   j += fmt::format("  \"first_cell_height_min\": {},\n  \"first_cell_height_max\": {},\n",
                    json_number(r.layers.first_cell_height_min), json_number(r.layers.first_cell_height_max));
+  if (r.layers.first_cell_height_target > 0.0)
+    j += fmt::format("  \"first_cell_height_target\": {},\n  \"y_plus_min\": {},\n  \"y_plus_max\": {},\n",
+                     json_number(r.layers.first_cell_height_target), json_number(r.layers.y_plus_min),
+                     json_number(r.layers.y_plus_max));
   j += fmt::format("  \"max_first_layer_aspect_ratio\": {},\n", json_number(r.layers.max_first_layer_aspect));
   j += fmt::format("  \"wall_layer\": {{\"layers\": {}, \"ratio\": {}, \"achieved_ratio\": {}, "
                    "\"first_cell_height_min\": {}, \"first_cell_height_max\": {}}},\n",
@@ -152,6 +163,7 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"total_seconds\": {},\n", json_number(r.total_seconds()));
   j += fmt::format("  \"peak_memory_mb\": {},\n", json_number(r.peak_memory_mb));
   j += "  \"warnings\": " + json_list(r.warnings, json_string) + ",\n";
+  j += "  \"pictures\": " + json_list(r.pictures, json_string) + ",\n";
   j += "  \"files\": " + json_list(r.written_files, json_string) + "\n}\n";
   return j;
 }

@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace semimesh {
 namespace {
@@ -30,8 +31,8 @@ struct Case {
 
 struct Built {
   std::unique_ptr<cad::Model> model;
-  nearfield::NearField near;
-  farfield::FarFieldStats far;
+  int junction_hexes = 0;
+  farfield::FarField far;  ///< the whole linear mesh and its layer stacks
   std::vector<int> box;
 };
 
@@ -63,12 +64,13 @@ Built build(const Case& c, double thickness, double wall_thickness) {
     b.box.push_back(*b.model->find_surface(name));
   nearfield::ShellParams shell;
   shell.thickness = thickness;
-  b.near = nearfield::build_c_shell(*b.model, meshes, roles, shell, nearfield::JunctionParams{}, wall_thickness);
+  nearfield::NearField near =
+      nearfield::build_c_shell(*b.model, meshes, roles, shell, nearfield::JunctionParams{}, wall_thickness);
+  b.junction_hexes = near.junction_hexes;
   farfield::FarFieldParams far;
   far.box_size = 1.0;
   far.wall_size = 0.6;
-  far.wall_layer_thickness = wall_thickness;
-  b.far = farfield::build_far_field(*b.model, b.near, far, b.box, roles.wall_surface);
+  b.far = farfield::build_far_field(*b.model, std::move(near), far, b.box, roles.wall_surface, wall_thickness);
   return b;
 }
 
@@ -86,8 +88,9 @@ double expected_volume(const Case& c) {
   double area = 0.0;
   for (int i = 0; i < n; ++i) {
     const double x = (i + 0.5) / n;
-    const double yt = 5 * t * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
-                               (c.te == "sharp" ? 0.1036 : 0.1015) * x * x * x * x);
+    const double yt = 5 * t *
+                      (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+                       (c.te == "sharp" ? 0.1036 : 0.1015) * x * x * x * x);
     area += 2 * yt / n;
   }
   const double chord_area_factor = (1 + c.taper + c.taper * c.taper) / 3.0;  // mean of chord^2 over the span
@@ -107,14 +110,14 @@ void expect_sound(const mesh::Mesh& m, const Case& c, double volume_tolerance) {
 TEST(CTypeEndToEnd, LinearMeshOnTheAnalyticWing) {
   const Case c;
   const Built b = build(c, 0.05, 0.04);
-  const mesh::Mesh& m = b.near.mesh;
+  const mesh::Mesh& m = b.far.mesh;
   const auto regions = elements_by_region(m);
-  EXPECT_EQ(regions.at("junction"), b.near.junction_hexes);
-  EXPECT_EQ(regions.at("wall_layer"), b.far.wall_layer_prisms);
+  EXPECT_EQ(regions.at("junction"), b.junction_hexes);
+  EXPECT_EQ(regions.at("wall_layer"), b.far.stats.wall_layer_prisms);
   EXPECT_GT(regions.at("wing_layer"), 100);
-  EXPECT_EQ(regions.at("farfield"), b.far.tets + b.far.pyramids);
-  EXPECT_EQ(b.near.stacks.size(), static_cast<std::size_t>(regions.at("junction") + regions.at("wall_layer") +
-                                                           regions.at("wing_layer")));
+  EXPECT_EQ(regions.at("farfield"), b.far.stats.tets + b.far.stats.pyramids);
+  EXPECT_EQ(b.far.stacks.size(),
+            static_cast<std::size_t>(regions.at("junction") + regions.at("wall_layer") + regions.at("wing_layer")));
   expect_sound(m, c, 2e-3);
 }
 
@@ -123,10 +126,11 @@ TEST(CTypeEndToEnd, CurvedAndSplitInBothDirections) {
   const Built b = build(c, 0.05, 0.04);
   ho::CurvingParams curving;
   curving.order = 2;
-  const mesh::Mesh curved = ho::curve_mesh(b.near.mesh, *b.model, curving);
+  const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
   const int n_wing = 3, n_wall = 2;
-  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.near.stacks, {{n_wing, 1.5}, {}}, {{n_wall, 2.0}, {}});
-  const auto before = elements_by_region(b.near.mesh), after = elements_by_region(split.mesh);
+  const pipeline::StackSplit split =
+      pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 1.5}, {}}, {{n_wall, 2.0}, {}});
+  const auto before = elements_by_region(b.far.mesh), after = elements_by_region(split.mesh);
   EXPECT_EQ(after.at("junction"), before.at("junction") * n_wing * n_wall);
   EXPECT_EQ(after.at("wing_layer"), before.at("wing_layer") * n_wing);
   EXPECT_EQ(after.at("wall_layer"), before.at("wall_layer") * n_wall);
@@ -144,12 +148,13 @@ class CTypeVariants : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CTypeVariants, ConformingValidMeshWithTheRightVolume) {
   const Case c = GetParam();
-  if (c.backend == "occ" && !backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  if (c.backend == "occ" && !backends::default_registry().available("occ"))
+    GTEST_SKIP() << "no OCC backend in this build";
   const Built b = build(c, 0.05, 0.04);
-  const auto regions = elements_by_region(b.near.mesh);
-  EXPECT_EQ(regions.at("junction"), b.near.junction_hexes);
-  EXPECT_EQ(regions.at("wall_layer"), b.far.wall_layer_prisms);
-  expect_sound(b.near.mesh, c, 3e-3);
+  const auto regions = elements_by_region(b.far.mesh);
+  EXPECT_EQ(regions.at("junction"), b.junction_hexes);
+  EXPECT_EQ(regions.at("wall_layer"), b.far.stats.wall_layer_prisms);
+  expect_sound(b.far.mesh, c, 3e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Wings, CTypeVariants,
@@ -165,12 +170,14 @@ TEST(CTypeEndToEnd, JunctionPiecesShareTheirFacesWithTheSplitPrismsNodeForNode) 
   const Built b = build(c, 0.05, 0.04);
   ho::CurvingParams curving;
   curving.order = 3;
-  const mesh::Mesh curved = ho::curve_mesh(b.near.mesh, *b.model, curving);
+  const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
   const int n_wing = 3, n_wall = 4;
-  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.near.stacks, {{n_wing, 2.0}, {}}, {{n_wall, 1.5}, {}});
+  const pipeline::StackSplit split =
+      pipeline::split_stacks(curved, b.far.stacks, {{n_wing, 2.0}, {}}, {{n_wall, 1.5}, {}});
   const mesh::Mesh& m = split.mesh;
   const auto region = [&](const std::string& name) {
-    return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) - m.region_names().begin());
+    return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) -
+                            m.region_names().begin());
   };
   const int junction = region("junction"), wing = region("wing_layer"), wall = region("wall_layer");
   std::map<std::uint32_t, std::vector<int>> users;  // face -> regions of its elements
@@ -182,8 +189,8 @@ TEST(CTypeEndToEnd, JunctionPiecesShareTheirFacesWithTheSplitPrismsNodeForNode) 
     with_wing += std::count(regions.begin(), regions.end(), wing) > 0;
     with_wall += std::count(regions.begin(), regions.end(), wall) > 0;
   }
-  EXPECT_EQ(with_wing, b.near.junction_hexes * n_wing);
-  EXPECT_EQ(with_wall, b.near.junction_hexes * n_wall);
+  EXPECT_EQ(with_wing, b.junction_hexes * n_wing);
+  EXPECT_EQ(with_wall, b.junction_hexes * n_wall);
   expect_sound(m, c, 2e-3);
 }
 
@@ -201,9 +208,9 @@ TEST(CTypeEndToEnd, OccWingCurvedAndSplit) {
   const Built b = build(c, 0.05, 0.04);
   ho::CurvingParams curving;
   curving.order = 2;
-  const mesh::Mesh curved = ho::curve_mesh(b.near.mesh, *b.model, curving);
-  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.near.stacks, {{3, 1.5}, {}}, {{2, 2.0}, {}});
-  EXPECT_EQ(elements_by_region(split.mesh).at("junction"), b.near.junction_hexes * 3 * 2);
+  const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
+  const pipeline::StackSplit split = pipeline::split_stacks(curved, b.far.stacks, {{3, 1.5}, {}}, {{2, 2.0}, {}});
+  EXPECT_EQ(elements_by_region(split.mesh).at("junction"), b.junction_hexes * 3 * 2);
   expect_sound(split.mesh, c, 3e-3);
 }
 

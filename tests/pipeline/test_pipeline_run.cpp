@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace semimesh::pipeline {
@@ -50,6 +52,21 @@ Config coarse_config(const fs::path& directory, const std::vector<std::string>& 
   return c;
 }
 
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The number after "key": in a JSON text (the first occurrence); NaN when absent.
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": (-?[0-9.]+(e[-+]?[0-9]+)?)")))
+    return std::nan("");
+  return std::stod(m[1].str());
+}
+
 fs::path fresh_directory(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("semimesh_pipeline_" + name);
   fs::remove_all(dir);
@@ -90,13 +107,6 @@ TEST(PipelineRun, CoarseWingIsAValidConformingHybridMesh) {
   EXPECT_NE(text.str().find("\"invalid_elements\": 0"), std::string::npos);
   EXPECT_NE(text.str().find("\"checks_passed\": true"), std::string::npos);
   fs::remove_all(dir);
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // Order 2, shell split into 3 layers of ratio 2, against the same case at order 1 without a split.
@@ -188,6 +198,38 @@ TEST(PipelineRun, RatioVaryingAlongTheSpan) {
   EXPECT_EQ(r.layers.requested_ratio_end, 1.0);
   EXPECT_GT(r.layers.achieved_ratio, 1.0);
   EXPECT_LT(r.layers.achieved_ratio, 2.0);
+
+  // What a user reads: report.json carries the same figures, each under its own name. At the root
+  // (r = 2) the three layers are 1 + 2 + 4 first cells of a 0.05 shell, at the tip (r = 1) three.
+  ASSERT_NEAR(r.thickness_min, r.thickness_max, 1e-12);  // no local reduction, so the closed forms hold
+  const std::string report = read_text(dir / "report.json");
+  EXPECT_NEAR(json_number(report, "first_cell_height_min"), 0.05 / 7.0, 0.05 / 7.0 * 0.02) << report;
+  EXPECT_NEAR(json_number(report, "first_cell_height_max"), 0.05 / 3.0, 0.05 / 3.0 * 0.02) << report;
+  EXPECT_EQ(json_number(report, "layers"), 3.0);
+  EXPECT_EQ(json_number(report, "layer_ratio"), 2.0);
+  EXPECT_EQ(json_number(report, "layer_ratio_end"), 1.0);
+  EXPECT_EQ(json_number(report, "elements"), static_cast<double>(r.mesh.elements().size()));
+  EXPECT_EQ(json_number(report, "invalid_elements"), 0.0);
+  fs::remove_all(dir);
+}
+
+// y+ = 30 at Re = 1e6 on the unit chord: h = 30 / (1e6 sqrt(Cf / 2)), Cf = 0.026 Re^(-1/7), by hand
+// 30 / (1e6 x 0.04250111) = 7.058640e-4; the four layers of the 0.05 shell then grow by r from it.
+TEST(PipelineRun, FirstCellFromYPlus) {
+  CountingProgress progress;
+  const fs::path dir = fresh_directory("y_plus");
+  const RunResult r = run(coarse_config(dir, {"boundary_layer.layers=4", "boundary_layer.y_plus=30",
+                                              "boundary_layer.reynolds=1e6", "output.formats=[\"msh41\"]"}),
+                          progress);
+  ASSERT_TRUE(r.checks_passed());
+  ASSERT_NEAR(r.thickness_min, r.thickness_max, 1e-12);
+  EXPECT_NEAR(r.layers.first_cell_height_min, 7.058640e-4, 7.058640e-4 * 1e-6);
+  EXPECT_NEAR(r.layers.first_cell_height_target, 7.058640e-4, 1e-10);
+  EXPECT_NEAR(r.layers.y_plus_min, 30.0, 1e-4);
+  const double q = r.layers.requested_ratio;  // h (q^4 - 1) / (q - 1) = 0.05
+  EXPECT_NEAR(7.058640e-4 * (std::pow(q, 4) - 1) / (q - 1), 0.05, 1e-8);
+  const std::string report = read_text(dir / "report.json");
+  EXPECT_NEAR(json_number(report, "y_plus_min"), 30.0, 1e-4) << report;
   fs::remove_all(dir);
 }
 
@@ -312,10 +354,12 @@ TEST(PipelineRunCType, OrderTwoReportsRegionsAndBothLayers) {
 // Bad C-type input: a BadInput RunError naming the entity and value, and no file written.
 TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
-      {{"nearfield.junction_min_angle=100"}, {"curve 'root_", "90 degrees"}},
-      {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"surface 'upper'", "not planar"}},
+      {{"nearfield.junction_min_angle=100"}, {"('root_", "90 degrees"}},
+      {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "not planar"}},
       {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
-      {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"}, {"surface '", "0.6"}},
+      {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"}, {"surface ", "0.6"}},
+      {{"geometry.naca.sweep=30", "geometry.naca.taper=0.5", "wall_layer.thickness=0.2"},
+       {"thicker than the wing's shell", "('root_"}},
   };
   for (const auto& [overrides, expected] : cases) {
     const fs::path dir = fresh_directory("c_bad");

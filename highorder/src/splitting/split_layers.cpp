@@ -36,8 +36,8 @@ using mesh::NodeId;
 
 /// The body side of a shape for one split direction.
 struct DirectionData {
-  std::vector<int> bottom;                  // local vertices on the face at coordinate -1
-  std::vector<int> top_of;                  // [vertices] partner on the opposite face (-1 if none)
+  std::vector<int> bottom;  // local vertices on the face at coordinate -1
+  std::vector<int> top_of;  // [vertices] partner on the opposite face (-1 if none)
   std::vector<std::array<int, 2>> bottom_edges;
 };
 
@@ -84,7 +84,10 @@ struct Plan {
 class Splitter {
  public:
   Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller)
-      : in_(in), families_(std::move(families)), caller_(std::move(caller)), out_(in.order(), in.node_set()),
+      : in_(in),
+        families_(std::move(families)),
+        caller_(std::move(caller)),
+        out_(in.order(), in.node_set()),
         stats_(families_.size()) {}
 
   mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
@@ -114,7 +117,7 @@ class Splitter {
   std::vector<std::pair<int, std::vector<NodeId>>> cuts(std::size_t element, std::uint32_t face) const;
 
   struct SplitGeometry {
-    Eigen::MatrixX3d x;                       // (pieces * nodes, 3)
+    Eigen::MatrixX3d x;                                // (pieces * nodes, 3)
     std::array<std::vector<double>, 2> first_heights;  // per direction slot: [bottom vertices]
     std::array<std::vector<double>, 2> ratios;
   };
@@ -148,9 +151,13 @@ ShapeData& Splitter::shape_data(Shape shape) {
   auto it = shapes_.find(shape);
   if (it != shapes_.end()) return it->second;
   const int order = in_.order();
-  ShapeData data{shape, detail::lattice_points(shape, order), detail::lattice_index(shape, order),
-                 reference_nodes(shape, order, in_.node_set()), LagrangeBasis(shape, order, in_.node_set()),
-                 LagrangeBasis(shape, 1, NodeSet::Equispaced), {}};
+  ShapeData data{shape,
+                 detail::lattice_points(shape, order),
+                 detail::lattice_index(shape, order),
+                 reference_nodes(shape, order, in_.node_set()),
+                 LagrangeBasis(shape, order, in_.node_set()),
+                 LagrangeBasis(shape, 1, NodeSet::Equispaced),
+                 {}};
   return shapes_.emplace(shape, std::move(data)).first->second;
 }
 
@@ -235,7 +242,9 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
   // cached.
   SplitGeometry out;
   if (z_of_vertex.empty()) {
-    out.x = uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) * X;
+    out.x =
+        uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) *
+        X;
   } else {
     // Interfaces per bottom vertex, interpolated linearly in between (see RatioField).
     const DirectionData& bottom = direction_of(element, 0);
@@ -290,8 +299,9 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
     h[plan.direction[0]] = 0, h[plan.direction[1]] = 0;
     const int v = data.index.at(h);
     if (v < num_vertices(data.shape))
-      return {4, coarse[v], coarse[direction_of(element, 0).top_of[v]], coarse[direction_of(element, 1).top_of[v]],
-              g[0], g[1], 0};
+      return {
+          4,    coarse[v], coarse[direction_of(element, 0).top_of[v]], coarse[direction_of(element, 1).top_of[v]], g[0],
+          g[1], 0};
     return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[0], 1 + g[1]};
   }
   const int s = inside[0] ? 0 : 1, d = plan.direction[s];
@@ -300,7 +310,8 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
   if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
   const DirectionData& side = direction_of(element, s);
   for (int v : side.bottom)
-    if (data.lattice[v] == h) return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
+    if (data.lattice[v] == h)
+      return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
   for (const auto& e : side.bottom_edges) {
     const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
     int steps = 0, along = 0;
@@ -400,12 +411,11 @@ void Splitter::check_side_faces(const std::vector<LayerSplit>& split) {
       const auto& u = users[el.faces[f]];
       const long other = u[0] == static_cast<long>(s.element) ? u[1] : u[0];
       if (other < 0 || cuts(static_cast<std::size_t>(other), el.faces[f]) == mine) continue;
-      throw std::invalid_argument(
-          caller_ + ": element " + std::to_string(s.element) + " (" + to_string(el.shape) +
-          ") is split across its face shared with element " + std::to_string(other) + " (" +
-          to_string(in_.elements()[other].shape) + "), which is " +
-          (plans_[other].split() ? "split in another way" : "not split") +
-          ": the shared face would crack; split both the same way");
+      throw std::invalid_argument(caller_ + ": element " + std::to_string(s.element) + " (" + to_string(el.shape) +
+                                  ") is split across its face shared with element " + std::to_string(other) + " (" +
+                                  to_string(in_.elements()[other].shape) + "), which is " +
+                                  (plans_[other].split() ? "split in another way" : "not split") +
+                                  ": the shared face would crack; split both the same way");
     }
   }
 }
@@ -416,7 +426,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   for (std::size_t f = 0; f < families_.size(); ++f) {
     const LayerDistribution& d = families_[f].distribution;
     if (d.layers < 1)
-      throw std::invalid_argument(caller_ + ": LayerDistribution::layers = " + std::to_string(d.layers) + " must be >= 1");
+      throw std::invalid_argument(caller_ + ": LayerDistribution::layers = " + std::to_string(d.layers) +
+                                  " must be >= 1");
     if (!families_[f].ratio) ratio_at(Eigen::Vector3d::Zero(), 0, static_cast<int>(f));  // checks the constant ratio
   }
   plans_.assign(in_.elements().size(), Plan{});
@@ -439,8 +450,9 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
                                     " can be split in this direction");
       const int family = split[j].family[slot];
       if (family < 0 || family >= static_cast<int>(families_.size()))
-        throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " + std::to_string(e) +
-                                    " is not one of the " + std::to_string(families_.size()) + " given");
+        throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " +
+                                    std::to_string(e) + " is not one of the " + std::to_string(families_.size()) +
+                                    " given");
       if (slot == 1 && families_[family].ratio)
         throw std::invalid_argument(caller_ + ": element " + std::to_string(e) +
                                     ": a ratio field is supported on the first direction only");
@@ -449,8 +461,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
     if (dir[1] == dir[0])
       throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " lists direction " +
                                   std::to_string(dir[0]) + " twice");
-    if (position[e] >= 0)
-      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
+    if (position[e] >= 0) throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
     plans_[e] = {dir, split[j].family};
     if (!families_[split[j].family[0]].ratio) uniform_values(s, plans_[e]);
@@ -518,7 +529,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
     const int nv = num_vertices(bf.shape), na = layers(e, 0);
     std::vector<int> local(nv);
     for (int j = 0; j < nv; ++j)
-      local[j] = static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
+      local[j] =
+          static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
     const auto& pieces = subs[position[e]];
     for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
       // A piece lies on the face unless the face is at one end of a split direction and the piece
@@ -532,7 +544,9 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
         if (all_low) on_face = k[s] == 0;
         if (all_high) on_face = k[s] == layers(e, s) - 1;
       }
-      if (on_face) out_.add_boundary_face(group, bf.shape, detail::face_nodes_of_element(el.shape, in_.order(), pieces[piece], local));
+      if (on_face)
+        out_.add_boundary_face(group, bf.shape,
+                               detail::face_nodes_of_element(el.shape, in_.order(), pieces[piece], local));
     }
   }
 

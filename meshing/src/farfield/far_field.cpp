@@ -1,5 +1,7 @@
 #include "semimesh/farfield/far_field.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "wall_annulus.hpp"
@@ -42,8 +44,6 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
     if (!ok) throw FarFieldError("far field: " + what);
   };
   if (const auto bad = params::violation(p, far_field_keys(), "farfield")) require(false, *bad);
-  require(p.wall_layer_thickness >= 0 && std::isfinite(p.wall_layer_thickness),
-          "wall_layer_thickness must be >= 0 (0: no wall layer), got " + std::to_string(p.wall_layer_thickness));
   require(nf.mesh.order() == 1, "the near-field mesh must be linear (order 1) when the far field is built, it has order " +
                                     std::to_string(nf.mesh.order()));
   require(nf.footprint.size() >= 3, "the near field's footprint has " + std::to_string(nf.footprint.size()) +
@@ -54,7 +54,7 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   require(wall_surface >= 0 && wall_surface < model.num_surfaces(),
           "wall surface id " + std::to_string(wall_surface) + " is not a surface of the model");
   require(model.surface(wall_surface).is_planar(),
-          "wall surface " + std::to_string(wall_surface) + " ('" + model.surface(wall_surface).name() + "') is not planar");
+          "the wall, " + cad::surface_label(model, wall_surface) + ", is not planar");
 }
 
 // One mesh node per CAD vertex and per inner curve-mesh node, so every surface using a curve
@@ -210,10 +210,14 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
 
 }  // namespace
 
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface) {
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness) {
+  const nearfield::NearField& nf = near;
   check_params(model, nf, params, box_surfaces, wall_surface);
-  mesh::Mesh& mesh = nf.mesh;
+  if (!(wall_layer_thickness >= 0) || !std::isfinite(wall_layer_thickness))
+    throw FarFieldError("far field: the wall layer's thickness must be >= 0 (0: no wall layer), got " +
+                        std::to_string(wall_layer_thickness));
+  mesh::Mesh& mesh = near.mesh;
   FarFieldStats stats;
 
   // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
@@ -233,10 +237,12 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
   // With a wall layer, its tops stand between the wall and the tetrahedra.
   std::vector<Triangle> wall_side = wall;
-  if (params.wall_layer_thickness > 0) {
-    const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, params.wall_layer_thickness, wall, box, nf);
+  std::vector<nearfield::LayerStack> stacks = nf.stacks;
+  if (wall_layer_thickness > 0) {
+    const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, wall_layer_thickness, wall, nf, box, mesh);
     wall_side = layer.tops;
-    stats.wall_layer_prisms = layer.prisms;
+    stats.wall_layer_prisms = static_cast<int>(layer.stacks.size());
+    stacks.insert(stacks.end(), layer.stacks.begin(), layer.stacks.end());
   }
 
   // The closed boundary of the tetrahedral region, numbered densely for TetGen.
@@ -272,7 +278,7 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
-  return stats;
+  return {std::move(mesh), stats, std::move(stacks)};
 }
 
 }  // namespace semimesh::farfield

@@ -1,5 +1,6 @@
 #include "wall_layer.hpp"
 
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/farfield/far_field.hpp"
 
 #include <algorithm>
@@ -15,17 +16,14 @@ namespace {
 using mesh::CadAttachment;
 using mesh::NodeId;
 
-std::string surface_name(const cad::Model& model, int s) {
-  return "surface '" + model.surface(s).name() + "' (id " + std::to_string(s) + ")";
-}
-
 bool bounds_surface(const cad::Model& model, int curve, int surface) {
   const auto& uses = model.surfaces_of_curve(curve);
   return std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == surface; });
 }
 
 // Re-attaches a moved node to its CAD entity (projection from its old parameters).
-void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x, CadAttachment cad) {
+void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x,
+                     CadAttachment cad) {
   if (cad.kind == CadAttachment::Surface) {
     const auto p = model.surface(cad.entity).project(x, cad::Vec2(cad.u, cad.v));
     cad.u = p.uv.x(), cad.v = p.uv.y();
@@ -54,10 +52,9 @@ CadAttachment top_entity(const cad::Model& model, const CadAttachment& bottom, i
 }  // namespace
 
 WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
-                           double thickness, const std::vector<Triangle>& wall, std::vector<Triangle>& box,
-                           nearfield::NearField& nf) {
-  mesh::Mesh& mesh = nf.mesh;
-  if (nf.footprint_top.size() != nf.footprint.size())
+                           double thickness, const std::vector<Triangle>& wall, const nearfield::NearField& near,
+                           std::vector<Triangle>& box, mesh::Mesh& mesh) {
+  if (near.footprint_top.size() != near.footprint.size())
     throw FarFieldError("far field: a wall layer needs the near field's halo above its footprint (C-type near field)");
   const cad::Surface& wall_face = model.surface(wall_surface);
   const auto b = wall_face.bounds();
@@ -74,8 +71,9 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
     const auto fb = face.bounds();
     const Eigen::Vector3d n = face.normal({0.5 * (fb[0].lo + fb[0].hi), 0.5 * (fb[1].lo + fb[1].hi)});
     if (meets_wall && (!face.is_planar() || std::abs(n.dot(normal)) > 1e-9))
-      throw FarFieldError("far field: box " + surface_name(model, s) +
-                          " meets the wall but is not a plane perpendicular to it; the wall layer needs such box sides");
+      throw FarFieldError(
+          "far field: box " + cad::surface_label(model, s) +
+          " meets the wall but is not a plane perpendicular to it; the wall layer needs such box sides");
   }
 
   // Lift the box: nodes on the wall get a top node, the others move up.
@@ -87,14 +85,15 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
     throw FarFieldError("far field: the wall layer's thickness " + std::to_string(thickness) +
                         " is not below half the box height " + std::to_string(box_height));
   std::unordered_map<NodeId, NodeId> top_of;
-  for (std::size_t i = 0; i < nf.footprint.size(); ++i) top_of[nf.footprint[i]] = nf.footprint_top[i];
+  for (std::size_t i = 0; i < near.footprint.size(); ++i) top_of[near.footprint[i]] = near.footprint_top[i];
   for (NodeId v : box_nodes) {
     const Eigen::Vector3d x = mesh.node(v);
     const double d = height(x);
     if (d >= box_height - tolerance) continue;
     if (d <= tolerance) {
       const NodeId top = mesh.add_node(x + thickness * normal);
-      place_on_entity(model, mesh, top, x + thickness * normal, top_entity(model, mesh.cad_attachment(v), wall_surface));
+      place_on_entity(model, mesh, top, x + thickness * normal,
+                      top_entity(model, mesh.cad_attachment(v), wall_surface));
       top_of[v] = top;
       continue;
     }
@@ -119,10 +118,9 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
       if (added) it->second = mesh.add_node(mesh.node(bottom[k]) + thickness * normal);
       top[k] = it->second;
     }
-    nf.stacks.push_back({mesh.elements().size(), {nearfield::LayerDirection{2, nearfield::LayerFamily::Wall}}});
+    layer.stacks.push_back({mesh.elements().size(), {nearfield::LayerDirection{2, nearfield::LayerFamily::Wall}}});
     mesh.add_element(ho::Shape::Prism, {bottom[0], bottom[1], bottom[2], top[0], top[1], top[2]}, region);
     layer.tops.push_back(top);
-    ++layer.prisms;
     // Where the layer meets the box: the side quad (A, B, B', A') faces out of the domain.
     for (int k = 0; k < 3; ++k) {
       const NodeId a = bottom[k], c = bottom[(k + 1) % 3];

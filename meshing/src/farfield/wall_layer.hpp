@@ -14,18 +14,19 @@ namespace semimesh::farfield {
 using Triangle = std::array<mesh::NodeId, 3>;
 
 struct WallLayer {
-  std::vector<Triangle> tops;  ///< [prisms] the layer's top faces, normal away from the wall
-  int prisms = 0;
+  std::vector<Triangle> tops;                 ///< [prisms] the layer's top faces, normal away from the wall
+  std::vector<nearfield::LayerStack> stacks;  ///< [prisms] each prism, split along zeta in the wall's layers
 };
 
-/// Adds the wall-layer prisms (region "wall_layer", a LayerStack each in nf.stacks) on `wall`
-/// (triangles facing out of the domain, i.e. into the wall), the "farfield" quads where the layer
-/// meets the box, and lifts the box nodes: a node at height d above the wall (box height D) moves
-/// to delta + d (1 - delta / D) on its CAD entity; `box` triangles referring to nodes on the wall
-/// then refer to their tops. Throws FarFieldError naming the surface when a box face meeting the
-/// wall is not perpendicular to it, or the footprint has no halo (nf.footprint_top).
+/// Adds to `mesh` the wall-layer prisms (region "wall_layer") on `wall` (triangles facing out of
+/// the domain, i.e. into the wall), their tops over the near field's footprint being
+/// near.footprint_top, the "farfield" quads where the layer meets the box, and lifts the box nodes:
+/// a node at height d above the wall (box height D) moves to delta + d (1 - delta / D) on its CAD
+/// entity; `box` triangles referring to nodes on the wall then refer to their tops. Throws
+/// FarFieldError naming the surface when a box face meeting the wall is not perpendicular to it,
+/// or the footprint has no halo (near.footprint_top).
 WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
-                           double thickness, const std::vector<Triangle>& wall, std::vector<Triangle>& box,
-                           nearfield::NearField& nf);
+                           double thickness, const std::vector<Triangle>& wall, const nearfield::NearField& near,
+                           std::vector<Triangle>& box, mesh::Mesh& mesh);
 
 }  // namespace semimesh::farfield

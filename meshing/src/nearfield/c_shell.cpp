@@ -20,17 +20,14 @@ namespace {
 using mesh::CadAttachment;
 using mesh::NodeId;
 
-std::string curve_label(const cad::Model& model, int c) {
-  return "curve '" + model.curve(c).name() + "' (id " + std::to_string(c) + ")";
-}
-
 void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
                            double wall_thickness) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
   if (const auto bad = params::violation(j, junction_keys(), "nearfield")) fail(*bad);
   if (!(j.min_angle_deg < j.max_angle_deg && j.max_angle_deg <= j.concave_below_deg))
-    fail("junction angles must satisfy junction_min_angle (" + number_label(j.min_angle_deg) + ") < junction_max_angle (" +
-         number_label(j.max_angle_deg) + ") <= concave_angle (" + number_label(j.concave_below_deg) + ")");
+    fail("junction angles must satisfy junction_min_angle (" + number_label(j.min_angle_deg) +
+         ") < junction_max_angle (" + number_label(j.max_angle_deg) + ") <= concave_angle (" +
+         number_label(j.concave_below_deg) + ")");
   if (!(wall_thickness > 0.0) || !std::isfinite(wall_thickness))
     fail("the wall layer's thickness must be a finite number > 0 for a C-type junction, got " +
          number_label(wall_thickness));
@@ -42,7 +39,15 @@ void check_junction_params(const cad::Model& model, const BodyRoles& roles, cons
 
 // The root curves: every body-wall curve, each of which must be a concave corner (from the CAD,
 // concave_wall_curves) of a supported angle. Returns curve -> its body surface.
-std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j) {
+// Where the wing leans away over the fluid (angle a > 90 degrees), the point at delta_wing from the
+// wing's plane and delta_wall from the wall, (d_wing + d_wall cos a) / sin a out from the root, has
+// its foot on the wing only if delta_wall >= -delta_wing cos a (below that the halo's nearest wing
+// point is the root itself: the strip has no height), and lies in front of the root only if
+// delta_wall < delta_wing / -cos a (above that the wall layer is thicker than the wing's shell can
+// meet). Both bounds are tightest at the curve's largest angle.
+std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
+                                       double delta_wing, double delta_wall) {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
   std::map<int, int> surface_of;
   for (const WallCurve& w : concave_wall_curves(model, roles.body_surfaces, roles.wall_surface, j.concave_below_deg)) {
     const double worst = w.min_angle_deg < j.min_angle_deg ? w.min_angle_deg : w.max_angle_deg;
@@ -51,15 +56,33 @@ std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles&
                            surface_label(model, w.body_surface) + " and the wall meets the wall at " +
                            number_label(worst) + " degrees (seen from the fluid); the junction block supports " +
                            number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) + " degrees");
+    const double cosine = std::cos(w.max_angle_deg * kDegree);
+    const double needed = -delta_wing * cosine;
+    if (cosine < 0.0 && !(delta_wall < delta_wing / -cosine))
+      throw NearFieldError("near field: the wall layer (thickness " + number_label(delta_wall) +
+                           ") is thicker than the wing's shell (thickness " + number_label(delta_wing) +
+                           ") can meet along " + curve_label(model, w.curve) + ", which meets the wall at up to " +
+                           number_label(w.max_angle_deg) +
+                           " degrees: no point at both distances lies in front of the root; use a wall layer "
+                           "thickness below " +
+                           number_label(delta_wing / -cosine) + " (thickness / -cos of the angle)");
+    if (delta_wall < needed)
+      throw NearFieldError("near field: the wall layer (thickness " + number_label(delta_wall) +
+                           ") is too thin for the wing's shell (thickness " + number_label(delta_wing) + ") along " +
+                           curve_label(model, w.curve) + ", which meets the wall at up to " +
+                           number_label(w.max_angle_deg) +
+                           " degrees: the halo would sit over the root, leaving no root strip; use a wall layer "
+                           "thickness of at least " +
+                           number_label(needed) + " (thickness x -cos of the angle)");
     surface_of[w.curve] = w.body_surface;
   }
   for (const WallCurve& w : wall_curves(model, roles.body_surfaces, roles.wall_surface))
     if (!surface_of.count(w.curve))
-      throw NearFieldError("near field: " + curve_label(model, w.curve) + " between " +
-                           surface_label(model, w.body_surface) + " and the wall meets the wall at up to " +
-                           number_label(w.max_angle_deg) + " degrees (seen from the fluid): not a concave corner (below " +
-                           number_label(j.concave_below_deg) +
-                           " degrees); the junction block needs the whole root loop concave");
+      throw NearFieldError(
+          "near field: " + curve_label(model, w.curve) + " between " + surface_label(model, w.body_surface) +
+          " and the wall meets the wall at up to " + number_label(w.max_angle_deg) +
+          " degrees (seen from the fluid): not a concave corner (below " + number_label(j.concave_below_deg) +
+          " degrees); the junction block needs the whole root loop concave");
   return surface_of;
 }
 
@@ -72,8 +95,8 @@ int spanwise_curve(const cad::Model& model, int vertex, int wall) {
       found.push_back(c);
   }
   if (found.size() != 1)
-    throw NearFieldError("near field: the root vertex '" + model.vertex(vertex).name + "' (id " + std::to_string(vertex) +
-                         ") has " + std::to_string(found.size()) +
+    throw NearFieldError("near field: the root vertex '" + model.vertex(vertex).name + "' (id " +
+                         std::to_string(vertex) + ") has " + std::to_string(found.size()) +
                          " curves leaving the wall; the junction block needs exactly one");
   return found.front();
 }
@@ -109,7 +132,8 @@ std::vector<int> root_loop(const cad::Model& model, const BodyMesh& body, const 
                              surface_label(model, wall) + "; list every surface of the body");
   std::vector<int> loop;
   for (NodeId v : detail::footprint_loop(body, open, 0)) loop.push_back(static_cast<int>(v));
-  if (loop.size() < 3) throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, wall));
+  if (loop.size() < 3)
+    throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, wall));
   return loop;
 }
 
@@ -128,9 +152,9 @@ BodyMesh without_surface(const BodyMesh& body, int bare) {
 
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
 // plane away from the body (bisecting the two root segments' outward normals).
-JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles, const std::map<int, int>& root_surface,
-                                 const BodyMesh& body, int r, const Vec3& outward, const Frame& wall,
-                                 double delta_wing, double delta_wall) {
+JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
+                                 const std::map<int, int>& root_surface, const BodyMesh& body, int r,
+                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall) {
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
@@ -171,8 +195,9 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
   if (!(strip < 0.5 * tip))
-    throw NearFieldError("near field: the root strip (height " + number_label(strip) + ") for the wall layer thickness " +
-                         number_label(delta_wall) + " takes more than half of the body's height " + number_label(tip) +
+    throw NearFieldError("near field: the root strip (height " + number_label(strip) +
+                         ") for the wall layer thickness " + number_label(delta_wall) +
+                         " takes more than half of the body's height " + number_label(tip) +
                          " above the wall; use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
   std::vector<char> on_root(body.num_nodes(), 0);
@@ -185,10 +210,11 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
     const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
     const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
     if (!(before.dot(after) > 0.0))
-      throw NearFieldError("near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
-                           ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
-                           surface_label(model, body.node_surface[t[0]]) +
-                           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
+      throw NearFieldError(
+          "near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
+          ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
+          surface_label(model, body.node_surface[t[0]]) +
+          "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
   return {strip, tip};
 }
@@ -198,7 +224,8 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
 const params::Table<JunctionParams>& junction_keys() {
   static const params::Table<JunctionParams> table = {
       params::real("concave_angle", &JunctionParams::concave_below_deg, "(0, 180]",
-                   "C: a body-wall curve whose dihedral angle seen from the fluid stays below this (degrees) is a concave corner"),
+                   "C: a body-wall curve whose dihedral angle seen from the fluid stays below this (degrees) is a "
+                   "concave corner"),
       params::real("junction_min_angle", &JunctionParams::min_angle_deg, "(0, 180)",
                    "C: smallest supported dihedral angle of a root curve, degrees"),
       params::real("junction_max_angle", &JunctionParams::max_angle_deg, "(0, 180]",
@@ -214,7 +241,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
                                    int bare_surface) {
   detail::check_shell_params(model, roles, params);
   check_junction_params(model, roles, junction, wall_thickness);
-  const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction);
+  const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
   BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
   const int count = body.num_nodes();
   const auto open = open_edges(body);
@@ -229,17 +256,19 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   const int n = static_cast<int>(loop.size());
   std::map<std::pair<int, int>, int> triangle_of_edge;
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) triangle_of_edge[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+    for (int k = 0; k < 3; ++k)
+      triangle_of_edge[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
   auto outward = [&](int a, int b) {  // of the root segment a -> b
     const auto& t = body.triangles[triangle_of_edge.at({a, b})];
-    const Vec3 n_tri = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
+    const Vec3 n_tri =
+        (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
     return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
   };
   std::vector<JunctionNode> nodes(n);
   for (int i = 0; i < n; ++i) {
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
-    nodes[i] = place_junction_node(model, roles, root_surface, body, r, (outward(prev, r) + outward(r, next)).normalized(),
-                                   wall, delta_wing, delta_wall);
+    nodes[i] = place_junction_node(model, roles, root_surface, body, r,
+                                   (outward(prev, r) + outward(r, next)).normalized(), wall, delta_wing, delta_wall);
   }
   std::vector<CadAttachment> root_cad(n);
   for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
@@ -278,7 +307,8 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
     if (body.triangle_surface[t] == bare_surface) continue;
     const auto& v = body.triangles[t];
-    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+    m.add_element(ho::Shape::Prism,
+                  {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
                   layer_region);
     field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
     field.element_surface.push_back(body.triangle_surface[t]);
@@ -294,7 +324,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
   }
   auto hex_of = [&](int a, int b) {
-    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]), id(loop[a]),
+    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]),          id(loop[a]),
                                  foot_id[a], foot_id[b], id(loop[b]) + offset, id(loop[a]) + offset};
   };
   auto corners = [&](const std::array<NodeId, 8>& h) {
@@ -313,8 +343,8 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
                            number_label(delta_wing) + " and wall layer thickness " + number_label(delta_wall) +
                            "; use thinner layers or a finer root mesh");
     m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), junction_region);
-    field.stacks.push_back({field.element_surface.size(),
-                            {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
+    field.stacks.push_back(
+        {field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
     field.element_surface.push_back(body.node_surface[loop[a]]);
     m.add_boundary_face("wing", ho::Shape::Quadrilateral, {h[0], h[3], h[2], h[1]});
     m.add_boundary_face("wall", ho::Shape::Quadrilateral, {h[0], h[1], h[5], h[4]});

@@ -27,7 +27,8 @@ std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<in
   const cad::Surface& wall_face = model.surface(wall);
   for (int c = 0; c < model.num_curves(); ++c) {
     const auto& uses = model.surfaces_of_curve(c);
-    const bool on_wall = std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; });
+    const bool on_wall =
+        std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; });
     if (!on_wall) continue;
     for (const cad::SurfaceUse& use : uses) {
       if (!std::count(body_surfaces.begin(), body_surfaces.end(), use.surface)) continue;

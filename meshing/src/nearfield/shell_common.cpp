@@ -41,7 +41,8 @@ std::string reason_text(unsigned reasons) {
   std::string text;
   if (reasons & kFold) text += "neighbouring prisms would fold (concave curvature)";
   if (reasons & kProximity)
-    text += std::string(text.empty() ? "" : "; ") + "the layer would come closer than half its thickness to another part of the body";
+    text += std::string(text.empty() ? "" : "; ") +
+            "the layer would come closer than half its thickness to another part of the body";
   return text.empty() ? "graded from a reduced neighbour" : text;
 }
 
@@ -151,15 +152,16 @@ LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
       reasons[i] |= bad[i];
       reducible = true;
       if (thickness[i] <= thinnest_allowed * (1.0 + 1e-12) || round == max_rounds)
-        throw NearFieldError("near field: cannot build the prism layer on " + surface_label(model, body.node_surface[i]) +
-                             " at " + point_label(body.points[i]) + ": " + reason_text(bad[i]) +
-                             " even at min_thickness_fraction (" + number_label(params.min_thickness_fraction) +
-                             ") x thickness (" + number_label(params.thickness) +
-                             "); use a smaller 'thickness' or a finer surface mesh there");
+        throw NearFieldError(
+            "near field: cannot build the prism layer on " + surface_label(model, body.node_surface[i]) + " at " +
+            point_label(body.points[i]) + ": " + reason_text(bad[i]) + " even at min_thickness_fraction (" +
+            number_label(params.min_thickness_fraction) + ") x thickness (" + number_label(params.thickness) +
+            "); use a smaller 'thickness' or a finer surface mesh there");
       thickness[i] = std::max(thickness[i] * params.reduction_factor, thinnest_allowed);
     }
     if (!reducible) {
-      const int i = static_cast<int>(std::find_if(bad.begin(), bad.end(), [](unsigned b) { return b != 0; }) - bad.begin());
+      const int i =
+          static_cast<int>(std::find_if(bad.begin(), bad.end(), [](unsigned b) { return b != 0; }) - bad.begin());
       throw NearFieldError("near field: the prism layer above the root strip on " +
                            surface_label(model, body.node_surface[i]) + " at " + point_label(body.points[i]) +
                            " is not sound: " + reason_text(bad[i]) +
@@ -177,8 +179,8 @@ std::vector<mesh::NodeId> footprint_loop(const BodyMesh& body, const std::vector
   std::map<int, int> next;
   for (const auto& [a, b] : open)
     if (!next.emplace(a, b).second)
-      throw NearFieldError("near field: the body's root passes twice through the node at " + point_label(body.points[a]) +
-                           "; the wall footprint must be one simple loop");
+      throw NearFieldError("near field: the body's root passes twice through the node at " +
+                           point_label(body.points[a]) + "; the wall footprint must be one simple loop");
   std::vector<mesh::NodeId> loop;
   int v = open.front().first;
   do {
@@ -191,7 +193,8 @@ std::vector<mesh::NodeId> footprint_loop(const BodyMesh& body, const std::vector
   } while (v != open.front().first);
   if (loop.size() != open.size())
     throw NearFieldError("near field: the body meets the wall in more than one loop (" + std::to_string(open.size()) +
-                         " root edges, first loop " + std::to_string(loop.size()) + "); one wing per wall is supported");
+                         " root edges, first loop " + std::to_string(loop.size()) +
+                         "); one wing per wall is supported");
   return loop;
 }
 

@@ -30,10 +30,10 @@ struct OffsetConstraints {
 };
 
 struct LayerOffsets {
-  std::vector<Vec3> outer;             ///< [nodes]
+  std::vector<Vec3> outer;               ///< [nodes]
   std::vector<cad::Vec2> outer_wall_uv;  ///< [nodes] root nodes: (u, v) of the offset on the wall
-  std::vector<double> thickness;       ///< [nodes] after reduction
-  std::vector<Warning> warnings;       ///< one per reduced region
+  std::vector<double> thickness;         ///< [nodes] after reduction
+  std::vector<Warning> warnings;         ///< one per reduced region
 };
 
 /// Offsets x + thickness n along the node normals, reducing the thickness where prisms would fold

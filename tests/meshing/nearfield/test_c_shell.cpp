@@ -64,7 +64,6 @@ ShellParams shell(double thickness) {
   return p;
 }
 
-
 // Distance from x to the wing's CAD by dense sampling of every body surface's parameter box and a
 // local refinement by golden sections along both parameters (independent of cadapi's projection).
 double sampled_distance(const cad::Surface& s, const Vec3& x) {
@@ -200,7 +199,7 @@ TEST(CShellBadInput, RootCurveOutsideTheSupportedAnglesNamesCurveAndAngle) {
   JunctionParams j;
   j.min_angle_deg = 100;  // the analytic wing stands at 90 degrees on its wall
   const std::string what = c_shell_error(c, c.roles, 0.06, j, 0.04);
-  EXPECT_TRUE(contains(what, "curve 'root_")) << what;
+  EXPECT_TRUE(contains(what, "('root_")) << what;
   EXPECT_TRUE(contains(what, " 90 degrees")) << what;
 }
 
@@ -208,9 +207,10 @@ TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
   const WingCase c = wing_case(naca("0012", false));
   BodyRoles roles;
   roles.wall_surface = *c.model->find_surface("upper");
-  for (const std::string name : {"lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
+  for (const std::string name : {"lower", "te_base", "tip"})
+    roles.body_surfaces.push_back(*c.model->find_surface(name));
   const std::string what = c_shell_error(c, roles, 0.06, {}, 0.04);
-  EXPECT_TRUE(contains(what, "surface 'upper'")) << what;
+  EXPECT_TRUE(contains(what, "('upper')")) << what;
   EXPECT_TRUE(contains(what, "not planar")) << what;
 }
 
@@ -225,12 +225,13 @@ TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
   tiny.chord = 0.05;
   const WingCase c = wing_case(tiny);
   const std::string what = c_shell_error(c, c.roles, 0.6, {}, 0.04);
-  EXPECT_TRUE(contains(what, "surface '") || contains(what, "curve '")) << what;
+  EXPECT_TRUE(contains(what, "surface ") || contains(what, "curve ")) << what;
   EXPECT_TRUE(contains(what, "0.6")) << what;
 }
 
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
-  for (const auto& wing : {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
+  for (const auto& wing :
+       {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
     const Built b{wing_case(wing), {}};
     const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), JunctionParams{}, 0.03);
     expect_valid_linear_elements(f);
@@ -278,10 +279,35 @@ TEST(WallCurves, SweptTaperedWingLeansByItsSweepAngles) {
     } else {
       EXPECT_GT(w.max_angle_deg, 110.0) << c.model->curve(w.curve).name();  // near the leading edge
       EXPECT_LE(w.max_angle_deg, 120.0 + 1e-9) << c.model->curve(w.curve).name();
-      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();   // near the trailing edge
+      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();  // near the trailing edge
       EXPECT_GE(w.min_angle_deg, 90.0 - te_sweep - 1e-9) << c.model->curve(w.curve).name();
     }
   }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// The swept wing leans over the fluid at its leading edge (up to about 116 degrees sampled): a wall
+// layer thinner than thickness x -cos(angle) leaves no root strip there, an error naming the curve.
+TEST(CShellBadInput, WallLayerTooThinForALeaningWingNamesCurveAndThickness) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const std::string what = c_shell_error(c, c.roles, 0.1, {}, 0.01);
+  EXPECT_TRUE(contains(what, "too thin")) << what;
+  EXPECT_TRUE(contains(what, "('root_")) << what;
+  EXPECT_TRUE(contains(what, "at least 0.04")) << what;  // 0.1 x -cos(115.8 degrees) = 0.0435
+}
+
+// ... and a wall layer thicker than thickness / -cos(angle) cannot be met by the wing's shell.
+TEST(CShellBadInput, WallLayerThickerThanTheWingShellCanMeetNamesCurveAndThickness) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const std::string what = c_shell_error(c, c.roles, 0.05, {}, 0.2);
+  EXPECT_TRUE(contains(what, "thicker than the wing's shell")) << what;
+  EXPECT_TRUE(contains(what, "('root_")) << what;
+  EXPECT_TRUE(contains(what, "below 0.11")) << what;  // 0.05 / -cos(115.8 degrees) = 0.115
 }
 
 }  // namespace

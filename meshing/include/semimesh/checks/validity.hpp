@@ -28,6 +28,7 @@ struct ValidityResult {
   double median_scaled_jacobian = 1.0;
   std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
+  std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
   bool ok() const { return invalid == 0; }
 };
 

@@ -1,4 +1,4 @@
-// The C-type near field (paper, "medial halos"; DESIGN.md section 5): the O-type prism layer on the
+// The C-type near field (paper, "medial halos"; docs/architecture.md): the O-type prism layer on the
 // wing, lifted off the wall by a root strip, and a block of hexes in the corner between the wing
 // and the wall along the root loop.
 //
