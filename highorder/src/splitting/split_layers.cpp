@@ -225,8 +225,13 @@ std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
   const Plan& plan = plans_[element];
   if (!families_[plan.family[0]].ratio) return {};
   std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
-  for (int v : direction_of(element, 0).bottom)
-    z_of_vertex[v] = layer_interfaces(layers(element, 0), ratio_at(in_.node(el.vertices[v]), element, plan.family[0]));
+  bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
+  for (int v : direction_of(element, 0).bottom) {
+    const double r = ratio_at(in_.node(el.vertices[v]), element, plan.family[0]);
+    uniform = uniform && r == families_[plan.family[0]].distribution.ratio;
+    z_of_vertex[v] = layer_interfaces(layers(element, 0), r);
+  }
+  if (uniform) return {};  // the cached basis values of the constant ratio give the same points
   return z_of_vertex;
 }
 
@@ -464,7 +469,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
     if (position[e] >= 0) throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
     plans_[e] = {dir, split[j].family};
-    if (!families_[split[j].family[0]].ratio) uniform_values(s, plans_[e]);
+    uniform_values(s, plans_[e]);  // also for a ratio field: elements where it is constant use them
   }
   check_side_faces(split);
   if (first_piece) first_piece->assign(in_.elements().size(), 0);
