@@ -7,6 +7,7 @@ add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/boundary_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/parameter_triangulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_improvement.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/flat_corners.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_surface.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/structured_surface.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_quality.cpp
