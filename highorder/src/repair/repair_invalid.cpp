@@ -1,6 +1,7 @@
 #include "semimesh/ho/repair.hpp"
 
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/quality.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
@@ -27,17 +28,18 @@ void apply(mesh::Mesh& m, const Blend& b, double t) {
   for (std::size_t i = 0; i < b.nodes.size(); ++i) m.place_node(b.nodes[i], b.straight[i] + t * (b.curved[i] - b.straight[i]));
 }
 
-bool all_valid(const mesh::Mesh& m, const std::vector<std::size_t>& elements) {
+bool all_valid(const mesh::Mesh& m, const std::vector<std::size_t>& elements, double floor) {
   return std::all_of(elements.begin(), elements.end(), [&](std::size_t e) {
-    return certify_jacobian(m.elements()[e].shape, m.order(), m.node_set(), m.element_coordinates(e)).valid;
+    return acceptable(certify_jacobian(m.elements()[e].shape, m.order(), m.node_set(), m.element_coordinates(e), 8, floor),
+                      floor);
   });
 }
 
 /// Largest t in [0, 1] found by bisection for which every element of `check` is valid, with the
 /// nodes left there; -1 (nodes back at t = 1) when t = 0 is not valid.
-double largest_valid_blend(mesh::Mesh& m, const Blend& b, const std::vector<std::size_t>& check) {
+double largest_valid_blend(mesh::Mesh& m, const Blend& b, const std::vector<std::size_t>& check, double floor) {
   apply(m, b, 0.0);
-  if (!all_valid(m, check)) {
+  if (!all_valid(m, check, floor)) {
     apply(m, b, 1.0);
     return -1.0;
   }
@@ -45,7 +47,7 @@ double largest_valid_blend(mesh::Mesh& m, const Blend& b, const std::vector<std:
   for (int k = 0; k < kBisections; ++k) {
     const double mid = 0.5 * (lo + hi);
     apply(m, b, mid);
-    (all_valid(m, check) ? lo : hi) = mid;
+    (all_valid(m, check, floor) ? lo : hi) = mid;
   }
   apply(m, b, lo);
   return lo;
@@ -53,7 +55,7 @@ double largest_valid_blend(mesh::Mesh& m, const Blend& b, const std::vector<std:
 
 class Repairer {
  public:
-  Repairer(mesh::Mesh& m, const cad::Model& model) : m_(m), model_(model) {}
+  Repairer(mesh::Mesh& m, const cad::Model& model, double floor) : m_(m), model_(model), floor_(floor) {}
   void repair(std::size_t e, RepairStats& stats);
 
  private:
@@ -64,6 +66,7 @@ class Repairer {
 
   mesh::Mesh& m_;
   const cad::Model& model_;
+  double floor_;  // min scaled Jacobian an element must reach
   std::vector<std::vector<std::size_t>> elements_of_node_;  // built on first need
 };
 
@@ -102,7 +105,7 @@ std::vector<std::size_t> Repairer::valid_neighbours(std::size_t e, const std::ve
       if (k != e) out.push_back(k);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
-  out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t k) { return !all_valid(m_, {k}); }), out.end());
+  out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t k) { return !all_valid(m_, {k}, floor_); }), out.end());
   return out;
 }
 
@@ -131,13 +134,13 @@ RepairFailure Repairer::failure(std::size_t e) const {
 
 void Repairer::repair(std::size_t e, RepairStats& stats) {
   ++stats.checked;
-  if (all_valid(m_, {e})) {
+  if (all_valid(m_, {e}, floor_)) {
     ++stats.already_valid;
     return;
   }
   const Blend interior = blend_of(e, false);
   if (!interior.nodes.empty()) {
-    const double t = largest_valid_blend(m_, interior, {e});
+    const double t = largest_valid_blend(m_, interior, {e}, floor_);
     if (t >= 0.0) {
       ++stats.repaired_interior;
       stats.min_blend = std::min(stats.min_blend, t);
@@ -148,7 +151,7 @@ void Repairer::repair(std::size_t e, RepairStats& stats) {
   if (free.nodes.size() > interior.nodes.size()) {
     std::vector<std::size_t> check = valid_neighbours(e, free.nodes);
     check.push_back(e);
-    const double t = largest_valid_blend(m_, free, check);
+    const double t = largest_valid_blend(m_, free, check, floor_);
     if (t >= 0.0) {
       ++stats.repaired_free_nodes;
       stats.min_blend = std::min(stats.min_blend, t);
@@ -160,7 +163,8 @@ void Repairer::repair(std::size_t e, RepairStats& stats) {
 
 }  // namespace
 
-RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements) {
+RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements,
+                           double min_scaled_jacobian) {
   for (std::size_t e : elements) {
     if (e >= mesh.elements().size())
       throw std::invalid_argument("repair_invalid: element index " + std::to_string(e) + " out of range (mesh has " +
@@ -170,7 +174,7 @@ RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std:
                                   to_string(mesh.elements()[e].shape) + "; only 3D elements can be repaired");
   }
   RepairStats stats;
-  Repairer repairer(mesh, model);
+  Repairer repairer(mesh, model, min_scaled_jacobian);
   for (std::size_t e : elements) repairer.repair(e, stats);
   return stats;
 }

@@ -7,10 +7,11 @@
 
 namespace semimesh::checks {
 
-ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t max_listed) {
+ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t max_listed,
+                              double min_scaled_jacobian) {
   const std::size_t n = mesh.elements().size();
   std::vector<double> scaled(n);
-  std::vector<char> valid(n), proven(n);
+  std::vector<char> valid(n), proven(n), acceptable(n);
 
   // Strided, not blocked: elements of one kind (curved prisms, straight tets) come in long runs of
   // very different cost, so contiguous blocks would leave one worker with most of the work.
@@ -19,8 +20,10 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
   auto certify_stride = [&](std::size_t first) {
     for (std::size_t e = first; e < n; e += workers) {
       const ho::ElementQuality q =
-          ho::element_quality(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e));
+          ho::element_quality(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e),
+                              8, min_scaled_jacobian);
       scaled[e] = q.scaled_jacobian;
+      acceptable[e] = ho::acceptable(q.bounds, min_scaled_jacobian);
       valid[e] = q.bounds.valid;
       proven[e] = q.bounds.proven;
     }
@@ -32,8 +35,9 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
 
   ValidityResult result;
   result.elements = n;
+  result.floor = min_scaled_jacobian;
   for (std::size_t e = 0; e < n; ++e) {
-    if (valid[e]) continue;
+    if (acceptable[e]) continue;
     ++result.invalid;
     InvalidElement bad;
     bad.element = e;
@@ -43,6 +47,7 @@ ValidityResult check_validity(const mesh::Mesh& mesh, int threads, std::size_t m
     bad.centroid /= nv;
     bad.scaled_jacobian = scaled[e];
     bad.proven = proven[e];
+    bad.below_floor = valid[e];
     result.worst.push_back(bad);
   }
   std::stable_sort(result.worst.begin(), result.worst.end(),

@@ -328,6 +328,13 @@ void read_highorder(Section s, HighOrderConfig& h) {
   s.reject_unknown();
 }
 
+void read_checks(Section s, ChecksConfig& k) {
+  s.real("min_scaled_jacobian", k.min_scaled_jacobian);
+  s.require(k.min_scaled_jacobian >= 0.0 && k.min_scaled_jacobian < 1.0, "min_scaled_jacobian",
+            "in [0, 1) (0: only proven validity)");
+  s.reject_unknown();
+}
+
 void read_output(Section s, OutputConfig& o) {
   s.strings("formats", o.formats);
   for (const std::string& f : o.formats)
@@ -359,12 +366,12 @@ Config parse_config(const std::string& text, const std::string& source_name, con
   for (const std::string& o : overrides) apply_override(root, o, origin);
 
   static const std::set<std::string> sections = {"geometry", "nearfield", "boundary_layer", "sizing",
-                                                  "farfield", "highorder", "output"};
+                                                  "farfield", "highorder", "checks", "output"};
   for (const auto& [k, node] : root)
     if (!sections.count(std::string(k.str())))
       throw ConfigError("config error: " + location(origin, std::string(k.str()), &node) + ": unknown key " +
                         std::string(k.str()) +
-                        " (sections: geometry, nearfield, boundary_layer, sizing, farfield, highorder, output)");
+                        " (sections: geometry, nearfield, boundary_layer, sizing, farfield, highorder, checks, output)");
 
   Config c;
   read_geometry(Section(origin, root, "geometry", "geometry"), c, base_directory);
@@ -373,6 +380,7 @@ Config parse_config(const std::string& text, const std::string& source_name, con
   read_sizing(Section(origin, root, "sizing", "sizing"), c.sizing);
   read_farfield(Section(origin, root, "farfield", "farfield"), c.farfield);
   read_highorder(Section(origin, root, "highorder", "highorder"), c.highorder);
+  read_checks(Section(origin, root, "checks", "checks"), c.checks);
   read_output(Section(origin, root, "output", "output"), c.output);
   return c;
 }

@@ -322,9 +322,10 @@ RunResult run(const Config& config, Progress& progress) {
   // What cannot be repaired stays invalid and is reported by the checks (exit code 2).
   if (config.highorder.order > 1)
     stage("repair", progress, result, [&] {
-      const ho::MeshValidity validity = ho::certify_mesh(result.mesh);
+      const double floor = config.checks.min_scaled_jacobian;
+      const ho::MeshValidity validity = ho::certify_mesh(result.mesh, 8, floor);
       if (validity.all_valid()) return;
-      const ho::RepairStats repair = ho::repair_invalid(result.mesh, *model, validity.invalid_elements);
+      const ho::RepairStats repair = ho::repair_invalid(result.mesh, *model, validity.invalid_elements, floor);
       result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
                                             validity.invalid, repair.repaired_interior + repair.repaired_free_nodes,
                                             repair.failures.size()));
@@ -360,7 +361,7 @@ RunResult run(const Config& config, Progress& progress) {
     if (result.mesh.order() > 1)
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
-    result.validity = checks::check_validity(result.mesh);
+    result.validity = checks::check_validity(result.mesh, 0, 100, config.checks.min_scaled_jacobian);
     const double chord = reference_length(config.geometry, body);
     const ho::GeometricError error = ho::geometric_error(result.mesh, *model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};

@@ -41,6 +41,8 @@ struct RepairStats {
 /// Repairs the listed elements of `mesh` in order (3D elements; the mesh's order and node set);
 /// `model` is the CAD the attachments refer to (used to name the surface in a failure). Nodes with a
 /// CAD attachment never move. Throws std::invalid_argument for an index out of range or a 2D element.
-RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements);
+/// An element counts as repaired when acceptable(bounds, min_scaled_jacobian) (0: proven valid).
+RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements,
+                           double min_scaled_jacobian = 0.0);
 
 }  // namespace semimesh::ho

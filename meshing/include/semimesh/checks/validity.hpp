@@ -17,19 +17,23 @@ struct InvalidElement {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the vertices
   double scaled_jacobian = 0.0;
   bool proven = true;  ///< false: not proven invalid, only not proven valid
+  bool below_floor = false;  ///< proven valid, but its scaled Jacobian is below the floor
 };
 
 struct ValidityResult {
   std::size_t elements = 0;
-  std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided)
+  std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided) or below the floor
+  double floor = 0.0;                        ///< the min_scaled_jacobian the check used
   double min_scaled_jacobian = 1.0;
   double median_scaled_jacobian = 1.0;
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
   bool ok() const { return invalid == 0; }
 };
 
-/// Certifies every element, on `threads` threads (0: the hardware's count). The verdict does not
-/// depend on the thread count.
-ValidityResult check_validity(const mesh::Mesh& mesh, int threads = 0, std::size_t max_listed = 100);
+/// Certifies every element, on `threads` threads (0: the hardware's count). An element counts as
+/// invalid unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable). The
+/// verdict does not depend on the thread count.
+ValidityResult check_validity(const mesh::Mesh& mesh, int threads = 0, std::size_t max_listed = 100,
+                              double min_scaled_jacobian = 0.0);
 
 }  // namespace semimesh::checks

@@ -95,6 +95,13 @@ struct HighOrderConfig {
   int spring_iterations = 50;    ///< Gauss-Newton iterations per edge or face before a fallback
 };
 
+/// [checks]
+struct ChecksConfig {
+  /// An element whose certified scaled Jacobian is below this counts as invalid: a positive floor
+  /// keeps numerically degenerate elements (det J ~ 1e-16 of its maximum) out of a written mesh.
+  double min_scaled_jacobian = 1e-3;
+};
+
 /// [output]
 struct OutputConfig {
   std::vector<std::string> formats = {"msh41", "vtu"};  ///< of "msh41", "msh22", "vtu", "nektar"
@@ -110,6 +117,7 @@ struct Config {
   SizingConfig sizing;
   FarFieldConfig farfield;
   HighOrderConfig highorder;
+  ChecksConfig checks;
   OutputConfig output;
 };
 
