@@ -17,6 +17,7 @@
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/surface/error.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
+#include "semimesh/surface/shell_size_limit.hpp"
 
 #include <fmt/format.h>
 
@@ -286,8 +287,15 @@ RunResult run(const Config& config, Progress& progress) {
   });
   const Roles roles = stage("roles", progress, result, [&] { return resolve_roles(*model, config.geometry); });
 
-  const surface::SizeField size =
-      stage("size field", progress, result, [&] { return surface::SizeField(*model, size_params(config.sizing)); });
+  const surface::SizeField size = stage("size field", progress, result, [&] {
+    surface::SizeParams params = size_params(config.sizing);
+    // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    if (config.highorder.order > 1) {
+      const auto limits = surface::shell_size_sources(*model, {config.nearfield.thickness, roles.body}, params);
+      params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
+    }
+    return surface::SizeField(*model, params);
+  });
   const surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
     return surface::mesh_model_surfaces(*model, size, mesh_options(*model, config.sizing));
   });

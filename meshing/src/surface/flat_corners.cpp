@@ -60,7 +60,11 @@ int fix_flat_corners(const cad::Model& model, int surface, SurfaceMesh& mesh) {
       int r = -1;
       for (int v : tris[s])
         if (v != p && v != q) r = v;
-      if (signed_area_uv(mesh, n, p, r) > 0.0 && signed_area_uv(mesh, n, r, q) > 0.0) {
+      // A swap to a boundary node r would make the edge n-r join two nodes of one curve, which
+      // curving reads as lying on that curve: only swap to an interior node.
+      const bool swap = !mesh.origin[r].on_boundary() && signed_area_uv(mesh, n, p, r) > 0.0 &&
+                        signed_area_uv(mesh, n, r, q) > 0.0;
+      if (swap) {
         tris[t] = {n, p, r};
         tris[s] = {n, r, q};
         uses.erase(edge_key(p, q));

@@ -6,7 +6,7 @@
 // e.g. the leading edge of a wing's flat tip cap) that angle is 180 degrees: det J of the curved
 // triangle, and of the prism extruded from it, is zero at n however fine the mesh. Such corners
 // get a second triangle: the opposite edge is swapped, or split at its (u, v) midpoint when the
-// swap would not be valid in (u, v).
+// swap would not be valid in (u, v) or would end on a boundary node.
 #pragma once
 
 #include "semimesh/surface/surface_mesh.hpp"
