@@ -99,7 +99,7 @@ struct HighOrderConfig {
 struct ChecksConfig {
   /// An element whose certified scaled Jacobian is below this counts as invalid: a positive floor
   /// keeps numerically degenerate elements (det J ~ 1e-16 of its maximum) out of a written mesh.
-  double min_scaled_jacobian = 1e-3;
+  double min_scaled_jacobian = 1e-5;
 };
 
 /// [output]
