@@ -337,6 +337,9 @@ RunResult run(const Config& config, Progress& progress) {
       result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
                                             validity.invalid, repair.repaired_interior + repair.repaired_free_nodes,
                                             repair.failures.size()));
+      constexpr std::size_t kReasonsShown = 10;
+      for (std::size_t i = 0; i < std::min(kReasonsShown, repair.failures.size()); ++i)
+        result.warnings.push_back("repair: " + repair.failures[i].reason);
     });
 
   // Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
