@@ -53,6 +53,17 @@ double largest_valid_blend(mesh::Mesh& m, const Blend& b, const std::vector<std:
   return lo;
 }
 
+/// The first t of 1, 3/4, 1/2, 1/4 for which every element of `check` is acceptable, with the nodes
+/// left there; -1 (nodes back at t = 0) when none is. Not a bisection: t = 0 is the invalid state.
+double first_valid_step(mesh::Mesh& m, const Blend& b, const std::vector<std::size_t>& check, double floor) {
+  for (double t : {1.0, 0.75, 0.5, 0.25}) {
+    apply(m, b, t);
+    if (all_valid(m, check, floor)) return t;
+  }
+  apply(m, b, 0.0);
+  return -1.0;
+}
+
 class Repairer {
  public:
   Repairer(mesh::Mesh& m, const cad::Model& model, double floor) : m_(m), model_(model), floor_(floor) {}
@@ -60,6 +71,7 @@ class Repairer {
 
  private:
   Blend blend_of(std::size_t e, bool free_boundary_nodes) const;
+  Blend follow_body_face(std::size_t e) const;
   /// Elements other than e that use a node of `nodes` and are valid now.
   std::vector<std::size_t> valid_neighbours(std::size_t e, const std::vector<NodeId>& nodes);
   RepairFailure failure(std::size_t e) const;
@@ -86,6 +98,34 @@ Blend Repairer::blend_of(std::size_t e, bool free_boundary_nodes) const {
     b.nodes.push_back(ids[i]);
     b.straight.push_back(straight.row(i).transpose());
     b.curved.push_back(X.row(i).transpose());
+  }
+  return b;
+}
+
+// A prism of the shell: its face 0-1-2 lies on the body, curved onto the CAD; its outer face is
+// straight. Every node off the CAD moves from where it is (t = 0) to its straight position plus the
+// body face's displacement below it (t = 1): the whole column follows the curved body, as when the
+// paper curves the single-layer element as a whole. The outer face's nodes are shared with the far
+// field, so the far-field elements there get curved too (and are checked).
+Blend Repairer::follow_body_face(std::size_t e) const {
+  const Shape shape = m_.elements()[e].shape;
+  Blend b;
+  if (shape != Shape::Prism) return b;
+  const int P = m_.order();
+  const std::vector<NodeId> ids = m_.element_nodes(e);
+  const Eigen::MatrixX3d X = m_.element_coordinates(e);
+  Eigen::MatrixX3d reference = reference_nodes(shape, P, m_.node_set());
+  Eigen::MatrixX3d below = reference;
+  below.col(2).setConstant(-1.0);  // Gmsh's prism: face 0-1-2 at zeta = -1
+  const LagrangeBasis curved(shape, P, m_.node_set());
+  const LagrangeBasis linear(shape, 1, NodeSet::Equispaced);
+  const Eigen::MatrixX3d straight = linear.values(reference) * X.topRows(6);
+  const Eigen::MatrixX3d bulge = curved.values(below) * X - linear.values(below) * X.topRows(6);
+  for (std::size_t i = 6; i < ids.size(); ++i) {
+    if (m_.cad_attachment(ids[i]).kind != mesh::CadAttachment::None) continue;
+    b.nodes.push_back(ids[i]);
+    b.straight.push_back(X.row(i).transpose());
+    b.curved.push_back((straight.row(i) + bulge.row(i)).transpose());
   }
   return b;
 }
@@ -125,7 +165,8 @@ RepairFailure Repairer::failure(std::size_t e) const {
   }
   std::ostringstream msg;
   msg << "element " << e << " at (" << f.centroid.x() << ", " << f.centroid.y() << ", " << f.centroid.z()
-      << ") stays invalid with every node off the CAD straightened: its nodes on the CAD"
+      << ") stays invalid with every node off the CAD straightened, and with its column following the curved "
+         "body face: its nodes on the CAD"
       << (surfaces.empty() ? std::string() : " surface " + surfaces)
       << " fold it; refine the surface mesh there or reduce the near-field thickness";
   f.reason = msg.str();
@@ -155,6 +196,15 @@ void Repairer::repair(std::size_t e, RepairStats& stats) {
     if (t >= 0.0) {
       ++stats.repaired_free_nodes;
       stats.min_blend = std::min(stats.min_blend, t);
+      return;
+    }
+  }
+  const Blend column = follow_body_face(e);
+  if (!column.nodes.empty()) {
+    std::vector<std::size_t> check = valid_neighbours(e, column.nodes);
+    check.push_back(e);
+    if (first_valid_step(m_, column, check, floor_) > 0.0) {
+      ++stats.repaired_body_following;
       return;
     }
   }

@@ -335,7 +335,9 @@ RunResult run(const Config& config, Progress& progress) {
       if (validity.all_valid()) return;
       const ho::RepairStats repair = ho::repair_invalid(result.mesh, *model, validity.invalid_elements, floor);
       result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
-                                            validity.invalid, repair.repaired_interior + repair.repaired_free_nodes,
+                                            validity.invalid,
+                                            repair.repaired_interior + repair.repaired_free_nodes +
+                                                repair.repaired_body_following,
                                             repair.failures.size()));
       constexpr std::size_t kReasonsShown = 10;
       for (std::size_t i = 0; i < std::min(kReasonsShown, repair.failures.size()); ++i)
