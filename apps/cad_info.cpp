@@ -1,6 +1,8 @@
 #include "cad_info.hpp"
 
-#include "surface_area.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
+
+#include "semimesh/io/json.hpp"
 
 #include <fmt/format.h>
 
@@ -9,24 +11,14 @@
 namespace semimesh::app {
 namespace {
 
-// JSON string literal (RFC 8259 section 7: escape quote, backslash and control characters).
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') out += {'\\', static_cast<char>(c)};
-    else if (c < 0x20) out += fmt::format("\\u{:04x}", c);
-    else out += static_cast<char>(c);
-  }
-  return out + "\"";
-}
-
-std::string json_number(double x) { return std::isfinite(x) ? fmt::format("{}", x) : "null"; }
+using io::json_number;
+using io::json_string;
 
 struct SurfaceRow {
   int id;
   std::string name;
   std::string kind;
-  TrimmedArea area;
+  cad::TrimmedArea area;
   int loops;
 };
 
@@ -34,7 +26,7 @@ std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
   std::vector<SurfaceRow> rows;
   for (int s = 0; s < model.num_surfaces(); ++s) {
     const cad::Surface& surface = model.surface(s);
-    rows.push_back(SurfaceRow{s, surface.name(), cad::to_string(surface.kind()), trimmed_area(surface),
+    rows.push_back(SurfaceRow{s, surface.name(), cad::to_string(surface.kind()), cad::trimmed_area(surface),
                               static_cast<int>(model.loops(s).size())});
   }
   return rows;

@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include "exit_codes.hpp"
+
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -12,10 +14,6 @@
 namespace semimesh::app {
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitBadInput = 1;
-constexpr int kExitInvalidMesh = 2;
-constexpr int kExitInternal = 3;
 constexpr std::size_t kOffendersShown = 10;
 
 // "name ........ 1.234 s" per stage: the name when it starts, the time when it ends.
@@ -98,9 +96,9 @@ int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostr
     return kExitInvalidMesh;
   } catch (const pipeline::RunError& e) {
     fmt::print(out, "failed\n");
-    const bool input = e.kind() == pipeline::RunError::Kind::BadInput;
+    const bool input = e.cause() == Error::Cause::BadInput;
     fmt::print(err, "semimesh: {}{}\n", input ? "error: " : "internal error: ", e.what());
-    return input ? kExitBadInput : kExitInternal;
+    return exit_code(e.cause());
   }
 }
 

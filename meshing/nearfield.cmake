@@ -8,6 +8,6 @@ add_library(semimesh_nearfield
 add_library(semimesh::nearfield ALIAS semimesh_nearfield)
 target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_nearfield
-  PUBLIC semimesh_meshing semimesh_surface_mesh semimesh_cadapi
+  PUBLIC semimesh_mesh semimesh_surface_mesh semimesh_cadapi
   PRIVATE semimesh_warnings)
 set_target_properties(semimesh_nearfield PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -40,14 +40,14 @@ pl::Config config_for(double target, const std::string& directory) {
   pl::Config c;  // defaults: the paper's case
   const double f = factor_for(target);
   c.highorder.order = 1;
-  c.sizing.max_size *= f;
-  c.sizing.min_size *= f * f;  // the leading edge sits at min_size: it must coarsen faster
-  c.sizing.le_size *= f;
-  c.sizing.te_size *= f;
-  c.sizing.curvature_segments /= f;
+  c.sizing.size.max_size *= f;
+  c.sizing.size.min_size *= f * f;  // the leading edge sits at min_size: it must coarsen faster
+  c.sizing.size.le_size *= f;
+  c.sizing.size.te_size *= f;
+  c.sizing.size.curvature_segments /= f;
   c.farfield.box_size *= f;
   c.farfield.wall_size *= f;
-  c.nearfield.thickness = std::min(c.nearfield.thickness, 2.0 * c.sizing.te_size);
+  c.nearfield.shell.thickness = std::min(c.nearfield.shell.thickness, 2.0 * c.sizing.size.te_size);
   c.output.formats = {"msh41"};
   c.output.directory = directory;
   return c;

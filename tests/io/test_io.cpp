@@ -1,7 +1,6 @@
 // Writers and readers: atomic output, MSH round trips, reader error locations, VTK permutations,
-// GLL -> equispaced resampling, `semimesh check` exit codes.
+// GLL -> equispaced resampling.
 #include "semimesh/io/atomic_file.hpp"
-#include "semimesh/io/check.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/vtk_order.hpp"
@@ -244,34 +243,6 @@ TEST(Equispaced, GllMeshIsResampledOntoTheSameMap) {
     const Eigen::Vector3d cube(ref(i, 0), ref(i, 1), 0.5 * (ref(i, 2) + 1));
     EXPECT_LT((eq.element_coordinates(0).row(i).transpose() - quadratic_map(cube)).norm(), 1e-12) << "node " << i;
   }
-}
-
-TEST(Check, ExitCodesAndJson) {
-  const std::string dir = temp_dir();
-  const Mesh mesh = two_prisms(3);
-  semimesh::io::write_msh(mesh, dir + "/ok.msh");
-  std::ostringstream out, err;
-  EXPECT_EQ(semimesh::io::run_check({"check", dir + "/ok.msh", "--json"}, out, err), 0) << err.str();
-  EXPECT_NE(out.str().find("\"elements\": {\"prism\": {\"3\": 2}"), std::string::npos) << out.str();
-  EXPECT_NE(out.str().find("\"invalid\": []"), std::string::npos) << out.str();
-  EXPECT_NE(out.str().find("\"min_scaled_jacobian\""), std::string::npos);
-  EXPECT_NE(out.str().find("\"median_scaled_jacobian\""), std::string::npos);
-
-  // Fold the second prism: push its last interior node far below the bottom face.
-  Mesh folded = two_prisms(3);
-  const auto ids = folded.element_nodes(1);
-  folded.place_node(ids.back(), folded.node(ids.back()) + Eigen::Vector3d(0, 0, -3));
-  semimesh::io::write_msh(folded, dir + "/folded.msh");
-  std::ostringstream out2, err2;
-  EXPECT_EQ(semimesh::io::run_check({dir + "/folded.msh"}, out2, err2), 2);
-  EXPECT_NE(out2.str().find("invalid elements: 1"), std::string::npos) << out2.str();
-  EXPECT_NE(out2.str().find("element 1 (prism)"), std::string::npos) << out2.str();
-
-  std::ostringstream out3, err3;
-  EXPECT_EQ(semimesh::io::run_check({dir + "/missing.msh"}, out3, err3), 1);
-  EXPECT_NE(err3.str().find(dir + "/missing.msh"), std::string::npos) << err3.str();
-  std::ostringstream out4, err4;
-  EXPECT_EQ(semimesh::io::run_check({}, out4, err4), 1);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 """`semimesh check` on meshes that gmsh itself writes must agree with gmsh on every element.
 
 gmsh meshes a small box with order-3 tetrahedra (curved: the box is cut by a cylinder hole),
-writes MSH 4.1 ASCII; io_check (run_check) must read it and call every element valid, as gmsh's
+writes MSH 4.1 ASCII; `semimesh check` must read it and call every element valid, as gmsh's
 Jacobian determinants (sampled densely) do. Then one high-order edge node is pushed far across
-its elements, the file is written again, and the set of invalid elements reported by io_check
+its elements, the file is written again, and the set of invalid elements reported by `semimesh check`
 must be exactly the set where gmsh finds a negative determinant.
 
 usage: verify_gmsh_check.py IO_WRITE_SAMPLES IO_CHECK
@@ -32,9 +32,9 @@ def gmsh_invalid_indices(tet_type):
 
 
 def run_check(checker, path):
-    run = subprocess.run([checker, path, "--json"], capture_output=True, text=True)
+    run = subprocess.run([checker, "check", path, "--json"], capture_output=True, text=True)
     if run.returncode not in (0, 2):
-        raise SystemExit(f"io_check failed on {path}: {run.stderr}")
+        raise SystemExit(f"semimesh check failed on {path}: {run.stderr}")
     return run.returncode, json.loads(run.stdout)
 
 

@@ -7,7 +7,7 @@ random reference points, combined with the element's node coordinates, must repr
 checked the same way with their own basis. gmsh 4.8 cannot build prisms of order >= 3
 ("FaceClosureFull not implemented"), so those are checked node by node against PyFR's published
 Gmsh prism ordering table (pyfr/readers/nodemaps.py, GmshNodeMaps, 'pri' 40/75/126/196 nodes: a
-fact table, copied as data). Finally `semimesh check` (io_check) must agree with gmsh's
+fact table, copied as data). Finally `semimesh check` must agree with gmsh's
 Jacobian determinants on a valid and a folded element of every shape and order.
 
 usage: verify_msh.py IO_WRITE_SAMPLES IO_CHECK
@@ -169,7 +169,7 @@ def main():
             if p < 2:
                 continue
             for path, expect_valid in [(base + ".msh", True), (base + "_invalid.msh", False)]:
-                run = subprocess.run([checker, path, "--json"], capture_output=True, text=True)
+                run = subprocess.run([checker, "check", path, "--json"], capture_output=True, text=True)
                 report = json.loads(run.stdout) if run.returncode in (0, 2) else None
                 ours = run.returncode == 0
                 f.check(report is not None, f"{path}: semimesh check failed: {run.stderr}")

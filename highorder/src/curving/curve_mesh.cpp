@@ -3,7 +3,7 @@
 #include "curving/cad_classification.hpp"
 #include "curving/harmonic_extension.hpp"
 #include "curving/spring_optimisation.hpp"
-#include "mesh_validity/parallel_for.hpp"
+#include "parallel_for.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
@@ -256,14 +256,15 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   if (in_.order() != 1)
     throw std::invalid_argument("curve_mesh: the input mesh must be linear (order 1), it has order " +
                                 std::to_string(in_.order()));
-  if (params_.order < 1 || params_.order > kMaxOrder)
-    throw std::invalid_argument("curve_mesh: CurvingParams::order = " + std::to_string(params_.order) +
-                                " must be in [1, " + std::to_string(kMaxOrder) + "]");
-  if (params_.spring_iterations < 1 || !(params_.tolerance > 0.0))
-    throw std::invalid_argument("curve_mesh: CurvingParams::spring_iterations must be >= 1 and tolerance > 0");
+  if (const auto bad = params::violation(params_, curving_keys(), "highorder"))
+    throw std::invalid_argument("curve_mesh: " + *bad);
+  if (!(params_.tolerance > 0.0))
+    throw std::invalid_argument("curve_mesh: CurvingParams::tolerance = " + std::to_string(params_.tolerance) +
+                                " must be > 0");
 
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
+  out_.copy_regions_from(in_);
   std::vector<char> edge_on_boundary(in_.edges().size(), 0), face_on_boundary(in_.faces().size(), 0);
   for (const mesh::BoundaryFace& bf : in_.boundary_faces()) {
     face_on_boundary[bf.face] = 1;
@@ -290,7 +291,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     const Shape shape = in_.elements()[e].shape;
     for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
       element_ids[e][j] = out_.add_node(interior[e].row(j).transpose());
-    out_.add_element(shape, element_ids[e]);
+    out_.add_element(shape, element_ids[e], in_.elements()[e].region);
   }
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
@@ -302,6 +303,21 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
 }
 
 }  // namespace
+
+const params::Table<CurvingParams>& curving_keys() {
+  static const params::Table<CurvingParams> table = {
+      params::integer("order", &CurvingParams::order, "[1, 8]",
+                      "polynomial order P; above 1 the boundary nodes are placed on the CAD"),
+      params::choice("node_set", &CurvingParams::node_set,
+                     {{"gll", NodeSet::GLL}, {"equispaced", NodeSet::Equispaced}}, "node placement inside elements"),
+      params::choice("node_placement", &CurvingParams::placement,
+                     {{"parameter", NodePlacement::Parameter}, {"springs", NodePlacement::Springs}},
+                     "how the nodes of boundary edges and faces are placed on the CAD"),
+      params::integer("spring_iterations", &CurvingParams::spring_iterations, "[1, 10000]",
+                      "springs: Gauss-Newton iterations per edge or face before it falls back"),
+  };
+  return table;
+}
 
 mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
                       CurvingStats* stats) {

@@ -1,6 +1,6 @@
 #include "semimesh/ho/mesh_validity.hpp"
 
-#include "mesh_validity/parallel_for.hpp"
+#include "parallel_for.hpp"
 #include "semimesh/ho/quality.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
-#include "mesh_validity/parallel_for.hpp"
+#include "parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "semimesh/ho/basis.hpp"
 
@@ -288,6 +288,7 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
 
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
+  out_.copy_regions_from(in_);
 
   // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
   // nodes' positions (the costly part) in parallel, then node creation and elements serially in a
@@ -298,7 +299,8 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
   std::vector<std::vector<std::vector<NodeId>>> subs(split.size());
   std::size_t next = 0;  // next input element to emit
   const auto copy_until = [&](std::size_t end) {
-    for (; next < end; ++next) out_.add_element(in_.elements()[next].shape, in_.element_nodes(next));
+    for (; next < end; ++next)
+      out_.add_element(in_.elements()[next].shape, in_.element_nodes(next), in_.elements()[next].region);
   };
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
@@ -311,7 +313,8 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
       const std::size_t e = ascending[first + k];
       copy_until(e);
       subs[position[e]] = split_element(e, geometry[k]);
-      for (const auto& nodes : subs[position[e]]) out_.add_element(in_.elements()[e].shape, nodes);
+      for (const auto& nodes : subs[position[e]])
+        out_.add_element(in_.elements()[e].shape, nodes, in_.elements()[e].region);
       next = e + 1;
     }
   }

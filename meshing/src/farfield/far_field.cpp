@@ -1,5 +1,7 @@
 #include "semimesh/farfield/far_field.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "wall_annulus.hpp"
@@ -17,6 +19,19 @@
 #include <unordered_map>
 
 namespace semimesh::farfield {
+
+const params::Table<FarFieldParams>& far_field_keys() {
+  static const params::Table<FarFieldParams> table = {
+      params::real("box_size", &FarFieldParams::box_size, "> 0", "edge length on the box faces, model units"),
+      params::real("wall_size", &FarFieldParams::wall_size, "> 0", "edge length on the wall far from the body"),
+      params::real("growth", &FarFieldParams::growth, ">= 1", "size gradation from the skin outwards"),
+      params::real("radius_edge_ratio", &FarFieldParams::radius_edge_ratio, ">= 1",
+                   "TetGen quality bound (-q); 1.5 to 2 is usual"),
+      params::real("max_volume", &FarFieldParams::max_volume, ">= 0", "TetGen volume bound (-a); 0: none"),
+  };
+  return table;
+}
+
 namespace {
 
 using mesh::CadAttachment;
@@ -28,11 +43,7 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw FarFieldError("far field: " + what);
   };
-  require(p.box_size > 0, "box_size must be > 0, got " + std::to_string(p.box_size));
-  require(p.wall_size > 0, "wall_size must be > 0, got " + std::to_string(p.wall_size));
-  require(p.growth >= 1, "growth must be >= 1, got " + std::to_string(p.growth));
-  require(p.radius_edge_ratio >= 1, "radius_edge_ratio must be >= 1, got " + std::to_string(p.radius_edge_ratio));
-  require(p.max_volume >= 0, "max_volume must be >= 0 (0: no bound), got " + std::to_string(p.max_volume));
+  if (const auto bad = params::violation(p, far_field_keys(), "farfield")) require(false, *bad);
   require(nf.mesh.order() == 1, "the near-field mesh must be linear (order 1) when the far field is built, it has order " +
                                     std::to_string(nf.mesh.order()));
   require(nf.footprint.size() >= 3, "the near field's footprint has " + std::to_string(nf.footprint.size()) +
@@ -43,7 +54,7 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
   require(wall_surface >= 0 && wall_surface < model.num_surfaces(),
           "wall surface id " + std::to_string(wall_surface) + " is not a surface of the model");
   require(model.surface(wall_surface).is_planar(),
-          "wall surface " + std::to_string(wall_surface) + " ('" + model.surface(wall_surface).name() + "') is not planar");
+          "the wall, " + cad::surface_label(model, wall_surface) + ", is not planar");
 }
 
 // One mesh node per CAD vertex and per inner curve-mesh node, so every surface using a curve
@@ -190,7 +201,7 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
     }
     if (face.count != 4) throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
     const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])}));
-    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex});
+    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, mesh.region_index("farfield"));
     ++pyramids;
     for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});
   }
@@ -199,10 +210,11 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
 
 }  // namespace
 
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface) {
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface) {
+  const nearfield::NearField& nf = near;
   check_params(model, nf, params, box_surfaces, wall_surface);
-  mesh::Mesh& mesh = nf.mesh;
+  mesh::Mesh& mesh = near.mesh;
   FarFieldStats stats;
 
   // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
@@ -244,15 +256,16 @@ FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf,
   stats.seconds_tetgen = output.seconds;
   for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));
   mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
+  const int region = mesh.region_index("farfield");
   for (const auto& t : output.tets)
-    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]});
+    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]}, region);
   stats.tets = static_cast<int>(output.tets.size());
 
   for (const Triangle& t : wall) mesh.add_boundary_face("wall", ho::Shape::Triangle, {t[0], t[1], t[2]});
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
-  return stats;
+  return {std::move(mesh), stats};
 }
 
 }  // namespace semimesh::farfield

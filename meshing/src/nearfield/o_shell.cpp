@@ -22,12 +22,7 @@ enum Reason : unsigned { kFold = 1, kProximity = 2 };
 
 void check_params(const cad::Model& model, const BodyRoles& roles, const ShellParams& p) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
-  if (!(p.thickness > 0.0) || !std::isfinite(p.thickness)) fail("'thickness' must be a finite number > 0");
-  if (p.normal_smoothing_passes < 0) fail("'normal_smoothing_passes' must be >= 0");
-  if (!(p.min_thickness_fraction > 0.0 && p.min_thickness_fraction <= 1.0))
-    fail("'min_thickness_fraction' must be in (0, 1]");
-  if (!(p.reduction_factor > 0.0 && p.reduction_factor < 1.0)) fail("'reduction_factor' must be in (0, 1)");
-  if (!(p.gradation > 0.0)) fail("'gradation' must be > 0");
+  if (const auto bad = params::violation(p, shell_keys(), "nearfield")) fail(*bad);
   if (roles.body_surfaces.empty()) fail("no body surfaces given");
   if (roles.wall_surface >= model.num_surfaces())
     fail("wall surface id " + std::to_string(roles.wall_surface) + " is not a surface of the model");
@@ -134,6 +129,21 @@ std::vector<mesh::NodeId> footprint_loop(const BodyMesh& body, const std::vector
 
 }  // namespace
 
+const params::Table<ShellParams>& shell_keys() {
+  static const params::Table<ShellParams> table = {
+      params::real("thickness", &ShellParams::thickness, "> 0", "shell thickness δ, model units"),
+      params::integer("smoothing_passes", &ShellParams::normal_smoothing_passes, ">= 0",
+                      "Laplacian smoothing passes of the node normals over the body mesh"),
+      params::real("min_thickness_fraction", &ShellParams::min_thickness_fraction, "(0, 1]",
+                   "local thickness reduction below this fraction of δ is an error"),
+      params::real("reduction_factor", &ShellParams::reduction_factor, "(0, 1)",
+                   "thickness multiplier per reduction round"),
+      params::real("gradation", &ShellParams::gradation, "> 0",
+                   "after a reduction, |δx − δy| <= gradation |x − y| between nodes x, y"),
+  };
+  return table;
+}
+
 NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params) {
   check_params(model, roles, params);
@@ -210,6 +220,7 @@ NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   field.warnings = reduction_warnings(model, body, neighbours, thickness, reasons, params.thickness);
   mesh::Mesh& m = field.mesh;
   m.reserve(ho::Shape::Prism, body.triangles.size());
+  const int layer_region = m.region_index("wing_layer");
   for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
   const auto offset = static_cast<mesh::NodeId>(count);
   for (int i = 0; i < count; ++i) {
@@ -220,7 +231,8 @@ NearField build_o_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   auto id = [](int v) { return static_cast<mesh::NodeId>(v); };
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
     const auto& v = body.triangles[t];
-    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset});
+    m.add_element(ho::Shape::Prism, {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+                  layer_region);
     field.element_surface.push_back(body.triangle_surface[t]);
     m.add_boundary_face("wing", ho::Shape::Triangle, {id(v[0]), id(v[2]), id(v[1])});
     field.skin.push_back({{id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset, mesh::kNoNode}, 3});

@@ -1,5 +1,6 @@
 #include "semimesh/surface/shell_size_limit.hpp"
 
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/surface/error.hpp"
 
 #include <Eigen/Dense>
@@ -98,7 +99,7 @@ std::string nearby_curve(const cad::Model& model, int surface, const Vec3& p, do
     const auto& uses = model.surfaces_of_curve(c);
     if (std::none_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == surface; })) continue;
     const double d = (model.curve(c).project(p).point - p).norm();
-    if (d <= best_distance) best_distance = d, best = model.curve(c).name();
+    if (d <= best_distance) best_distance = d, best = cad::curve_label(model, c);
   }
   return best;
 }
@@ -168,10 +169,10 @@ std::vector<PointSource> shell_size_sources(const cad::Model& model, const Shell
   const std::string thickness_remedy =
       std::isfinite(thickest) ? fmt::format(" or nearfield.thickness >= {:.3g}", thickest) : std::string();
   throw SurfaceMeshError(fmt::format(
-      "the near-field shell cannot stand on surface '{}' (id {}){} at {}: curvature radius {:.3g}, shell thickness {:.3g} "
+      "the near-field shell cannot stand on {}{} at {}: curvature radius {:.3g}, shell thickness {:.3g} "
       "needs a surface size <= {:.3g} there (the shell's straight outer face over a curved body face folds on coarser edges), "
       "but sizing.min_size = {:.3g} forbids it ({} such place(s)); set sizing.min_size <= {:.3g}{}",
-      model.surface(worst->surface).name(), worst->surface, curve.empty() ? "" : " near curve '" + curve + "'",
+      cad::surface_label(model, worst->surface), curve.empty() ? "" : " near " + curve,
       label(worst->point), worst->radius, shell.thickness, needed, sizing.min_size,
       forbidden.size(), needed * 0.99, thickness_remedy));
 }

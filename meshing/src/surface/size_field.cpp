@@ -23,14 +23,24 @@ double box_distance(const Vec3& x, const Vec3& lo, const Vec3& hi) {
 
 }  // namespace
 
+const params::Table<SizeParams>& size_keys() {
+  static const params::Table<SizeParams> table = {
+      params::real("max_size", &SizeParams::max_size, "> 0", "largest edge length"),
+      params::real("min_size", &SizeParams::min_size, "> 0", "smallest edge length (<= max_size)"),
+      params::real("curvature_segments", &SizeParams::curvature_segments, ">= 0",
+                   "segments per radian of turning; 0: no curvature sizing"),
+      params::real("gradation", &SizeParams::gradation, ">= 1", "ratio limit between neighbouring edge lengths"),
+      params::real("le_size", &SizeParams::le_size, ">= 0", "edge length along the curve named leading_edge; 0: off"),
+      params::real("te_size", &SizeParams::te_size, ">= 0",
+                   "edge length along trailing_edge / te_upper / te_lower; 0: off"),
+  };
+  return table;
+}
+
 SizeField::SizeField(const cad::Model& model, const SizeParams& params) : params_(params), slope_(params.gradation - 1.0) {
-  require(params.max_size > 0.0, "max_size must be > 0, got " + std::to_string(params.max_size));
-  require(params.min_size > 0.0 && params.min_size <= params.max_size,
-          "min_size must be in (0, max_size], got " + std::to_string(params.min_size));
-  require(params.gradation >= 1.0, "gradation must be >= 1, got " + std::to_string(params.gradation));
-  require(params.curvature_segments >= 0.0,
-          "curvature_segments must be >= 0, got " + std::to_string(params.curvature_segments));
-  require(params.le_size >= 0.0 && params.te_size >= 0.0, "le_size and te_size must be >= 0 (0: off)");
+  if (const auto bad = params::violation(params, size_keys(), "sizing")) require(false, *bad);
+  require(params.min_size <= params.max_size, "sizing.min_size = " + params::to_text(params.min_size) +
+                                                  ": expected <= sizing.max_size = " + params::to_text(params.max_size));
   require(params.curvature_samples >= 2, "curvature_samples must be >= 2");
 
   auto by_name = [&](const std::string& name) -> const cad::Curve* {

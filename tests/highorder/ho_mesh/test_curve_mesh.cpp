@@ -41,7 +41,8 @@ const Wing& wing() {
 // One layer of prisms of thickness `thickness` over a chordwise x spanwise structured triangle mesh
 // of the `upper` surface of `model` (chordwise nodes clustered at both ends by a cosine law when
 // `cluster`); body vertices carry their CAD attachment, skin vertices none; the body triangles form
-// the group "wing". Spanwise curves (LE, TE) are told from chordwise ones by their end points.
+// the group "wing"; prisms alternate between the regions "wing_layer" and "junction" (so region
+// bookkeeping is visible). Spanwise curves (LE, TE) are told from chordwise ones by their end points.
 mesh::Mesh upper_layer(const cad::Model& model, int chordwise, int spanwise, double thickness, bool cluster) {
   const int upper = *model.find_surface("upper");
   std::vector<surface::CurveMesh> curves;
@@ -68,9 +69,11 @@ mesh::Mesh upper_layer(const cad::Model& model, int chordwise, int spanwise, dou
     m.add_node(sm.points[i], a);
   }
   for (int i = 0; i < n; ++i) m.add_node(sm.points[i] + thickness * s.normal(sm.uv[i]));
-  for (const auto& t : sm.triangles) {
+  const int regions[2] = {m.region_index("wing_layer"), m.region_index("junction")};
+  for (std::size_t k = 0; k < sm.triangles.size(); ++k) {
+    const auto& t = sm.triangles[k];
     const auto a = mesh::NodeId(t[0]), b = mesh::NodeId(t[1]), c = mesh::NodeId(t[2]);
-    m.add_element(Shape::Prism, {a, b, c, a + n, b + n, c + n});
+    m.add_element(Shape::Prism, {a, b, c, a + n, b + n, c + n}, regions[k % 2]);
     m.add_boundary_face("wing", Shape::Triangle, {a, c, b});
   }
   return m;
@@ -109,6 +112,15 @@ TEST(CurveMesh, BoundaryNodesLieOnTheCad) {
         }
       EXPECT_LT(worst, 1e-9) << "P = " << P;
     }
+}
+
+TEST(CurveMesh, ElementsKeepTheirRegion) {
+  const mesh::Mesh linear = upper_layer(6, 2, 0.02, false);
+  const mesh::Mesh curved = curve_mesh(linear, *wing().model, {3, NodeSet::GLL, 50, 1e-10});
+  ASSERT_EQ(curved.region_names(), linear.region_names());
+  ASSERT_EQ(curved.elements().size(), linear.elements().size());
+  for (std::size_t e = 0; e < linear.elements().size(); ++e)
+    EXPECT_EQ(curved.elements()[e].region, linear.elements()[e].region) << "element " << e;
 }
 
 TEST(CurveMesh, SkinStaysStraightAndAllElementsAreValid) {

@@ -169,6 +169,24 @@ TEST(SplitLayers, SplitNeighboursConform) {
   EXPECT_EQ(shared, N + 2 * (N - 1));  // N pieces of the side face + layer interfaces in each prism
 }
 
+TEST(SplitLayers, SubElementsKeepTheRegionOfTheirElement) {
+  mesh::Mesh coarse(2, NodeSet::GLL);
+  {
+    // The two prisms of two_prisms(), the second one put in another region.
+    const mesh::Mesh source = two_prisms(2, NodeSet::GLL);
+    for (mesh::NodeId id = 0; id < source.num_nodes(); ++id) coarse.add_node(source.node(id));
+    const int layer = coarse.region_index("wing_layer"), wake = coarse.region_index("wake");
+    coarse.add_element(Shape::Prism, source.element_nodes(0), layer);
+    coarse.add_element(Shape::Prism, source.element_nodes(1), wake);
+  }
+  const int N = 3;
+  const mesh::Mesh fine = split_layers(coarse, {1}, {N, 1.5});
+  ASSERT_EQ(fine.region_names(), coarse.region_names());
+  ASSERT_EQ(fine.elements().size(), std::size_t(1 + N));
+  EXPECT_EQ(fine.elements()[0].region, coarse.elements()[0].region);
+  for (int k = 1; k <= N; ++k) EXPECT_EQ(fine.elements()[k].region, coarse.elements()[1].region) << "sub-element " << k;
+}
+
 TEST(SplitLayers, RatioFieldKeepsConformityAndUsesTheVertexRatio) {
   const mesh::Mesh coarse = two_prisms(2, NodeSet::Equispaced);
   const RatioField ratio = [](const Eigen::Vector3d& x) { return 1.0 + x(0) + 0.5 * x(1); };

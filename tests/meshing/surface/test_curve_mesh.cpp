@@ -83,6 +83,7 @@ TEST(CurveMesh, LeadingEdgeClustering) {
   p.curvature_segments = 0.0;
   p.gradation = 1.15;
   p.le_size = 0.004;
+  p.te_size = 0.0;  // only the leading edge clusters
   SizeField size(*model, p);
   const CurveMesh m = discretise_curve(*model, curve_named(*model, "root_upper"), size);
   const auto lengths = segment_lengths(m);

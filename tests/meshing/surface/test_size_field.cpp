@@ -14,6 +14,8 @@ SizeParams no_curvature() {
   p.max_size = 1.0;
   p.min_size = 0.001;
   p.curvature_segments = 0.0;
+  p.le_size = 0.0;  // no sources unless a test adds them
+  p.te_size = 0.0;
   return p;
 }
 

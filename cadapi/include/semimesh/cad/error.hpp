@@ -2,12 +2,14 @@
 // the entity or the parameter at fault and what was expected.
 #pragma once
 
-#include <stdexcept>
+#include "semimesh/error.hpp"
+
 #include <string>
 
 namespace semimesh::cad {
 
-class CadError : public std::runtime_error {
+/// Its cause is an internal error for a failed query (Geometry) and bad input for everything else.
+class CadError : public Error {
  public:
   enum class Kind {
     UnknownBackend,       ///< no backend of that name is known
@@ -19,7 +21,8 @@ class CadError : public std::runtime_error {
     Geometry,             ///< an evaluation or query failed on a given entity
   };
 
-  CadError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  CadError(Kind kind, const std::string& message)
+      : Error(kind == Kind::Geometry ? Cause::Internal : Cause::BadInput, message), kind_(kind) {}
   Kind kind() const { return kind_; }
 
  private:

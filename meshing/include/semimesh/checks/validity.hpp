@@ -1,5 +1,5 @@
-// Certified validity of every element of a mesh (ho::certify_jacobian: Bezier bounds of det J with
-// subdivision) and the distribution of the scaled Jacobian.
+// The run's validity check: ho::certify_mesh (Bezier bounds of det J with subdivision, the one
+// whole-mesh certification) summarised with the worst invalid elements for the user.
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
@@ -30,10 +30,9 @@ struct ValidityResult {
   bool ok() const { return invalid == 0; }
 };
 
-/// Certifies every element, on `threads` threads (0: the hardware's count). An element counts as
-/// invalid unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable). The
-/// verdict does not depend on the thread count.
-ValidityResult check_validity(const mesh::Mesh& mesh, int threads = 0, std::size_t max_listed = 100,
-                              double min_scaled_jacobian = 0.0);
+/// Certifies every element (ho::certify_mesh: OpenMP threads, the verdict independent of their
+/// count); min and median scaled Jacobian as certify_mesh defines them. An element counts as invalid
+/// unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable).
+ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100, double min_scaled_jacobian = 0.0);
 
 }  // namespace semimesh::checks

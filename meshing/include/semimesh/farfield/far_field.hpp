@@ -1,31 +1,38 @@
 // The far field: the unstructured region between the near field's outer skin, the wall and the
-// far-field box (DESIGN.md section 1). Pyramids sit on the quads of the skin so that the rest of
+// far-field box (docs/architecture.md, section 1). Pyramids sit on the quads of the skin so that the rest of
 // the region can be filled with tetrahedra; the tetrahedra come from TetGen.
 //
 // Licence: this stage links TetGen 1.5 (AGPL-3.0-or-later) and lives in its own target,
 // semimesh_farfield, so that the rest of semimesh does not.
 #pragma once
 
+#include "semimesh/error.hpp"
+
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/near_field.hpp"
+#include "semimesh/params/table.hpp"
 
 #include <stdexcept>
 #include <vector>
 
 namespace semimesh::farfield {
 
-class FarFieldError : public std::runtime_error {
+class FarFieldError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
+/// Keys, ranges and meanings: far_field_keys() (the config's [farfield] section).
 struct FarFieldParams {
-  double box_size = 1.0;           ///< target edge length on the box faces (model units), > 0
-  double wall_size = 0.5;          ///< target edge length on the far-field part of the wall, far from the body, > 0
-  double growth = 1.2;             ///< size gradation from the skin outwards, >= 1
-  double radius_edge_ratio = 1.5;  ///< TetGen quality bound (-q), >= 1.0 (TetGen's own lower limit)
-  double max_volume = 0.0;         ///< TetGen volume bound (-a); 0: none
+  double box_size = 2.0;
+  double wall_size = 1.0;
+  double growth = 1.2;
+  double radius_edge_ratio = 1.5;
+  double max_volume = 0.0;
 };
+
+/// One row per key of FarFieldParams (semimesh/params/table.hpp).
+const params::Table<FarFieldParams>& far_field_keys();
 
 struct FarFieldStats {
   int tets = 0;
@@ -35,10 +42,17 @@ struct FarFieldStats {
   double seconds_tetgen = 0;
 };
 
-/// Adds far-field nodes, pyramids (one on each quad of nf.skin, vertices 0..3 the quad, 4 the apex)
-/// and TetGen tetrahedra to nf.mesh, and the boundary faces "wall" (the far-field part of the
-/// wall, normal out of the domain) and "farfield" (the box faces, normal out of the domain).
+struct FarField {
+  mesh::Mesh mesh;  ///< the near field's mesh with the far field added
+  FarFieldStats stats;
+};
+
+/// The whole mesh: the near field's mesh with far-field nodes, pyramids (one on each quad of
+/// near.skin, vertices 0..3 the quad, 4 the apex) and TetGen tetrahedra (region "farfield"), and
+/// the boundary faces "wall" (the far-field part of the wall, normal out of the domain) and
+/// "farfield" (the box faces, normal out of the domain).
 /// The skin faces and the footprint are kept exactly: the far field conforms with the near field.
+/// The near field is taken by value: pass it with std::move when it is not needed afterwards.
 ///  box_surfaces  CAD surface ids of the box faces; their curve meshes are shared with the wall's
 ///                outer loop.
 ///  wall_surface  the planar wall; its outer loop bounds the wall region, nf.footprint the hole.
@@ -47,7 +61,7 @@ struct FarFieldStats {
 /// NACA0012 case); `growth` grades the wall region and the box curves.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets).
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface);
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface);
 
 }  // namespace semimesh::farfield

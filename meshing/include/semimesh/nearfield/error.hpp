@@ -2,14 +2,13 @@
 // (coordinates) where the layer could not be built, and the parameter a user can change.
 #pragma once
 
-#include <stdexcept>
-#include <string>
+#include "semimesh/error.hpp"
 
 namespace semimesh::nearfield {
 
-class NearFieldError : public std::runtime_error {
+class NearFieldError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 }  // namespace semimesh::nearfield

@@ -1,5 +1,5 @@
 // The O-type near field: one layer of prisms of thickness delta around the whole body (paper,
-// section "Partitioning"; DESIGN.md section 5).
+// section "Partitioning"; docs/architecture.md).
 //
 // Every body triangle (a, b, c) becomes the prism (a, b, c, a', b', c') with x' = x + delta_x n_x
 // along the node normal (node_normals.hpp). Where the body meets the wall, the normals lie in the
@@ -22,19 +22,24 @@
 
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/near_field.hpp"
+#include "semimesh/params/table.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <vector>
 
 namespace semimesh::nearfield {
 
+/// Keys, ranges and meanings: shell_keys() (the config's [nearfield] section).
 struct ShellParams {
-  double thickness = 0.05;              ///< delta, model units (> 0)
-  int normal_smoothing_passes = 10;     ///< Laplacian smoothing of node normals over the body mesh (>= 0)
-  double min_thickness_fraction = 0.1;  ///< never reduce below this fraction of delta; error instead (0, 1]
-  double reduction_factor = 0.7;        ///< thickness multiplier per reduction round, in (0, 1)
-  double gradation = 0.5;               ///< |delta_x - delta_y| <= gradation |x - y| after a reduction (> 0)
+  double thickness = 0.1;
+  int normal_smoothing_passes = 10;
+  double min_thickness_fraction = 0.1;
+  double reduction_factor = 0.7;
+  double gradation = 0.5;
 };
+
+/// One row per key of ShellParams (semimesh/params/table.hpp).
+const params::Table<ShellParams>& shell_keys();
 
 /// CAD surface ids of the body (meshed, extruded) and of the wall it stands on (-1: no wall, the
 /// body must then be closed).

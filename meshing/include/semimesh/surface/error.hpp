@@ -2,14 +2,13 @@
 // what went wrong, so a user can find the entity in the CAD model.
 #pragma once
 
-#include <stdexcept>
-#include <string>
+#include "semimesh/error.hpp"
 
 namespace semimesh::surface {
 
-class SurfaceMeshError : public std::runtime_error {
+class SurfaceMeshError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 }  // namespace semimesh::surface

@@ -16,6 +16,7 @@
 // at most the ratio `gradation` (e.g. 1.2), on curves and surfaces alike.
 #pragma once
 
+#include "semimesh/params/table.hpp"
 #include "semimesh/cad/model.hpp"
 
 #include <string>
@@ -44,13 +45,15 @@ struct CurveSource {
   double size = 0.0;
 };
 
+/// The keys a user sets (ranges, meanings): size_keys(), the config's [sizing] section; besides
+/// them min_size <= max_size.
 struct SizeParams {
-  double max_size = 0.5;             ///< global upper bound (model unit), > 0
-  double min_size = 1e-3;            ///< lower bound, 0 < min_size <= max_size
-  double curvature_segments = 4.0;   ///< segments per radian of turning; 0 disables curvature sizing
-  double gradation = 1.2;            ///< neighbouring size ratio limit, >= 1 (1 would force uniform)
-  double le_size = 0.0;              ///< size along the `le_curves`; 0: none
-  double te_size = 0.0;              ///< size along the `te_curves`; 0: none
+  double max_size = 2.0;
+  double min_size = 0.005;
+  double curvature_segments = 4.0;
+  double gradation = 1.2;
+  double le_size = 0.02;             ///< size along the `le_curves`; 0: none
+  double te_size = 0.01;             ///< size along the `te_curves`; 0: none
   std::vector<std::string> le_curves = {"leading_edge"};
   std::vector<std::string> te_curves = {"trailing_edge", "te_upper", "te_lower"};
   std::vector<PointSource> point_sources;
@@ -58,6 +61,9 @@ struct SizeParams {
   std::vector<CurveSource> curve_sources;
   int curvature_samples = 48;        ///< samples per curve and per surface direction for curvature
 };
+
+/// One row per user key of SizeParams (semimesh/params/table.hpp).
+const params::Table<SizeParams>& size_keys();
 
 class SizeField {
  public:

@@ -29,6 +29,7 @@
 // cad_classification in the sources); only edges and faces of boundary faces are curved.
 #pragma once
 
+#include "semimesh/params/table.hpp"
 #include "semimesh/cad/model.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
@@ -36,13 +37,17 @@ namespace semimesh::ho {
 
 enum class NodePlacement { Parameter, Springs };
 
+/// The keys a user sets (ranges, meanings): curving_keys(), the config's [highorder] section.
 struct CurvingParams {
-  int order = 4;                       ///< polynomial order P of the result, 2..kMaxOrder
+  int order = 4;                       ///< polynomial order P of the result
   NodeSet node_set = NodeSet::GLL;     ///< node set of the result
   int spring_iterations = 50;          ///< Gauss-Newton iterations per edge/face before falling back
   double tolerance = 1e-10;            ///< relative move below which the optimisation has converged
   NodePlacement placement = NodePlacement::Parameter;  ///< see the top of this file
 };
+
+/// One row per user key of CurvingParams (semimesh/params/table.hpp).
+const params::Table<CurvingParams>& curving_keys();
 
 struct CurvingStats {
   int edges_on_curves = 0;

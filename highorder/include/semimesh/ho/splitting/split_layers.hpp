@@ -10,6 +10,7 @@
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/params/table.hpp"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,9 @@ struct LayerDistribution {
   int layers = 5;
   double ratio = 2.0;
 };
+
+/// One row per key of LayerDistribution (the config's [boundary_layer] section).
+const params::Table<LayerDistribution>& layer_keys();
 
 /// Position-dependent growth ratio (e.g. decaying to 1 along a wake). It is evaluated at each body
 /// vertex of an element and the layer interfaces are interpolated linearly between the vertices,

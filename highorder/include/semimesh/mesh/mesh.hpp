@@ -1,0 +1,190 @@
+// The mesh data model (docs/architecture.md, section 3).
+//
+// All nodes (vertices and high-order nodes) live in one array and are named by a NodeId. Edges and
+// faces are shared entities keyed by their sorted vertex ids; each owns the nodes strictly inside
+// it exactly once, so two elements that share an edge or face use the same nodes and conform by
+// construction.
+//  - An edge stores its vertices sorted (low id first); that is its own direction, and its
+//    interior nodes run from vertices[0] to vertices[1].
+//  - A face stores its vertices in the order of the element that created it (its reference
+//    orientation); its interior nodes are in the canonical (Gmsh) order of a triangle/quad of
+//    order P whose vertices are the stored ones. An element records, per face, the orientation
+//    code relating its local face to the stored one (see node_layout.hpp).
+//  - An element stores its shape, vertex ids, edge ids (with a reversed bit), face ids (with the
+//    orientation code) and owns its interior nodes.
+// All elements of a mesh share one order P and one node set.
+//
+// Every element belongs to a named region (block: "wing_layer", "wall_layer", "junction", "wake",
+// "farfield"; region 0 is "fluid" until a builder names its own), which every stage keeps and every
+// writer emits. Boundary faces (triangles and quadrilaterals) belong to named groups ("wing", "wall", ...); they
+// reference the shared face entity and keep their own (outward) vertex order. Every node can carry
+// one CAD attachment; it is changed only together with the node position.
+#pragma once
+
+#include "semimesh/ho/element_type.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace semimesh::mesh {
+
+using NodeId = std::uint32_t;
+constexpr NodeId kNoNode = 0xffffffffu;
+
+/// Where a node sits on the CAD model: nothing, a CAD vertex, a curve at parameter u, or a surface
+/// at (u, v). `entity` is the cadapi id of the vertex/curve/surface.
+struct CadAttachment {
+  enum Kind { None, Vertex, Curve, Surface };
+  Kind kind = None;
+  int entity = -1;
+  double u = 0.0;
+  double v = 0.0;
+};
+
+struct Edge {
+  std::array<NodeId, 2> vertices{};  ///< sorted ascending: the edge's own direction
+  std::uint32_t first_node = 0;      ///< interior nodes: Mesh::edge_pool()[first_node, +P-1)
+};
+
+struct Face {
+  std::array<NodeId, 4> vertices{kNoNode, kNoNode, kNoNode, kNoNode};  ///< reference orientation
+  std::uint8_t num_vertices = 0;                                         ///< 3 or 4
+  std::uint32_t first_node = 0;  ///< interior nodes: Mesh::face_pool()[first_node, +count)
+};
+
+struct Element {
+  ho::Shape shape = ho::Shape::Tetrahedron;
+  std::array<NodeId, 8> vertices{};           ///< first num_vertices(shape) used, canonical order
+  std::array<std::uint32_t, 12> edges{};      ///< edge ids in ho::edges(shape) order
+  std::uint16_t edge_reversed = 0;            ///< bit e set: local edge e runs against the edge
+  std::array<std::uint32_t, 6> faces{};       ///< face ids in ho::faces(shape) order
+  std::array<std::uint8_t, 6> face_orientation{};  ///< code per face (node_layout.hpp)
+  std::uint32_t first_node = 0;               ///< interior nodes: Mesh::interior_pool()[first_node, +n)
+  std::uint16_t region = 0;                   ///< index into Mesh::region_names(): the block it belongs to
+};
+
+struct BoundaryFace {
+  ho::Shape shape = ho::Shape::Triangle;  ///< Triangle or Quadrilateral
+  std::array<NodeId, 4> vertices{};       ///< the boundary element's own vertex order
+  std::array<std::uint32_t, 4> edges{};
+  std::uint8_t edge_reversed = 0;
+  std::uint32_t face = 0;                 ///< shared face entity
+  std::uint8_t face_orientation = 0;
+  std::uint16_t group = 0;                ///< index into Mesh::group_names()
+};
+
+class Mesh {
+ public:
+  /// order in [1, ho::kMaxOrder].
+  explicit Mesh(int order = 1, ho::NodeSet node_set = ho::NodeSet::Equispaced);
+
+  int order() const { return order_; }
+  ho::NodeSet node_set() const { return node_set_; }
+  /// Declares that the nodes now sit at the positions of another node set; only for code that has
+  /// just moved every node accordingly (io::to_equispaced).
+  void relabel_node_set(ho::NodeSet set) { node_set_ = set; }
+
+  // ---- nodes ----------------------------------------------------------------------------------
+  NodeId add_node(const Eigen::Vector3d& x, const CadAttachment& cad = {});
+  std::size_t num_nodes() const { return nodes_.size(); }
+  const Eigen::Vector3d& node(NodeId id) const { return nodes_[id]; }
+  const std::vector<Eigen::Vector3d>& nodes() const { return nodes_; }
+  /// The node's CAD attachment (kind None if it has none).
+  const CadAttachment& cad_attachment(NodeId id) const;
+  /// Moves a node that has no CAD attachment; throws std::logic_error if it has one (its
+  /// parameters would go stale: use place_node_on_cad).
+  void place_node(NodeId id, const Eigen::Vector3d& x);
+  /// Moves a node and sets its CAD attachment in one step (kind None detaches it).
+  void place_node_on_cad(NodeId id, const Eigen::Vector3d& x, const CadAttachment& cad);
+  /// Forgets every CAD attachment (e.g. on a resampled copy whose nodes are new points).
+  void clear_cad_attachments() { cad_.clear(); }
+
+  // ---- building -------------------------------------------------------------------------------
+  /// Adds a 3D element from its full canonical (Gmsh-order) node list of num_nodes(shape, P) ids,
+  /// in region `region` (an index from region_index; 0, "fluid", by default).
+  /// Edges and faces are created or found by their vertices. If an edge/face already exists, the
+  /// nodes given for it must be the stored ones or sit at the same place (else the elements do
+  /// not conform: std::invalid_argument naming the element and the entity). Returns its index.
+  std::size_t add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region = 0);
+  /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
+  /// use). Its face entity is shared with the volume element that has the same vertices.
+  std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
+  /// Index of a group, creating it if new.
+  int group_index(const std::string& name);
+  /// Index of a region, creating it if new.
+  int region_index(const std::string& name);
+  /// Gives this mesh the regions of `other` with the same indices (for stages that copy elements
+  /// into a new mesh). Throws std::logic_error if this mesh already has different regions.
+  void copy_regions_from(const Mesh& other);
+  /// Reserves storage for about this many elements of one shape (avoids rehashing; optional).
+  void reserve(ho::Shape typical_shape, std::size_t num_elements);
+
+  // ---- entities -------------------------------------------------------------------------------
+  const std::vector<Edge>& edges() const { return edges_; }
+  const std::vector<Face>& faces() const { return faces_; }
+  const std::vector<Element>& elements() const { return elements_; }
+  const std::vector<BoundaryFace>& boundary_faces() const { return boundary_; }
+  const std::vector<std::string>& group_names() const { return groups_; }
+  const std::vector<std::string>& region_names() const { return regions_; }
+  const std::vector<NodeId>& edge_pool() const { return edge_pool_; }
+  const std::vector<NodeId>& face_pool() const { return face_pool_; }
+  const std::vector<NodeId>& interior_pool() const { return interior_pool_; }
+  /// Id of the edge / face with these vertices (any order), or -1.
+  long find_edge(NodeId a, NodeId b) const;
+  long find_face(const std::vector<NodeId>& vertices) const;
+
+  // ---- assembly -------------------------------------------------------------------------------
+  /// Node ids of an element in canonical (Gmsh) order, shape (num_nodes(shape, P)).
+  std::vector<NodeId> element_nodes(std::size_t element) const;
+  void element_nodes(std::size_t element, std::vector<NodeId>& out) const;
+  /// Node coordinates of an element in canonical order, shape (num_nodes, 3).
+  Eigen::MatrixX3d element_coordinates(std::size_t element) const;
+  /// Node ids of a boundary face in canonical order of its own vertex order.
+  std::vector<NodeId> boundary_face_nodes(std::size_t boundary_face) const;
+  /// Node ids along an edge, vertices included, from vertices[0] to vertices[1]; shape (P+1).
+  std::vector<NodeId> edge_nodes(std::size_t edge) const;
+  /// Node ids of a face in the canonical order of a tri/quad whose vertices are the stored ones.
+  std::vector<NodeId> face_nodes(std::size_t face) const;
+
+  /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
+  std::size_t memory_bytes() const;
+
+ private:
+  std::uint32_t find_or_add_edge(NodeId a, NodeId b);
+  std::uint32_t find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code, const std::string& who);
+  /// Finds/creates the edges and faces of an element or boundary face and stores (or checks) the
+  /// nodes it gives for them. For 2D shapes the single face is the shape itself.
+  void link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,
+                     std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids, std::uint8_t* codes,
+                     const std::string& who);
+  void check_same_node(NodeId stored, NodeId given, const std::string& who) const;
+  void assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
+                const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
+                std::vector<NodeId>& out) const;
+
+  struct FaceKeyHash {
+    std::size_t operator()(const std::array<NodeId, 4>& k) const;
+  };
+
+  int order_;
+  ho::NodeSet node_set_;
+  std::vector<Eigen::Vector3d> nodes_;
+  std::unordered_map<NodeId, CadAttachment> cad_;  // sparse: only boundary nodes are attached
+  std::vector<Edge> edges_;
+  std::vector<Face> faces_;
+  std::vector<Element> elements_;
+  std::vector<BoundaryFace> boundary_;
+  std::vector<std::string> groups_;
+  std::vector<std::string> regions_{"fluid"};
+  std::vector<NodeId> edge_pool_, face_pool_, interior_pool_;
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_index_;
+  std::unordered_map<std::array<NodeId, 4>, std::uint32_t, FaceKeyHash> face_index_;
+};
+
+}  // namespace semimesh::mesh

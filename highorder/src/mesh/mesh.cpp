@@ -1,0 +1,358 @@
+#include "semimesh/mesh/mesh.hpp"
+
+#include "semimesh/mesh/node_layout.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace semimesh::mesh {
+namespace {
+
+std::uint64_t edge_key(NodeId a, NodeId b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+std::array<NodeId, 4> face_key(const NodeId* v, int n) {
+  std::array<NodeId, 4> key{kNoNode, kNoNode, kNoNode, kNoNode};
+  // Insertion sort of n <= 4 ids (std::sort trips -Warray-bounds on a 4-array prefix).
+  for (int i = 0; i < n; ++i) {
+    int j = i;
+    for (; j > 0 && key[j - 1] > v[i]; --j) key[j] = key[j - 1];
+    key[j] = v[i];
+  }
+  return key;
+}
+
+std::string element_name(ho::Shape shape, std::size_t index) {
+  return ho::to_string(shape) + " " + std::to_string(index);
+}
+
+}  // namespace
+
+std::size_t Mesh::FaceKeyHash::operator()(const std::array<NodeId, 4>& k) const {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four ids
+  for (NodeId v : k) h = (h ^ v) * 1099511628211ull;
+  return static_cast<std::size_t>(h);
+}
+
+Mesh::Mesh(int order, ho::NodeSet node_set) : order_(order), node_set_(node_set) {
+  if (order < 1 || order > ho::kMaxOrder)
+    throw std::invalid_argument("Mesh: order " + std::to_string(order) + " outside [1, " +
+                                std::to_string(ho::kMaxOrder) + "]");
+}
+
+NodeId Mesh::add_node(const Eigen::Vector3d& x, const CadAttachment& cad) {
+  if (nodes_.size() >= kNoNode) throw std::length_error("Mesh: too many nodes for 32-bit node ids");
+  const auto id = static_cast<NodeId>(nodes_.size());
+  nodes_.push_back(x);
+  if (cad.kind != CadAttachment::None) cad_[id] = cad;
+  return id;
+}
+
+const CadAttachment& Mesh::cad_attachment(NodeId id) const {
+  static const CadAttachment none{};
+  const auto it = cad_.find(id);
+  return it == cad_.end() ? none : it->second;
+}
+
+void Mesh::place_node(NodeId id, const Eigen::Vector3d& x) {
+  if (id >= nodes_.size()) throw std::out_of_range("Mesh::place_node: no node " + std::to_string(id));
+  if (cad_.count(id))
+    throw std::logic_error("Mesh::place_node: node " + std::to_string(id) +
+                           " is attached to CAD; move it with place_node_on_cad so its parameters follow");
+  nodes_[id] = x;
+}
+
+void Mesh::place_node_on_cad(NodeId id, const Eigen::Vector3d& x, const CadAttachment& cad) {
+  if (id >= nodes_.size()) throw std::out_of_range("Mesh::place_node_on_cad: no node " + std::to_string(id));
+  nodes_[id] = x;
+  if (cad.kind == CadAttachment::None)
+    cad_.erase(id);
+  else
+    cad_[id] = cad;
+}
+
+int Mesh::region_index(const std::string& name) {
+  const auto it = std::find(regions_.begin(), regions_.end(), name);
+  if (it != regions_.end()) return static_cast<int>(it - regions_.begin());
+  regions_.push_back(name);
+  return static_cast<int>(regions_.size()) - 1;
+}
+
+void Mesh::copy_regions_from(const Mesh& other) {
+  const auto& theirs = other.regions_;
+  if (regions_.size() > theirs.size() || !std::equal(regions_.begin(), regions_.end(), theirs.begin()))
+    throw std::logic_error("Mesh::copy_regions_from: this mesh already has other regions");
+  regions_ = theirs;
+}
+
+int Mesh::group_index(const std::string& name) {
+  const auto it = std::find(groups_.begin(), groups_.end(), name);
+  if (it != groups_.end()) return static_cast<int>(it - groups_.begin());
+  groups_.push_back(name);
+  return static_cast<int>(groups_.size()) - 1;
+}
+
+void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
+  elements_.reserve(num_elements);
+  // Each edge and interior face is shared by several elements; these are upper bounds.
+  const std::size_t ne = ho::edges(typical_shape).size() * num_elements / 2;
+  const std::size_t nf = ho::faces(typical_shape).size() * num_elements / 2 + num_elements;
+  edges_.reserve(ne);
+  faces_.reserve(nf);
+  edge_index_.reserve(ne);
+  face_index_.reserve(nf);
+  edge_pool_.reserve(ne * (order_ - 1));
+  interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
+}
+
+void Mesh::check_same_node(NodeId stored, NodeId given, const std::string& who) const {
+  if (stored == given) return;
+  const Eigen::Vector3d& a = nodes_[stored];
+  const Eigen::Vector3d& b = nodes_[given];
+  const double scale = std::max({1.0, a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
+  if ((a - b).norm() > 1e-9 * scale)
+    throw std::invalid_argument(who + ": node " + std::to_string(given) + " is not at the place of node " +
+                                std::to_string(stored) + " that the shared entity already owns (non-conforming " +
+                                "elements or a wrong node order)");
+}
+
+void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,
+                         std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids,
+                         std::uint8_t* codes, const std::string& who) {
+  const NodeLayout& layout = node_layout(shape, order_);
+  if (canonical.size() != layout.slots.size())
+    throw std::invalid_argument(who + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
+                                std::to_string(order_) + ", got " + std::to_string(canonical.size()));
+  for (NodeId id : canonical)
+    if (id >= nodes_.size()) throw std::invalid_argument(who + ": unknown node id " + std::to_string(id));
+  const int nv = ho::num_vertices(shape);
+  for (int a = 0; a < nv; ++a)
+    for (int b = a + 1; b < nv; ++b)
+      if (vertices[a] == vertices[b])
+        throw std::invalid_argument(who + ": vertex " + std::to_string(vertices[a]) + " appears twice");
+
+  const auto& local_edges = ho::edges(shape);
+  reversed = 0;
+  for (std::size_t e = 0; e < local_edges.size(); ++e) {
+    const NodeId a = vertices[local_edges[e][0]], b = vertices[local_edges[e][1]];
+    edge_ids[e] = find_or_add_edge(a, b);
+    if (a > b) reversed |= static_cast<std::uint16_t>(1u << e);
+  }
+  if (ho::dimension(shape) == 2) {
+    face_ids[0] = find_or_add_face(vertices, nv, codes[0], who);
+  } else {
+    const auto& local_faces = ho::faces(shape);
+    for (std::size_t f = 0; f < local_faces.size(); ++f) {
+      std::array<NodeId, 4> fv{};
+      const int n = static_cast<int>(local_faces[f].size());
+      for (int k = 0; k < n; ++k) fv[k] = vertices[local_faces[f][k]];
+      face_ids[f] = find_or_add_face(fv.data(), n, codes[f], who);
+    }
+  }
+  // New entities hold kNoNode placeholders: the first element to see a node stores it, later
+  // ones must give the same node (or one at the same place).
+  for (std::size_t i = 0; i < layout.slots.size(); ++i) {
+    const NodeSlot& s = layout.slots[i];
+    NodeId* stored = nullptr;
+    if (s.kind == NodeSlot::Edge)
+      stored = &edge_pool_[edges_[edge_ids[s.local]].first_node + s.slot[(reversed >> s.local) & 1u]];
+    else if (s.kind == NodeSlot::Face)
+      stored = &face_pool_[faces_[face_ids[s.local]].first_node + s.slot[codes[s.local]]];
+    else
+      continue;
+    if (*stored == kNoNode)
+      *stored = canonical[i];
+    else
+      check_same_node(*stored, canonical[i], who);
+  }
+}
+
+std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region) {
+  if (ho::dimension(shape) != 3)
+    throw std::invalid_argument("Mesh::add_element: " + ho::to_string(shape) +
+                                " is not a volume element (use add_boundary_face)");
+  if (region < 0 || static_cast<std::size_t>(region) >= regions_.size())
+    throw std::invalid_argument("Mesh::add_element: region " + std::to_string(region) + " does not exist (" +
+                                std::to_string(regions_.size()) + " regions)");
+  const std::size_t index = elements_.size();
+  const std::string who = element_name(shape, index);
+  const int nv = ho::num_vertices(shape);
+  if (canonical_nodes.size() < static_cast<std::size_t>(nv))
+    throw std::invalid_argument(who + ": fewer nodes than vertices");
+  Element el;
+  el.shape = shape;
+  el.region = static_cast<std::uint16_t>(region);
+  std::copy(canonical_nodes.begin(), canonical_nodes.begin() + nv, el.vertices.begin());
+  link_entities(shape, canonical_nodes, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(),
+                el.face_orientation.data(), who);
+  const NodeLayout& layout = node_layout(shape, order_);
+  el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
+  interior_pool_.resize(interior_pool_.size() + layout.num_interior);
+  for (std::size_t i = 0; i < layout.slots.size(); ++i)
+    if (layout.slots[i].kind == NodeSlot::Interior)
+      interior_pool_[el.first_node + layout.slots[i].slot[0]] = canonical_nodes[i];
+  elements_.push_back(el);
+  return index;
+}
+
+std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
+                                    const std::vector<NodeId>& canonical_nodes) {
+  if (shape != ho::Shape::Triangle && shape != ho::Shape::Quadrilateral)
+    throw std::invalid_argument("Mesh::add_boundary_face: group '" + group + "': " + ho::to_string(shape) +
+                                " is not a triangle or quadrilateral");
+  const std::size_t index = boundary_.size();
+  const std::string who = "boundary " + element_name(shape, index) + " of group '" + group + "'";
+  const int nv = ho::num_vertices(shape);
+  if (canonical_nodes.size() < static_cast<std::size_t>(nv))
+    throw std::invalid_argument(who + ": fewer nodes than vertices");
+  BoundaryFace bf;
+  bf.shape = shape;
+  std::copy(canonical_nodes.begin(), canonical_nodes.begin() + nv, bf.vertices.begin());
+  std::uint16_t reversed = 0;
+  link_entities(shape, canonical_nodes, bf.vertices.data(), bf.edges.data(), reversed, &bf.face,
+                &bf.face_orientation, who);
+  bf.edge_reversed = static_cast<std::uint8_t>(reversed);
+  bf.group = static_cast<std::uint16_t>(group_index(group));
+  boundary_.push_back(bf);
+  return index;
+}
+
+std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
+  const auto [it, inserted] = edge_index_.try_emplace(edge_key(a, b), static_cast<std::uint32_t>(edges_.size()));
+  if (inserted) {
+    Edge edge;
+    edge.vertices = {std::min(a, b), std::max(a, b)};
+    edge.first_node = static_cast<std::uint32_t>(edge_pool_.size());
+    edge_pool_.resize(edge_pool_.size() + edge_interior_count(order_), kNoNode);
+    edges_.push_back(edge);
+  }
+  return it->second;
+}
+
+std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code,
+                                     const std::string& who) {
+  const auto [it, inserted] =
+      face_index_.try_emplace(face_key(local_vertices, n), static_cast<std::uint32_t>(faces_.size()));
+  if (inserted) {
+    Face face;
+    std::copy(local_vertices, local_vertices + n, face.vertices.begin());
+    face.num_vertices = static_cast<std::uint8_t>(n);
+    face.first_node = static_cast<std::uint32_t>(face_pool_.size());
+    face_pool_.resize(face_pool_.size() + face_interior_count(n, order_), kNoNode);
+    faces_.push_back(face);
+    code = 0;
+    return it->second;
+  }
+  const int c = face_orientation_code(local_vertices, faces_[it->second].vertices.data(), n);
+  if (c < 0)
+    throw std::invalid_argument(who + ": face " + std::to_string(it->second) +
+                                " has the same vertices in a different cycle (twisted quadrilateral)");
+  code = static_cast<std::uint8_t>(c);
+  return it->second;
+}
+
+long Mesh::find_edge(NodeId a, NodeId b) const {
+  const auto it = edge_index_.find(edge_key(a, b));
+  return it == edge_index_.end() ? -1 : static_cast<long>(it->second);
+}
+
+long Mesh::find_face(const std::vector<NodeId>& vertices) const {
+  if (vertices.size() != 3 && vertices.size() != 4) return -1;
+  const auto it = face_index_.find(face_key(vertices.data(), static_cast<int>(vertices.size())));
+  return it == face_index_.end() ? -1 : static_cast<long>(it->second);
+}
+
+void Mesh::assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
+                    const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
+                    std::vector<NodeId>& out) const {
+  const NodeLayout& layout = node_layout(shape, order_);
+  out.resize(layout.slots.size());
+  for (std::size_t i = 0; i < layout.slots.size(); ++i) {
+    const NodeSlot& s = layout.slots[i];
+    switch (s.kind) {
+      case NodeSlot::Vertex: out[i] = vertices[s.local]; break;
+      case NodeSlot::Edge:
+        out[i] = edge_pool_[edges_[edge_ids[s.local]].first_node + s.slot[(reversed >> s.local) & 1u]];
+        break;
+      case NodeSlot::Face: out[i] = face_pool_[faces_[face_ids[s.local]].first_node + s.slot[codes[s.local]]]; break;
+      case NodeSlot::Interior: out[i] = interior_pool_[first_interior + s.slot[0]]; break;
+    }
+  }
+}
+
+void Mesh::element_nodes(std::size_t element, std::vector<NodeId>& out) const {
+  const Element& el = elements_.at(element);
+  assemble(el.shape, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(),
+           el.face_orientation.data(), el.first_node, out);
+}
+
+std::vector<NodeId> Mesh::element_nodes(std::size_t element) const {
+  std::vector<NodeId> out;
+  element_nodes(element, out);
+  return out;
+}
+
+Eigen::MatrixX3d Mesh::element_coordinates(std::size_t element) const {
+  const std::vector<NodeId> ids = element_nodes(element);
+  Eigen::MatrixX3d x(ids.size(), 3);
+  for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = nodes_[ids[i]].transpose();
+  return x;
+}
+
+std::vector<NodeId> Mesh::boundary_face_nodes(std::size_t boundary_face) const {
+  const BoundaryFace& bf = boundary_.at(boundary_face);
+  std::vector<NodeId> out;
+  assemble(bf.shape, bf.vertices.data(), bf.edges.data(), bf.edge_reversed, &bf.face, &bf.face_orientation, 0, out);
+  return out;
+}
+
+std::vector<NodeId> Mesh::edge_nodes(std::size_t edge) const {
+  const Edge& e = edges_.at(edge);
+  std::vector<NodeId> out{e.vertices[0]};
+  const int n = edge_interior_count(order_);
+  out.insert(out.end(), edge_pool_.begin() + e.first_node, edge_pool_.begin() + e.first_node + n);
+  out.push_back(e.vertices[1]);
+  return out;
+}
+
+std::vector<NodeId> Mesh::face_nodes(std::size_t face) const {
+  const Face& f = faces_.at(face);
+  const ho::Shape shape = f.num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral;
+  std::array<std::uint32_t, 4> edge_ids{};
+  std::uint16_t reversed = 0;
+  const auto& local_edges = ho::edges(shape);
+  for (std::size_t e = 0; e < local_edges.size(); ++e) {
+    const NodeId a = f.vertices[local_edges[e][0]], b = f.vertices[local_edges[e][1]];
+    edge_ids[e] = static_cast<std::uint32_t>(find_edge(a, b));
+    if (a > b) reversed |= static_cast<std::uint16_t>(1u << e);
+  }
+  const auto id = static_cast<std::uint32_t>(face);
+  const std::uint8_t identity = 0;
+  std::vector<NodeId> out;
+  assemble(shape, f.vertices.data(), edge_ids.data(), reversed, &id, &identity, 0, out);
+  return out;
+}
+
+std::size_t Mesh::memory_bytes() const {
+  // unordered_map: one bucket pointer per bucket, one heap node (value + next pointer + cached
+  // hash) per entry.
+  auto map_bytes = [](const auto& map, std::size_t value_size) {
+    return map.bucket_count() * sizeof(void*) + map.size() * (value_size + 2 * sizeof(void*));
+  };
+  std::size_t bytes = sizeof(*this);
+  bytes += nodes_.capacity() * sizeof(Eigen::Vector3d);
+  bytes += edges_.capacity() * sizeof(Edge) + faces_.capacity() * sizeof(Face);
+  bytes += elements_.capacity() * sizeof(Element) + boundary_.capacity() * sizeof(BoundaryFace);
+  bytes += (edge_pool_.capacity() + face_pool_.capacity() + interior_pool_.capacity()) * sizeof(NodeId);
+  bytes += map_bytes(cad_, sizeof(std::pair<const NodeId, CadAttachment>));
+  bytes += map_bytes(edge_index_, sizeof(std::pair<const std::uint64_t, std::uint32_t>));
+  bytes += map_bytes(face_index_, sizeof(std::pair<const std::array<NodeId, 4>, std::uint32_t>));
+  for (const auto& g : groups_) bytes += sizeof(g) + g.capacity();
+  for (const auto& r : regions_) bytes += sizeof(r) + r.capacity();
+  return bytes;
+}
+
+}  // namespace semimesh::mesh

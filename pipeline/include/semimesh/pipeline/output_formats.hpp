@@ -1,0 +1,25 @@
+// The mesh file formats `semimesh run` writes: one row each (config name, file extension, writer),
+// used by the config's output.formats, the output paths and the write stage.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <string>
+#include <vector>
+
+namespace semimesh::pipeline {
+
+struct OutputFormat {
+  std::string name;       ///< as in output.formats
+  std::string extension;  ///< of BASENAME.EXT
+  std::string extension_when_shared;  ///< used instead when another requested format has the same extension
+  void (*write)(const mesh::Mesh& mesh, const std::string& path);
+};
+
+/// Every format, in the order docs/config.md lists them.
+const std::vector<OutputFormat>& output_formats();
+
+/// The format named `name`; throws std::invalid_argument for an unknown name.
+const OutputFormat& output_format(const std::string& name);
+
+}  // namespace semimesh::pipeline

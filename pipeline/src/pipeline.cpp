@@ -1,0 +1,387 @@
+#include "semimesh/pipeline/pipeline.hpp"
+
+#include "semimesh/backends/builtin.hpp"
+#include "semimesh/farfield/far_field.hpp"
+#include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/mesh_validity.hpp"
+#include "semimesh/ho/repair.hpp"
+#include "semimesh/ho/curving/geometric_error.hpp"
+#include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/io/atomic_file.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/output_formats.hpp"
+#include "semimesh/pipeline/report.hpp"
+#include "semimesh/surface/model_surfaces.hpp"
+#include "semimesh/surface/shell_size_limit.hpp"
+
+#include <fmt/format.h>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <type_traits>
+
+namespace semimesh::pipeline {
+namespace {
+
+// Samples per boundary-face edge for the geometric error: enough to see the largest deviation of
+// an order-8 face, cheap next to the curving itself.
+constexpr int kGeometricErrorSamples = 6;
+// Bound on |curved body volume - triangulated body volume| / triangulated body volume.
+constexpr double kCurvedBodyVolumeFraction = 0.02;
+
+// Runs one stage: reports its start and end, and turns its exceptions into RunError.
+template <typename Stage>
+auto stage(const std::string& name, Progress& progress, RunResult& result, Stage&& body) {
+  progress.stage_started(name);
+  const auto start = std::chrono::steady_clock::now();
+  auto finish = [&] {
+    const StageTiming timing{name, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    result.stages.push_back(timing);
+    progress.stage_finished(timing);
+  };
+  auto fail = [&](Error::Cause cause, const std::string& what) -> RunError {
+    return RunError(cause, name, name + ": " + what);
+  };
+  try {
+    if constexpr (std::is_void_v<decltype(body())>) {
+      body();
+      finish();
+    } else {
+      auto value = body();
+      finish();
+      return value;
+    }
+  } catch (const RunError&) {
+    throw;
+  } catch (const Error& e) {
+    throw fail(e.cause(), e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw fail(Error::Cause::BadInput, e.what());  // the output folder cannot be made or written
+  } catch (const std::exception& e) {
+    throw fail(Error::Cause::Internal, e.what());
+  }
+}
+
+std::string box_text(const std::array<double, 6>& b) {
+  return fmt::format("{},{},{},{},{},{}", b[0], b[1], b[2], b[3], b[4], b[5]);
+}
+
+cad::Source cad_source(const GeometryConfig& g) {
+  cad::Source source;
+  source.path = g.source;
+  const bool generated = g.source.empty() && (g.backend == "naca" || g.backend == "occ");
+  if (generated) {
+    source.params.set("naca.code", g.naca.code);
+    source.params.set("naca.chord", fmt::format("{}", g.naca.chord));
+    source.params.set("naca.span", fmt::format("{}", g.naca.span));
+    source.params.set("naca.taper", fmt::format("{}", g.naca.taper));
+    source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
+    source.params.set("naca.te", g.naca.te);
+    source.params.set("naca.box", box_text(g.naca.box));
+    source.params.set("naca.units", g.units);
+    if (g.scale != 1.0)
+      throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
+                        ": expected 1 for a generated wing (scale applies to CAD files; set naca.chord instead)");
+  } else if (g.backend == "occ") {
+    source.params.set("occ.scale", fmt::format("{}", g.scale));
+    source.params.set("occ.units", g.units);
+  }
+  return source;
+}
+
+int surface_id(const cad::Model& model, const std::string& key, const std::string& name) {
+  if (auto id = model.find_surface(name)) return *id;
+  std::string names;
+  for (int s = 0; s < model.num_surfaces(); ++s) names += (s ? ", " : "") + model.surface(s).name();
+  throw ConfigError("config error: " + key + ": the CAD model has no surface named '" + name + "' (its surfaces: " + names + ")");
+}
+
+struct Roles {
+  std::vector<int> body, farfield;
+  int wall = -1;
+};
+
+Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
+  Roles roles;
+  for (const std::string& name : g.body) roles.body.push_back(surface_id(model, "geometry.body", name));
+  for (const std::string& name : g.farfield) roles.farfield.push_back(surface_id(model, "geometry.farfield", name));
+  roles.wall = surface_id(model, "geometry.wall", g.wall);
+  return roles;
+}
+
+// Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
+surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConfig& s) {
+  surface::ModelMeshOptions options;
+  auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
+    if (segments == 0) return;
+    int found = 0;
+    for (int c = 0; c < model.num_curves(); ++c)
+      for (const char* name : names)
+        if (model.curve(c).name() == name) {
+          options.curve_counts[c] = surface::CurveCount{segments, {}};
+          ++found;
+        }
+    if (found == 0)
+      throw ConfigError(fmt::format("config error: {} = {}: the CAD model has no curves named {} (only NACA wing "
+                                    "models name them; set 0 to size them from the size field)",
+                                    key, segments, fmt::join(names, ", ")));
+  };
+  // Cosine bunching clusters the chordwise nodes at the leading and trailing edges.
+  prescribe(s.chordwise, "sizing.chordwise", {"root_upper", "root_lower", "tip_upper", "tip_lower"});
+  for (auto& [curve, count] : options.curve_counts) count.bunching.law = surface::Bunching::Law::Cosine;
+  prescribe(s.spanwise, "sizing.spanwise", {"leading_edge", "te_upper", "te_lower", "trailing_edge"});
+  return options;
+}
+
+// boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
+// `ratio_at_a` at A to ratio_end at B; no field (the uniform ratio) without them.
+ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
+  if (!b.ratio_line || !b.ratio_end) return {};
+  const std::array<double, 6>& l = *b.ratio_line;
+  const Eigen::Vector3d a(l[0], l[1], l[2]), ab = Eigen::Vector3d(l[3], l[4], l[5]) - a;
+  const double ratio_at_b = *b.ratio_end;
+  return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return ratio_at_a + t * (ratio_at_b - ratio_at_a);
+  };
+}
+
+// The near-field shell is the mesh's prisms (the far field holds tets and pyramids only).
+std::vector<std::size_t> shell_prisms(const mesh::Mesh& mesh) {
+  std::vector<std::size_t> prisms;
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e)
+    if (mesh.elements()[e].shape == ho::Shape::Prism) prisms.push_back(e);
+  return prisms;
+}
+
+// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms. split_layers
+// replaces the k-th split prism (input index i) by `layers` elements from the body outwards, so its
+// first-layer element is at i + k (layers - 1).
+double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<std::size_t>& prisms, int layers) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < prisms.size(); ++k) {
+    const mesh::Element& e = split.elements()[prisms[k] + k * static_cast<std::size_t>(layers - 1)];
+    auto x = [&](int v) -> const Eigen::Vector3d& { return split.node(e.vertices[v]); };
+    const double longest = std::max({(x(1) - x(0)).norm(), (x(2) - x(1)).norm(), (x(0) - x(2)).norm()});
+    const double height = ((x(3) - x(0)).norm() + (x(4) - x(1)).norm() + (x(5) - x(2)).norm()) / 3.0;
+    worst = std::max(worst, longest / height);
+  }
+  return worst;
+}
+
+// The chord for a generated wing; otherwise the streamwise (x) extent of the body's surface nodes.
+double reference_length(const GeometryConfig& g, const std::vector<const surface::SurfaceMesh*>& body) {
+  if (g.source.empty() && (g.backend == "naca" || g.backend == "occ")) return g.naca.chord;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const surface::SurfaceMesh* s : body)
+    for (const Eigen::Vector3d& p : s->points) {
+      lo = std::min(lo, p.x());
+      hi = std::max(hi, p.x());
+    }
+  return hi > lo ? hi - lo : 1.0;
+}
+
+double peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
+}
+
+}  // namespace
+
+double RunResult::total_seconds() const {
+  double total = 0.0;
+  for (const StageTiming& s : stages) total += s.seconds;
+  return total;
+}
+
+std::vector<std::string> output_paths(const OutputConfig& output) {
+  const std::filesystem::path dir(output.directory);
+  std::vector<std::string> paths;
+  for (const std::string& f : output.formats) {
+    const OutputFormat& format = output_format(f);
+    const bool shared = std::any_of(output.formats.begin(), output.formats.end(), [&](const std::string& g) {
+      return g != f && output_format(g).extension == format.extension;
+    });
+    const std::string& extension = shared && !format.extension_when_shared.empty() ? format.extension_when_shared
+                                                                                  : format.extension;
+    paths.push_back((dir / (output.basename + extension)).string());
+  }
+  paths.push_back((dir / "report.json").string());
+  return paths;
+}
+
+namespace {
+
+// The CAD model and the surfaces that play each role.
+struct Geometry {
+  std::unique_ptr<cad::Model> model;
+  Roles roles;
+};
+
+Geometry load_geometry(const Config& config, Progress& progress, RunResult& result) {
+  const cad::Registry registry = backends::default_registry();
+  Geometry g;
+  g.model = stage("load CAD", progress, result, [&] {
+    return registry.load(config.geometry.backend, cad_source(config.geometry));
+  });
+  g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config.geometry); });
+  return g;
+}
+
+surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Progress& progress, RunResult& result) {
+  const cad::Model& model = *g.model;
+  const surface::SizeField size = stage("size field", progress, result, [&] {
+    surface::SizeParams params = config.sizing.size;
+    // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    if (config.highorder.order > 1) {
+      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params);
+      params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
+    }
+    return surface::SizeField(model, params);
+  });
+  surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config.sizing));
+  });
+  result.surface_triangles = surfaces.num_triangles();
+  result.surface_quads = surfaces.num_quads();
+  return surfaces;
+}
+
+// The linear mesh: the near-field shell, then the far field around it.
+mesh::Mesh build_linear_mesh(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces,
+                             Progress& progress, RunResult& result) {
+  nearfield::NearField near = stage("near field", progress, result, [&] {
+    return nearfield::build_o_shell(*g.model, surfaces, nearfield::BodyRoles{g.roles.body, g.roles.wall},
+                                    config.nearfield.shell);
+  });
+  result.thickness_min = near.thickness_min;
+  result.thickness_max = near.thickness_max;
+  for (const nearfield::Warning& w : near.warnings)
+    result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
+                                          w.where.y(), w.where.z()));
+  farfield::FarField far = stage("far field", progress, result, [&] {
+    return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall);
+  });
+  result.far_field = far.stats;
+  return std::move(far.mesh);
+}
+
+// Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
+// what curving folded. What cannot be repaired stays invalid and is reported by the checks (exit 2).
+mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear, Progress& progress,
+                       RunResult& result) {
+  mesh::Mesh curved = stage("curve", progress, result, [&] {
+    return ho::curve_mesh(linear, model, config.highorder, &result.curving);
+  });
+  result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
+  if (result.curving.optimisation_fallbacks > 0)
+    result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
+                                          "within {} iterations; they keep their parameter-space positions",
+                                          result.curving.optimisation_fallbacks, config.highorder.spring_iterations));
+  return stage("repair", progress, result, [&] {
+    const double floor = config.checks.min_scaled_jacobian;
+    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor);
+    if (validity.all_valid()) return std::move(curved);
+    ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
+    const ho::RepairStats& stats = repaired.stats;
+    result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
+                                          validity.invalid,
+                                          stats.repaired_interior + stats.repaired_free_nodes + stats.repaired_body_following,
+                                          stats.failures.size()));
+    constexpr std::size_t kReasonsShown = 10;
+    for (std::size_t i = 0; i < std::min(kReasonsShown, stats.failures.size()); ++i)
+      result.warnings.push_back("repair: " + stats.failures[i].reason);
+    return std::move(repaired.mesh);
+  });
+}
+
+// Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
+mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, Progress& progress, RunResult& result) {
+  const int layers = config.boundary_layer.split.layers;
+  const std::vector<std::size_t> prisms = shell_prisms(coarse);
+  const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
+  ho::SplitStats stats{};
+  mesh::Mesh fine = stage("split", progress, result, [&] {
+    return ho::split_layers(coarse, prisms, ho::LayerDistribution{layers, ratio},
+                            ratio_field(config.boundary_layer, ratio), &stats);
+  });
+  result.layers.requested_ratio = ratio;
+  result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
+  result.layers.achieved_ratio = stats.achieved_ratio;
+  result.layers.first_cell_height_min = stats.first_cell_height_min;
+  result.layers.first_cell_height_max = stats.first_cell_height_max;
+  result.layers.max_first_layer_aspect = max_first_layer_aspect(fine, prisms, layers);
+  return fine;
+}
+
+void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, Progress& progress,
+           RunResult& result) {
+  stage("checks", progress, result, [&] {
+    result.conformity = checks::check_conformity(result.mesh);
+    std::vector<const surface::SurfaceMesh*> body, box;
+    for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
+    for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
+    result.volume = checks::check_volume(result.mesh, body, box, surfaces.surfaces[g.roles.wall]);
+    // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
+    // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
+    if (result.mesh.order() > 1)
+      result.expected_volume_tolerance =
+          kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
+    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian);
+    const double chord = reference_length(config.geometry, body);
+    const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
+    result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
+  });
+  for (const mesh::Element& e : result.mesh.elements()) ++result.elements_by_type[ho::to_string(e.shape)];
+  for (const mesh::BoundaryFace& f : result.mesh.boundary_faces())
+    ++result.boundary_faces_by_group[result.mesh.group_names()[f.group]];
+}
+
+}  // namespace
+
+void write_outputs(const Config& config, Progress& progress, RunResult& result) {
+  stage("write", progress, result, [&] {
+    const std::vector<std::string> paths = output_paths(config.output);
+    try {
+      std::filesystem::create_directories(config.output.directory);
+      for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
+        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
+        result.written_files.push_back(paths[i]);
+      }
+      result.peak_memory_mb = peak_memory_mb();
+      io::AtomicFile report(paths.back());
+      report.write(report_json(result, config));
+      report.commit();
+      result.written_files.push_back(paths.back());
+    } catch (...) {
+      // Leave no partial output: remove what this run wrote (older files of other runs stay).
+      std::error_code ignored;
+      for (const std::string& p : result.written_files) std::filesystem::remove(p, ignored);
+      result.written_files.clear();
+      throw;
+    }
+  });
+}
+
+RunResult run(const Config& config, Progress& progress) {
+  RunResult result;
+  const Geometry geometry = load_geometry(config, progress, result);
+  const surface::SurfaceMeshes surfaces = mesh_surfaces(config, geometry, progress, result);
+  result.mesh = build_linear_mesh(config, geometry, surfaces, progress, result);
+  if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
+  result.layers.layers = config.boundary_layer.split.layers;
+  if (result.layers.layers > 1) result.mesh = split(config, result.mesh, progress, result);
+  check(config, geometry, surfaces, progress, result);
+  result.peak_memory_mb = peak_memory_mb();
+  if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
+  return result;
+}
+
+}  // namespace semimesh::pipeline

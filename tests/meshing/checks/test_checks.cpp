@@ -1,0 +1,338 @@
+// The mesh checks on small hand-made meshes whose answers are known by hand.
+#include "semimesh/checks/conformity.hpp"
+#include "semimesh/checks/validity.hpp"
+#include "semimesh/checks/volume.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace semimesh::checks {
+namespace {
+
+using mesh::Mesh;
+using mesh::NodeId;
+using Kind = FaceProblem::Kind;
+
+// Adds an element of order 1 or 2 (edge midpoints shared through `midpoints`, in ho::edges order).
+std::size_t add(Mesh& m, ho::Shape shape, std::vector<NodeId> vertices, std::map<std::pair<NodeId, NodeId>, NodeId>& midpoints) {
+  if (m.order() == 2) {
+    for (const auto& e : ho::edges(shape)) {
+      NodeId a = vertices[e[0]], b = vertices[e[1]];
+      auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = midpoints.find(key);
+      if (it == midpoints.end()) it = midpoints.emplace(key, m.add_node(0.5 * (m.node(a) + m.node(b)))).first;
+      vertices.push_back(it->second);
+    }
+  }
+  return m.add_element(shape, vertices);
+}
+
+// Boundary faces (group "outer") on every element face not listed in `interior`, in the element's
+// outward vertex order.
+void close_boundary(Mesh& m, const std::vector<std::vector<NodeId>>& interior) {
+  const std::size_t n = m.elements().size();
+  for (std::size_t e = 0; e < n; ++e) {
+    const mesh::Element& el = m.elements()[e];
+    for (const auto& f : ho::faces(el.shape)) {
+      std::vector<NodeId> v;
+      for (int i : f) v.push_back(el.vertices[i]);
+      std::vector<NodeId> sorted = v;
+      std::sort(sorted.begin(), sorted.end());
+      bool inner = false;
+      for (auto s : interior) {
+        std::sort(s.begin(), s.end());
+        inner = inner || s == sorted;
+      }
+      if (inner) continue;
+      std::vector<NodeId> nodes = v;
+      if (m.order() == 2)  // the face's edge midpoints, in the triangle's edge order (01, 12, 20)
+        for (int i = 0; i < 3; ++i) {
+          const auto edge = m.find_edge(v[i], v[(i + 1) % 3]);
+          nodes.push_back(m.edge_nodes(edge)[1]);
+        }
+      m.add_boundary_face("outer", ho::Shape::Triangle, nodes);
+    }
+  }
+}
+
+// Two unit tets on either side of the face (0, 1, 2) in the plane z = 0.
+struct TwoTets {
+  Mesh mesh;
+  std::map<std::pair<NodeId, NodeId>, NodeId> midpoints;
+  explicit TwoTets(int order = 1, bool with_boundary = true) : mesh(order) {
+    for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                     Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
+      mesh.add_node(p);
+    add(mesh, ho::Shape::Tetrahedron, {0, 1, 2, 3}, midpoints);
+    add(mesh, ho::Shape::Tetrahedron, {0, 2, 1, 4}, midpoints);
+    if (with_boundary) close_boundary(mesh, {{0, 1, 2}});
+  }
+};
+
+bool has_problem(const ConformityResult& r, Kind kind, std::vector<NodeId> vertices) {
+  std::sort(vertices.begin(), vertices.end());
+  for (const FaceProblem& p : r.problems)
+    if (p.kind == kind && p.vertices == vertices) return true;
+  return false;
+}
+
+void expect_same(const ConformityResult& a, const ConformityResult& b) {
+  EXPECT_EQ(a.interior_faces, b.interior_faces);
+  EXPECT_EQ(a.boundary_faces, b.boundary_faces);
+  ASSERT_EQ(a.problems.size(), b.problems.size());
+  for (std::size_t i = 0; i < a.problems.size(); ++i) {
+    EXPECT_EQ(a.problems[i].kind, b.problems[i].kind);
+    EXPECT_EQ(a.problems[i].vertices, b.problems[i].vertices);
+    EXPECT_EQ(a.problems[i].elements, b.problems[i].elements);
+    EXPECT_EQ(a.problems[i].boundary_faces, b.problems[i].boundary_faces);
+  }
+}
+
+TEST(Conformity, TwoTetsSharingAFaceConform) {
+  for (int order : {1, 2}) {
+    TwoTets t(order);
+    const ConformityResult r = check_conformity(t.mesh);
+    EXPECT_TRUE(r.ok()) << (r.problems.empty() ? "" : r.problems[0].describe(t.mesh));
+    EXPECT_EQ(r.interior_faces, 1u);
+    EXPECT_EQ(r.boundary_faces, 6u);
+    expect_same(r, check_conformity_brute_force(t.mesh));
+  }
+}
+
+TEST(Conformity, FaceSharedByThreeElementsIsReportedWithItsCentroid) {
+  TwoTets t(1, false);
+  const NodeId far = t.mesh.add_node(Eigen::Vector3d(0, 0, -2));
+  add(t.mesh, ho::Shape::Tetrahedron, {0, 2, 1, far}, t.midpoints);
+  const ConformityResult r = check_conformity(t.mesh);
+  ASSERT_TRUE(has_problem(r, Kind::SharedByMoreThanTwo, {0, 1, 2}));
+  const FaceProblem& p = r.problems.front();  // most severe kind sorts first
+  EXPECT_EQ(p.kind, Kind::SharedByMoreThanTwo);
+  EXPECT_EQ(p.elements, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_NEAR(p.centroid.x(), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(p.centroid.y(), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(p.centroid.z(), 0.0, 1e-15);
+  EXPECT_NE(p.describe(t.mesh).find("elements [0 1 2]"), std::string::npos) << p.describe(t.mesh);
+  expect_same(r, check_conformity_brute_force(t.mesh));
+}
+
+TEST(Conformity, DuplicatedBoundaryFaceIsReported) {
+  TwoTets t;
+  t.mesh.add_boundary_face("other", ho::Shape::Triangle, {0, 1, 3});
+  const ConformityResult r = check_conformity(t.mesh);
+  ASSERT_EQ(r.problems.size(), 1u);
+  EXPECT_TRUE(has_problem(r, Kind::BoundaryRepeated, {0, 1, 3}));
+  EXPECT_EQ(r.problems[0].boundary_faces.size(), 2u);
+  EXPECT_NE(r.problems[0].describe(t.mesh).find("(other)"), std::string::npos);
+  expect_same(r, check_conformity_brute_force(t.mesh));
+}
+
+TEST(Conformity, GapBetweenElementsIsReported) {
+  // The second tet uses a copy of node 1 at the same place: the two faces do not match.
+  Mesh m(1);
+  std::map<std::pair<NodeId, NodeId>, NodeId> none;
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                   Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 0, 0)})
+    m.add_node(p);
+  add(m, ho::Shape::Tetrahedron, {0, 1, 2, 3}, none);
+  add(m, ho::Shape::Tetrahedron, {0, 2, 5, 4}, none);
+  close_boundary(m, {{0, 1, 2}, {0, 2, 5}});
+  const ConformityResult r = check_conformity(m);
+  EXPECT_EQ(r.problems.size(), 2u);
+  EXPECT_TRUE(has_problem(r, Kind::Unmatched, {0, 1, 2}));
+  EXPECT_TRUE(has_problem(r, Kind::Unmatched, {0, 2, 5}));
+  EXPECT_EQ(r.interior_faces, 0u);
+  expect_same(r, check_conformity_brute_force(m));
+}
+
+TEST(Conformity, OverlapAndMisplacedBoundaryAreReported) {
+  Mesh m(1);
+  std::map<std::pair<NodeId, NodeId>, NodeId> none;
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                   Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, 2)})
+    m.add_node(p);
+  add(m, ho::Shape::Tetrahedron, {0, 1, 2, 3}, none);
+  add(m, ho::Shape::Tetrahedron, {0, 1, 2, 4}, none);  // on the same side as the first one
+  close_boundary(m, {{0, 1, 2}});
+  EXPECT_TRUE(has_problem(check_conformity(m), Kind::SameSide, {0, 1, 2}));
+  expect_same(check_conformity(m), check_conformity_brute_force(m));
+
+  TwoTets t;
+  t.mesh.add_boundary_face("wrong", ho::Shape::Triangle, {0, 2, 1});
+  const ConformityResult r = check_conformity(t.mesh);
+  ASSERT_EQ(r.problems.size(), 1u);
+  EXPECT_TRUE(has_problem(r, Kind::BoundaryOnInteriorFace, {0, 1, 2}));
+}
+
+TEST(Conformity, BruteForceAgreesOnALargerDamagedMesh) {
+  // A 4 x 3 x 3 grid of cubes, six tets each (Kuhn split along the main diagonal), boundary closed,
+  // then damaged: one tet removed (a hole), one cube's tets repeated (overlaps), boundary faces added twice.
+  const int nx = 4, ny = 3, nz = 3;
+  Mesh m(1);
+  auto id = [&](int i, int j, int k) { return static_cast<NodeId>((k * (ny + 1) + j) * (nx + 1) + i); };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) m.add_node(Eigen::Vector3d(i, j, k));
+  // Kuhn simplices: paths from corner 0 to corner 7 through the 6 permutations of the axes.
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  std::map<std::pair<NodeId, NodeId>, NodeId> none;
+  std::vector<std::vector<NodeId>> tets;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& p : perms) {
+          int c[3] = {i, j, k};
+          std::vector<NodeId> v{id(c[0], c[1], c[2])};
+          for (int axis : p) {
+            ++c[axis];
+            v.push_back(id(c[0], c[1], c[2]));
+          }
+          const Eigen::Vector3d a = m.node(v[1]) - m.node(v[0]), b = m.node(v[2]) - m.node(v[0]),
+                                d = m.node(v[3]) - m.node(v[0]);
+          if (a.cross(b).dot(d) < 0) std::swap(v[1], v[2]);
+          tets.push_back(v);
+        }
+  const std::size_t removed = 17;
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    if (t != removed) add(m, ho::Shape::Tetrahedron, tets[t], none);
+  for (std::size_t t = 30; t < 36; ++t) add(m, ho::Shape::Tetrahedron, tets[t], none);
+  // Boundary: the outer faces of the grid only (the hole's faces stay unmatched).
+  Mesh probe(1);
+  for (std::size_t e = 0; e < m.elements().size(); ++e) {
+    const mesh::Element& el = m.elements()[e];
+    for (const auto& f : ho::faces(el.shape)) {
+      std::vector<NodeId> v;
+      for (int i : f) v.push_back(el.vertices[i]);
+      bool outer = true;
+      for (int axis = 0; axis < 3 && outer; ++axis) {
+        const double c0 = m.node(v[0])[axis];
+        const double top = axis == 0 ? nx : axis == 1 ? ny : nz;
+        const bool flat = c0 == m.node(v[1])[axis] && c0 == m.node(v[2])[axis];
+        outer = !(flat && (c0 == 0 || c0 == top));
+      }
+      if (!outer) m.add_boundary_face(e % 2 ? "a" : "b", ho::Shape::Triangle, v);
+    }
+  }
+  const ConformityResult fast = check_conformity(m);
+  EXPECT_FALSE(fast.ok());
+  expect_same(fast, check_conformity_brute_force(m));
+}
+
+// Unit-measure reference elements mapped by x -> A x + b (det A = 2).
+Mesh single_element(ho::Shape shape) {
+  Eigen::Matrix3d a;
+  a << 1.0, 0.3, 0.0, 0.0, 2.0, 0.5, 0.0, 0.0, 1.0;
+  Mesh m(1);
+  const Eigen::MatrixX3d ref = ho::reference_vertices(shape);
+  std::vector<NodeId> v;
+  for (int i = 0; i < ref.rows(); ++i) v.push_back(m.add_node(a * Eigen::Vector3d(ref.row(i)) + Eigen::Vector3d(3, -1, 2)));
+  m.add_element(shape, v);
+  for (const auto& f : ho::faces(shape)) {
+    std::vector<NodeId> fv;
+    for (int i : f) fv.push_back(v[i]);
+    m.add_boundary_face("outer", fv.size() == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral, fv);
+  }
+  return m;
+}
+
+TEST(Volume, ElementAndBoundaryVolumesOfEveryShape) {
+  // Reference volumes: tet 1/6, pyramid 4/3 (base 2 x 2, height 1), prism 1/2 x 2, hex 2^3; times det A = 2.
+  const std::map<ho::Shape, double> expected = {{ho::Shape::Tetrahedron, 2.0 / 6.0},
+                                                {ho::Shape::Pyramid, 2.0 * 4.0 / 3.0},
+                                                {ho::Shape::Prism, 2.0},
+                                                {ho::Shape::Hexahedron, 16.0}};
+  for (const auto& [shape, volume] : expected) {
+    const MeshVolume v = mesh_volume(single_element(shape));
+    EXPECT_NEAR(v.element_volume, volume, 1e-12) << ho::to_string(shape);
+    EXPECT_NEAR(v.boundary_volume, volume, 1e-12) << ho::to_string(shape);
+    EXPECT_EQ(v.boundary_faces_without_element, 0u);
+  }
+}
+
+TEST(Volume, CurvedElementsMatchTheirBoundaryFlux) {
+  TwoTets t(2);
+  // Bulge the midpoint of edge (0, 3), which lies on the boundary, outward.
+  const auto edge = t.mesh.find_edge(0, 3);
+  const NodeId mid = t.mesh.edge_nodes(edge)[1];
+  t.mesh.place_node(mid, t.mesh.node(mid) + Eigen::Vector3d(-0.1, -0.1, 0.0));
+  const MeshVolume v = mesh_volume(t.mesh);
+  EXPECT_GT(v.element_volume, 1.0 / 3.0 + 1e-3);
+  EXPECT_NEAR(v.element_volume, v.boundary_volume, 1e-13);
+  EXPECT_LT(v.boundary_relative_error(), 1e-12);
+}
+
+TEST(Volume, AMissingElementShowsInTheBoundaryVolume) {
+  TwoTets t;
+  // Boundary faces of the first tet are there, so without the second the closed volume is 1/6 +
+  // the flux of the second's boundary faces through nothing (they have no element: skipped).
+  Mesh one(1);
+  for (std::size_t n = 0; n < t.mesh.num_nodes(); ++n) one.add_node(t.mesh.node(static_cast<NodeId>(n)));
+  one.add_element(ho::Shape::Tetrahedron, {0, 1, 2, 3});
+  one.add_boundary_face("outer", ho::Shape::Triangle, {0, 1, 3});
+  one.add_boundary_face("outer", ho::Shape::Triangle, {0, 4, 1});  // belongs to no element
+  const MeshVolume v = mesh_volume(one);
+  EXPECT_NEAR(v.element_volume, 1.0 / 6.0, 1e-13);
+  EXPECT_EQ(v.boundary_faces_without_element, 1u);
+  EXPECT_GT(v.boundary_relative_error(), 0.5);  // two of the tet's four faces are not boundary faces
+}
+
+surface::SurfaceMesh quad_surface(std::vector<Eigen::Vector3d> corners) {
+  surface::SurfaceMesh s;
+  s.points = std::move(corners);
+  s.quads.push_back({0, 1, 2, 3});
+  return s;
+}
+
+TEST(Volume, BoxMinusBodyFromSurfaceMeshes) {
+  // Body: the cube [0,1]^2 x [0,1] on the wall z = 0 (faces counter-clockwise seen from outside the
+  // solid, the bottom left open); box: [-2,2]^2 x [0,3] (faces counter-clockwise seen from inside).
+  using V = Eigen::Vector3d;
+  std::vector<surface::SurfaceMesh> body = {
+      quad_surface({V(0, 0, 1), V(1, 0, 1), V(1, 1, 1), V(0, 1, 1)}),  // top, normal +z
+      quad_surface({V(0, 0, 0), V(1, 0, 0), V(1, 0, 1), V(0, 0, 1)}),  // y = 0, normal -y
+      quad_surface({V(1, 1, 0), V(0, 1, 0), V(0, 1, 1), V(1, 1, 1)}),  // y = 1, normal +y
+      quad_surface({V(0, 1, 0), V(0, 0, 0), V(0, 0, 1), V(0, 1, 1)}),  // x = 0, normal -x
+      quad_surface({V(1, 0, 0), V(1, 1, 0), V(1, 1, 1), V(1, 0, 1)}),  // x = 1, normal +x
+  };
+  std::vector<surface::SurfaceMesh> box = {
+      quad_surface({V(-2, -2, 3), V(-2, 2, 3), V(2, 2, 3), V(2, -2, 3)}),    // top, normal -z
+      quad_surface({V(-2, -2, 0), V(-2, -2, 3), V(2, -2, 3), V(2, -2, 0)}),  // y = -2, normal +y
+      quad_surface({V(2, 2, 0), V(2, 2, 3), V(-2, 2, 3), V(-2, 2, 0)}),      // y = 2, normal -y
+      quad_surface({V(-2, 2, 0), V(-2, 2, 3), V(-2, -2, 3), V(-2, -2, 0)}),  // x = -2, normal +x
+      quad_surface({V(2, -2, 0), V(2, -2, 3), V(2, 2, 3), V(2, 2, 0)}),      // x = 2, normal -x
+  };
+  surface::SurfaceMesh wall = quad_surface({V(-2, -2, 0), V(2, -2, 0), V(2, 2, 0), V(-2, 2, 0)});
+  std::vector<const surface::SurfaceMesh*> body_ptr, box_ptr;
+  for (const auto& s : body) body_ptr.push_back(&s);
+  for (const auto& s : box) box_ptr.push_back(&s);
+  EXPECT_NEAR(volume_under_surfaces(body_ptr, V(5, 5, 0), V(0, 0, 1)), 1.0, 1e-14);
+  const VolumeCheck check = check_volume(TwoTets().mesh, body_ptr, box_ptr, wall);
+  EXPECT_NEAR(check.body_volume, 1.0, 1e-14);
+  EXPECT_NEAR(check.box_volume, 48.0, 1e-12);
+  EXPECT_NEAR(check.expected_volume(), 47.0, 1e-12);
+  EXPECT_NEAR(check.expected_relative_error(), std::abs(1.0 / 3.0 - 47.0) / 47.0, 1e-12);
+}
+
+TEST(Validity, InvertedElementIsCountedAndLocated) {
+  TwoTets t;
+  ValidityResult ok = check_validity(t.mesh);
+  EXPECT_EQ(ok.elements, 2u);
+  EXPECT_EQ(ok.invalid, 0u);
+  EXPECT_NEAR(ok.min_scaled_jacobian, 1.0, 1e-12);  // affine elements: constant det J
+
+  Mesh m(1);
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                                   Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
+    m.add_node(p);
+  m.add_element(ho::Shape::Tetrahedron, {0, 1, 2, 3});
+  m.add_element(ho::Shape::Tetrahedron, {0, 1, 2, 4});  // negative orientation
+  const ValidityResult bad = check_validity(m);
+  EXPECT_EQ(bad.invalid, 1u);
+  ASSERT_EQ(bad.worst.size(), 1u);
+  EXPECT_EQ(bad.worst[0].element, 1u);
+  EXPECT_NEAR(bad.worst[0].centroid.z(), -0.25, 1e-15);
+  EXPECT_LT(bad.min_scaled_jacobian, 0.0);
+}
+
+}  // namespace
+}  // namespace semimesh::checks

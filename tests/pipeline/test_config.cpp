@@ -1,0 +1,269 @@
+// Config parsing: defaults, every section, errors that name the key and the line, --set overrides.
+#include "semimesh/pipeline/config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace semimesh::pipeline {
+namespace {
+
+// The message of the ConfigError thrown by parsing `text` (fails the test if nothing is thrown).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_config(text, "case.toml", {}, overrides);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no ConfigError for:\n" << text;
+  return {};
+}
+
+TEST(Config, DefaultsAreThePapersCase) {
+  const Config c = parse_config("", "empty.toml");
+  EXPECT_EQ(c.geometry.backend, "naca");
+  EXPECT_EQ(c.geometry.naca.code, "0012");
+  EXPECT_EQ(c.geometry.naca.chord, 1.0);
+  EXPECT_EQ(c.geometry.naca.te, "blunt");
+  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"upper", "lower", "te_base", "tip"}));
+  EXPECT_EQ(c.geometry.wall, "wall");
+  EXPECT_EQ(c.geometry.farfield.size(), 5u);
+  EXPECT_EQ(c.nearfield.topology, "O");
+  EXPECT_EQ(c.boundary_layer.split.layers, 5);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
+  EXPECT_FALSE(c.boundary_layer.first_cell_height.has_value());
+  EXPECT_EQ(c.highorder.order, 4);
+  EXPECT_EQ(c.highorder.node_set, ho::NodeSet::GLL);
+  EXPECT_EQ(c.highorder.placement, ho::NodePlacement::Parameter);
+  EXPECT_EQ(c.highorder.spring_iterations, 50);
+  // Far field about ten chords from the wing.
+  EXPECT_LE(c.geometry.naca.box[0], -9.0);
+  EXPECT_GE(c.geometry.naca.box[3], 10.0);
+  EXPECT_GE(c.geometry.naca.box[5], 9.0);
+}
+
+TEST(Config, ReadsEverySection) {
+  const Config c = parse_config(R"(
+[geometry]
+backend = "occ"
+units = "m"
+body = ["upper", "lower", "tip"]
+wall = "floor"
+farfield = ["a", "b"]
+[geometry.naca]
+code = "2412"
+chord = 2
+span = 4.5
+taper = 0.5
+sweep = 10
+te = "sharp"
+box = [-5, -6, 0, 7, 8, 9]
+[nearfield]
+topology = "O"
+thickness = 0.2
+smoothing_passes = 3
+min_thickness_fraction = 0.3
+reduction_factor = 0.5
+gradation = 0.25
+[boundary_layer]
+layers = 7
+ratio = 1.5
+[sizing]
+max_size = 1.5
+min_size = 0.01
+curvature_segments = 6
+gradation = 1.3
+le_size = 0.03
+te_size = 0.02
+chordwise = 40
+spanwise = 12
+[farfield]
+box_size = 3
+wall_size = 0.7
+growth = 1.1
+radius_edge_ratio = 1.8
+max_volume = 2.5
+[highorder]
+order = 3
+node_set = "equispaced"
+node_placement = "springs"
+spring_iterations = 20
+[output]
+formats = ["msh22", "nektar"]
+directory = "out"
+basename = "wing"
+allow_invalid = true
+)",
+                                "case.toml");
+  EXPECT_EQ(c.geometry.backend, "occ");
+  EXPECT_EQ(c.geometry.units, "m");
+  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"upper", "lower", "tip"}));
+  EXPECT_EQ(c.geometry.wall, "floor");
+  EXPECT_EQ(c.geometry.farfield, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(c.geometry.naca.code, "2412");
+  EXPECT_EQ(c.geometry.naca.chord, 2.0);
+  EXPECT_EQ(c.geometry.naca.span, 4.5);
+  EXPECT_EQ(c.geometry.naca.taper, 0.5);
+  EXPECT_EQ(c.geometry.naca.sweep, 10.0);
+  EXPECT_EQ(c.geometry.naca.te, "sharp");
+  EXPECT_EQ(c.geometry.naca.box, (std::array<double, 6>{-5, -6, 0, 7, 8, 9}));
+  EXPECT_EQ(c.nearfield.shell.thickness, 0.2);
+  EXPECT_EQ(c.nearfield.shell.normal_smoothing_passes, 3);
+  EXPECT_EQ(c.nearfield.shell.min_thickness_fraction, 0.3);
+  EXPECT_EQ(c.nearfield.shell.reduction_factor, 0.5);
+  EXPECT_EQ(c.nearfield.shell.gradation, 0.25);
+  EXPECT_EQ(c.boundary_layer.split.layers, 7);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 1.5);
+  EXPECT_EQ(c.sizing.size.max_size, 1.5);
+  EXPECT_EQ(c.sizing.size.min_size, 0.01);
+  EXPECT_EQ(c.sizing.size.curvature_segments, 6.0);
+  EXPECT_EQ(c.sizing.size.gradation, 1.3);
+  EXPECT_EQ(c.sizing.size.le_size, 0.03);
+  EXPECT_EQ(c.sizing.size.te_size, 0.02);
+  EXPECT_EQ(c.sizing.chordwise, 40);
+  EXPECT_EQ(c.sizing.spanwise, 12);
+  EXPECT_EQ(c.farfield.box_size, 3.0);
+  EXPECT_EQ(c.farfield.wall_size, 0.7);
+  EXPECT_EQ(c.farfield.growth, 1.1);
+  EXPECT_EQ(c.farfield.radius_edge_ratio, 1.8);
+  EXPECT_EQ(c.farfield.max_volume, 2.5);
+  EXPECT_EQ(c.highorder.order, 3);
+  EXPECT_EQ(c.highorder.node_set, ho::NodeSet::Equispaced);
+  EXPECT_EQ(c.highorder.placement, ho::NodePlacement::Springs);
+  EXPECT_EQ(c.highorder.spring_iterations, 20);
+  EXPECT_EQ(c.output.formats, (std::vector<std::string>{"msh22", "nektar"}));
+  EXPECT_EQ(c.output.directory, "out");
+  EXPECT_EQ(c.output.basename, "wing");
+  EXPECT_TRUE(c.output.allow_invalid);
+}
+
+TEST(Config, SharpTrailingEdgeDropsTheBaseFromTheDefaultBody) {
+  const Config c = parse_config("[geometry.naca]\nte = \"sharp\"\n", "case.toml");
+  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"upper", "lower", "tip"}));
+}
+
+TEST(Config, UnknownKeyIsNamedWithItsLine) {
+  const std::string message = error_of("[boundary_layer]\nlayers = 5\n\nratoi = 2.0\n");
+  EXPECT_NE(message.find("case.toml:4"), std::string::npos) << message;
+  EXPECT_NE(message.find("unknown key boundary_layer.ratoi"), std::string::npos) << message;
+}
+
+TEST(Config, UnknownSectionAndNestedKeyAreErrors) {
+  EXPECT_NE(error_of("[meshing]\nx = 1\n").find("unknown key meshing"), std::string::npos);
+  const std::string nested = error_of("[geometry.naca]\nchrod = 1\n");
+  EXPECT_NE(nested.find("unknown key geometry.naca.chrod"), std::string::npos) << nested;
+  EXPECT_NE(nested.find("case.toml:2"), std::string::npos) << nested;
+}
+
+TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
+  const std::string message = error_of("[boundary_layer]\nratio = 0.5\n");
+  EXPECT_EQ(message, "config error: case.toml:2: boundary_layer.ratio = 0.5: expected >= 1");
+  EXPECT_NE(error_of("[highorder]\norder = 9\n").find("highorder.order = 9: expected an integer in [1, 8]"),
+            std::string::npos);
+  EXPECT_NE(error_of("[highorder]\nnode_placement = \"geodesic\"\n")
+                .find("highorder.node_placement = \"geodesic\": expected \"parameter\" or \"springs\""),
+            std::string::npos)
+      << error_of("[highorder]\nnode_placement = \"geodesic\"\n");
+  EXPECT_NE(error_of("[boundary_layer]\nratio_end = 1.5\n").find("boundary_layer.ratio_end = 1.5: expected together with"),
+            std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\nratio_line = [0, 0, 0, 0, 0, 1]\n").find("boundary_layer.ratio_line"),
+            std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\nratio_line = [1, 1, 1, 1, 1, 1]\nratio_end = 1\n").find("A != B"),
+            std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\nratio_line = [0, 0, 0, 0, 0, 1]\nratio_end = 0.5\n")
+                .find("boundary_layer.ratio_end = 0.5: expected >= 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("[highorder]\nspring_iterations = 0\n").find("highorder.spring_iterations = 0"), std::string::npos);
+  EXPECT_NE(error_of("[sizing]\nmax_size = 0.1\nmin_size = 0.2\n").find("sizing.min_size = 0.2"), std::string::npos);
+  EXPECT_NE(error_of("[output]\nformats = [\"stl\"]\n").find("output.formats"), std::string::npos);
+  EXPECT_NE(error_of("[nearfield]\nthickness = -1\n").find("nearfield.thickness = -1: expected > 0"), std::string::npos);
+}
+
+TEST(Config, ChecksFloorHasAPositiveDefaultAndARange) {
+  EXPECT_EQ(parse_config("", "empty.toml").checks.min_scaled_jacobian, 1e-5);
+  EXPECT_EQ(parse_config("[checks]\nmin_scaled_jacobian = 0.01\n", "case.toml").checks.min_scaled_jacobian, 0.01);
+  EXPECT_EQ(parse_config("[checks]\nmin_scaled_jacobian = 0\n", "case.toml").checks.min_scaled_jacobian, 0.0);
+  EXPECT_EQ(error_of("[checks]\nmin_scaled_jacobian = 1\n"),
+            "config error: case.toml:2: checks.min_scaled_jacobian = 1: expected [0, 1)");
+  EXPECT_NE(error_of("[checks]\nmin_scaled_jacobian = -0.1\n").find("checks.min_scaled_jacobian = -0.1"), std::string::npos);
+  EXPECT_NE(error_of("[checks]\nfloor = 0.1\n").find("unknown key checks.floor"), std::string::npos);
+}
+
+TEST(Config, WrongTypeIsAnError) {
+  EXPECT_NE(error_of("[boundary_layer]\nlayers = 2.5\n").find("boundary_layer.layers = 2.5: expected an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbody = \"upper\"\n").find("expected a non-empty array of strings"), std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nbox = [1, 2, 3]\n").find("expected an array of 6 numbers"), std::string::npos);
+}
+
+TEST(Config, SyntaxErrorGivesTheLine) {
+  const std::string message = error_of("[sizing]\nmax_size = = 2\n");
+  EXPECT_EQ(message.rfind("config error: case.toml:2:", 0), 0u) << message;
+}
+
+TEST(Config, CAndHTopologiesAreRejectedClearly) {
+  for (const char* topology : {"C", "H"}) {
+    const std::string message = error_of(std::string("[nearfield]\ntopology = \"") + topology + "\"\n");
+    EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
+    EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
+  }
+  EXPECT_NE(error_of("[nearfield]\ntopology = \"X\"\n").find("expected \"O\", \"C\" or \"H\""), std::string::npos);
+}
+
+TEST(Config, SetOverridesTheFileAndIsNamedInErrors) {
+  const Config c = parse_config("[boundary_layer]\nratio = 1.5\n", "case.toml", {},
+                                {"boundary_layer.ratio=1.25", "geometry.backend=occ", "geometry.naca.box=[-1,-1,0,2,1,1]",
+                                 "output.formats=[\"vtu\"]", "highorder.order = 2"});
+  EXPECT_EQ(c.boundary_layer.split.ratio, 1.25);
+  EXPECT_EQ(c.geometry.backend, "occ");  // a bare word is taken as a string
+  EXPECT_EQ(c.geometry.naca.box, (std::array<double, 6>{-1, -1, 0, 2, 1, 1}));
+  EXPECT_EQ(c.output.formats, (std::vector<std::string>{"vtu"}));
+  EXPECT_EQ(c.highorder.order, 2);
+
+  const std::string bad = error_of("", {"boundary_layer.ratio=0.5"});
+  EXPECT_EQ(bad, "config error: --set boundary_layer.ratio=0.5: boundary_layer.ratio = 0.5: expected >= 1");
+  EXPECT_NE(error_of("", {"sizing.maxsize=1"}).find("unknown key sizing.maxsize"), std::string::npos);
+  EXPECT_NE(error_of("", {"novalue"}).find("expected key=value"), std::string::npos);
+  EXPECT_NE(error_of("[highorder]\norder = 4\n", {"highorder.order.x=1"}).find("highorder.order is a value"), std::string::npos);
+}
+
+TEST(Config, FirstCellHeightGivesTheRatio) {
+  const Config c = parse_config("[nearfield]\nthickness = 0.1\n[boundary_layer]\nlayers = 5\nfirst_cell_height = 0.01\n",
+                                "case.toml");
+  ASSERT_TRUE(c.boundary_layer.first_cell_height.has_value());
+  // With r = 2 the five layers are 1 + 2 + 4 + 8 + 16 = 31 first cells: h1 = thickness / 31.
+  BoundaryLayerConfig layer;
+  layer.split.layers = 5;
+  layer.first_cell_height = 0.1 / 31.0;
+  EXPECT_NEAR(effective_layer_ratio(layer, 0.1), 2.0, 1e-10);
+  layer.first_cell_height = 0.02;
+  EXPECT_NEAR(effective_layer_ratio(layer, 0.1), 1.0, 1e-10);
+  EXPECT_NE(error_of("[boundary_layer]\nratio = 2\nfirst_cell_height = 0.001\n").find("not both"), std::string::npos);
+  EXPECT_NE(error_of("[nearfield]\nthickness = 0.1\n[boundary_layer]\nlayers = 5\nfirst_cell_height = 0.05\n")
+                .find("boundary_layer.first_cell_height = 0.05"),
+            std::string::npos);
+}
+
+TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
+  const auto dir = std::filesystem::temp_directory_path() / "semimesh_config_test";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "case.toml";
+  std::ofstream(path) << "[geometry]\nbackend = \"occ\"\nsource = \"wing.step\"\n";
+  const Config c = load_config(path.string());
+  EXPECT_EQ(c.geometry.source, (dir / "wing.step").string());
+  std::filesystem::remove_all(dir);
+  EXPECT_THROW(load_config((dir / "missing.toml").string()), ConfigError);
+}
+
+TEST(Config, TheExampleParses) {
+  const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing.toml");
+  EXPECT_EQ(c.highorder.order, 4);
+  EXPECT_EQ(c.boundary_layer.split.layers, 5);
+  EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
+  EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05);
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline
