@@ -1,4 +1,4 @@
-// The exit codes of every `semimesh` subcommand (docs/config.md, DESIGN.md section 7).
+// The exit codes of every `semimesh` subcommand (docs/config.md, docs/architecture.md section 3).
 #pragma once
 
 #include "semimesh/error.hpp"

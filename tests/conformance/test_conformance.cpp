@@ -1,4 +1,4 @@
-// The backend conformance suite: every check of the cadapi contract (DESIGN.md section 3) on
+// The backend conformance suite: every check of the cadapi contract (docs/architecture.md, section 3) on
 // every model of fixtures.hpp. A check that cannot apply to a model is skipped with the reason.
 #include "fixtures.hpp"
 #include "sampling.hpp"
@@ -111,7 +111,7 @@ TYPED_TEST(Conformance, SurfaceDerivativesMatchFiniteDifferences) {
 }
 
 // Normals point into the fluid, checked in two steps that trust no normal.
-// 1. Every loop runs counter-clockwise around its face's normal (DESIGN.md section 3 / model.hpp):
+// 1. Every loop runs counter-clockwise around its face's normal (docs/architecture.md, section 3 / model.hpp):
 //    at a point of a bounding curve, stepping along n x T (T the tangent in the loop's direction)
 //    lands on the face, and stepping the other way leaves it. With each curve walked once each way
 //    by its two faces (AdjacencyAndOrientation), neighbouring faces' normals agree.

@@ -1,5 +1,7 @@
 #include "semimesh/ho/repair.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mesh/node_layout.hpp"
@@ -117,7 +119,7 @@ RepairFailure Repairer::failure(std::size_t e) const {
   for (NodeId id : m_.element_nodes(e)) {
     const mesh::CadAttachment& a = m_.cad_attachment(id);
     if (a.kind != mesh::CadAttachment::Surface) continue;
-    const std::string name = "'" + model_.surface(a.entity).name() + "' (id " + std::to_string(a.entity) + ")";
+    const std::string name = cad::surface_label(model_, a.entity);
     if (surfaces.find(name) == std::string::npos) surfaces += (surfaces.empty() ? "" : ", ") + name;
   }
   std::ostringstream msg;
@@ -160,7 +162,7 @@ void Repairer::repair(std::size_t e, RepairStats& stats) {
 
 }  // namespace
 
-RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements) {
+Repaired repair_invalid(const mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements) {
   for (std::size_t e : elements) {
     if (e >= mesh.elements().size())
       throw std::invalid_argument("repair_invalid: element index " + std::to_string(e) + " out of range (mesh has " +
@@ -169,10 +171,10 @@ RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std:
       throw std::invalid_argument("repair_invalid: element " + std::to_string(e) + " is a " +
                                   to_string(mesh.elements()[e].shape) + "; only 3D elements can be repaired");
   }
-  RepairStats stats;
-  Repairer repairer(mesh, model);
-  for (std::size_t e : elements) repairer.repair(e, stats);
-  return stats;
+  Repaired out{mesh, {}};
+  Repairer repairer(out.mesh, model);
+  for (std::size_t e : elements) repairer.repair(e, out.stats);
+  return out;
 }
 
 }  // namespace semimesh::ho

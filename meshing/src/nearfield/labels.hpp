@@ -1,16 +1,15 @@
-// How near-field messages name places: CAD surfaces by name and id, points by coordinates.
+// How near-field messages name places: CAD surfaces as everywhere (cad/labels.hpp), points by
+// coordinates.
 #pragma once
 
-#include "semimesh/cad/model.hpp"
+#include "semimesh/cad/labels.hpp"
 
 #include <sstream>
 #include <string>
 
 namespace semimesh::nearfield {
 
-inline std::string surface_label(const cad::Model& model, int s) {
-  return "surface '" + model.surface(s).name() + "' (id " + std::to_string(s) + ")";
-}
+using cad::surface_label;
 
 inline std::string number_label(double value) {
   std::ostringstream out;

@@ -11,10 +11,6 @@
 
 namespace semimesh::surface::detail {
 
-std::string surface_label(const cad::Model& model, int surface) {
-  return "surface " + std::to_string(surface) + " ('" + model.surface(surface).name() + "')";
-}
-
 std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int surface, const CurveMeshes& curves,
                                                  SurfaceMesh& mesh) {
   const cad::Surface& face = model.surface(surface);
@@ -27,7 +23,7 @@ std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int su
   auto add_node = [&](const Vec3& point, const NodeOrigin& origin, const Vec2* guess) {
     const cad::SurfaceProjection proj = guess ? face.project(point, *guess) : face.project(point);
     if (proj.distance > max_distance)
-      throw SurfaceMeshError(surface_label(model, surface) + ": node " + std::to_string(origin.index) + " of curve " +
+      throw SurfaceMeshError(cad::surface_label(model, surface) + ": node " + std::to_string(origin.index) + " of curve " +
                              std::to_string(origin.curve) + " ('" + model.curve(origin.curve).name() +
                              "') is " + std::to_string(proj.distance) + " away from the surface (tolerance " +
                              std::to_string(max_distance) + "); the CAD topology or the surface projection is inconsistent");
@@ -41,9 +37,8 @@ std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int su
     std::vector<int> chain;
     for (const cad::CurveUse& use : loop.uses) {
       if (!used_curves.insert(use.curve).second)
-        throw SurfaceMeshError(surface_label(model, surface) + " uses curve " + std::to_string(use.curve) + " ('" +
-                               model.curve(use.curve).name() +
-                               "') twice (a periodic seam): seams are not supported by the surface mesher");
+        throw SurfaceMeshError(cad::surface_label(model, surface) + " uses " + cad::curve_label(model, use.curve) +
+                               " twice (a periodic seam): seams are not supported by the surface mesher");
       const CurveMesh& cm = curves.at(use.curve);
       const auto ends = model.curve_vertices(use.curve);
       const int n = cm.segments();
@@ -66,11 +61,11 @@ std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int su
       }
     }
     if (chain.size() < 3)
-      throw SurfaceMeshError(surface_label(model, surface) + ": a boundary loop has only " + std::to_string(chain.size()) +
+      throw SurfaceMeshError(cad::surface_label(model, surface) + ": a boundary loop has only " + std::to_string(chain.size()) +
                              " nodes; its curves need more segments");
     loops.push_back(std::move(chain));
   }
-  if (loops.empty()) throw SurfaceMeshError(surface_label(model, surface) + " has no boundary loop");
+  if (loops.empty()) throw SurfaceMeshError(cad::surface_label(model, surface) + " has no boundary loop");
   return loops;
 }
 

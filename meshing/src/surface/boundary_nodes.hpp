@@ -2,6 +2,7 @@
 // parameter space. Nodes at CAD vertices appear once even when two curve uses meet there.
 #pragma once
 
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 
 #include <vector>
@@ -28,8 +29,5 @@ Vec2 snap_to_grid(const Vec2& uv, double step);
 /// are compared snapped to the grid, so two models agreeing to ~1e-13 decide alike. Updates
 /// `loops` to the new ids; mesh.uv stays unsnapped.
 void canonicalise_boundary(double grid_step, SurfaceMesh& mesh, std::vector<std::vector<int>>& loops);
-
-/// "surface 3 ('wall')": how errors name a surface.
-std::string surface_label(const cad::Model& model, int surface);
 
 }  // namespace semimesh::surface::detail

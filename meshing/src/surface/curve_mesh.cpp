@@ -1,5 +1,7 @@
 #include "semimesh/surface/curve_mesh.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "semimesh/surface/error.hpp"
 
 #include <algorithm>
@@ -14,9 +16,6 @@ constexpr double kSampleFraction = 0.25;
 constexpr int kInitialSamples = 32;
 constexpr int kMaxRefineRounds = 16;
 
-std::string curve_label(const cad::Model& model, int curve) {
-  return "curve " + std::to_string(curve) + " ('" + model.curve(curve).name() + "')";
-}
 
 void check_curve_id(const cad::Model& model, int curve) {
   if (curve < 0 || curve >= model.num_curves())
@@ -46,7 +45,7 @@ CurveMesh mesh_from_fractions(const cad::Model& model, int curve, const std::vec
   mesh.points.back() = model.vertex(ends[1]).point;
   for (std::size_t i = 1; i < mesh.t.size(); ++i)
     if (!(mesh.t[i] > mesh.t[i - 1]))
-      throw SurfaceMeshError(curve_label(model, curve) + ": the discretisation is not increasing in the parameter "
+      throw SurfaceMeshError(cad::curve_label(model, curve) + ": the discretisation is not increasing in the parameter "
                              "(segments too short for the curve's parametrisation)");
   return mesh;
 }
@@ -110,9 +109,9 @@ CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& 
 CurveMesh discretise_curve(const cad::Model& model, int curve, const CurveCount& count) {
   check_curve_id(model, curve);
   const int n = count.segments;
-  if (n < 1) throw SurfaceMeshError(curve_label(model, curve) + ": segments must be >= 1, got " + std::to_string(n));
+  if (n < 1) throw SurfaceMeshError(cad::curve_label(model, curve) + ": segments must be >= 1, got " + std::to_string(n));
   if (is_closed(model, curve) && n < 3)
-    throw SurfaceMeshError(curve_label(model, curve) + " is closed: it needs >= 3 segments, got " + std::to_string(n));
+    throw SurfaceMeshError(cad::curve_label(model, curve) + " is closed: it needs >= 3 segments, got " + std::to_string(n));
   const double q = count.bunching.parameter;
   std::vector<double> fractions(n + 1);
   for (int i = 0; i <= n; ++i) {
@@ -120,12 +119,12 @@ CurveMesh discretise_curve(const cad::Model& model, int curve, const CurveCount&
     switch (count.bunching.law) {
       case Bunching::Law::Uniform: fractions[i] = xi; break;
       case Bunching::Law::Geometric:
-        if (!(q > 0.0)) throw SurfaceMeshError(curve_label(model, curve) + ": geometric ratio must be > 0");
+        if (!(q > 0.0)) throw SurfaceMeshError(cad::curve_label(model, curve) + ": geometric ratio must be > 0");
         // Segment k has length proportional to q^k: partial geometric sums.
         fractions[i] = std::abs(q - 1.0) < 1e-12 ? xi : (std::pow(q, i) - 1.0) / (std::pow(q, n) - 1.0);
         break;
       case Bunching::Law::Tanh:
-        if (!(q > 0.0)) throw SurfaceMeshError(curve_label(model, curve) + ": tanh strength must be > 0");
+        if (!(q > 0.0)) throw SurfaceMeshError(cad::curve_label(model, curve) + ": tanh strength must be > 0");
         fractions[i] = 0.5 * (1.0 + std::tanh(q * (2.0 * xi - 1.0)) / std::tanh(q));
         break;
       case Bunching::Law::Cosine: fractions[i] = 0.5 * (1.0 - std::cos(M_PI * xi)); break;

@@ -1,5 +1,7 @@
 #include "semimesh/surface/model_surfaces.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "semimesh/surface/error.hpp"
 
 #include <algorithm>
@@ -74,9 +76,8 @@ std::vector<std::string> check_conformity(const cad::Model& model, const Surface
         auto& edges = open[use.surface];
         auto found = edges.find(edge_key(cm.points[k], cm.points[k + 1]));
         if (found == edges.end()) {
-          problems.push_back("segment " + std::to_string(k) + " of curve " + std::to_string(c) + " ('" +
-                             model.curve(c).name() + "') is not a boundary edge of surface " +
-                             std::to_string(use.surface) + " ('" + model.surface(use.surface).name() + "')");
+          problems.push_back("segment " + std::to_string(k) + " of " + cad::curve_label(model, c) +
+                             " is not a boundary edge of " + cad::surface_label(model, use.surface));
         } else if (--found->second == 0) {
           edges.erase(found);
         }
@@ -84,8 +85,8 @@ std::vector<std::string> check_conformity(const cad::Model& model, const Surface
   }
   for (std::size_t s = 0; s < open.size(); ++s)
     if (!open[s].empty())
-      problems.push_back("surface " + std::to_string(s) + " ('" + model.surface(static_cast<int>(s)).name() + "') has " +
-                         std::to_string(open[s].size()) + " boundary edges that are not curve segments");
+      problems.push_back(cad::surface_label(model, static_cast<int>(s)) + " has " + std::to_string(open[s].size()) +
+                         " boundary edges that are not curve segments");
   return problems;
 }
 

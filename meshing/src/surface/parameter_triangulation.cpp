@@ -207,7 +207,7 @@ void triangulate_parameter_space(const cad::Model& model, int surface, const std
   for (int node : by_position) {
     handles[node] = cdt.insert(Point(snapped[node].x(), snapped[node].y()));
     if (handles[node]->info().node != -1)
-      throw SurfaceMeshError(surface_label(model, surface) + ": boundary nodes " + std::to_string(handles[node]->info().node) +
+      throw SurfaceMeshError(cad::surface_label(model, surface) + ": boundary nodes " + std::to_string(handles[node]->info().node) +
                              " and " + std::to_string(node) + " coincide in parameter space (degenerate edge or pole?)");
     handles[node]->info().node = node;
   }
@@ -223,7 +223,7 @@ void triangulate_parameter_space(const cad::Model& model, int surface, const std
   });
   for (const auto& [a, b] : segments) cdt.insert_constraint(handles[a], handles[b]);
   if (static_cast<int>(cdt.number_of_vertices()) != mesh.num_nodes())
-    throw SurfaceMeshError(surface_label(model, surface) +
+    throw SurfaceMeshError(cad::surface_label(model, surface) +
                            ": boundary loops intersect in parameter space (curves crossing, or too coarse for the trim)");
   mark_domain(cdt);
   Refiner(model.surface(surface), size, split_factor, grid_step, mesh, cdt).run();
@@ -231,7 +231,7 @@ void triangulate_parameter_space(const cad::Model& model, int surface, const std
   for (FaceHandle f : cdt.finite_face_handles())
     if (f->info().in_domain())
       mesh.triangles.push_back({f->vertex(0)->info().node, f->vertex(1)->info().node, f->vertex(2)->info().node});
-  if (mesh.triangles.empty()) throw SurfaceMeshError(surface_label(model, surface) + ": the boundary loops enclose no area");
+  if (mesh.triangles.empty()) throw SurfaceMeshError(cad::surface_label(model, surface) + ": the boundary loops enclose no area");
 }
 
 }  // namespace semimesh::surface::detail

@@ -18,7 +18,7 @@ SurfaceMesh mesh_surface_structured(const cad::Model& model, int surface, const 
   if (surface < 0 || surface >= model.num_surfaces())
     throw SurfaceMeshError("surface id " + std::to_string(surface) + " is out of range: the model has " +
                            std::to_string(model.num_surfaces()) + " surfaces");
-  const std::string label = detail::surface_label(model, surface);
+  const std::string label = cad::surface_label(model, surface);
   const auto& loops = model.loops(surface);
   if (loops.size() != 1 || loops[0].uses.size() != 4)
     throw SurfaceMeshError(label + " is not a structured strip: it needs one loop of four curves");

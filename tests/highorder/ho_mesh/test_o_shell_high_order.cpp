@@ -4,7 +4,7 @@
 
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
-#include "semimesh/ho/repair.hpp"
+#include "repair_in_place.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 
 #include <gtest/gtest.h>
@@ -53,7 +53,7 @@ TEST(OShellHighOrder, CurvedAndSplitShellIsValidAtOrders2To4) {
     CurvingStats curving;
     mesh::Mesh curved = curve_mesh(linear, *shell().model, {P, NodeSet::GLL, 50, 1e-10}, &curving);
     // The pipeline's order: certify the one-layer shell, repair what curving folded, then split.
-    const RepairStats repair = repair_invalid(curved, *shell().model, certify_mesh(curved).invalid_elements);
+    const RepairStats repair = repair_in_place(curved, *shell().model, certify_mesh(curved).invalid_elements);
     EXPECT_TRUE(repair.failures.empty()) << "P = " << P << ": " << repair.failures.front().reason;
     const MeshValidity coarse = certify_mesh(curved);
     EXPECT_TRUE(coarse.all_valid()) << "P = " << P << ": " << coarse.invalid << " invalid one-layer prisms";
@@ -77,7 +77,7 @@ TEST(OShellHighOrder, FirstCellOf1e5ChordIsValid) {
   const double r = ratio_for_first_cell(delta, layers, first_cell);
   ASSERT_LE(r, 2.5);
   mesh::Mesh curved = curve_mesh(shell().field.mesh, *shell().model, {P, NodeSet::GLL, 50, 1e-10});
-  const RepairStats repair = repair_invalid(curved, *shell().model, certify_mesh(curved).invalid_elements);
+  const RepairStats repair = repair_in_place(curved, *shell().model, certify_mesh(curved).invalid_elements);
   EXPECT_TRUE(repair.failures.empty());
   SplitStats split;
   const mesh::Mesh fine = split_layers(curved, testing::all_elements(curved), {layers, r}, {}, &split);

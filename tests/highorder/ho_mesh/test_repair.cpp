@@ -1,6 +1,6 @@
 // Repair of invalid curved elements: a pushed interior node, a pushed free face node, and an element
 // folded by its own CAD boundary face (reported, not moved).
-#include "semimesh/ho/repair.hpp"
+#include "repair_in_place.hpp"
 
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
@@ -63,7 +63,7 @@ TEST(RepairInvalid, PushedInteriorNodeIsRelaxed) {
   const mesh::NodeId centre = m.element_nodes(0)[node_at({0, 0, 0})];
   m.place_node(centre, Eigen::Vector3d(0.5, 0.5, 2.0));  // far above the top face
   ASSERT_FALSE(valid(m, 0));
-  const RepairStats stats = repair_invalid(m, model(), {0});
+  const RepairStats stats = repair_in_place(m, model(), {0});
   EXPECT_EQ(stats.checked, 1);
   EXPECT_EQ(stats.repaired_interior, 1);
   EXPECT_TRUE(stats.failures.empty());
@@ -82,7 +82,7 @@ TEST(RepairInvalid, PushedFreeFaceNodeIsRelaxedKeepingTheNeighbourValid) {
   const mesh::NodeId shared = m.element_nodes(0)[node_at({0, 0, 1})];
   m.place_node(shared, Eigen::Vector3d(0.5, 0.5, 2.5));
   ASSERT_FALSE(valid(m, 1));
-  const RepairStats stats = repair_invalid(m, model(), {0, 1});
+  const RepairStats stats = repair_in_place(m, model(), {0, 1});
   EXPECT_EQ(stats.repaired_free_nodes + stats.already_valid, 2);
   EXPECT_TRUE(stats.failures.empty());
   EXPECT_TRUE(valid(m, 0));
@@ -97,7 +97,7 @@ TEST(RepairInvalid, ElementFoldedByItsCadFaceIsReported) {
   m.place_node_on_cad(on_cad, Eigen::Vector3d(0.5, 0.5, 1.6), m.cad_attachment(on_cad));
   ASSERT_FALSE(valid(m, 0));
   const Eigen::MatrixX3d before = m.element_coordinates(0);
-  const RepairStats stats = repair_invalid(m, model(), {0});
+  const RepairStats stats = repair_in_place(m, model(), {0});
   ASSERT_EQ(stats.failures.size(), 1u);
   EXPECT_EQ(stats.failures[0].element, 0u);
   EXPECT_LT((stats.failures[0].centroid - Eigen::Vector3d(0.5, 0.5, 0.5)).norm(), 1e-12);
@@ -108,8 +108,8 @@ TEST(RepairInvalid, ElementFoldedByItsCadFaceIsReported) {
 
 TEST(RepairInvalid, RejectsBadInput) {
   mesh::Mesh m = hex_column(1);
-  EXPECT_THROW(repair_invalid(m, model(), {1}), std::invalid_argument);
-  const RepairStats stats = repair_invalid(m, model(), {0});
+  EXPECT_THROW(repair_in_place(m, model(), {1}), std::invalid_argument);
+  const RepairStats stats = repair_in_place(m, model(), {0});
   EXPECT_EQ(stats.already_valid, 1);
 }
 

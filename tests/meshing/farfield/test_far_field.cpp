@@ -103,14 +103,18 @@ class FarFieldAroundCube : public ::testing::Test {
     FarFieldParams params;
     params.box_size = 1.0;
     params.wall_size = 0.6;
-    stats_ = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), *model_->find_surface("wall"));
+    FarField far = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), *model_->find_surface("wall"));
+    mesh_ = new mesh::Mesh(std::move(far.mesh));
+    stats_ = far.stats;
   }
   static void TearDownTestSuite() {
+    delete mesh_;
     delete cube_;
     delete model_;
   }
-  static const mesh::Mesh& mesh() { return cube_->nf.mesh; }
+  static const mesh::Mesh& mesh() { return *mesh_; }
 
+  static mesh::Mesh* mesh_;
   static cad::Model* model_;
   static CubeSkin* cube_;
   static std::vector<Vector3d> skin_points_;
@@ -120,6 +124,7 @@ cad::Model* FarFieldAroundCube::model_ = nullptr;
 CubeSkin* FarFieldAroundCube::cube_ = nullptr;
 std::vector<Vector3d> FarFieldAroundCube::skin_points_;
 FarFieldStats FarFieldAroundCube::stats_;
+mesh::Mesh* FarFieldAroundCube::mesh_ = nullptr;
 
 TEST_F(FarFieldAroundCube, CountsAndSkinNodesUntouched) {
   EXPECT_EQ(stats_.pyramids, cube_->quads);

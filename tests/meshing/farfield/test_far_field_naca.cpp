@@ -50,8 +50,9 @@ TEST(FarFieldNaca0012, ConformingClosedMeshAroundTheOShell) {
   FarFieldParams params;
   params.box_size = 0.8;
   params.wall_size = 0.5;
-  const FarFieldStats stats = build_far_field(*model, nf, params, box, roles.wall_surface);
-  const mesh::Mesh& m = nf.mesh;
+  const FarField far = build_far_field(*model, nf, params, box, roles.wall_surface);
+  const FarFieldStats& stats = far.stats;
+  const mesh::Mesh& m = far.mesh;
   EXPECT_EQ(stats.pyramids, 0);  // the O-shell's skin is all triangles
   EXPECT_EQ(m.elements().size(), prisms + stats.tets);
   // The shell's prisms are the wing layer, the far field's tets their own region.

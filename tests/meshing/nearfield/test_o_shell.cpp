@@ -264,6 +264,26 @@ TEST(OShell, ConcaveRegionIsThinnedWithAWarning) {
     on_lower |= w.message.find("'lower'") != std::string::npos;
   }
   EXPECT_TRUE(on_lower);
+
+  // The documented gradation limit |δx − δy| <= gradation |x − y| over every body edge, with δ read
+  // off the mesh (the length of each prism's vertical edge).
+  std::map<NodeId, double> delta;
+  for (std::size_t e = 0; e < f.mesh.elements().size(); ++e)
+    for (int i = 0; i < 3; ++i) {
+      const auto& v = f.mesh.elements()[e].vertices;
+      delta[v[i]] = (f.mesh.node(v[i + 3]) - f.mesh.node(v[i])).norm();
+    }
+  int steeper = 0;
+  double thinnest = params.thickness;
+  for (std::size_t e = 0; e < f.mesh.elements().size(); ++e)
+    for (int i = 0; i < 3; ++i) {
+      const NodeId a = f.mesh.elements()[e].vertices[i], b = f.mesh.elements()[e].vertices[(i + 1) % 3];
+      const double limit = params.gradation * (f.mesh.node(a) - f.mesh.node(b)).norm();
+      steeper += std::abs(delta[a] - delta[b]) > limit * (1.0 + 1e-9) + 1e-12;
+      thinnest = std::min(thinnest, delta[a]);
+    }
+  EXPECT_EQ(steeper, 0) << "body edges where the thickness changes faster than the gradation allows";
+  EXPECT_NEAR(thinnest, f.thickness_min, 1e-9);
 }
 
 TEST(OShell, ImpossibleThicknessThrowsWithThePlace) {
@@ -277,7 +297,7 @@ TEST(OShell, ImpossibleThicknessThrowsWithThePlace) {
   } catch (const NearFieldError& e) {
     const std::string what = e.what();
     std::cout << "error: " << what << "\n";
-    EXPECT_NE(what.find("surface '"), std::string::npos) << what;
+    EXPECT_NE(what.find("surface 1 ('lower')"), std::string::npos) << what;
     EXPECT_NE(what.find(" at ("), std::string::npos) << what;
     EXPECT_NE(what.find("min_thickness_fraction"), std::string::npos) << what;
   }

@@ -1,7 +1,7 @@
 // Element quality from the certified Jacobian bounds of validity.hpp.
 //
-// Scaled Jacobian of a high-order element: min det J / max det J over the whole element (DESIGN.md
-// section 6). It is computed from the certified bounds, min_lower / max_upper, so it never
+// Scaled Jacobian of a high-order element: min det J / max det J over the whole element (docs/architecture.md
+// section 4). It is computed from the certified bounds, min_lower / max_upper, so it never
 // overstates the quality: the true ratio lies between this value and min_upper / max_upper.
 // Values: in (0, 1] for a valid element (1: constant det J, e.g. any affine element), <= 0 when the
 // element is, or cannot be proven not to be, inverted somewhere; -1 when inverted everywhere.

@@ -38,9 +38,15 @@ struct RepairStats {
   std::vector<RepairFailure> failures;  ///< step 3, in the order of `elements`
 };
 
-/// Repairs the listed elements of `mesh` in order (3D elements; the mesh's order and node set);
-/// `model` is the CAD the attachments refer to (used to name the surface in a failure). Nodes with a
-/// CAD attachment never move. Throws std::invalid_argument for an index out of range or a 2D element.
-RepairStats repair_invalid(mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements);
+struct Repaired {
+  mesh::Mesh mesh;
+  RepairStats stats;
+};
+
+/// A copy of `mesh` whose listed elements are repaired in order (3D elements; the mesh's order and
+/// node set); `model` is the CAD the attachments refer to (used to name the surface in a failure).
+/// Nodes with a CAD attachment never move. Throws std::invalid_argument for an index out of range
+/// or a 2D element.
+Repaired repair_invalid(const mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements);
 
 }  // namespace semimesh::ho

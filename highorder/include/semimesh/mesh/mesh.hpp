@@ -1,4 +1,4 @@
-// The mesh data model (DESIGN.md section 4).
+// The mesh data model (docs/architecture.md, section 3).
 //
 // All nodes (vertices and high-order nodes) live in one array and are named by a NodeId. Edges and
 // faces are shared entities keyed by their sorted vertex ids; each owns the nodes strictly inside

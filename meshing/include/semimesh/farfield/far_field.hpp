@@ -1,5 +1,5 @@
 // The far field: the unstructured region between the near field's outer skin, the wall and the
-// far-field box (DESIGN.md section 1). Pyramids sit on the quads of the skin so that the rest of
+// far-field box (docs/architecture.md, section 1). Pyramids sit on the quads of the skin so that the rest of
 // the region can be filled with tetrahedra; the tetrahedra come from TetGen.
 //
 // Licence: this stage links TetGen 1.5 (AGPL-3.0-or-later) and lives in its own target,
@@ -39,22 +39,35 @@ struct FarFieldStats {
   int pyramids = 0;
   int wall_triangles = 0;
   int box_triangles = 0;
+  int wall_layer_prisms = 0;
   double seconds_tetgen = 0;
 };
 
-/// Adds far-field nodes, pyramids (one on each quad of nf.skin, vertices 0..3 the quad, 4 the apex)
-/// and TetGen tetrahedra to nf.mesh, and the boundary faces "wall" (the far-field part of the
-/// wall, normal out of the domain) and "farfield" (the box faces, normal out of the domain).
+struct FarField {
+  mesh::Mesh mesh;  ///< the near field's mesh with the far field added
+  FarFieldStats stats;
+  std::vector<nearfield::LayerStack> stacks;  ///< every layer element of the mesh: the near field's, then the wall layer's
+};
+
+/// The whole mesh: the near field's mesh with far-field nodes, pyramids (one on each quad of
+/// near.skin, vertices 0..3 the quad, 4 the apex) and TetGen tetrahedra (region "farfield"), and
+/// the boundary faces "wall" (the far-field part of the wall, normal out of the domain) and
+/// "farfield" (the box faces, normal out of the domain).
 /// The skin faces and the footprint are kept exactly: the far field conforms with the near field.
+/// The near field is taken by value: pass it with std::move when it is not needed afterwards.
 ///  box_surfaces  CAD surface ids of the box faces; their curve meshes are shared with the wall's
 ///                outer loop.
 ///  wall_surface  the planar wall; its outer loop bounds the wall region, nf.footprint the hole.
 /// Tetrahedron sizes grow from the local skin edge length towards the box size by TetGen's quality
 /// bound alone (-q radius_edge_ratio; no background size, which over-refined about 8 times on the
 /// NACA0012 case); `growth` grades the wall region and the box curves.
+/// With a wall layer (wall_layer_thickness > 0: a C-type near field, whose footprint_top gives the
+/// layer's tops over its footprint) the wall triangles carry prisms of that thickness (region
+/// "wall_layer", wall_layer.hpp): their tops bound the tetrahedra, the box faces start on the
+/// layer's top.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets).
-FarFieldStats build_far_field(const cad::Model& model, nearfield::NearField& nf, const FarFieldParams& params,
-                              const std::vector<int>& box_surfaces, int wall_surface);
+FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0);
 
 }  // namespace semimesh::farfield

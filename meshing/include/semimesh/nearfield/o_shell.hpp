@@ -1,5 +1,5 @@
 // The O-type near field: one layer of prisms of thickness delta around the whole body (paper,
-// section "Partitioning"; DESIGN.md section 5).
+// section "Partitioning"; docs/architecture.md).
 //
 // Every body triangle (a, b, c) becomes the prism (a, b, c, a', b', c') with x' = x + delta_x n_x
 // along the node normal (node_normals.hpp). Where the body meets the wall, the normals lie in the

@@ -1,4 +1,4 @@
-// Geometric error of a curved mesh (DESIGN.md section 6): distance from points of its boundary faces
+// Geometric error of a curved mesh (docs/architecture.md, section 4): distance from points of its boundary faces
 // to the CAD surface they represent, relative to a reference length (the chord).
 #pragma once
 
