@@ -50,7 +50,9 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     progress.stage_finished(timing);
   };
   auto fail = [&](Error::Cause cause, const std::string& what) -> RunError {
-    return RunError(cause, name, name + ": " + what);
+    // Stage errors that already name their stage (e.g. "near field: ...") are not prefixed twice.
+    const std::string prefix = name + ": ";
+    return RunError(cause, name, what.rfind(prefix, 0) == 0 ? what : prefix + what);
   };
   try {
     if constexpr (std::is_void_v<decltype(body())>) {
