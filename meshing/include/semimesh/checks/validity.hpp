@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace semimesh::checks {
@@ -26,7 +28,9 @@ struct ValidityResult {
   double floor = 0.0;                        ///< the min_scaled_jacobian the check used
   double min_scaled_jacobian = 1.0;
   double median_scaled_jacobian = 1.0;
+  std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
+  std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
   bool ok() const { return invalid == 0; }
 };
 
