@@ -4,7 +4,7 @@ find_package(CGAL REQUIRED)
 add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/size_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/shell_size_limit.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/surface/curve_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/curve_discretisation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/boundary_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/parameter_triangulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_improvement.cpp

@@ -1,4 +1,4 @@
-#include "boundary_crossing.hpp"
+#include "semimesh/farfield/detail/boundary_crossing.hpp"
 
 #include <Eigen/Geometry>
 

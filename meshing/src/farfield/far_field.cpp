@@ -2,12 +2,12 @@
 
 #include "semimesh/cad/labels.hpp"
 
-#include "pyramid_apex.hpp"
+#include "semimesh/farfield/detail/pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
-#include "wall_annulus.hpp"
+#include "semimesh/farfield/detail/wall_annulus.hpp"
 #include "wall_layer.hpp"
 
-#include "semimesh/surface/curve_mesh.hpp"
+#include "semimesh/surface/curve_discretisation.hpp"
 #include "semimesh/surface/error.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 

@@ -1,4 +1,4 @@
-#include "pyramid_apex.hpp"
+#include "semimesh/farfield/detail/pyramid_apex.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/validity.hpp"

@@ -1,6 +1,6 @@
 #include "tetgen_volume.hpp"
 
-#include "boundary_crossing.hpp"
+#include "semimesh/farfield/detail/boundary_crossing.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 

@@ -1,4 +1,4 @@
-#include "wall_annulus.hpp"
+#include "semimesh/farfield/detail/wall_annulus.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 

@@ -1,5 +1,5 @@
 // The locator of self-crossings of a triangulated boundary (used in TetGen error messages).
-#include "boundary_crossing.hpp"
+#include "semimesh/farfield/detail/boundary_crossing.hpp"
 
 #include <gtest/gtest.h>
 

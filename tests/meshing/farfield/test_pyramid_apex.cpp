@@ -1,5 +1,5 @@
 // The apex of the pyramid over a skin quad.
-#include "pyramid_apex.hpp"
+#include "semimesh/farfield/detail/pyramid_apex.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 

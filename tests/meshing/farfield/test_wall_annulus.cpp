@@ -1,5 +1,5 @@
 // The far-field wall region: a graded triangulation between a rectangle and a hole.
-#include "wall_annulus.hpp"
+#include "semimesh/farfield/detail/wall_annulus.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 

@@ -1,7 +1,7 @@
 // The surface mesh must not depend on how a CAD backend describes the same geometry: curve ids,
 // the direction and start of the loops, and (u, v) or points that differ by rounding noise
 // (two backends agreeing to ~1e-13) all give the same mesh, node for node.
-#include "semimesh/surface/curve_mesh.hpp"
+#include "semimesh/surface/curve_discretisation.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 #include "wing_fixture.hpp"
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "semimesh/cad/model.hpp"
-#include "semimesh/surface/curve_mesh.hpp"
+#include "semimesh/surface/curve_discretisation.hpp"
 #include "semimesh/surface/size_field.hpp"
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "semimesh/surface/curve_mesh.hpp"
+#include "semimesh/surface/curve_discretisation.hpp"
 #include "semimesh/surface/error.hpp"
 #include "wing_fixture.hpp"
 
