@@ -2,12 +2,15 @@
 #include "cad_info.hpp"
 #include "check_command.hpp"
 #include "exit_codes.hpp"
+#include "init_command.hpp"
 #include "run_command.hpp"
 
 #include "semimesh/backends/builtin.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+#include <unistd.h>
 
 #include <iostream>
 
@@ -18,6 +21,7 @@ using namespace semimesh::app;
 int run(int argc, char** argv) {
   CLI::App app{"semimesh: valid high-order curvilinear hybrid meshes around wings on a wall"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("semimesh ") + SEMIMESH_VERSION);
 
   CadInfoOptions cad_info;
   CLI::App* cad_info_cmd = app.add_subcommand("cad-info", "Load a CAD model and list its surfaces, curves, box and units");
@@ -31,12 +35,16 @@ int run(int argc, char** argv) {
   CLI::App* check_cmd = add_check_subcommand(app, check_options);
   RunOptions run_options;
   CLI::App* run_cmd = add_run_subcommand(app, run_options);
+  InitOptions init_options;
+  CLI::App* init_cmd = add_init_subcommand(app, init_options);
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "semimesh: error: " << e.what() << " (see semimesh --help)\n";
@@ -47,8 +55,12 @@ int run(int argc, char** argv) {
     run_cad_info(semimesh::backends::default_registry(), cad_info, std::cout);
     return kExitOk;
   }
-  if (run_cmd->parsed()) return run_pipeline_command(run_options, std::cout, std::cerr);
+  if (run_cmd->parsed()) {
+    run_options.terminal = isatty(STDOUT_FILENO) != 0;
+    return run_pipeline_command(run_options, std::cout, std::cerr);
+  }
   if (check_cmd->parsed()) return run_check_command(check_options, std::cout, std::cerr);
+  if (init_cmd->parsed()) return run_init_command(init_options, std::cout, std::cerr);
   return kExitBadInput;
 }
 

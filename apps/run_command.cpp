@@ -5,11 +5,17 @@
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/pipeline/report.hpp"
+#include "semimesh/io/json.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
 
 namespace semimesh::app {
 namespace {
@@ -32,6 +38,97 @@ class StageLines : public pipeline::Progress {
  private:
   std::ostream& out_;
 };
+
+// On a terminal: one line that shows the running stage and its elapsed time, rewritten in place
+// four times a second, and left as "name ..... 1.234 s" when the stage ends.
+class TerminalLine : public pipeline::Progress {
+ public:
+  explicit TerminalLine(std::ostream& out) : out_(out), ticker_([this] { tick(); }) {}
+  ~TerminalLine() override {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    ticker_.join();
+  }
+  void stage_started(const std::string& name) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stage_ = name;
+    start_ = std::chrono::steady_clock::now();
+    draw();
+  }
+  void stage_finished(const pipeline::StageTiming& timing) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    fmt::print(out_, "\r\033[K{:.<24} {:8.3f} s\n", timing.name + " ", timing.seconds);
+    out_.flush();
+    stage_.clear();
+  }
+
+ private:
+  void draw() {
+    if (stage_.empty()) return;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    fmt::print(out_, "\r\033[K{:.<24} running, {:.0f} s", stage_ + " ", seconds);
+    out_.flush();
+  }
+  void tick() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return done_; })) draw();
+  }
+
+  std::ostream& out_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::string stage_;
+  std::chrono::steady_clock::time_point start_;
+  std::thread ticker_;
+};
+
+// --log-json: {"event": "stage_started" | "stage_finished", ...} per line.
+class JsonEvents : public pipeline::Progress {
+ public:
+  explicit JsonEvents(std::ostream& out) : out_(out) {}
+  void stage_started(const std::string& name) override {
+    fmt::print(out_, "{{\"event\": \"stage_started\", \"stage\": {}}}\n", io::json_string(name));
+    out_.flush();
+  }
+  void stage_finished(const pipeline::StageTiming& timing) override {
+    fmt::print(out_, "{{\"event\": \"stage_finished\", \"stage\": {}, \"seconds\": {}}}\n", io::json_string(timing.name),
+               io::json_number(timing.seconds));
+    out_.flush();
+  }
+
+ private:
+  std::ostream& out_;
+};
+
+std::unique_ptr<pipeline::Progress> progress_for(const RunOptions& options, std::ostream& out) {
+  if (options.log_json) return std::make_unique<JsonEvents>(out);
+  if (options.quiet) return std::make_unique<pipeline::Progress>();
+  if (options.terminal) return std::make_unique<TerminalLine>(out);
+  return std::make_unique<StageLines>(out);
+}
+
+// --verbose: every key as the run reads it.
+void print_configuration(const pipeline::Config& config, std::ostream& out) {
+  for (const pipeline::ConfigSection& section : pipeline::config_sections()) {
+    fmt::print(out, "[{}]\n", section.name);
+    for (const params::Key<pipeline::Config>& key : section.keys)
+      fmt::print(out, "  {} = {}\n", key.name, params::to_text(key.get(config)));
+  }
+  fmt::print(out, "\n");
+}
+
+// The end of a --log-json run: warnings, then the report and the exit code on one line each.
+void print_json_result(const pipeline::RunResult& result, const pipeline::Config& config, int code, std::ostream& out) {
+  for (const std::string& w : result.warnings)
+    fmt::print(out, "{{\"event\": \"warning\", \"message\": {}}}\n", io::json_string(w));
+  std::string report = pipeline::report_json(result, config);
+  report.erase(std::remove(report.begin(), report.end(), '\n'), report.end());
+  fmt::print(out, "{{\"event\": \"result\", \"exit_code\": {}, \"report\": {}}}\n", code, report);
+}
 
 void print_failed_checks(const pipeline::RunResult& r, std::ostream& err) {
   if (!r.conformity.ok()) {
@@ -66,6 +163,11 @@ CLI::App* add_run_subcommand(CLI::App& app, RunOptions& options) {
   cmd->add_option("--set", options.overrides, "Override a key: dotted.key=value, value in TOML syntax (repeatable)")
       ->allow_extra_args(false);  // one value per --set, so a following CONFIG is not swallowed
   cmd->add_flag("--allow-invalid", options.allow_invalid, "Write the mesh even when a check fails (exit code stays 2)");
+  cmd->add_flag("--pictures", options.pictures, "Write SVG pictures beside the mesh (output.pictures)");
+  cmd->add_flag("-q,--quiet", options.quiet, "Print errors only");
+  cmd->add_flag("-v,--verbose", options.verbose, "Also print the configuration as read, key by key");
+  cmd->add_flag("--log-json", options.log_json,
+                "Print one JSON object per event (stage started/finished, warning, result) instead of text");
   return cmd;
 }
 
@@ -79,12 +181,22 @@ int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostr
   }
   if (!options.output_directory.empty()) config.output.directory = options.output_directory;
   if (options.allow_invalid) config.output.allow_invalid = true;
+  if (options.pictures) config.output.pictures = true;
 
-  StageLines progress(out);
+  if (options.verbose && !options.quiet && !options.log_json) print_configuration(config, out);
+  std::unique_ptr<pipeline::Progress> progress = progress_for(options, out);
   try {
-    const pipeline::RunResult result = pipeline::run(config, progress);
-    for (const std::string& w : result.warnings) fmt::print(err, "semimesh: warning: {}\n", w);
-    fmt::print(out, "\n{}", pipeline::summary_table(result));
+    const pipeline::RunResult result = pipeline::run(config, *progress);
+    progress.reset();  // a terminal line stops drawing before the summary
+    const int code = result.checks_passed() ? kExitOk : kExitInvalidMesh;
+    if (options.log_json) {
+      print_json_result(result, config, code, out);
+      return code;
+    }
+    if (!options.quiet) {
+      for (const std::string& w : result.warnings) fmt::print(err, "semimesh: warning: {}\n", w);
+      fmt::print(out, "\n{}", pipeline::summary_table(result));
+    }
     if (result.checks_passed()) return kExitOk;
     print_failed_checks(result, err);
     fmt::print(err, "semimesh: the mesh failed its checks; {}\n",
@@ -92,8 +204,13 @@ int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostr
                                             : "written anyway (--allow-invalid)");
     return kExitInvalidMesh;
   } catch (const pipeline::RunError& e) {
-    fmt::print(out, "failed\n");
+    progress.reset();
+    if (!options.quiet && !options.log_json) fmt::print(out, "failed\n");
     const bool input = e.cause() == Error::Cause::BadInput;
+    if (options.log_json)
+      fmt::print(out, "{{\"event\": \"error\", \"stage\": {}, \"cause\": \"{}\", \"message\": {}, \"exit_code\": {}}}\n",
+                 io::json_string(e.stage()), input ? "bad input" : "internal", io::json_string(e.what()),
+                 exit_code(e.cause()));
     fmt::print(err, "semimesh: {}{}\n", input ? "error: " : "internal error: ", e.what());
     return exit_code(e.cause());
   }

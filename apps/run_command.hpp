@@ -15,6 +15,11 @@ struct RunOptions {
   std::string output_directory;        ///< -o: overrides output.directory when set
   std::vector<std::string> overrides;  ///< --set key=value
   bool allow_invalid = false;
+  bool pictures = false;
+  bool quiet = false;      ///< errors only
+  bool verbose = false;    ///< also the configuration as read, key by key
+  bool log_json = false;   ///< one JSON object per event on standard output, nothing else there
+  bool terminal = false;   ///< standard output is a terminal: one updating progress line
 };
 
 /// Declares the `run` subcommand and its options on `app`; `options` receives them when parsed.

@@ -8,6 +8,7 @@ find_path(TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
 find_library(TET_LIBRARY tet REQUIRED)
 add_library(semimesh_farfield
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/wall_annulus.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/farfield/wall_layer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/pyramid_apex.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/boundary_crossing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/tetgen_volume.cpp

@@ -1,10 +1,13 @@
-# The near-field shell: one layer of prisms around the body (O-type). Included from
+# The near-field shell: one layer of prisms around the body (O-type), plus the root junction hexes (C-type). Included from
 # meshing/CMakeLists.txt; paths are relative to this file's folder.
 add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/body_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/node_normals.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/layer_checks.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/shell_common.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_geometry.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/c_shell.cpp)
 add_library(semimesh::nearfield ALIAS semimesh_nearfield)
 target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_nearfield

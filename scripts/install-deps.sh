@@ -9,6 +9,7 @@ packages=(
   libocct-data-exchange-dev libtbb-dev          # OCCT's CMake export names libtbb.so
   libeigen3-dev libgtest-dev libgmock-dev libfmt-dev
   libtomlplusplus-dev libcli11-dev libpugixml-dev libzip-dev
+  zlib1g-dev                                    # compressed VTU / Nektar++ output
   libtet1.5-dev libcgal-dev libgmp-dev libmpfr-dev
   python3 python3-numpy python3-gmsh python3-vtk9 python3-meshio
 )

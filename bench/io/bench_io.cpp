@@ -1,16 +1,23 @@
-// Writer throughput: a structured block of nx*ny*nz hexes, each split into two order-4 prisms
-// (default 50 x 50 x 20 -> 100000 prisms), gently bent; prints MB/s per format.
+// Writer bytes and seconds per format, on a structured block of nx*ny*nz hexes, each split into two
+// order-4 prisms (default 50 x 50 x 20 -> 100000 prisms), gently bent, or on a mesh read from an
+// ASCII MSH file (e.g. the paper case written by `semimesh run examples/naca0012_wing.toml`).
+// Prints MB, seconds and MB/s per format, the ASCII trio (msh41 + vtu-ascii + nektar-xml) against
+// the compact trio (msh41-binary + vtu + nektar), and the peak memory.
 // usage: bench_io [nx ny nz] [output-directory (default /tmp)]
+//        bench_io --msh FILE.msh [output-directory [format...]]   (default: every format)
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <string>
+#include <vector>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -19,6 +26,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
 
 semimesh::mesh::Mesh prism_block(int nx, int ny, int nz, int p) {
   using semimesh::ho::Shape;
@@ -52,24 +65,36 @@ semimesh::mesh::Mesh prism_block(int nx, int ny, int nz, int p) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  using namespace semimesh::io;
+  const bool from_file = argc >= 3 && std::string(argv[1]) == "--msh";
   int nx = 50, ny = 50, nz = 20;
-  if (argc >= 4) nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);
-  const std::string dir = argc == 5 ? argv[4] : (argc == 2 ? argv[1] : "/tmp");
-  const int order = 4;
+  if (!from_file && argc >= 4) nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);
+  std::string dir = "/tmp";
+  if (from_file && argc >= 4) dir = argv[3];
+  std::vector<std::string> only;
+  for (int i = 4; from_file && i < argc; ++i) only.push_back(argv[i]);
+  if (!from_file && (argc == 5 || argc == 2)) dir = argv[argc - 1];
 
   const auto t0 = Clock::now();
-  const auto mesh = prism_block(nx, ny, nz, order);
+  const auto mesh = from_file ? read_msh(argv[2]) : prism_block(nx, ny, nz, 4);
   const double build = seconds_since(t0);
-  std::printf("mesh: %zu order-%d prisms, %zu nodes, built in %.2f s, %.0f bytes/element\n", mesh.elements().size(),
-              order, mesh.num_nodes(), build, double(mesh.memory_bytes()) / mesh.elements().size());
+  std::printf("mesh: %zu order-%d elements, %zu nodes, %s in %.2f s, %.0f bytes/element, %.0f MB in memory\n",
+              mesh.elements().size(), mesh.order(), mesh.num_nodes(), from_file ? "read" : "built", build,
+              double(mesh.memory_bytes()) / mesh.elements().size(), mesh.memory_bytes() / 1e6);
+  const double memory_before = peak_memory_mb();
 
   const std::pair<const char*, std::function<void(const std::string&)>> writers[] = {
-      {"msh41", [&](const std::string& p) { semimesh::io::write_msh(mesh, p); }},
-      {"msh22", [&](const std::string& p) { semimesh::io::write_msh(mesh, p, semimesh::io::MshVersion::V22); }},
-      {"vtu", [&](const std::string& p) { semimesh::io::write_vtu(mesh, p); }},
-      {"xml", [&](const std::string& p) { semimesh::io::write_nektar_xml(mesh, p); }},
+      {"msh41", [&](const std::string& p) { write_msh(mesh, p); }},
+      {"msh41-binary", [&](const std::string& p) { write_msh(mesh, p, MshVersion::V41, MshEncoding::Binary); }},
+      {"msh22", [&](const std::string& p) { write_msh(mesh, p, MshVersion::V22); }},
+      {"vtu-ascii", [&](const std::string& p) { write_vtu(mesh, p, VtuEncoding::Ascii); }},
+      {"vtu", [&](const std::string& p) { write_vtu(mesh, p, VtuEncoding::CompressedBinary); }},
+      {"nektar-xml", [&](const std::string& p) { write_nektar_xml(mesh, p, NektarEncoding::Plain); }},
+      {"nektar", [&](const std::string& p) { write_nektar_xml(mesh, p, NektarEncoding::Compressed); }},
   };
+  double ascii_mb = 0, ascii_s = 0, compact_mb = 0, compact_s = 0;
   for (const auto& [name, write] : writers) {
+    if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     const std::string path = dir + "/bench_io_" + std::to_string(::getpid()) + "." + name;
     const auto t = Clock::now();
     try {
@@ -81,8 +106,17 @@ int main(int argc, char** argv) {
     const double s = seconds_since(t);
     struct stat st {};
     ::stat(path.c_str(), &st);
-    std::printf("%-6s %8.1f MB in %6.2f s: %7.1f MB/s\n", name, st.st_size / 1e6, s, st.st_size / 1e6 / s);
+    const double mb = st.st_size / 1e6;
+    std::printf("%-13s %9.1f MB in %6.2f s: %7.1f MB/s\n", name, mb, s, mb / s);
+    const std::string n = name;
+    if (n == "msh41" || n == "vtu-ascii" || n == "nektar-xml") ascii_mb += mb, ascii_s += s;
+    if (n == "msh41-binary" || n == "vtu" || n == "nektar") compact_mb += mb, compact_s += s;
     std::remove(path.c_str());
   }
+  if (ascii_mb > 0) std::printf("ASCII   (msh41 + vtu-ascii + nektar-xml):  %9.1f MB in %6.2f s\n", ascii_mb, ascii_s);
+  if (compact_mb > 0) std::printf("compact (msh41-binary + vtu + nektar):     %9.1f MB in %6.2f s\n", compact_mb, compact_s);
+  if (ascii_mb > 0 && compact_mb > 0) std::printf("compact / ASCII bytes: %.3f\n", compact_mb / ascii_mb);
+  std::printf("peak memory: %.0f MB after %s the mesh, %.0f MB after writing\n", memory_before,
+              from_file ? "reading" : "building", peak_memory_mb());
   return 0;
 }

@@ -55,9 +55,16 @@ void AtomicFile::write(const std::string& text) {
   if (buffer_.size() > kFlushBytes) flush_buffer();
 }
 
+void AtomicFile::write(const void* data, std::size_t bytes) {
+  const char* c = static_cast<const char*>(data);
+  buffer_.append(c, c + bytes);
+  if (buffer_.size() > kFlushBytes) flush_buffer();
+}
+
 void AtomicFile::flush_buffer() {
   if (buffer_.size() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
     throw os_error("cannot write to", temp_path_);
+  written_ += buffer_.size();
   buffer_.clear();
 }
 

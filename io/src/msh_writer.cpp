@@ -1,3 +1,4 @@
+
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/gmsh_types.hpp"
@@ -5,9 +6,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <limits>
-#include <map>
 #include <optional>
+#include <stdexcept>
 
 namespace semimesh::io {
 namespace {
@@ -26,88 +28,188 @@ void grow(Box& box, const Eigen::Vector3d& x) {
   }
 }
 
-void write_element_line(AtomicFile& out, std::size_t tag, const std::vector<mesh::NodeId>& ids) {
-  out.print("{}", tag);
-  for (mesh::NodeId id : ids) out.print(" {}", id + 1);
-  out.print("\n");
+/// Numbers written as ASCII (space separated, one record a line) or as raw little-endian binary
+/// (MSH 4.1 binary: int for tags of entities and types, size_t for counts and node/element tags).
+class MshOut {
+ public:
+  MshOut(AtomicFile& file, bool binary) : f_(file), binary_(binary) {}
+  bool binary() const { return binary_; }
+  void text(const std::string& s) { f_.write(s); }
+  void size(std::size_t v) { binary_ ? f_.write_value(v) : ascii(v); }
+  void integer(int v) { binary_ ? f_.write_value(v) : ascii(v); }
+  void real(double v) { binary_ ? f_.write_value(v) : ascii(v); }
+  void end_record() {
+    if (!binary_) f_.write("\n", 1);
+    first_ = true;
+  }
+  /// Closes a binary section's data (Gmsh expects a newline before $End...).
+  void end_section(const char* name) { f_.print("{}$End{}\n", binary_ ? "\n" : "", name); }
+
+ private:
+  template <typename T>
+  void ascii(T v) {
+    f_.print(first_ ? "{}" : " {}", v);
+    first_ = false;
+  }
+  AtomicFile& f_;
+  bool binary_;
+  bool first_ = true;
+};
+
+/// Physical tags are unique across dimensions (PyFR keys groups by tag alone): boundary group g
+/// has tag g + 1, volume region r tag G + volume_tag[r].
+struct Tags {
+  std::size_t groups = 0;
+  std::vector<std::string> regions;
+  std::vector<int> volume_tag;  // per region: entity tag 1.., or 0 if the region has no element
+  int num_volumes = 0;
+  int volume_physical(int region) const { return static_cast<int>(groups) + volume_tag[region]; }
+};
+
+Tags make_tags(const mesh::Mesh& m) {
+  Tags t;
+  t.groups = m.group_names().size();
+  t.regions = m.region_names();
+  // Physical names must be unique too, ignoring case (PyFR: "Duplicate physical name"): a region
+  // named like a boundary group (the "farfield" region beside the "farfield" surface) is renamed.
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  for (std::string& r : t.regions)
+    for (const std::string& g : m.group_names())
+      if (lower(r) == lower(g)) r += "_volume";
+  std::vector<char> used(t.regions.size(), 0);
+  for (std::size_t e = 0; e < m.elements().size(); ++e) used[m.elements()[e].region] = 1;
+  t.volume_tag.assign(t.regions.size(), 0);
+  for (std::size_t r = 0; r < t.regions.size(); ++r)
+    if (used[r]) t.volume_tag[r] = ++t.num_volumes;
+  return t;
 }
 
-void write_physical_names(AtomicFile& out, const mesh::Mesh& m, bool has_volume) {
+void write_physical_names(AtomicFile& out, const mesh::Mesh& m, const Tags& t) {
   const auto& groups = m.group_names();
-  out.print("$PhysicalNames\n{}\n", groups.size() + (has_volume ? 1 : 0));
+  out.print("$PhysicalNames\n{}\n", groups.size() + t.num_volumes);
   for (std::size_t g = 0; g < groups.size(); ++g) out.print("2 {} \"{}\"\n", g + 1, groups[g]);
-  if (has_volume) out.print("3 1 \"{}\"\n", kVolumeGroupName);
+  for (std::size_t r = 0; r < t.regions.size(); ++r)
+    if (t.volume_tag[r]) out.print("3 {} \"{}\"\n", t.volume_physical(static_cast<int>(r)), t.regions[r]);
   out.print("$EndPhysicalNames\n");
 }
 
-/// Blocks of boundary faces keyed by (group, shape), in mesh order inside each block.
-std::map<std::pair<int, ho::Shape>, std::vector<std::size_t>> boundary_blocks(const mesh::Mesh& m) {
-  std::map<std::pair<int, ho::Shape>, std::vector<std::size_t>> blocks;
-  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
-    blocks[{m.boundary_faces()[b].group, m.boundary_faces()[b].shape}].push_back(b);
-  return blocks;
+void write_entity(MshOut& out, int tag, const Box& b, int physical) {
+  out.integer(tag);
+  for (double x : b) out.real(x);
+  out.size(1);
+  out.integer(physical);
+  out.size(0);
+  out.end_record();
 }
 
-std::map<ho::Shape, std::vector<std::size_t>> volume_blocks(const mesh::Mesh& m) {
-  std::map<ho::Shape, std::vector<std::size_t>> blocks;
-  for (std::size_t e = 0; e < m.elements().size(); ++e) blocks[m.elements()[e].shape].push_back(e);
-  return blocks;
+void write_element(MshOut& out, std::size_t tag, const std::vector<mesh::NodeId>& ids) {
+  out.size(tag);
+  for (mesh::NodeId id : ids) out.size(id + std::size_t{1});
+  out.end_record();
 }
 
-void write_v41(AtomicFile& out, const mesh::Mesh& m) {
-  const bool has_volume = !m.elements().empty() || m.group_names().empty();
-  const auto& groups = m.group_names();
-  out.print("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-  write_physical_names(out, m, has_volume);
+const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron};
+const ho::Shape kFaceShapes[] = {ho::Shape::Triangle, ho::Shape::Quadrilateral};
 
-  std::vector<Box> group_box(groups.size(), empty_box());
+void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary) {
+  const Tags t = make_tags(m);
+  MshOut out(file, binary);
+  file.print("$MeshFormat\n4.1 {} 8\n", binary ? 1 : 0);
+  if (binary) {
+    file.write_value(int{1});
+    file.write("\n");
+  }
+  file.print("$EndMeshFormat\n");
+  write_physical_names(file, m, t);
+
+  const std::size_t num_groups = t.groups;
+  std::vector<Box> group_box(num_groups, empty_box());
   for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
     for (mesh::NodeId id : m.boundary_face_nodes(b)) grow(group_box[m.boundary_faces()[b].group], m.node(id));
   Box all = empty_box();
   for (const auto& x : m.nodes()) grow(all, x);
   if (m.nodes().empty()) all = {0, 0, 0, 0, 0, 0};
-  out.print("$Entities\n0 0 {} {}\n", groups.size(), has_volume ? 1 : 0);
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    const Box& b = group_box[g][0] <= group_box[g][3] ? group_box[g] : all;
-    out.print("{} {} {} {} {} {} {} 1 {} 0\n", g + 1, b[0], b[1], b[2], b[3], b[4], b[5], g + 1);
-  }
-  if (has_volume) out.print("1 {} {} {} {} {} {} 1 1 0\n", all[0], all[1], all[2], all[3], all[4], all[5]);
-  out.print("$EndEntities\n");
+  file.print("$Entities\n");
+  for (std::size_t count : {std::size_t{0}, std::size_t{0}, num_groups, std::size_t(t.num_volumes)}) out.size(count);
+  out.end_record();
+  for (std::size_t g = 0; g < num_groups; ++g)
+    write_entity(out, static_cast<int>(g + 1), group_box[g][0] <= group_box[g][3] ? group_box[g] : all,
+                 static_cast<int>(g + 1));
+  for (std::size_t r = 0; r < t.regions.size(); ++r)
+    if (t.volume_tag[r]) write_entity(out, t.volume_tag[r], all, t.volume_physical(static_cast<int>(r)));
+  out.end_section("Entities");
 
-  // Every node goes in one block classified on the volume (or the first surface).
+  // Every node goes in one block classified on the first volume (or the first surface).
   const std::size_t n = m.num_nodes();
-  out.print("$Nodes\n{} {} {} {}\n", n ? 1 : 0, n, n ? 1 : 0, n);
+  file.print("$Nodes\n");
+  for (std::size_t v : {std::size_t(n ? 1 : 0), n, std::size_t(n ? 1 : 0), n}) out.size(v);
+  out.end_record();
   if (n) {
-    out.print("{} 1 0 {}\n", has_volume ? 3 : 2, n);
-    for (std::size_t i = 1; i <= n; ++i) out.print("{}\n", i);
-    for (const auto& x : m.nodes()) out.print("{} {} {}\n", x[0], x[1], x[2]);
+    out.integer(t.num_volumes ? 3 : 2);
+    out.integer(1);
+    out.integer(0);
+    out.size(n);
+    out.end_record();
+    for (std::size_t i = 1; i <= n; ++i) out.size(i), out.end_record();
+    for (const auto& x : m.nodes()) out.real(x[0]), out.real(x[1]), out.real(x[2]), out.end_record();
   }
-  out.print("$EndNodes\n");
+  out.end_section("Nodes");
 
-  const auto volumes = volume_blocks(m);
-  const auto boundaries = boundary_blocks(m);
+  // Blocks: (region, shape) volumes, then (group, shape) boundary faces; each element streamed.
+  struct Block {
+    int dim, entity, region_or_group;
+    ho::Shape shape;
+    std::size_t count;
+  };
+  std::vector<Block> blocks;
+  for (std::size_t r = 0; r < t.regions.size(); ++r)
+    for (ho::Shape s : kVolumeShapes) {
+      std::size_t count = 0;
+      for (std::size_t e = 0; e < m.elements().size(); ++e)
+        count += m.elements()[e].shape == s && m.elements()[e].region == r;
+      if (count) blocks.push_back({3, t.volume_tag[r], static_cast<int>(r), s, count});
+    }
+  for (std::size_t g = 0; g < num_groups; ++g)
+    for (ho::Shape s : kFaceShapes) {
+      std::size_t count = 0;
+      for (const auto& bf : m.boundary_faces()) count += bf.shape == s && bf.group == g;
+      if (count) blocks.push_back({2, static_cast<int>(g + 1), static_cast<int>(g), s, count});
+    }
   const std::size_t total = m.elements().size() + m.boundary_faces().size();
-  out.print("$Elements\n{} {} {} {}\n", volumes.size() + boundaries.size(), total, total ? 1 : 0, total);
+  file.print("$Elements\n");
+  for (std::size_t v : {blocks.size(), total, std::size_t(total ? 1 : 0), total}) out.size(v);
+  out.end_record();
   std::size_t tag = 0;
   std::vector<mesh::NodeId> ids;
-  for (const auto& [shape, list] : volumes) {
-    out.print("3 1 {} {}\n", gmsh_element_type(shape, m.order()), list.size());
-    for (std::size_t e : list) {
-      m.element_nodes(e, ids);
-      write_element_line(out, ++tag, ids);
+  for (const Block& b : blocks) {
+    out.integer(b.dim);
+    out.integer(b.entity);
+    out.integer(gmsh_element_type(b.shape, m.order()));
+    out.size(b.count);
+    out.end_record();
+    if (b.dim == 3) {
+      for (std::size_t e = 0; e < m.elements().size(); ++e)
+        if (m.elements()[e].shape == b.shape && int(m.elements()[e].region) == b.region_or_group) {
+          m.element_nodes(e, ids);
+          write_element(out, ++tag, ids);
+        }
+    } else {
+      for (std::size_t f = 0; f < m.boundary_faces().size(); ++f) {
+        const auto& bf = m.boundary_faces()[f];
+        if (bf.shape == b.shape && bf.group == b.region_or_group) write_element(out, ++tag, m.boundary_face_nodes(f));
+      }
     }
   }
-  for (const auto& [key, list] : boundaries) {
-    out.print("2 {} {} {}\n", key.first + 1, gmsh_element_type(key.second, m.order()), list.size());
-    for (std::size_t b : list) write_element_line(out, ++tag, m.boundary_face_nodes(b));
-  }
-  out.print("$EndElements\n");
+  out.end_section("Elements");
 }
 
 void write_v22(AtomicFile& out, const mesh::Mesh& m) {
-  const bool has_volume = !m.elements().empty();
+  const Tags t = make_tags(m);
   out.print("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
-  write_physical_names(out, m, has_volume);
+  write_physical_names(out, m, t);
   out.print("$Nodes\n{}\n", m.num_nodes());
   std::size_t id = 0;
   for (const auto& x : m.nodes()) out.print("{} {} {} {}\n", ++id, x[0], x[1], x[2]);
@@ -116,7 +218,9 @@ void write_v22(AtomicFile& out, const mesh::Mesh& m) {
   std::vector<mesh::NodeId> ids;
   for (std::size_t e = 0; e < m.elements().size(); ++e) {
     m.element_nodes(e, ids);
-    out.print("{} {} 2 1 1", ++tag, gmsh_element_type(m.elements()[e].shape, m.order()));
+    const int region = int(m.elements()[e].region);
+    out.print("{} {} 2 {} {}", ++tag, gmsh_element_type(m.elements()[e].shape, m.order()), t.volume_physical(region),
+              t.volume_tag[region]);
     for (mesh::NodeId n : ids) out.print(" {}", n + 1);
     out.print("\n");
   }
@@ -131,14 +235,16 @@ void write_v22(AtomicFile& out, const mesh::Mesh& m) {
 
 }  // namespace
 
-void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version) {
+void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version, MshEncoding encoding) {
   gmsh_element_type(ho::Shape::Tetrahedron, mesh.order());  // rejects unsupported orders early
+  if (version == MshVersion::V22 && encoding == MshEncoding::Binary)
+    throw std::invalid_argument("MSH 2.2 is written as ASCII only (use MSH 4.1 for binary): " + path);
   std::optional<mesh::Mesh> resampled;
   if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
   const mesh::Mesh& m = resampled ? *resampled : mesh;
   AtomicFile out(path);
   if (version == MshVersion::V41)
-    write_v41(out, m);
+    write_v41(out, m, encoding == MshEncoding::Binary);
   else
     write_v22(out, m);
   out.commit();

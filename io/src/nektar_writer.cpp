@@ -1,8 +1,13 @@
+#include "nektar_numbering.hpp"
+#include "zlib_stream.hpp"
+
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/nektar.hpp"
 
 #include <cmath>
+#include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -10,145 +15,407 @@
 namespace semimesh::io {
 namespace {
 
-struct NektarShape {
-  char tag;
-  std::vector<int> gmsh_vertex;           // Nektar vertex k = Gmsh vertex gmsh_vertex[k]
-  std::vector<std::vector<int>> faces;    // Nektar local faces, Nektar vertex numbers
-};
+// LibUtilities::PointsType values (LibUtilities/Foundations/PointsType.h), for compressed CURVED.
+constexpr std::int64_t kPolyEvenlySpaced = 17;
+constexpr std::int64_t kNodalTriEvenlySpaced = 24;
+const char* const kCompressed = "COMPRESSED=\"B64Z-LittleEndian\" BITSIZE=\"64\"";
 
-const NektarShape& nektar_shape(ho::Shape shape) {
-  static const NektarShape tet{'A', {0, 1, 2, 3}, {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}}};
-  static const NektarShape pyr{'P', {0, 1, 2, 3, 4}, {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {3, 2, 4}, {0, 3, 4}}};
-  static const NektarShape pri{'R', {0, 2, 5, 3, 1, 4}, {{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 5, 4}, {3, 2, 5}, {0, 3, 5, 4}}};
-  static const NektarShape hex{'H', {0, 1, 2, 3, 4, 5, 6, 7},
-                               {{0, 1, 2, 3}, {0, 1, 5, 4}, {1, 2, 6, 5}, {3, 2, 6, 7}, {0, 3, 7, 4}, {4, 5, 6, 7}}};
-  switch (shape) {
-    case ho::Shape::Tetrahedron: return tet;
-    case ho::Shape::Pyramid: return pyr;
-    case ho::Shape::Prism: return pri;
-    case ho::Shape::Hexahedron: return hex;
-    default: throw std::invalid_argument("Nektar++ XML: " + ho::to_string(shape) + " is not a volume element");
+const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism,
+                                   ho::Shape::Hexahedron};
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
   }
+  return out;
 }
 
-/// Positions in the Gmsh canonical list of a tri/quad of order P, in Nektar's curved-face order.
-std::vector<int> nektar_face_order(int num_vertices, int p) {
+/// "0-3,7,9-10": Nektar++'s range syntax inside X[...].
+std::string id_ranges(const std::vector<std::size_t>& ids) {
+  std::string s;
+  for (std::size_t i = 0; i < ids.size();) {
+    std::size_t j = i;
+    while (j + 1 < ids.size() && ids[j + 1] == ids[j] + 1) ++j;
+    s += (s.empty() ? "" : ",") + std::to_string(ids[i]) + (j > i ? "-" + std::to_string(ids[j]) : "");
+    i = j + 1;
+  }
+  return s;
+}
+
+/// Lattice (i, j) -> canonical index of an equispaced tri (frame f0 f1 f2) or quad of order p.
+std::map<std::pair<int, int>, int> lattice_index(int num_vertices, int p) {
   const ho::Shape shape = num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral;
   const Eigen::MatrixX3d ref = ho::reference_nodes(shape, p, ho::NodeSet::Equispaced);
-  std::map<std::pair<int, int>, int> at;  // lattice (i, j) -> canonical index
+  std::map<std::pair<int, int>, int> at;
   for (int n = 0; n < ref.rows(); ++n) {
     double u = ref(n, 0), v = ref(n, 1);
     if (num_vertices == 4) u = (u + 1) / 2, v = (v + 1) / 2;
     at[{static_cast<int>(std::lround(u * p)), static_cast<int>(std::lround(v * p))}] = n;
   }
-  std::vector<std::pair<int, int>> lattice;
-  if (num_vertices == 3) {
-    lattice = {{0, 0}, {p, 0}, {0, p}};
-    for (int i = 1; i < p; ++i) lattice.push_back({i, 0});
-    for (int i = 1; i < p; ++i) lattice.push_back({p - i, i});
-    for (int i = 1; i < p; ++i) lattice.push_back({0, p - i});
-    for (int j = 1; j < p; ++j)
-      for (int i = 1; i + j < p; ++i) lattice.push_back({i, j});
-  } else {
-    for (int j = 0; j <= p; ++j)
-      for (int i = 0; i <= p; ++i) lattice.push_back({i, j});
-  }
+  return at;
+}
+
+/// Nektar's triangle point order as lattice points of the written frame w0 w1 w2.
+std::vector<std::pair<int, int>> nodal_tri_lattice(int p) {
+  std::vector<std::pair<int, int>> lattice{{0, 0}, {p, 0}, {0, p}};
+  for (int i = 1; i < p; ++i) lattice.push_back({i, 0});
+  for (int i = 1; i < p; ++i) lattice.push_back({p - i, i});
+  for (int i = 1; i < p; ++i) lattice.push_back({0, p - i});
+  for (int j = 1; j < p; ++j)
+    for (int i = 1; i + j < p; ++i) lattice.push_back({i, j});
+  return lattice;
+}
+
+/// Canonical indices (stored frame f0 f1 f2) of Nektar's triangle points when the face is written
+/// as (f_s, f_s+1, f_s+2): one order per rotation s.
+std::array<std::vector<int>, 3> tri_orders(int p) {
+  const auto at = lattice_index(3, p);
+  std::array<std::vector<int>, 3> orders;
+  for (int s = 0; s < 3; ++s)
+    for (const auto& [i, j] : nodal_tri_lattice(p)) {
+      const int w[3] = {p - i - j, i, j};  // barycentric (times p) on w0 w1 w2
+      int f[3];
+      for (int k = 0; k < 3; ++k) f[(k + s) % 3] = w[k];
+      orders[s].push_back(at.at({f[1], f[2]}));
+    }
+  return orders;
+}
+
+std::vector<int> quad_order(int p) {
+  const auto at = lattice_index(4, p);
   std::vector<int> order;
-  for (const auto& ij : lattice) order.push_back(at.at(ij));
+  for (int j = 0; j <= p; ++j)
+    for (int i = 0; i <= p; ++i) order.push_back(at.at({i, j}));
   return order;
+}
+
+/// Everything the sections need, computed once.
+struct Geometry {
+  const mesh::Mesh& m;
+  NektarNumbering numbering;
+  std::array<std::vector<int>, 3> tri_point_order;
+  std::vector<int> quad_point_order;
+  // Only curved entities get a CURVED entry (as NekMesh writes): a straight one is the same
+  // geometry without it, and the straight-sided far field is most of a mesh.
+  std::vector<char> edge_curved, face_curved;
+
+  explicit Geometry(const mesh::Mesh& mesh) : m(mesh), numbering(number_for_nektar(mesh)) {
+    if (m.order() < 2) return;
+    tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
+    edge_curved.resize(m.edges().size());
+    for (std::size_t e = 0; e < m.edges().size(); ++e) edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    face_curved.resize(m.faces().size());
+    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+      const bool tri = num_face_vertices(f) == 3;
+      face_curved[f] = m.order() >= (tri ? 3 : 2) &&
+                       !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
+    }
+  }
+
+  /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
+  bool on_linear_map(ho::Shape shape, const std::vector<mesh::NodeId>& ids) const {
+    const Eigen::MatrixX3d& ref = reference(shape);
+    const int nv = shape == ho::Shape::Segment ? 2 : ho::num_vertices(shape);
+    Eigen::Vector3d x[4];
+    for (int k = 0; k < nv; ++k) x[k] = m.node(shape == ho::Shape::Segment ? ids[k ? ids.size() - 1 : 0] : ids[k]);
+    const double tolerance = 1e-12 * std::max(1.0, (x[1] - x[0]).cwiseAbs().maxCoeff() + (x[nv - 1] - x[0]).cwiseAbs().maxCoeff());
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      Eigen::Vector3d want;
+      if (shape == ho::Shape::Segment) {
+        const double t = double(i) / (ids.size() - 1);
+        want = (1 - t) * x[0] + t * x[1];
+      } else if (shape == ho::Shape::Triangle) {
+        want = (1 - ref(i, 0) - ref(i, 1)) * x[0] + ref(i, 0) * x[1] + ref(i, 1) * x[2];
+      } else {
+        const double s = (ref(i, 0) + 1) / 2, t = (ref(i, 1) + 1) / 2;
+        want = (1 - s) * (1 - t) * x[0] + s * (1 - t) * x[1] + s * t * x[2] + (1 - s) * t * x[3];
+      }
+      if ((m.node(ids[i]) - want).cwiseAbs().maxCoeff() > tolerance) return false;
+    }
+    return true;
+  }
+  const Eigen::MatrixX3d& reference(ho::Shape shape) const {
+    static const Eigen::MatrixX3d none;
+    if (shape == ho::Shape::Segment) return none;
+    auto& r = shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
+    if (r.rows() == 0) r = ho::reference_nodes(shape, m.order(), ho::NodeSet::Equispaced);
+    return r;
+  }
+  mutable Eigen::MatrixX3d tri_reference_, quad_reference_;
+
+  int num_face_vertices(std::size_t f) const { return m.faces()[f].num_vertices; }
+
+  /// Edge ids of a face as written.
+  std::array<std::int64_t, 4> face_edges(std::size_t f) const {
+    const auto w = written_face_vertices(m, numbering, f);
+    const int n = num_face_vertices(f);
+    std::array<std::int64_t, 4> e{};
+    for (int k = 0; k < n; ++k) e[k] = m.find_edge(w[k], w[(k + 1) % n]);
+    return e;
+  }
+
+  /// Face ids of an element in Nektar's local face order.
+  std::array<std::int64_t, 6> element_faces(std::size_t e) const {
+    const auto& el = m.elements()[e];
+    const auto& v = numbering.element_vertices[e];
+    const auto& gmsh_faces = ho::faces(el.shape);
+    const auto& nek_faces = nektar_faces(el.shape);
+    std::array<std::int64_t, 6> out{};
+    for (std::size_t k = 0; k < nek_faces.size(); ++k) {
+      std::array<mesh::NodeId, 4> want{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};
+      for (std::size_t i = 0; i < nek_faces[k].size(); ++i) want[i] = v[nek_faces[k][i]];
+      std::sort(want.begin(), want.end());
+      out[k] = -1;
+      for (std::size_t g = 0; g < gmsh_faces.size() && out[k] < 0; ++g) {
+        std::array<mesh::NodeId, 4> have{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};
+        for (std::size_t i = 0; i < gmsh_faces[g].size(); ++i) have[i] = el.vertices[gmsh_faces[g][i]];
+        std::sort(have.begin(), have.end());
+        if (have == want) out[k] = el.faces[g];
+      }
+      if (out[k] < 0) throw std::logic_error("Nektar++ XML: element " + std::to_string(e) + " lost a face");
+    }
+    return out;
+  }
+
+  /// Curved nodes of a face, in the order written.
+  template <typename Emit>
+  void face_nodes_written(std::size_t f, Emit emit) const {
+    const auto ids = m.face_nodes(f);
+    if (num_face_vertices(f) == 3) {
+      const auto w = written_face_vertices(m, numbering, f);
+      int s = 0;
+      while (m.faces()[f].vertices[s] != w[0]) ++s;
+      for (int k : tri_point_order[s]) emit(ids[k]);
+    } else {
+      for (int k : quad_point_order) emit(ids[k]);
+    }
+  }
+  bool face_is_curved(std::size_t f) const { return m.order() >= 2 && face_curved[f]; }
+  bool edge_is_curved(std::size_t e) const { return m.order() >= 2 && edge_curved[e]; }
+  bool any_curved() const {
+    return std::count(edge_curved.begin(), edge_curved.end(), 1) + std::count(face_curved.begin(), face_curved.end(), 1);
+  }
+};
+
+void write_plain(AtomicFile& out, const Geometry& g) {
+  const mesh::Mesh& m = g.m;
+  const auto& vid = g.numbering.vertex_id;
+  out.print("    <VERTEX>\n");
+  for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) {
+    const auto& x = m.node(g.numbering.vertex_node[i]);
+    out.print("      <V ID=\"{}\">{} {} {}</V>\n", i, x[0], x[1], x[2]);
+  }
+  out.print("    </VERTEX>\n    <EDGE>\n");
+  for (std::size_t e = 0; e < m.edges().size(); ++e)
+    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vid[m.edges()[e].vertices[0]], vid[m.edges()[e].vertices[1]]);
+  out.print("    </EDGE>\n    <FACE>\n");
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    const int n = g.num_face_vertices(f);
+    const auto e = g.face_edges(f);
+    const char tag = n == 3 ? 'T' : 'Q';
+    out.print("      <{} ID=\"{}\">", tag, f);
+    for (int k = 0; k < n; ++k) out.print(" {}", e[k]);
+    out.print(" </{}>\n", tag);
+  }
+  out.print("    </FACE>\n    <ELEMENT>\n");
+  for (std::size_t e = 0; e < m.elements().size(); ++e) {
+    const ho::Shape shape = m.elements()[e].shape;
+    const char tag = nektar_tag(shape);
+    const auto faces = g.element_faces(e);
+    out.print("      <{} ID=\"{}\">", tag, e);
+    for (std::size_t k = 0; k < nektar_faces(shape).size(); ++k) out.print(" {}", faces[k]);
+    out.print(" </{}>\n", tag);
+  }
+  out.print("    </ELEMENT>\n");
+  if (!g.any_curved()) return;
+  out.print("    <CURVED>\n");
+  std::size_t curve = 0;
+  auto point = [&](const Eigen::Vector3d& x) { out.print(" {} {} {}", x[0], x[1], x[2]); };
+  for (std::size_t e = 0; e < m.edges().size(); ++e) {
+    if (!g.edge_is_curved(e)) continue;
+    out.print("      <E ID=\"{}\" EDGEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"PolyEvenlySpaced\">", curve++, e, m.order() + 1);
+    for (mesh::NodeId id : m.edge_nodes(e)) point(m.node(id));
+    out.print(" </E>\n");
+  }
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    if (!g.face_is_curved(f)) continue;
+    const bool tri = g.num_face_vertices(f) == 3;
+    out.print("      <F ID=\"{}\" FACEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"{}\">", curve++, f,
+              tri ? g.tri_point_order[0].size() : g.quad_point_order.size(),
+              tri ? "NodalTriEvenlySpaced" : "PolyEvenlySpaced");
+    g.face_nodes_written(f, [&](mesh::NodeId id) { point(m.node(id)); });
+    out.print(" </F>\n");
+  }
+  out.print("    </CURVED>\n");
+}
+
+/// <TAG attributes COMPRESSED...>base64(zlib(records))</TAG>
+template <typename Fill>
+void compressed_block(AtomicFile& out, const std::string& indent, const std::string& tag, Fill fill,
+                      bool attributes = true, Content content = Content::Integers) {
+  ZlibStream z(content);
+  fill(z);
+  out.print("{}<{}{}{}>", indent, tag, attributes ? " " : "", attributes ? kCompressed : "");
+  write_base64(out, z.finish());
+  out.print("</{}>\n", tag);
+}
+
+void write_compressed(AtomicFile& out, const Geometry& g) {
+  const mesh::Mesh& m = g.m;
+  const auto& vid = g.numbering.vertex_id;
+  using I = std::int64_t;
+  auto put_point = [](ZlibStream& z, I id, const Eigen::Vector3d& x) {
+    z.add_value(id);
+    z.add(x.data(), 3 * sizeof(double));
+  };
+  out.print("    ");
+  compressed_block(out, "", "VERTEX", [&](ZlibStream& z) {
+    for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) put_point(z, I(i), m.node(g.numbering.vertex_node[i]));
+  }, true, Content::Doubles);
+  out.print("    ");
+  compressed_block(out, "", "EDGE", [&](ZlibStream& z) {
+    for (std::size_t e = 0; e < m.edges().size(); ++e) {
+      const I rec[3] = {I(e), I(vid[m.edges()[e].vertices[0]]), I(vid[m.edges()[e].vertices[1]])};
+      z.add(rec, sizeof rec);
+    }
+  });
+  out.print("    <FACE>\n");
+  for (int n : {3, 4}) {
+    bool any = false;
+    for (const auto& face : m.faces()) any = any || face.num_vertices == n;
+    if (!any) continue;
+    compressed_block(out, "      ", n == 3 ? "T" : "Q", [&](ZlibStream& z) {
+      for (std::size_t f = 0; f < m.faces().size(); ++f) {
+        if (g.num_face_vertices(f) != n) continue;
+        const auto e = g.face_edges(f);
+        z.add_value(I(f));
+        z.add(e.data(), n * sizeof(I));
+      }
+    });
+  }
+  out.print("    </FACE>\n    <ELEMENT>\n");
+  for (ho::Shape shape : kVolumeShapes) {
+    bool any = false;
+    for (const auto& el : m.elements()) any = any || el.shape == shape;
+    if (!any) continue;
+    const std::size_t nf = nektar_faces(shape).size();
+    compressed_block(out, "      ", std::string(1, nektar_tag(shape)), [&](ZlibStream& z) {
+      for (std::size_t e = 0; e < m.elements().size(); ++e) {
+        if (m.elements()[e].shape != shape) continue;
+        const auto faces = g.element_faces(e);
+        z.add_value(I(e));
+        z.add(faces.data(), nf * sizeof(I));
+      }
+    });
+  }
+  out.print("    </ELEMENT>\n");
+  if (!g.any_curved()) return;
+
+  // CURVED: MeshCurvedInfo records {id, entityid, npoints, ptid, ptoffset, ptype} for edges and
+  // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
+  // Curves share their points through INDEX: every edge/face node is stored once.
+  std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
+  std::vector<mesh::NodeId> point_node;
+  auto point_of = [&](mesh::NodeId id) {
+    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = static_cast<std::uint32_t>(point_node.size()), point_node.push_back(id);
+    return I(point_of_node[id]);
+  };
+  const I p = m.order();
+  I total = 0;
+  out.print("    <CURVED {}>\n", kCompressed);
+  compressed_block(out, "      ", "E", [&](ZlibStream& z) {
+    I id = 0;
+    for (std::size_t e = 0; e < m.edges().size(); ++e) {
+      if (!g.edge_is_curved(e)) continue;
+      const I rec[6] = {id++, I(e), p + 1, 0, total, kPolyEvenlySpaced};
+      z.add(rec, sizeof rec);
+      total += p + 1;
+    }
+  }, false);
+  compressed_block(out, "      ", "F", [&](ZlibStream& z) {
+    I id = 0;
+    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+      if (!g.face_is_curved(f)) continue;
+      const bool tri = g.num_face_vertices(f) == 3;
+      const I n = tri ? I(g.tri_point_order[0].size()) : I(g.quad_point_order.size());
+      const I rec[6] = {id++, I(f), n, 0, total, tri ? kNodalTriEvenlySpaced : kPolyEvenlySpaced};
+      z.add(rec, sizeof rec);
+      total += n;
+    }
+  }, false);
+  out.print("      <DATAPOINTS ID=\"0\">\n");
+  compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
+    for (std::size_t e = 0; e < m.edges().size(); ++e)
+      if (g.edge_is_curved(e))
+        for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
+    for (std::size_t f = 0; f < m.faces().size(); ++f)
+      if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
+  }, false);
+  compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
+    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), m.node(point_node[k]));
+  }, false, Content::Doubles);
+  out.print("      </DATAPOINTS>\n    </CURVED>\n");
+}
+
+struct ElementComposite {
+  std::string region;
+  char tag;
+  std::vector<std::size_t> elements;
+};
+
+/// One composite per (region, element letter), in region then letter order.
+std::vector<ElementComposite> element_composites(const mesh::Mesh& m) {
+  std::map<std::pair<int, char>, std::vector<std::size_t>> groups;
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    groups[{int(m.elements()[e].region), nektar_tag(m.elements()[e].shape)}].push_back(e);
+  const auto names = m.region_names();
+  std::vector<ElementComposite> out;
+  for (auto& [key, ids] : groups) out.push_back({names[key.first], key.second, std::move(ids)});
+  return out;
+}
+
+void write_composites(AtomicFile& out, const mesh::Mesh& m) {
+  out.print("    <COMPOSITE>\n");
+  const auto composites = element_composites(m);
+  std::string domain;
+  for (std::size_t c = 0; c < composites.size(); ++c) {
+    domain += (c ? "," : "") + std::to_string(c);
+    out.print("      <C ID=\"{}\" NAME=\"{}\"> {}[{}] </C>\n", c, xml_escape(composites[c].region),
+              composites[c].tag, id_ranges(composites[c].elements));
+  }
+  std::vector<std::vector<std::size_t>> group_faces(m.group_names().size());
+  for (const auto& bf : m.boundary_faces()) group_faces[bf.group].push_back(bf.face);
+  for (std::size_t g = 0; g < group_faces.size(); ++g) {
+    std::sort(group_faces[g].begin(), group_faces[g].end());
+    out.print("      <C ID=\"{}\" NAME=\"{}\"> F[{}] </C>\n", composites.size() + g, xml_escape(m.group_names()[g]),
+              id_ranges(group_faces[g]));
+  }
+  out.print("    </COMPOSITE>\n    <DOMAIN> C[{}] </DOMAIN>\n  </GEOMETRY>\n", domain);
+  out.print("  <EXPANSIONS>\n");
+  for (std::size_t c = 0; c < composites.size(); ++c)
+    out.print("    <E COMPOSITE=\"C[{}]\" NUMMODES=\"{}\" TYPE=\"MODIFIED\" FIELDS=\"u\" />\n", c, m.order() + 1);
+  out.print("  </EXPANSIONS>\n");
 }
 
 }  // namespace
 
-void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path) {
+void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path, NektarEncoding encoding) {
   std::optional<mesh::Mesh> resampled;
   if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
-  const mesh::Mesh& m = resampled ? *resampled : mesh;
-  const int p = m.order();
-
-  std::map<mesh::NodeId, std::size_t> vertex_id;  // ordered: deterministic ids
-  for (const auto& el : m.elements())
-    for (int k = 0; k < ho::num_vertices(el.shape); ++k) vertex_id.emplace(el.vertices[k], 0);
-  for (const auto& bf : m.boundary_faces())
-    for (int k = 0; k < ho::num_vertices(bf.shape); ++k) vertex_id.emplace(bf.vertices[k], 0);
-  std::size_t next = 0;
-  for (auto& [node, id] : vertex_id) id = next++;
-
+  const Geometry geometry(resampled ? *resampled : mesh);
   AtomicFile out(path);
   out.print("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<NEKTAR>\n  <GEOMETRY DIM=\"3\" SPACE=\"3\">\n");
-  out.print("    <VERTEX>\n");
-  for (const auto& [node, id] : vertex_id) {
-    const auto& x = m.node(node);
-    out.print("      <V ID=\"{}\">{} {} {}</V>\n", id, x[0], x[1], x[2]);
-  }
-  out.print("    </VERTEX>\n    <EDGE>\n");
-  for (std::size_t e = 0; e < m.edges().size(); ++e)
-    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vertex_id.at(m.edges()[e].vertices[0]),
-              vertex_id.at(m.edges()[e].vertices[1]));
-  out.print("    </EDGE>\n    <FACE>\n");
-  for (std::size_t f = 0; f < m.faces().size(); ++f) {
-    const auto& face = m.faces()[f];
-    const int n = face.num_vertices;
-    out.print("      <{} ID=\"{}\">", n == 3 ? 'T' : 'Q', f);
-    for (int k = 0; k < n; ++k) out.print(" {}", m.find_edge(face.vertices[k], face.vertices[(k + 1) % n]));
-    out.print(" </{}>\n", n == 3 ? 'T' : 'Q');
-  }
-  out.print("    </FACE>\n    <ELEMENT>\n");
-  std::map<char, std::vector<std::size_t>> by_tag;
-  for (std::size_t e = 0; e < m.elements().size(); ++e) {
-    const auto& el = m.elements()[e];
-    const NektarShape& ns = nektar_shape(el.shape);
-    out.print("      <{} ID=\"{}\">", ns.tag, e);
-    for (const auto& face : ns.faces) {
-      std::vector<mesh::NodeId> v;
-      for (int k : face) v.push_back(el.vertices[ns.gmsh_vertex[k]]);
-      out.print(" {}", m.find_face(v));
-    }
-    out.print(" </{}>\n", ns.tag);
-    by_tag[ns.tag].push_back(e);
-  }
-  out.print("    </ELEMENT>\n");
-
-  if (p >= 2) {
-    out.print("    <CURVED>\n");
-    std::size_t curve = 0;
-    for (std::size_t e = 0; e < m.edges().size(); ++e) {
-      out.print("      <E ID=\"{}\" EDGEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"PolyEvenlySpaced\">", curve++, e, p + 1);
-      for (mesh::NodeId id : m.edge_nodes(e)) out.print(" {} {} {}", m.node(id)[0], m.node(id)[1], m.node(id)[2]);
-      out.print(" </E>\n");
-    }
-    const std::vector<int> tri_order = nektar_face_order(3, p), quad_order = nektar_face_order(4, p);
-    for (std::size_t f = 0; f < m.faces().size(); ++f) {
-      const bool tri = m.faces()[f].num_vertices == 3;
-      if (tri && p < 3) continue;  // no interior points: the edges define the face
-      const auto ids = m.face_nodes(f);
-      const auto& order = tri ? tri_order : quad_order;
-      out.print("      <F ID=\"{}\" FACEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"PolyEvenlySpaced\">", curve++, f,
-                order.size());
-      for (int k : order) out.print(" {} {} {}", m.node(ids[k])[0], m.node(ids[k])[1], m.node(ids[k])[2]);
-      out.print(" </F>\n");
-    }
-    out.print("    </CURVED>\n");
-  }
-
-  out.print("    <COMPOSITE>\n");
-  std::size_t composite = 0;
-  std::string domain;
-  auto id_list = [&](const std::vector<std::size_t>& ids) {
-    std::string s;
-    for (std::size_t i = 0; i < ids.size(); ++i) s += (i ? "," : "") + std::to_string(ids[i]);
-    return s;
-  };
-  for (const auto& [tag, ids] : by_tag) {
-    domain += (domain.empty() ? "" : ",") + std::to_string(composite);
-    out.print("      <C ID=\"{}\"> {}[{}] </C>\n", composite++, tag, id_list(ids));
-  }
-  std::vector<std::vector<std::size_t>> group_faces(m.group_names().size());
-  for (const auto& bf : m.boundary_faces()) group_faces[bf.group].push_back(bf.face);
-  for (std::size_t g = 0; g < group_faces.size(); ++g)
-    out.print("      <!-- boundary group '{}' -->\n      <C ID=\"{}\"> F[{}] </C>\n", m.group_names()[g], composite++,
-              id_list(group_faces[g]));
-  out.print("    </COMPOSITE>\n    <DOMAIN> C[{}] </DOMAIN>\n  </GEOMETRY>\n</NEKTAR>\n", domain);
+  if (encoding == NektarEncoding::Plain)
+    write_plain(out, geometry);
+  else
+    write_compressed(out, geometry);
+  write_composites(out, geometry.m);
+  out.print("</NEKTAR>\n");
   out.commit();
 }
 

@@ -235,9 +235,10 @@ params::Table<Config> naca_keys() {
 params::Table<Config> nearfield_keys() {
   params::Table<NearFieldConfig> n = {
       params::string("topology", &NearFieldConfig::topology, "\"O\" | \"C\" | \"H\"",
-                     "near-field partition (C and H are not implemented yet)"),
+                     "near-field partition: O one prism layer, C plus the root junction and the wall layer (H is not implemented yet)"),
   };
   append(n, &NearFieldConfig::shell, nearfield::shell_keys());
+  append(n, &NearFieldConfig::junction, nearfield::junction_keys());
   params::Table<Config> table;
   append(table, &Config::nearfield, n);
   return table;
@@ -251,8 +252,27 @@ params::Table<Config> boundary_layer_keys() {
   b.push_back(params::reals("ratio_line", &BoundaryLayerConfig::ratio_line, "",
                             "[xa, ya, za, xb, yb, zb]: the ratio varies linearly from A to B (with ratio_end)"));
   b.push_back(params::real("ratio_end", &BoundaryLayerConfig::ratio_end, ">= 1", "the ratio at B of ratio_line"));
+  b.push_back(params::real("y_plus", &BoundaryLayerConfig::y_plus, "> 0",
+                           "instead of ratio or first_cell_height: the first cell's y+ (with reynolds)"));
+  b.push_back(params::real("reynolds", &BoundaryLayerConfig::reynolds, "> 0",
+                           "Reynolds number based on reference_length, for y_plus"));
+  b.push_back(params::real("reference_length", &BoundaryLayerConfig::reference_length, "> 0",
+                           "length the Reynolds number is based on; unset: the chord"));
   params::Table<Config> table;
   append(table, &Config::boundary_layer, b);
+  return table;
+}
+
+params::Table<Config> wall_layer_keys() {
+  params::Table<WallLayerConfig> w = {
+      params::real("thickness", &WallLayerConfig::thickness, ">= 0",
+                   "C: the wall layer's thickness δ_wall, model units; 0: a slip wall (no wall layer, the O-type root)"),
+  };
+  append(w, &WallLayerConfig::split, ho::layer_keys());
+  w.push_back(params::real("first_cell_height", &WallLayerConfig::first_cell_height, "> 0",
+                           "instead of ratio: height of the first wall layer"));
+  params::Table<Config> table;
+  append(table, &Config::wall_layer, w);
   return table;
 }
 
@@ -277,6 +297,10 @@ params::Table<Config> output_keys() {
       params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
       params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
       params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),
+      params::boolean("pictures", &OutputConfig::pictures,
+                      "SVG pictures beside the mesh: spanwise cuts, the body's surface mesh, a quality histogram"),
+      params::real("picture_station", &OutputConfig::picture_station, "(0, 1)",
+                   "where the spanwise cut of the pictures is, as a fraction of the span"),
   };
   params::Table<Config> table;
   append(table, &Config::output, o);
@@ -304,9 +328,20 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
 
   Section& n = *sections.at("nearfield");
-  n.require(c.nearfield.topology == "O", "topology",
-            "\"O\": the C-type (root junction block) and H-type (trailing-edge wake block) topologies are not "
-            "implemented yet");
+  n.require(c.nearfield.topology != "H", "topology",
+            "\"O\" or \"C\": the H-type (trailing-edge wake block) topology is not implemented yet");
+  const nearfield::JunctionParams& junction = c.nearfield.junction;
+  n.require(junction.min_angle_deg < junction.max_angle_deg, "junction_min_angle", "< nearfield.junction_max_angle");
+  n.require(junction.max_angle_deg <= junction.concave_below_deg, "junction_max_angle", "<= nearfield.concave_angle");
+
+  Section& w = *sections.at("wall_layer");
+  const WallLayerConfig& wall = c.wall_layer;
+  if (wall.first_cell_height) {
+    w.require(!w.has("ratio"), "first_cell_height", "either ratio or first_cell_height, not both");
+    w.require(*wall.first_cell_height * wall.split.layers <= wall.thickness, "first_cell_height",
+              fmt::format("<= wall_layer.thickness / layers = {}", wall.thickness / wall.split.layers) +
+                  " (the layers must fit in the wall layer with a ratio >= 1)");
+  }
 
   Section& b = *sections.at("boundary_layer");
   const BoundaryLayerConfig& layer = c.boundary_layer;
@@ -325,6 +360,12 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   }
   if (layer.ratio_end)
     b.require(layer.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
+  if (layer.y_plus) {
+    b.require(layer.reynolds.has_value(), "y_plus", "together with boundary_layer.reynolds");
+    b.require(!b.has("ratio") && !layer.first_cell_height, "y_plus",
+              "either y_plus, ratio or first_cell_height, one of them");
+  }
+  if (layer.reynolds) b.require(layer.y_plus.has_value(), "reynolds", "together with boundary_layer.y_plus");
 
   sections.at("sizing")->require(c.sizing.size.min_size <= c.sizing.size.max_size, "min_size",
                                  "in (0, sizing.max_size]");
@@ -343,6 +384,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"geometry.naca", naca_keys()},
       {"nearfield", nearfield_keys()},
       {"boundary_layer", boundary_layer_keys()},
+      {"wall_layer", wall_layer_keys()},
       {"sizing", sizing_keys()},
       {"farfield", stage_keys(&Config::farfield, farfield::far_field_keys())},
       {"highorder", stage_keys(&Config::highorder, ho::curving_keys())},
@@ -404,6 +446,22 @@ Config load_config(const std::string& path, const std::vector<std::string>& over
   return parse_config(text.str(), path, directory, overrides);
 }
 
+double flat_plate_skin_friction(double reynolds) { return 0.026 * std::pow(reynolds, -1.0 / 7.0); }
+
+double y_plus_first_cell_height(double y_plus, double reynolds, double length) {
+  return y_plus * length / (reynolds * std::sqrt(0.5 * flat_plate_skin_friction(reynolds)));
+}
+
+double y_plus_of_height(double height, double reynolds, double length) {
+  return height / y_plus_first_cell_height(1.0, reynolds, length);
+}
+
+BoundaryLayerConfig resolve_y_plus(BoundaryLayerConfig layer, double chord) {
+  if (layer.y_plus && layer.reynolds)
+    layer.first_cell_height = y_plus_first_cell_height(*layer.y_plus, *layer.reynolds, layer.reference_length.value_or(chord));
+  return layer;
+}
+
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness) {
   if (!layer.first_cell_height) return layer.split.ratio;
   const double h1 = *layer.first_cell_height;
@@ -417,6 +475,17 @@ double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness)
     (total(mid) < thickness ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+double effective_wall_ratio(const WallLayerConfig& layer) {
+  BoundaryLayerConfig as_layer;
+  as_layer.split = layer.split;
+  as_layer.first_cell_height = layer.first_cell_height;
+  return effective_layer_ratio(as_layer, layer.thickness);
+}
+
+bool builds_junction(const Config& config) {
+  return config.nearfield.topology == "C" && config.wall_layer.thickness > 0.0;
 }
 
 }  // namespace semimesh::pipeline

@@ -11,9 +11,19 @@ namespace semimesh::pipeline {
 const std::vector<OutputFormat>& output_formats() {
   static const std::vector<OutputFormat> formats = {
       {"msh41", ".msh", "", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V41); }},
+      {"msh41-binary", ".msh", ".bin.msh",
+       [](const mesh::Mesh& m, const std::string& p) {
+         io::write_msh(m, p, io::MshVersion::V41, io::MshEncoding::Binary);
+       }},
       {"msh22", ".msh", ".v22.msh", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V22); }},
-      {"vtu", ".vtu", "", [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p); }},
-      {"nektar", ".xml", "", [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p); }},
+      {"vtu", ".vtu", "",
+       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::CompressedBinary); }},
+      {"vtu-ascii", ".vtu", ".ascii.vtu",
+       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::Ascii); }},
+      {"nektar", ".xml", "",
+       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Compressed); }},
+      {"nektar-xml", ".xml", ".plain.xml",
+       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Plain); }},
   };
   return formats;
 }

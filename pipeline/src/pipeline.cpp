@@ -8,9 +8,13 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
+#include "semimesh/mesh/compact.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
+#include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
+#include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <fmt/format.h>
@@ -151,21 +155,13 @@ ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
   };
 }
 
-// The near-field shell is the mesh's prisms (the far field holds tets and pyramids only).
-std::vector<std::size_t> shell_prisms(const mesh::Mesh& mesh) {
-  std::vector<std::size_t> prisms;
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e)
-    if (mesh.elements()[e].shape == ho::Shape::Prism) prisms.push_back(e);
-  return prisms;
-}
-
-// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms. split_layers
-// replaces the k-th split prism (input index i) by `layers` elements from the body outwards, so its
-// first-layer element is at i + k (layers - 1).
-double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<std::size_t>& prisms, int layers) {
+// Largest (longest body-side edge / mean vertical edge) over the first-layer prisms of the wing.
+double max_first_layer_aspect(const mesh::Mesh& split, const std::vector<nearfield::LayerStack>& stacks,
+                              const std::vector<std::size_t>& first_layer) {
   double worst = 0.0;
-  for (std::size_t k = 0; k < prisms.size(); ++k) {
-    const mesh::Element& e = split.elements()[prisms[k] + k * static_cast<std::size_t>(layers - 1)];
+  for (std::size_t k = 0; k < stacks.size(); ++k) {
+    const mesh::Element& e = split.elements()[first_layer[k]];
+    if (e.shape != ho::Shape::Prism || stacks[k].directions.front().family != nearfield::LayerFamily::Wing) continue;
     auto x = [&](int v) -> const Eigen::Vector3d& { return split.node(e.vertices[v]); };
     const double longest = std::max({(x(1) - x(0)).norm(), (x(2) - x(1)).norm(), (x(0) - x(2)).norm()});
     const double height = ((x(3) - x(0)).norm() + (x(4) - x(1)).norm() + (x(5) - x(2)).norm()) / 3.0;
@@ -246,23 +242,34 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const cad::Model& mod
   return surfaces;
 }
 
-// The linear mesh: the near-field shell, then the far field around it.
-mesh::Mesh build_linear_mesh(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces,
+struct LinearMesh {
+  mesh::Mesh mesh;
+  std::vector<nearfield::LayerStack> stacks;  ///< every layer element, with its direction(s)
+};
+
+// The linear mesh: the near-field shell (O: prisms; C: prisms and the root junction's hexes), then
+// the far field around it (C: with the wall layer), and the layer stacks of the whole mesh.
+LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces,
                              Progress& progress, RunResult& result) {
+  const bool junction = builds_junction(config);
   nearfield::NearField near = stage("near field", progress, result, [&] {
-    return nearfield::build_o_shell(*g.model, surfaces, nearfield::BodyRoles{g.roles.body, g.roles.wall},
-                                    config.nearfield.shell);
+    const nearfield::BodyRoles roles{g.roles.body, g.roles.wall};
+    return junction ? nearfield::build_c_shell(*g.model, surfaces, roles, config.nearfield.shell,
+                                               config.nearfield.junction, config.wall_layer.thickness)
+                    : nearfield::build_o_shell(*g.model, surfaces, roles, config.nearfield.shell);
   });
+  result.junction_hexes = near.junction_hexes;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
     result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
                                           w.where.y(), w.where.z()));
   farfield::FarField far = stage("far field", progress, result, [&] {
-    return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall);
+    return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall,
+                                     junction ? config.wall_layer.thickness : 0.0);
   });
   result.far_field = far.stats;
-  return std::move(far.mesh);
+  return {std::move(far.mesh), std::move(far.stacks)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -289,26 +296,53 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
   });
 }
 
-// Splitting after curving: the sub-prisms inherit the coarse prisms' curved map (isoparametric).
-mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, Progress& progress, RunResult& result) {
-  const int layers = config.boundary_layer.split.layers;
-  const std::vector<std::size_t> prisms = shell_prisms(coarse);
-  const double ratio = effective_layer_ratio(config.boundary_layer, config.nearfield.shell.thickness);
-  ho::SplitStats stats{};
-  mesh::Mesh fine = stage("split", progress, result, [&] {
-    return ho::split_layers(coarse, prisms, ho::LayerDistribution{layers, ratio},
-                            ratio_field(config.boundary_layer, ratio), &stats);
+// Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
+// inherit the coarse elements' curved map (isoparametric).
+mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vector<nearfield::LayerStack>& stacks,
+                 double chord, Progress& progress, RunResult& result) {
+  const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
+  const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
+  const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
+  const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
+  StackSplit split = stage("split", progress, result, [&] {
+    StackSplit fine = split_stacks(coarse, stacks,
+                                   {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
+                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+    // The coarse elements' inner nodes are no longer used by any element: drop them.
+    fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
+    return fine;
   });
-  result.layers.requested_ratio = ratio;
-  result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
-  result.layers.achieved_ratio = stats.achieved_ratio;
-  result.layers.first_cell_height_min = stats.first_cell_height_min;
-  result.layers.first_cell_height_max = stats.first_cell_height_max;
-  result.layers.max_first_layer_aspect = max_first_layer_aspect(fine, prisms, layers);
-  return fine;
+  if (layers > 1) {
+    result.layers.requested_ratio = ratio;
+    result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
+    result.layers.achieved_ratio = split.wing.achieved_ratio;
+    result.layers.first_cell_height_min = split.wing.first_cell_height_min;
+    result.layers.first_cell_height_max = split.wing.first_cell_height_max;
+    result.layers.max_first_layer_aspect = max_first_layer_aspect(split.mesh, stacks, split.first_layer);
+    if (layer.y_plus) {
+      const double length = layer.reference_length.value_or(chord);
+      result.layers.first_cell_height_target = *layer.first_cell_height;
+      result.layers.y_plus_min = y_plus_of_height(split.wing.first_cell_height_min, *layer.reynolds, length);
+      result.layers.y_plus_max = y_plus_of_height(split.wing.first_cell_height_max, *layer.reynolds, length);
+    }
+  }
+  if (wall_layers > 1) {
+    result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
+    result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
+    result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
+    result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;
+  }
+  return std::move(split.mesh);
 }
 
-void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, Progress& progress,
+// The chord: geometry.naca.chord for a generated wing, else the body's streamwise extent.
+double chord_of(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces) {
+  std::vector<const surface::SurfaceMesh*> body;
+  for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
+  return reference_length(config.geometry, body);
+}
+
+void check(const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord, Progress& progress,
            RunResult& result) {
   stage("checks", progress, result, [&] {
     result.conformity = checks::check_conformity(result.mesh);
@@ -322,11 +356,13 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh);
-    const double chord = reference_length(config.geometry, body);
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
-  for (const mesh::Element& e : result.mesh.elements()) ++result.elements_by_type[ho::to_string(e.shape)];
+  for (const mesh::Element& e : result.mesh.elements()) {
+    ++result.elements_by_type[ho::to_string(e.shape)];
+    ++result.elements_by_region[result.mesh.region_names()[e.region]];
+  }
   for (const mesh::BoundaryFace& f : result.mesh.boundary_faces())
     ++result.boundary_faces_by_group[result.mesh.group_names()[f.group]];
 }
@@ -342,6 +378,16 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
         output_format(config.output.formats[i]).write(result.mesh, paths[i]);
         result.written_files.push_back(paths[i]);
       }
+      if (config.output.pictures)
+        for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
+          const std::string path =
+              (std::filesystem::path(config.output.directory) / (config.output.basename + picture.suffix)).string();
+          io::AtomicFile file(path);
+          file.write(picture.svg);
+          file.commit();
+          result.written_files.push_back(path);
+          result.pictures.push_back(path);
+        }
       result.peak_memory_mb = peak_memory_mb();
       io::AtomicFile report(paths.back());
       report.write(report_json(result, config));
@@ -361,11 +407,15 @@ RunResult run(const Config& config, Progress& progress) {
   RunResult result;
   const Geometry geometry = load_geometry(config, progress, result);
   const surface::SurfaceMeshes surfaces = mesh_surfaces(config, *geometry.model, progress, result);
-  result.mesh = build_linear_mesh(config, geometry, surfaces, progress, result);
+  LinearMesh linear = build_linear_mesh(config, geometry, surfaces, progress, result);
+  result.mesh = std::move(linear.mesh);
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
-  if (result.layers.layers > 1) result.mesh = split(config, result.mesh, progress, result);
-  check(config, geometry, surfaces, progress, result);
+  const double chord = chord_of(config, geometry, surfaces);
+  result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
+  if (result.layers.layers > 1 || result.wall_layers.layers > 1)
+    result.mesh = split(config, result.mesh, linear.stacks, chord, progress, result);
+  check(geometry, surfaces, chord, progress, result);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

@@ -37,6 +37,14 @@ std::string summary_table(const RunResult& r) {
   std::string t;
   t += fmt::format("{:<28} {:>12}\n", "elements (order " + std::to_string(r.mesh.order()) + ")", r.mesh.elements().size());
   for (const auto& [type, count] : r.elements_by_type) t += fmt::format("  {:<26} {:>12}\n", type, count);
+  if (r.elements_by_region.size() > 1)
+    for (const auto& [region, count] : r.elements_by_region) {
+      const auto jacobian = r.validity.min_scaled_jacobian_by_region.find(region);
+      t += fmt::format("  region {:<19} {:>12}", region, count);
+      t += jacobian == r.validity.min_scaled_jacobian_by_region.end()
+               ? "\n" : fmt::format("   min scaled Jacobian {:.4f}\n", jacobian->second);
+    }
+  if (r.junction_hexes > 0) t += fmt::format("{:<28} {:>12}\n", "junction hexes (unsplit)", r.junction_hexes);
   t += fmt::format("{:<28} {:>12}\n", "nodes", r.mesh.num_nodes());
   for (const auto& [group, count] : r.boundary_faces_by_group) t += fmt::format("  boundary {:<17} {:>12}\n", group, count);
   t += fmt::format("{:<28} {:>12}\n", "invalid elements", r.validity.invalid);
@@ -51,8 +59,17 @@ std::string summary_table(const RunResult& r) {
   if (r.layers.layers > 1) {
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height min", r.layers.first_cell_height_min);
     t += fmt::format("{:<28} {:>12.4g}\n", "first cell height max", r.layers.first_cell_height_max);
+    if (r.layers.first_cell_height_target > 0.0)
+      t += fmt::format("{:<28} {:>12.4g}\n{:<28} {:>5.3g} .. {:<5.3g}\n", "first cell height for y+",
+                       r.layers.first_cell_height_target, "y+ of the first cells", r.layers.y_plus_min, r.layers.y_plus_max);
     t += fmt::format("{:<28} {:>12.4f}\n", "layer ratio (achieved)", r.layers.achieved_ratio);
     t += fmt::format("{:<28} {:>12.4g}\n", "max first-layer aspect", r.layers.max_first_layer_aspect);
+  }
+  if (r.wall_layers.layers > 1) {
+    t += fmt::format("{:<28} {:>12}\n", "wall layers", r.wall_layers.layers);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wall first cell height min", r.wall_layers.first_cell_height_min);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wall first cell height max", r.wall_layers.first_cell_height_max);
+    t += fmt::format("{:<28} {:>12.4f}\n", "wall layer ratio (achieved)", r.wall_layers.achieved_ratio);
   }
   if (r.mesh.order() > 1) {
     t += fmt::format("{:<28} {:>12}\n", "node placement", r.node_placement);
@@ -76,6 +93,8 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"nodes\": {},\n", r.mesh.num_nodes());
   j += fmt::format("  \"elements\": {},\n", r.mesh.elements().size());
   j += "  \"elements_by_type\": " + json_counts(r.elements_by_type) + ",\n";
+  j += "  \"elements_by_region\": " + json_counts(r.elements_by_region) + ",\n";
+  j += fmt::format("  \"junction_hexes\": {},\n", r.junction_hexes);
   j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
   j += fmt::format("  \"far_field\": {{\"tets\": {}, \"pyramids\": {}, \"wall_triangles\": {}, \"box_triangles\": {}, "
@@ -89,7 +108,16 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"layer_ratio_end\": {},\n", json_number(r.layers.requested_ratio_end));
   j += fmt::format("  \"first_cell_height_min\": {},\n  \"first_cell_height_max\": {},\n",
                    json_number(r.layers.first_cell_height_min), json_number(r.layers.first_cell_height_max));
+  if (r.layers.first_cell_height_target > 0.0)
+    j += fmt::format("  \"first_cell_height_target\": {},\n  \"y_plus_min\": {},\n  \"y_plus_max\": {},\n",
+                     json_number(r.layers.first_cell_height_target), json_number(r.layers.y_plus_min),
+                     json_number(r.layers.y_plus_max));
   j += fmt::format("  \"max_first_layer_aspect_ratio\": {},\n", json_number(r.layers.max_first_layer_aspect));
+  j += fmt::format("  \"wall_layer\": {{\"layers\": {}, \"ratio\": {}, \"achieved_ratio\": {}, "
+                   "\"first_cell_height_min\": {}, \"first_cell_height_max\": {}}},\n",
+                   r.wall_layers.layers, json_number(r.wall_layers.requested_ratio),
+                   json_number(r.wall_layers.achieved_ratio), json_number(r.wall_layers.first_cell_height_min),
+                   json_number(r.wall_layers.first_cell_height_max));
   j += fmt::format("  \"geometric_error\": {{\"max_rel\": {}, \"rms_rel\": {}, \"reference_length\": {}, "
                    "\"samples\": {}}},\n",
                    json_number(r.geometric_error.max_rel), json_number(r.geometric_error.rms_rel),
@@ -102,6 +130,12 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
   j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));
+  {
+    std::string by_region = "{";
+    for (const auto& [region, value] : r.validity.min_scaled_jacobian_by_region)
+      by_region += (by_region.size() > 1 ? ", " : "") + json_string(region) + ": " + json_number(value);
+    j += "  \"min_scaled_jacobian_by_region\": " + by_region + "},\n";
+  }
   j += fmt::format("  \"conformity_problems\": {},\n", r.conformity.problems.size());
   j += fmt::format("  \"interior_faces\": {},\n  \"boundary_faces\": {},\n", r.conformity.interior_faces,
                    r.conformity.boundary_faces);
@@ -117,6 +151,7 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"total_seconds\": {},\n", json_number(r.total_seconds()));
   j += fmt::format("  \"peak_memory_mb\": {},\n", json_number(r.peak_memory_mb));
   j += "  \"warnings\": " + json_list(r.warnings, json_string) + ",\n";
+  j += "  \"pictures\": " + json_list(r.pictures, json_string) + ",\n";
   j += "  \"files\": " + json_list(r.written_files, json_string) + "\n}\n";
   return j;
 }

@@ -3,14 +3,19 @@
 Used by CTest (tests/apps/CMakeLists.txt) with Debian's /usr/bin/python3; standard library only.
 
   cli_check.py --exe PATH [--exit N] [--stderr-has TEXT]... [--stderr-is TEXT]
-               [--json CHECK] [--write NAME:PATH] -- ARGS...
+               [--stdout-has TEXT]... [--stdout-is TEXT] [--no-stdout] [--json CHECK] [--json-lines]
+               [--pty] [--write NAME:PATH] -- ARGS...
 
 --write NAME:PATH writes the fixture file NAME (see FIXTURES) to PATH before running.
 --json CHECK parses stdout as one JSON object and runs the named check of JSON_CHECKS.
+--json-lines parses every stdout line as a JSON object; the last must be the "result" event with
+the run's exit code. --rewrites-lines expects a line rewritten in place. --pty runs the command on a pseudo-terminal (script(1)), stdout and stderr
+then arrive together as stdout.
 """
 import argparse
 import json
 import math
+import shlex
 import subprocess
 import sys
 
@@ -111,6 +116,11 @@ def main():
     parser.add_argument("--stderr-has", action="append", default=[])
     parser.add_argument("--stderr-is")
     parser.add_argument("--stdout-has", action="append", default=[])
+    parser.add_argument("--stdout-is")
+    parser.add_argument("--no-stdout", action="store_true")
+    parser.add_argument("--json-lines", action="store_true")
+    parser.add_argument("--pty", action="store_true")
+    parser.add_argument("--rewrites-lines", action="store_true")
     parser.add_argument("--json", choices=sorted(JSON_CHECKS))
     parser.add_argument("--write", action="append", default=[])
     parser.add_argument("args", nargs=argparse.REMAINDER)
@@ -122,7 +132,10 @@ def main():
         with open(path, "w") as f:
             f.write(FIXTURES[name])
 
-    run = subprocess.run([opts.exe] + args, capture_output=True, text=True, timeout=300)
+    command = [opts.exe] + args
+    if opts.pty:
+        command = ["script", "-qec", " ".join(shlex.quote(c) for c in command), "/dev/null"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
     print("$ semimesh " + " ".join(args))
     print("exit %d\n--- stdout\n%s--- stderr\n%s" % (run.returncode, run.stdout[:4000], run.stderr))
     expect(run.returncode == opts.exit, "exit code %d, expected %d" % (run.returncode, opts.exit))
@@ -137,6 +150,26 @@ def main():
         expect(run.stdout == "", "nothing on stdout on error")
     for text in opts.stdout_has:
         expect(text in run.stdout, "stdout lacks %r" % text)
+    if opts.rewrites_lines:
+        # (text mode turns the carriage return into a newline; the erase-line sequence stays)
+        expect("\x1b[K" in run.stdout, "no line is rewritten in place (erase to end of line)")
+    if opts.no_stdout:
+        expect(run.stdout == "", "stdout must be empty, it is %r" % run.stdout[:200])
+    if opts.stdout_is is not None:
+        expect(run.stdout == opts.stdout_is, "stdout is %r, expected exactly %r" % (run.stdout[:200], opts.stdout_is))
+    if opts.json_lines:
+        events = []
+        for line in run.stdout.splitlines():
+            try:
+                events.append(json.loads(line))
+            except ValueError as e:
+                fail("stdout line is not JSON (%s): %r" % (e, line))
+        expect(all(isinstance(e, dict) and "event" in e for e in events), "every line must be an object with 'event'")
+        expect(events and events[-1]["event"] == "result", "the last event must be the result")
+        expect(events[-1]["exit_code"] == run.returncode, "the result's exit_code must be the process's")
+        started = [e["stage"] for e in events if e["event"] == "stage_started"]
+        finished = [e["stage"] for e in events if e["event"] == "stage_finished"]
+        expect(started and started == finished, "every stage that starts must finish: %r vs %r" % (started, finished))
     if opts.json:
         try:
             doc = json.loads(run.stdout)

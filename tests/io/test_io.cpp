@@ -3,6 +3,7 @@
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/msh.hpp"
+#include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtk_order.hpp"
 
 #include <gtest/gtest.h>
@@ -190,6 +191,41 @@ INSTANTIATE_TEST_SUITE_P(Orders, MshRoundTrip,
                          ::testing::Combine(::testing::Values(1, 2, 3, 4, 6, 8, 9),
                                             ::testing::Values(semimesh::io::MshVersion::V41,
                                                               semimesh::io::MshVersion::V22)));
+
+TEST(Msh, PhysicalTagsAreUniqueAcrossDimensionsAndOneVolumePerRegion) {
+  Mesh mesh(1);
+  std::vector<NodeId> ids;
+  for (const auto& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                        Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1)})
+    ids.push_back(mesh.add_node(x));
+  mesh.add_element(Shape::Tetrahedron, {ids[0], ids[1], ids[2], ids[3]}, mesh.region_index("wing_layer"));
+  mesh.add_element(Shape::Tetrahedron, {ids[1], ids[2], ids[3], ids[4]}, mesh.region_index("farfield"));
+  mesh.add_boundary_face("farfield", Shape::Triangle, {ids[0], ids[2], ids[1]});
+  const std::string path = temp_dir() + "/regions.msh";
+  semimesh::io::write_msh(mesh, path);
+  const std::string text = read_text(path);
+  // Region 0 ("fluid") has no element: no group. The region named like the boundary group is renamed.
+  EXPECT_NE(text.find("$PhysicalNames\n3\n2 1 \"farfield\"\n3 2 \"wing_layer\"\n3 3 \"farfield_volume\"\n"),
+            std::string::npos)
+      << text.substr(0, 200);
+}
+
+TEST(Nektar, TwoPyramidsSharingATriangleThrowNamingTheElement) {
+  // Pyramid A's triangle (a, b, apex_A) is pyramid B's triangle with apex a: each apex would have
+  // to be the highest vertex of the shared triangle.
+  Mesh mesh(1);
+  auto node = [&](double x, double y, double z) { return mesh.add_node(Eigen::Vector3d(x, y, z)); };
+  const NodeId a = node(1, 0, 0), b = node(1, 1, 0), c = node(0.5, 0.5, 1);
+  mesh.add_element(Shape::Pyramid, {node(0, 0, 0), a, b, node(0, 1, 0), c});
+  mesh.add_element(Shape::Pyramid, {b, c, node(1.5, 1.5, 1.5), node(1.6, 1.4, 0.2), a});
+  try {
+    semimesh::io::write_nektar_xml(mesh, temp_dir() + "/pyramids.xml");
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("element "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pyramid"), std::string::npos) << e.what();
+  }
+}
 
 TEST(Msh, ReaderErrorsGiveFileAndLine) {
   const std::string path = temp_dir() + "/bad.msh";

@@ -9,6 +9,8 @@ checked the same way with their own basis. gmsh 4.8 cannot build prisms of order
 Gmsh prism ordering table (pyfr/readers/nodemaps.py, GmshNodeMaps, 'pri' 40/75/126/196 nodes: a
 fact table, copied as data). Finally `semimesh check` must agree with gmsh's
 Jacobian determinants on a valid and a folded element of every shape and order.
+Binary MSH 4.1 (_bin.msh) must read back in gmsh with the same nodes, elements and physical groups
+as the ASCII file, and physical tags must be unique across dimensions (PyFR's rule).
 
 usage: verify_msh.py IO_WRITE_SAMPLES IO_CHECK
 """
@@ -155,6 +157,16 @@ def gmsh_valid(path, name, p):
     return float(np.min(det)) > 0
 
 
+def gmsh_content(path):
+    """Nodes, elements per type, physical groups (dim, tag, name) of a file as gmsh reads it."""
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    types, etags, enodes = gmsh.model.mesh.getElements()
+    groups = sorted((dim, tag, gmsh.model.getPhysicalName(dim, tag)) for dim, tag in gmsh.model.getPhysicalGroups())
+    elements = {int(t): (list(et), list(en)) for t, et, en in zip(types, etags, enodes)}
+    return list(tags), list(coords), elements, groups
+
+
 def main():
     writer, checker = sys.argv[1], sys.argv[2]
     d = write_samples(writer)
@@ -166,6 +178,10 @@ def main():
             base = os.path.join(d, f"{name}_{p}")
             for path in [base + ".msh", base + "_v22.msh"] + ([base + "_gll.msh"] if p >= 2 else []):
                 check_file(f, path, name, p)
+            ascii_content = gmsh_content(base + ".msh")
+            f.check(gmsh_content(base + "_bin.msh") == ascii_content, f"{base}_bin.msh: differs from the ASCII file")
+            physical_tags = [tag for _, tag, _ in ascii_content[3]]
+            f.check(len(set(physical_tags)) == len(physical_tags), f"{base}.msh: physical tags {ascii_content[3]}")
             if p < 2:
                 continue
             for path, expect_valid in [(base + ".msh", True), (base + "_invalid.msh", False)]:

@@ -4,8 +4,9 @@ For each sample element (orders 1..9): VERTEX/EDGE/FACE/ELEMENT ids are consiste
 edges form a closed loop; each element's faces have the types of Nektar's local faces (e.g. a
 prism is Q T Q T Q) and a right-handed numbering of its vertices exists that gives exactly
 Nektar's local faces (TetGeom/PyrGeom/PrismGeom/HexGeom face-vertex tables); every CURVED point
-lies on the known map at the reference point that Nektar's point order implies (edges v0->v1;
-triangles: vertices, edges, interior row by row = NodalTriEvenlySpaced; quads: tensor order);
+lies on the known map at the reference point that Nektar's point order implies (edges v0->v1,
+PolyEvenlySpaced; triangles NodalTriEvenlySpaced: vertices, edges, interior row by row; quads
+PolyEvenlySpaced, tensor order); Nektar++'s own load rules are checked by verify_nektar_rules.py;
 composites and domain are present.
 
 usage: verify_nektar.py IO_WRITE_SAMPLES IO_CHECK
@@ -18,6 +19,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from nektar_rules import ids_in
 from sample_map import SHAPES, Failures, curved_map, reference_of_vertex, write_samples
 
 NEKTAR = {  # tag -> (number of vertices, local faces in Nektar vertex numbers, right-handed axes)
@@ -90,7 +92,8 @@ def check_file(f, path, name, p):
     f.check((curved is not None) == (p >= 2), f"{path}: CURVED section presence")
     curved_edges, curved_faces = set(), set()
     for c in (curved if curved is not None else []):
-        f.check(c.get("TYPE") == "PolyEvenlySpaced", f"{path}: curve TYPE {c.get('TYPE')}")
+        want_type = "NodalTriEvenlySpaced" if c.tag == "F" and faces[int(c.get("FACEID"))][0] == "T" else "PolyEvenlySpaced"
+        f.check(c.get("TYPE") == want_type, f"{path}: curve TYPE {c.get('TYPE')}")
         pts = np.array(numbers(c.text)).reshape(-1, 3)
         f.check(len(pts) == int(c.get("NUMPOINTS")), f"{path}: NUMPOINTS")
         if c.tag == "E":
@@ -118,8 +121,7 @@ def check_file(f, path, name, p):
     f.check(f"{el.tag}[0]" in comps.values(), f"{path}: no element composite ({comps})")
     listed = []
     for text in comps.values():
-        if text.startswith("F["):
-            listed += [int(t) for t in text[2:-1].split(",")]
+        listed += ids_in(text).get("F", [])
     f.check(sorted(listed) == sorted(faces), f"{path}: boundary composites list {sorted(listed)}")
     f.check(geom.find("DOMAIN") is not None and geom.find("DOMAIN").text.strip().startswith("C["), f"{path}: DOMAIN")
 

@@ -5,6 +5,8 @@ cell at random parametric points (vtkCell.EvaluateLocation) and the result must 
 map at the same point (VTK's parametric cube/prism [0,1] -> Gmsh's [-1,1]). A wrong node
 permutation gives errors of order 0.01-1. Pyramids are linear VTK_PYRAMID cells: their 5 points
 must be the images of the reference vertices. Boundary faces are checked the same way.
+The compressed binary file of each sample (appended raw, vtkZLibDataCompressor) must read back
+with the same points, cells, cell types and cell data as the ASCII file.
 
 usage: verify_vtu.py IO_WRITE_SAMPLES IO_CHECK
 """
@@ -49,6 +51,35 @@ def evaluate(cell, pcoords):
     return np.array(x)
 
 
+def read_grid(path):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = vtk.vtkUnstructuredGrid()
+    grid.DeepCopy(reader.GetOutput())  # the reader's output dies with the reader
+    return grid
+
+
+def same_grid(a, b):
+    """Points, cells (type and point ids) and every cell-data array equal."""
+    from vtk.util.numpy_support import vtk_to_numpy
+    if a.GetNumberOfPoints() != b.GetNumberOfPoints() or a.GetNumberOfCells() != b.GetNumberOfCells():
+        return False
+    if a.GetNumberOfPoints() and not np.array_equal(vtk_to_numpy(a.GetPoints().GetData()),
+                                                    vtk_to_numpy(b.GetPoints().GetData())):
+        return False
+    for c in range(a.GetNumberOfCells()):
+        ca, cb = a.GetCell(c), b.GetCell(c)
+        if ca.GetCellType() != cb.GetCellType() or [ca.GetPointId(k) for k in range(ca.GetNumberOfPoints())] != \
+                [cb.GetPointId(k) for k in range(cb.GetNumberOfPoints())]:
+            return False
+    names = {a.GetCellData().GetArrayName(k) for k in range(a.GetCellData().GetNumberOfArrays())}
+    if names != {b.GetCellData().GetArrayName(k) for k in range(b.GetCellData().GetNumberOfArrays())} or not names:
+        return False
+    return all(np.array_equal(vtk_to_numpy(a.GetCellData().GetArray(n)), vtk_to_numpy(b.GetCellData().GetArray(n)))
+               for n in names)
+
+
 def main():
     writer = sys.argv[1]
     d = write_samples(writer)
@@ -56,10 +87,9 @@ def main():
     for name in SHAPES:
         for p in range(1, 10):
             path = os.path.join(d, f"{name}_{p}.vtu")
-            reader = vtk.vtkXMLUnstructuredGridReader()
-            reader.SetFileName(path)
-            reader.Update()
-            grid = reader.GetOutput()
+            grid = read_grid(path)
+            f.check(same_grid(grid, read_grid(os.path.join(d, f"{name}_{p}_z.vtu"))),
+                    f"{path}: the compressed binary file differs from the ASCII file")
             f.check(grid.GetNumberOfCells() == 1 + {"tet": 4, "pyr": 5, "pri": 5, "hex": 6}[name], f"{path}: cell count")
             cell = grid.GetCell(0)
             if name == "pyr":

@@ -8,14 +8,25 @@
 //   OUTDIR/{...}_P_v22.msh               MSH 2.2
 //   OUTDIR/{...}_P_gll.msh               MSH 4.1 written from a GLL-node mesh (resampled), P >= 2
 //   OUTDIR/{...}_P_invalid.msh           MSH 4.1 of a folded element (det J = 1 - 3 y < 0 in part), P >= 2
-//   OUTDIR/{...}_P.vtu, {...}_P.xml      VTU and Nektar++ XML
+//   OUTDIR/{...}_P_bin.msh               MSH 4.1 binary
+//   OUTDIR/{...}_P.vtu, {...}_P_z.vtu    VTU ASCII and compressed binary
+//   OUTDIR/{...}_P.xml, {...}_P_z.xml    Nektar++ XML plain and compressed
 // Each file also holds every face of the element as a boundary face (groups "tri", "quad").
+//   OUTDIR/fix_{NAME}_P.xml, _P_z.xml    multi-element fixtures for the Nektar++ rules, P = 1, 2, 4:
+//     tets_ab / tets_ba (two tets sharing a face, created in both orders), stack (three prisms
+//     stacked, triangles listed from different vertices, a tet on top), pyr_tet (a pyramid and a
+//     tet sharing a triangle), hex_prism (a hex and a prism sharing a quad); outer faces in group "wall".
 #include "semimesh/io/gmsh_types.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
 
+#include "semimesh/ho/basis.hpp"
+
+#include <Eigen/Geometry>
+
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -52,6 +63,99 @@ semimesh::mesh::Mesh one_element(Shape shape, int order, NodeSet set, Map map) {
   return mesh;
 }
 
+// ---- multi-element fixtures --------------------------------------------------------------------
+
+using Vertices = std::vector<Eigen::Vector3d>;
+
+/// Elements given by their straight-sided vertices, nodes shared by position, then gently curved.
+class Fixture {
+ public:
+  explicit Fixture(int order) : order_(order) {}
+  void add(Shape shape, Vertices v) {
+    orient(shape, v);
+    elements_.push_back({shape, v});
+  }
+  semimesh::mesh::Mesh build() const {
+    semimesh::mesh::Mesh mesh(order_, NodeSet::Equispaced);
+    std::map<std::array<long long, 3>, semimesh::mesh::NodeId> at;
+    for (const auto& [shape, v] : elements_) {
+      const Eigen::MatrixXd lift =
+          semimesh::ho::interpolation_matrix(semimesh::ho::LagrangeBasis(shape, 1, NodeSet::Equispaced),
+                                             semimesh::ho::LagrangeBasis(shape, order_, NodeSet::Equispaced));
+      Eigen::MatrixX3d corners(v.size(), 3);
+      for (std::size_t k = 0; k < v.size(); ++k) corners.row(k) = v[k].transpose();
+      const Eigen::MatrixX3d x = lift * corners;
+      std::vector<semimesh::mesh::NodeId> ids;
+      for (int i = 0; i < x.rows(); ++i) {
+        const std::array<long long, 3> key{std::llround(x(i, 0) * 1e9), std::llround(x(i, 1) * 1e9),
+                                           std::llround(x(i, 2) * 1e9)};
+        auto it = at.find(key);
+        if (it == at.end()) it = at.emplace(key, mesh.add_node(warp(x.row(i).transpose()))).first;
+        ids.push_back(it->second);
+      }
+      mesh.add_element(shape, ids);
+    }
+    // Faces used by one element only are the boundary.
+    std::map<std::size_t, int> uses;
+    for (const auto& el : mesh.elements())
+      for (int f = 0; f < static_cast<int>(semimesh::ho::faces(el.shape).size()); ++f) ++uses[el.faces[f]];
+    for (const auto& [f, n] : uses)
+      if (n == 1)
+        mesh.add_boundary_face("wall", mesh.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral,
+                               mesh.face_nodes(f));
+    return mesh;
+  }
+
+ private:
+  static double volume(const Vertices& v, int a, int b, int c) {
+    return (v[a] - v[0]).dot((v[b] - v[0]).cross(v[c] - v[0]));
+  }
+  /// Swaps vertices so that the Gmsh numbering is right-handed.
+  static void orient(Shape shape, Vertices& v) {
+    if (shape == Shape::Tetrahedron && volume(v, 1, 2, 3) < 0) std::swap(v[1], v[2]);
+    if (shape == Shape::Prism && volume(v, 1, 2, 3) < 0) std::swap(v[1], v[2]), std::swap(v[4], v[5]);
+  }
+  static Eigen::Vector3d warp(const Eigen::Vector3d& x) {
+    return x + 0.02 * Eigen::Vector3d(std::sin(3 * x[1] + 1), std::sin(2 * x[2] + 0.5), std::sin(2.5 * x[0]));
+  }
+  int order_;
+  std::vector<std::pair<Shape, Vertices>> elements_;
+};
+
+void write_fixtures(const std::string& dir) {
+  using V = Eigen::Vector3d;
+  const Vertices tet_a{V(0, 0, 0), V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)};
+  const Vertices tet_b{V(1, 0, 0), V(0, 1, 0), V(0, 0, 1), V(1, 1, 1)};
+  for (int p : {1, 2, 4}) {
+    Fixture ab(p), ba(p), stack(p), pyr_tet(p), hex_prism(p);
+    ab.add(Shape::Tetrahedron, tet_a), ab.add(Shape::Tetrahedron, tet_b);
+    ba.add(Shape::Tetrahedron, tet_b), ba.add(Shape::Tetrahedron, tet_a);
+    const double z[] = {0, 0.3, 0.6, 1.0};
+    const V tri[] = {V(0, 0, 0), V(1, 0, 0), V(0, 1, 0)};
+    for (int layer = 0; layer < 3; ++layer) {
+      Vertices v;
+      for (int half = 0; half < 2; ++half)
+        for (int k = 0; k < 3; ++k) v.push_back(tri[(k + layer) % 3] + V(0, 0, z[layer + half]));
+      stack.add(Shape::Prism, v);
+    }
+    stack.add(Shape::Tetrahedron, {V(0, 0, 1), V(1, 0, 1), V(0, 1, 1), V(0.3, 0.3, 1.5)});
+    const V apex(0.5, 0.5, 0.7);
+    pyr_tet.add(Shape::Pyramid, {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0), apex});
+    pyr_tet.add(Shape::Tetrahedron, {V(1, 0, 0), V(1, 1, 0), apex, V(1.6, 0.5, 0.3)});
+    hex_prism.add(Shape::Hexahedron, {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0), V(0, 0, 1), V(1, 0, 1),
+                                      V(1, 1, 1), V(0, 1, 1)});
+    hex_prism.add(Shape::Prism, {V(1, 0, 0), V(1.5, 0, 0.5), V(1, 0, 1), V(1, 1, 0), V(1.5, 1, 0.5), V(1, 1, 1)});
+    const std::pair<const char*, const Fixture*> all[] = {
+        {"tets_ab", &ab}, {"tets_ba", &ba}, {"stack", &stack}, {"pyr_tet", &pyr_tet}, {"hex_prism", &hex_prism}};
+    for (const auto& [name, fixture] : all) {
+      const auto mesh = fixture->build();
+      const std::string base = dir + "/fix_" + name + "_" + std::to_string(p);
+      semimesh::io::write_nektar_xml(mesh, base + ".xml", semimesh::io::NektarEncoding::Plain);
+      semimesh::io::write_nektar_xml(mesh, base + "_z.xml");
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -70,13 +174,18 @@ int main(int argc, char** argv) {
         const auto mesh = one_element(shape, p, NodeSet::Equispaced, curved);
         semimesh::io::write_msh(mesh, base + ".msh");
         semimesh::io::write_msh(mesh, base + "_v22.msh", semimesh::io::MshVersion::V22);
-        semimesh::io::write_vtu(mesh, base + ".vtu");
-        semimesh::io::write_nektar_xml(mesh, base + ".xml");
+        semimesh::io::write_msh(mesh, base + "_bin.msh", semimesh::io::MshVersion::V41,
+                                semimesh::io::MshEncoding::Binary);
+        semimesh::io::write_vtu(mesh, base + ".vtu", semimesh::io::VtuEncoding::Ascii);
+        semimesh::io::write_vtu(mesh, base + "_z.vtu");
+        semimesh::io::write_nektar_xml(mesh, base + ".xml", semimesh::io::NektarEncoding::Plain);
+        semimesh::io::write_nektar_xml(mesh, base + "_z.xml");
         if (p >= 2) {
           semimesh::io::write_msh(one_element(shape, p, NodeSet::GLL, curved), base + "_gll.msh");
           semimesh::io::write_msh(one_element(shape, p, NodeSet::Equispaced, folded_map), base + "_invalid.msh");
         }
       }
+    write_fixtures(dir);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "io_write_samples: %s\n", e.what());
     return 1;

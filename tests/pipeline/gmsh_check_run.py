@@ -98,14 +98,18 @@ def main():
         print("ok")
         return
     bad = os.path.join(args.workdir, "bad")
-    for override, expected in (("nearfield.topology=C", "not implemented yet"),
-                               ("boundary_layer.ratio=0.5", "boundary_layer.ratio = 0.5: expected >= 1"),
-                               ("geometry.wall=floor", "no surface named 'floor'")):
-        code, _, stderr = run_cli(args.exe, ["run", args.config, "-o", bad, "--set", override])
+    c_type = ["nearfield.topology=C", "wall_layer.thickness=0.04"]
+    for overrides, expected in ((["nearfield.topology=H"], "not implemented yet"),
+                                (["boundary_layer.ratio=0.5"], "boundary_layer.ratio = 0.5: expected >= 1"),
+                                (["geometry.wall=floor"], "no surface named 'floor'"),
+                                (c_type + ["nearfield.junction_min_angle=100"], "meets the wall at 90 degrees"),
+                                (c_type + ["wall_layer.thickness=0.6"], "wall layer thickness 0.6")):
+        sets = [a for kv in overrides for a in ("--set", kv)]
+        code, _, stderr = run_cli(args.exe, ["run", args.config, "-o", bad] + sets)
         if code != 1 or expected not in stderr:
-            fail("--set %s: exit %d (expected 1), stderr:\n%s" % (override, code, stderr))
+            fail("--set %s: exit %d (expected 1), stderr:\n%s" % (" ".join(overrides), code, stderr))
         if os.path.exists(bad) and os.listdir(bad):
-            fail("--set %s: files written: %s" % (override, os.listdir(bad)))
+            fail("--set %s: files written: %s" % (" ".join(overrides), os.listdir(bad)))
     print("ok")
 
 

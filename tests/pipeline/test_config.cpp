@@ -193,13 +193,30 @@ TEST(Config, SyntaxErrorGivesTheLine) {
   EXPECT_EQ(message.rfind("config error: case.toml:2:", 0), 0u) << message;
 }
 
-TEST(Config, CAndHTopologiesAreRejectedClearly) {
-  for (const char* topology : {"C", "H"}) {
-    const std::string message = error_of(std::string("[nearfield]\ntopology = \"") + topology + "\"\n");
-    EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
-    EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
-  }
+TEST(Config, HTopologyIsRejectedClearly) {
+  const std::string message = error_of("[nearfield]\ntopology = \"H\"\n");
+  EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
+  EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
   EXPECT_NE(error_of("[nearfield]\ntopology = \"X\"\n").find("expected \"O\", \"C\" or \"H\""), std::string::npos);
+}
+
+TEST(Config, CTopologyWithItsWallLayer) {
+  const Config c = parse_config("[nearfield]\ntopology = \"C\"\njunction_min_angle = 70\n"
+                                "[wall_layer]\nthickness = 0.05\nlayers = 4\nfirst_cell_height = 0.002\n",
+                                "case.toml");
+  EXPECT_EQ(c.nearfield.topology, "C");
+  EXPECT_EQ(c.nearfield.junction.min_angle_deg, 70.0);
+  EXPECT_EQ(c.wall_layer.thickness, 0.05);
+  EXPECT_EQ(c.wall_layer.split.layers, 4);
+  EXPECT_TRUE(builds_junction(c));
+  const double r = effective_wall_ratio(c.wall_layer);
+  EXPECT_NEAR(0.002 * (std::pow(r, 4) - 1) / (r - 1), 0.05, 1e-9);
+  // thickness = 0: a slip wall, the O-type root.
+  EXPECT_FALSE(builds_junction(parse_config("[nearfield]\ntopology = \"C\"\n[wall_layer]\nthickness = 0\n", "c.toml")));
+  const std::string message = error_of("[wall_layer]\nthickness = -1\n");
+  EXPECT_NE(message.find("wall_layer.thickness"), std::string::npos) << message;
+  const std::string angles = error_of("[nearfield]\njunction_min_angle = 160\n");
+  EXPECT_NE(angles.find("nearfield.junction_min_angle"), std::string::npos) << angles;
 }
 
 TEST(Config, SetOverridesTheFileAndIsNamedInErrors) {
@@ -217,6 +234,29 @@ TEST(Config, SetOverridesTheFileAndIsNamedInErrors) {
   EXPECT_NE(error_of("", {"sizing.maxsize=1"}).find("unknown key sizing.maxsize"), std::string::npos);
   EXPECT_NE(error_of("", {"novalue"}).find("expected key=value"), std::string::npos);
   EXPECT_NE(error_of("[highorder]\norder = 4\n", {"highorder.order.x=1"}).find("highorder.order is a value"), std::string::npos);
+}
+
+// y+ -> first-cell height against values computed by hand from Cf = 0.026 Re^(-1/7):
+// Re = 1e6: Re^(1/7) = 7.196857, Cf = 3.612689e-3, sqrt(Cf/2) = 0.04250111, h = 1 / (1e6 x 0.04250111).
+TEST(Config, YPlusGivesTheFirstCellHeight) {
+  EXPECT_NEAR(flat_plate_skin_friction(1e6), 3.612689e-3, 1e-9);
+  EXPECT_NEAR(y_plus_first_cell_height(1.0, 1e6, 1.0), 2.352880e-5, 1e-10);
+  // Re = 5e5 on a 0.5 m chord with y+ = 30: Cf = 0.026 / 6.518363 = 3.988731e-3, h = 30 x 0.5 / (5e5 x 0.04465832).
+  EXPECT_NEAR(y_plus_first_cell_height(30.0, 5e5, 0.5), 6.717673e-4, 1e-9);
+  EXPECT_NEAR(y_plus_of_height(y_plus_first_cell_height(7.0, 3e6, 2.0), 3e6, 2.0), 7.0, 1e-12);
+
+  const Config c = parse_config("[boundary_layer]\ny_plus = 1\nreynolds = 1e6\n", "case.toml");
+  const BoundaryLayerConfig resolved = resolve_y_plus(c.boundary_layer, 1.0);
+  ASSERT_TRUE(resolved.first_cell_height.has_value());
+  EXPECT_NEAR(*resolved.first_cell_height, 2.352880e-5, 1e-10);
+  const BoundaryLayerConfig half = resolve_y_plus(
+      parse_config("[boundary_layer]\ny_plus = 1\nreynolds = 1e6\nreference_length = 0.5\n", "c.toml").boundary_layer, 1.0);
+  EXPECT_NEAR(*half.first_cell_height, 0.5 * 2.352880e-5, 1e-10);
+  EXPECT_NE(error_of("[boundary_layer]\ny_plus = 1\n").find("together with boundary_layer.reynolds"), std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\nreynolds = 1e6\n").find("together with boundary_layer.y_plus"), std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\ny_plus = 1\nreynolds = 1e6\nratio = 2\n").find("one of them"), std::string::npos);
+  EXPECT_NE(error_of("[boundary_layer]\ny_plus = -1\nreynolds = 1e6\n").find("boundary_layer.y_plus = -1: expected > 0"),
+            std::string::npos);
 }
 
 TEST(Config, FirstCellHeightGivesTheRatio) {

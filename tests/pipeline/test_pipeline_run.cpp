@@ -213,6 +213,26 @@ TEST(PipelineRun, RatioVaryingAlongTheSpan) {
   fs::remove_all(dir);
 }
 
+// y+ = 30 at Re = 1e6 on the unit chord: h = 30 / (1e6 sqrt(Cf / 2)), Cf = 0.026 Re^(-1/7), by hand
+// 30 / (1e6 x 0.04250111) = 7.058640e-4; the four layers of the 0.05 shell then grow by r from it.
+TEST(PipelineRun, FirstCellFromYPlus) {
+  CountingProgress progress;
+  const fs::path dir = fresh_directory("y_plus");
+  const RunResult r = run(coarse_config(dir, {"boundary_layer.layers=4", "boundary_layer.y_plus=30",
+                                              "boundary_layer.reynolds=1e6", "output.formats=[\"msh41\"]"}),
+                          progress);
+  ASSERT_TRUE(r.checks_passed());
+  ASSERT_NEAR(r.thickness_min, r.thickness_max, 1e-12);
+  EXPECT_NEAR(r.layers.first_cell_height_min, 7.058640e-4, 7.058640e-4 * 1e-6);
+  EXPECT_NEAR(r.layers.first_cell_height_target, 7.058640e-4, 1e-10);
+  EXPECT_NEAR(r.layers.y_plus_min, 30.0, 1e-4);
+  const double q = r.layers.requested_ratio;  // h (q^4 - 1) / (q - 1) = 0.05
+  EXPECT_NEAR(7.058640e-4 * (std::pow(q, 4) - 1) / (q - 1), 0.05, 1e-8);
+  const std::string report = read_text(dir / "report.json");
+  EXPECT_NEAR(json_number(report, "y_plus_min"), 30.0, 1e-4) << report;
+  fs::remove_all(dir);
+}
+
 TEST(PipelineRun, BadInputIsReportedAsSuch) {
   const fs::path dir = fresh_directory("bad");
   CountingProgress progress;
@@ -280,6 +300,79 @@ TEST(PipelineRun, AnalyticAndOccWingsGiveTheSameMesh) {
   EXPECT_LT(worst, 1e-6);  // chord = 1
   fs::remove_all(fresh_directory("naca"));
   fs::remove_all(fresh_directory("occ"));
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline
+
+namespace semimesh::pipeline {
+namespace {
+
+// topology "C" with a wall layer of thickness 0 is a slip wall: the very O-type mesh.
+TEST(PipelineRunCType, SlipWallIsTheOTypeMesh) {
+  CountingProgress progress;
+  const RunResult o = run(coarse_config(fresh_directory("slip_o"), {"output.formats=[\"msh41\"]"}), progress);
+  const RunResult c = run(coarse_config(fresh_directory("slip_c"), {"output.formats=[\"msh41\"]", "nearfield.topology=C",
+                                                                   "wall_layer.thickness=0"}),
+                          progress);
+  ASSERT_EQ(o.mesh.num_nodes(), c.mesh.num_nodes());
+  ASSERT_EQ(o.mesh.elements().size(), c.mesh.elements().size());
+  EXPECT_TRUE(o.mesh.nodes() == c.mesh.nodes());
+  for (std::size_t e = 0; e < o.mesh.elements().size(); ++e)
+    ASSERT_EQ(o.mesh.element_nodes(e), c.mesh.element_nodes(e)) << "element " << e;
+  EXPECT_EQ(c.junction_hexes, 0);
+}
+
+// The C-type at order 2: every check passes, the report has the regions, the junction and the
+// first-cell heights of both layers (h1 = delta (r - 1) / (r^N - 1) on flat parts).
+TEST(PipelineRunCType, OrderTwoReportsRegionsAndBothLayers) {
+  const fs::path dir = fresh_directory("c_type");
+  CountingProgress progress;
+  const RunResult r = run(coarse_config(dir, {"nearfield.topology=C", "wall_layer.thickness=0.04", "wall_layer.layers=3",
+                                              "wall_layer.ratio=1.5", "highorder.order=2", "boundary_layer.layers=3",
+                                              "output.formats=[\"msh41\"]"}),
+                          progress);
+  EXPECT_TRUE(r.checks_passed());
+  EXPECT_LT(r.geometric_error.max_rel, 1e-4);  // every boundary face, the hexes' wing and wall quads included
+  EXPECT_GT(r.junction_hexes, 10);
+  EXPECT_EQ(r.elements_by_region.at("junction"), static_cast<std::size_t>(r.junction_hexes * 3 * 3));
+  EXPECT_EQ(r.elements_by_type.at("hexahedron"), r.elements_by_region.at("junction"));
+  EXPECT_GT(r.elements_by_region.at("wall_layer"), 0u);
+  EXPECT_GT(r.elements_by_region.at("wing_layer"), 0u);
+  for (const char* region : {"junction", "wall_layer", "wing_layer", "farfield"})
+    EXPECT_GT(r.validity.min_scaled_jacobian_by_region.at(region), 0.0) << region;
+  const double wall_h1 = 0.04 * 0.5 / (1.5 * 1.5 * 1.5 - 1.0);
+  EXPECT_NEAR(r.wall_layers.first_cell_height_min, wall_h1, 1e-3 * wall_h1);
+  EXPECT_NEAR(r.wall_layers.first_cell_height_max, wall_h1, 1e-2 * wall_h1);
+  std::ifstream report(dir / "report.json");
+  std::stringstream text;
+  text << report.rdbuf();
+  for (const char* key : {"\"elements_by_region\"", "\"junction_hexes\"", "\"wall_layer\"", "\"min_scaled_jacobian_by_region\""})
+    EXPECT_NE(text.str().find(key), std::string::npos) << key;
+}
+
+// Bad C-type input: a BadInput RunError naming the entity and value, and no file written.
+TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
+      {{"nearfield.junction_min_angle=100"}, {"('root_", "90 degrees"}},
+      {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "not planar"}},
+      {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
+      {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"}, {"surface ", "0.6"}},
+  };
+  for (const auto& [overrides, expected] : cases) {
+    const fs::path dir = fresh_directory("c_bad");
+    std::vector<std::string> all = {"nearfield.topology=C", "wall_layer.thickness=0.04"};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    CountingProgress progress;
+    try {
+      run(coarse_config(dir, all), progress);
+      ADD_FAILURE() << "no RunError for " << overrides.front();
+    } catch (const RunError& e) {
+      EXPECT_EQ(e.cause(), Error::Cause::BadInput) << e.what();
+      for (const std::string& part : expected) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir)) << overrides.front();
+  }
 }
 
 }  // namespace

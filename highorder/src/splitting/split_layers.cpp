@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace semimesh::ho {
 namespace {
@@ -33,36 +34,38 @@ std::vector<double> layer_interfaces(int layers, double ratio) {
   return z;
 }
 
+/// The body side of a shape for one split direction.
+struct DirectionData {
+  std::vector<int> bottom;  // local vertices on the face at coordinate -1
+  std::vector<int> top_of;  // [vertices] partner on the opposite face (-1 if none)
+  std::vector<std::array<int, 2>> bottom_edges;
+};
+
 /// What does not change from one element of a shape to the next.
 struct ShapeData {
   Shape shape;
   std::vector<LatticePoint> lattice;        // [nodes] canonical lattice coordinates
   std::map<LatticePoint, int> index;        // lattice point -> canonical index
   Eigen::MatrixX3d reference;               // (nodes, 3) reference nodes of the mesh's node set
-  std::vector<int> bottom;                  // local vertices on the face at coordinate -1
-  std::vector<int> top_of;                  // [vertices] partner on the opposite face (-1 if none)
-  std::vector<std::array<int, 2>> bottom_edges;
   LagrangeBasis basis;                      // order P, the mesh's node set
   LagrangeBasis linear;                     // order 1: weights of the bottom vertices
-  Eigen::MatrixXd uniform_values;           // (layers * nodes, nodes) basis at the sub-nodes for a constant ratio
+  std::map<int, DirectionData> directions;  // by split direction, filled on demand
 };
 
-ShapeData make_shape_data(Shape shape, int order, NodeSet set, int direction) {
-  ShapeData data{shape, detail::lattice_points(shape, order), detail::lattice_index(shape, order),
-                 reference_nodes(shape, order, set), {}, {}, {}, LagrangeBasis(shape, order, set),
-                 LagrangeBasis(shape, 1, NodeSet::Equispaced), {}};
-  const int nv = num_vertices(shape);
-  data.top_of.assign(nv, -1);
+DirectionData make_direction_data(const ShapeData& data, int order, int direction) {
+  DirectionData d;
+  const int nv = num_vertices(data.shape);
+  d.top_of.assign(nv, -1);
   for (int v = 0; v < nv; ++v) {
     if (data.lattice[v][direction] != 0) continue;
-    data.bottom.push_back(v);
+    d.bottom.push_back(v);
     LatticePoint partner = data.lattice[v];
     partner[direction] = order;
-    data.top_of[v] = data.index.at(partner);
+    d.top_of[v] = data.index.at(partner);
   }
-  for (const auto& e : edges(shape))
-    if (data.lattice[e[0]][direction] == 0 && data.lattice[e[1]][direction] == 0) data.bottom_edges.push_back(e);
-  return data;
+  for (const auto& e : edges(data.shape))
+    if (data.lattice[e[0]][direction] == 0 && data.lattice[e[1]][direction] == 0) d.bottom_edges.push_back(e);
+  return d;
 }
 
 using NodeKey = std::array<std::int64_t, 7>;
@@ -70,65 +73,139 @@ using NodeKey = std::array<std::int64_t, 7>;
 // Split elements whose sub-node positions are held at once (bounds the memory of the parallel pass).
 constexpr std::size_t kSplitBlock = 1024;
 
-class Splitter {
- public:
-  Splitter(const mesh::Mesh& in, int direction, const LayerDistribution& distribution, const RatioField& ratio,
-           std::string caller)
-      : in_(in), direction_(direction), distribution_(distribution), ratio_(ratio), caller_(std::move(caller)),
-        out_(in.order(), in.node_set()) {}
-
-  mesh::Mesh run(const std::vector<std::size_t>& split, SplitStats* stats);
-
- private:
-  const ShapeData& shape_data(Shape shape);
-  /// Positions of the sub-element nodes of one coarse element and its first-layer figures; pure
-  /// (runs in parallel).
-  struct SplitGeometry {
-    Eigen::MatrixX3d x;                  // (layers * nodes, 3) layer k's canonical nodes at rows k * nodes
-    std::vector<double> first_heights;   // [bottom vertices] first layer height on its vertical edge
-    std::vector<double> ratios;          // [bottom vertices] achieved ratio on that edge
-  };
-  /// Layer interfaces at each bottom vertex of an element (calls the ratio field; serial).
-  std::vector<std::vector<double>> interfaces_of(std::size_t element);
-  SplitGeometry place_sub_nodes(std::size_t element, const std::vector<std::vector<double>>& z_of_vertex) const;
-  /// Sub-element node lists of one coarse element, bottom layer first; creates the new nodes.
-  std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
-  NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
-  double ratio_at(const Eigen::Vector3d& x, std::size_t element) const;
-
-  const mesh::Mesh& in_;
-  int direction_;
-  LayerDistribution distribution_;
-  RatioField ratio_;
-  std::string caller_;
-  mesh::Mesh out_;
-  std::map<Shape, ShapeData> shapes_;
-  std::map<NodeKey, NodeId> created_;
-  double height_min_ = 1e300, height_max_ = 0.0, ratio_sum_ = 0.0;
-  int vertical_edges_ = 0;
+/// How one element is split: up to two directions (-1: none), each with its family.
+struct Plan {
+  std::array<int, 2> direction{-1, -1};
+  std::array<int, 2> family{0, 0};
+  bool split() const { return direction[0] >= 0; }
+  bool two() const { return direction[1] >= 0; }
 };
 
-const ShapeData& Splitter::shape_data(Shape shape) {
+class Splitter {
+ public:
+  Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller)
+      : in_(in),
+        families_(std::move(families)),
+        caller_(std::move(caller)),
+        out_(in.order(), in.node_set()),
+        stats_(families_.size()) {}
+
+  mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
+                 std::vector<std::size_t>* first_piece);
+
+ private:
+  ShapeData& shape_data(Shape shape);
+  const DirectionData& direction_data(Shape shape, int direction);
+  const ShapeData& data_of(std::size_t element) const { return shapes_.at(in_.elements()[element].shape); }
+  const DirectionData& direction_of(std::size_t element, int slot) const {
+    return data_of(element).directions.at(plans_[element].direction[slot]);
+  }
+  int layers(std::size_t element, int slot) const {
+    return plans_[element].direction[slot] < 0 ? 1 : families_[plans_[element].family[slot]].distribution.layers;
+  }
+  /// Basis values at every sub-node of every piece for elements of this shape and plan whose
+  /// families have constant ratios (cached).
+  const Eigen::MatrixXd& uniform_values(Shape shape, const Plan& plan);
+  /// Reference points of every node of every piece, piece (k_a, k_b) at rows (k_b N_a + k_a) nodes;
+  /// `interface_a(r, k)` gives interface k of the first direction at reference point r.
+  template <typename Interface>
+  Eigen::MatrixX3d sub_points(const ShapeData& data, const Plan& plan, const Interface& interface_a) const;
+  /// Throws naming both elements when a split element's face cut by its split is shared with an
+  /// element that does not cut it the same way (same families, same body-side vertices).
+  void check_side_faces(const std::vector<LayerSplit>& split);
+  /// Per split direction of a face of an element: (family, sorted body-side vertex ids).
+  std::vector<std::pair<int, std::vector<NodeId>>> cuts(std::size_t element, std::uint32_t face) const;
+
+  struct SplitGeometry {
+    Eigen::MatrixX3d x;                                // (pieces * nodes, 3)
+    std::array<std::vector<double>, 2> first_heights;  // per direction slot: [bottom vertices]
+    std::array<std::vector<double>, 2> ratios;
+  };
+  /// Layer interfaces of the first direction at each of its bottom vertices (calls the ratio
+  /// field; serial). Empty when that family's ratio is constant.
+  std::vector<std::vector<double>> interfaces_of(std::size_t element);
+  SplitGeometry place_sub_nodes(std::size_t element, const std::vector<std::vector<double>>& z_of_vertex) const;
+  /// Piece node lists of one coarse element, body-side pieces first; creates the new nodes.
+  std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
+  NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
+                 const std::array<int, 2>& g) const;
+  NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
+  double ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const;
+
+  const mesh::Mesh& in_;
+  std::vector<SplitFamily> families_;
+  std::string caller_;
+  mesh::Mesh out_;
+  std::vector<Plan> plans_;  // [input elements]
+  std::map<Shape, ShapeData> shapes_;
+  std::map<std::tuple<Shape, int, int, int, int>, Eigen::MatrixXd> uniform_;
+  std::map<NodeKey, NodeId> created_;
+  struct Figures {
+    double height_min = 1e300, height_max = 0.0, ratio_sum = 0.0;
+    int vertical_edges = 0, elements = 0;
+  };
+  std::vector<Figures> stats_;  // [families]
+};
+
+ShapeData& Splitter::shape_data(Shape shape) {
   auto it = shapes_.find(shape);
   if (it != shapes_.end()) return it->second;
-  ShapeData data = make_shape_data(shape, in_.order(), in_.node_set(), direction_);
-  if (!ratio_) {
-    const int N = distribution_.layers, nn = static_cast<int>(data.reference.rows());
-    const std::vector<double> z = layer_interfaces(N, distribution_.ratio);
-    Eigen::MatrixX3d q(N * nn, 3);
-    for (int k = 0; k < N; ++k)
-      for (int i = 0; i < nn; ++i) {
-        Eigen::RowVector3d r = data.reference.row(i);
-        r(direction_) = z[k] + 0.5 * (r(direction_) + 1.0) * (z[k + 1] - z[k]);
-        q.row(k * nn + i) = r;
-      }
-    data.uniform_values = data.basis.values(q);
-  }
+  const int order = in_.order();
+  ShapeData data{shape,
+                 detail::lattice_points(shape, order),
+                 detail::lattice_index(shape, order),
+                 reference_nodes(shape, order, in_.node_set()),
+                 LagrangeBasis(shape, order, in_.node_set()),
+                 LagrangeBasis(shape, 1, NodeSet::Equispaced),
+                 {}};
   return shapes_.emplace(shape, std::move(data)).first->second;
 }
 
-double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element) const {
-  const double r = ratio_ ? ratio_(x) : distribution_.ratio;
+const DirectionData& Splitter::direction_data(Shape shape, int direction) {
+  ShapeData& data = shape_data(shape);
+  auto it = data.directions.find(direction);
+  if (it == data.directions.end())
+    it = data.directions.emplace(direction, make_direction_data(data, in_.order(), direction)).first;
+  return it->second;
+}
+
+template <typename Interface>
+Eigen::MatrixX3d Splitter::sub_points(const ShapeData& data, const Plan& plan, const Interface& interface_a) const {
+  const int da = plan.direction[0], db = plan.direction[1];
+  const int na = families_[plan.family[0]].distribution.layers;
+  const int nb = plan.two() ? families_[plan.family[1]].distribution.layers : 1;
+  const std::vector<double> zb =
+      plan.two() ? layer_interfaces(nb, families_[plan.family[1]].distribution.ratio) : std::vector<double>{};
+  const int nn = static_cast<int>(data.reference.rows());
+  Eigen::MatrixX3d q(na * nb * nn, 3);
+  for (int kb = 0; kb < nb; ++kb)
+    for (int ka = 0; ka < na; ++ka)
+      for (int i = 0; i < nn; ++i) {
+        Eigen::RowVector3d r = data.reference.row(i);
+        // The second direction first (constant ratio), so the first one's interfaces are read
+        // where the point lands across it.
+        if (plan.two()) r(db) = zb[kb] + 0.5 * (r(db) + 1.0) * (zb[kb + 1] - zb[kb]);
+        const double z0 = interface_a(r, ka), z1 = interface_a(r, ka + 1);
+        r(da) = z0 + 0.5 * (r(da) + 1.0) * (z1 - z0);
+        q.row((kb * na + ka) * nn + i) = r;
+      }
+  return q;
+}
+
+const Eigen::MatrixXd& Splitter::uniform_values(Shape shape, const Plan& plan) {
+  const auto key = std::make_tuple(shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1]);
+  auto it = uniform_.find(key);
+  if (it != uniform_.end()) return it->second;
+  const ShapeData& data = shape_data(shape);
+  const LayerDistribution& a = families_[plan.family[0]].distribution;
+  const std::vector<double> z = layer_interfaces(a.layers, a.ratio);
+  const Eigen::MatrixX3d q = sub_points(data, plan, [&](const Eigen::RowVector3d&, int k) { return z[k]; });
+  return uniform_.emplace(key, data.basis.values(q)).first->second;
+}
+
+double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const {
+  const SplitFamily& f = families_[family];
+  const double r = f.ratio ? f.ratio(x) : f.distribution.ratio;
   if (!(r >= 1.0) || !std::isfinite(r))
     throw std::invalid_argument(caller_ + ": layer ratio " + std::to_string(r) + " at a vertex of element " +
                                 std::to_string(element) + " must be a finite number >= 1");
@@ -145,146 +222,252 @@ NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
 
 std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
   const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shape_data(el.shape);
+  const Plan& plan = plans_[element];
+  if (!families_[plan.family[0]].ratio) return {};
   std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
-  for (int v : data.bottom)
-    z_of_vertex[v] = layer_interfaces(distribution_.layers, ratio_at(in_.node(el.vertices[v]), element));
+  for (int v : direction_of(element, 0).bottom)
+    z_of_vertex[v] = layer_interfaces(layers(element, 0), ratio_at(in_.node(el.vertices[v]), element, plan.family[0]));
   return z_of_vertex;
 }
 
 Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
                                                   const std::vector<std::vector<double>>& z_of_vertex) const {
   const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shapes_.at(el.shape);
-  const int N = distribution_.layers, d = direction_;
+  const ShapeData& data = data_of(element);
+  const Plan& plan = plans_[element];
   const Eigen::MatrixX3d X = in_.element_coordinates(element);
-  const int nn = static_cast<int>(X.rows());
 
-  // Interfaces per bottom vertex, interpolated linearly in between (see RatioField).
-  const auto interface_at = [&](const Eigen::RowVector3d& q, int k) {
-    Eigen::MatrixX3d foot = q;
-    foot(0, d) = -1.0;
-    const Eigen::MatrixXd w = data.linear.values(foot);
-    double z = 0.0;
-    for (int v : data.bottom) z += w(0, v) * z_of_vertex[v][k];
-    return z;
-  };
-
-  // Coarse reference points of every node of every sub-element, then chi at all of them at once. With
-  // a constant ratio they are the same for every element of a shape: the basis values are cached.
+  // Coarse reference points of every node of every piece, then chi at all of them at once. With
+  // constant ratios they are the same for every element of a shape and plan: the basis values are
+  // cached.
   SplitGeometry out;
-  if (!ratio_) {
-    out.x = data.uniform_values * X;
+  if (z_of_vertex.empty()) {
+    out.x =
+        uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) *
+        X;
   } else {
-    Eigen::MatrixX3d q(N * nn, 3);
-    for (int k = 0; k < N; ++k)
-      for (int i = 0; i < nn; ++i) {
-        Eigen::RowVector3d r = data.reference.row(i);
-        const double z0 = interface_at(r, k), z1 = interface_at(r, k + 1);
-        r(d) = z0 + 0.5 * (r(d) + 1.0) * (z1 - z0);
-        q.row(k * nn + i) = r;
-      }
-    out.x = map_points(data.basis, X, q);
+    // Interfaces per bottom vertex, interpolated linearly in between (see RatioField).
+    const DirectionData& bottom = direction_of(element, 0);
+    const int d = plan.direction[0];
+    const auto interface_at = [&](const Eigen::RowVector3d& q, int k) {
+      Eigen::MatrixX3d foot = q;
+      foot(0, d) = -1.0;
+      const Eigen::MatrixXd w = data.linear.values(foot);
+      double z = 0.0;
+      for (int v : bottom.bottom) z += w(0, v) * z_of_vertex[v][k];
+      return z;
+    };
+    out.x = map_points(data.basis, X, sub_points(data, plan, interface_at));
   }
 
-  // Heights along the vertical edges, for the stats.
+  // Heights along the vertical edges of each direction, for the stats.
   const Eigen::MatrixX3d corners = reference_vertices(el.shape);
-  for (int v : data.bottom) {
-    Eigen::MatrixX3d ends(4, 3);
-    const std::vector<double>& z = z_of_vertex[v];
-    const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
-    for (int j = 0; j < 4; ++j) {
-      ends.row(j) = corners.row(v);
-      ends(j, d) = zs[j];
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
+    const int d = plan.direction[slot], N = layers(element, slot);
+    const LayerDistribution& distribution = families_[plan.family[slot]].distribution;
+    const std::vector<double> uniform = layer_interfaces(N, distribution.ratio);
+    for (int v : direction_of(element, slot).bottom) {
+      const std::vector<double>& z = slot == 0 && !z_of_vertex.empty() ? z_of_vertex[v] : uniform;
+      Eigen::MatrixX3d ends(4, 3);
+      const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
+      for (int j = 0; j < 4; ++j) {
+        ends.row(j) = corners.row(v);
+        ends(j, d) = zs[j];
+      }
+      const Eigen::MatrixX3d p = map_points(data.basis, X, ends);
+      const double first = (p.row(1) - p.row(0)).norm(), last = (p.row(3) - p.row(2)).norm();
+      out.first_heights[slot].push_back(first);
+      out.ratios[slot].push_back(N > 1 ? std::pow(last / first, 1.0 / (N - 1)) : 1.0);
     }
-    const Eigen::MatrixX3d p = map_points(data.basis, X, ends);
-    const double first = (p.row(1) - p.row(0)).norm(), last = (p.row(3) - p.row(2)).norm();
-    out.first_heights.push_back(first);
-    out.ratios.push_back(N > 1 ? std::pow(last / first, 1.0 / (N - 1)) : 1.0);
   }
   return out;
 }
 
+// The key naming a new node so that every element whose split creates it names it alike: on a
+// coarse edge across a layer direction by that edge's ends, on a coarse face cut by one direction
+// by the face's body-side edge and its partner, on a face cut by both directions (between two
+// junction hexes) by three of its corners, inside the element by the element.
+NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
+                         const std::array<int, 2>& g) const {
+  const ShapeData& data = data_of(element);
+  const Plan& plan = plans_[element];
+  const int P = in_.order();
+  std::array<bool, 2> inside{false, false};
+  for (int s = 0; s < (plan.two() ? 2 : 1); ++s) inside[s] = g[s] > 0 && g[s] < layers(element, s) * P;
+  if (inside[0] && inside[1]) {
+    LatticePoint h = l;
+    h[plan.direction[0]] = 0, h[plan.direction[1]] = 0;
+    const int v = data.index.at(h);
+    if (v < num_vertices(data.shape))
+      return {
+          4,    coarse[v], coarse[direction_of(element, 0).top_of[v]], coarse[direction_of(element, 1).top_of[v]], g[0],
+          g[1], 0};
+    return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[0], 1 + g[1]};
+  }
+  const int s = inside[0] ? 0 : 1, d = plan.direction[s];
+  LatticePoint h = l;
+  h[d] = 0;
+  if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
+  const DirectionData& side = direction_of(element, s);
+  for (int v : side.bottom)
+    if (data.lattice[v] == h)
+      return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
+  for (const auto& e : side.bottom_edges) {
+    const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
+    int steps = 0, along = 0;
+    bool on = true;
+    for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
+    for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
+    for (int c = 0; c < 3 && on; ++c) on = (h[c] - a[c]) * steps == (b[c] - a[c]) * along;
+    if (!on || along <= 0 || along >= steps) continue;
+    // On a coarse side face: name the slot from the lower node id so both neighbours agree.
+    NodeId va = coarse[e[0]], vb = coarse[e[1]], ta = coarse[side.top_of[e[0]]], tb = coarse[side.top_of[e[1]]];
+    if (va > vb) {
+      std::swap(va, vb);
+      std::swap(ta, tb);
+      along = steps - along;
+    }
+    return {2, va, vb, ta, tb, along, g[s]};
+  }
+  return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[s], plan.two() ? -1 - s : 0};
+}
+
 std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
-  const mesh::Element& el = in_.elements()[element];
-  const ShapeData& data = shapes_.at(el.shape);
-  const int P = in_.order(), N = distribution_.layers, d = direction_;
+  const ShapeData& data = data_of(element);
+  const Plan& plan = plans_[element];
+  const int P = in_.order(), na = layers(element, 0), nb = layers(element, 1);
   const std::vector<NodeId> coarse = in_.element_nodes(element);
   const int nn = static_cast<int>(coarse.size());
   const Eigen::MatrixX3d& x = geometry.x;
 
-  std::vector<std::vector<NodeId>> subs(N, std::vector<NodeId>(nn));
-  for (int k = 0; k < N; ++k)
-    for (int i = 0; i < nn; ++i) {
-      const LatticePoint& l = data.lattice[i];
-      const int g = k * P + l[d];  // lattice coordinate along the split direction, refined N times
-      if (g == 0 || g == N * P) {
-        LatticePoint c = l;
-        c[d] = g == 0 ? 0 : P;
-        subs[k][i] = coarse[data.index.at(c)];
-        continue;
-      }
-      LatticePoint h = l;
-      h[d] = 0;
-      NodeKey key{};
-      bool found = false;
-      for (int v : data.bottom)
-        if (data.lattice[v] == h) {  // on a coarse edge across the layer
-          key = {1, coarse[v], coarse[data.top_of[v]], g, 0, 0, 0};
-          found = true;
+  std::vector<std::vector<NodeId>> subs(na * nb, std::vector<NodeId>(nn));
+  for (int kb = 0; kb < nb; ++kb)
+    for (int ka = 0; ka < na; ++ka)
+      for (int i = 0; i < nn; ++i) {
+        const LatticePoint& l = data.lattice[i];
+        // lattice coordinates along the split directions, refined N times
+        const std::array<int, 2> g{ka * P + l[plan.direction[0]], plan.two() ? kb * P + l[plan.direction[1]] : 0};
+        const bool end_a = g[0] == 0 || g[0] == na * P, end_b = !plan.two() || g[1] == 0 || g[1] == nb * P;
+        const int piece = kb * na + ka;
+        if (end_a && end_b) {
+          LatticePoint c = l;
+          c[plan.direction[0]] = g[0] == 0 ? 0 : P;
+          if (plan.two()) c[plan.direction[1]] = g[1] == 0 ? 0 : P;
+          subs[piece][i] = coarse[data.index.at(c)];
+          continue;
         }
-      for (const auto& e : data.bottom_edges) {
-        if (found) break;
-        const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
-        int steps = 0, along = 0;
-        bool on = true;
-        for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
-        for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
-        for (int c = 0; c < 3 && on; ++c) on = (h[c] - a[c]) * steps == (b[c] - a[c]) * along;
-        if (!on || along <= 0 || along >= steps) continue;
-        // On a coarse side face: name the slot from the lower node id so both neighbours agree.
-        NodeId va = coarse[e[0]], vb = coarse[e[1]], ta = coarse[data.top_of[e[0]]], tb = coarse[data.top_of[e[1]]];
-        if (va > vb) {
-          std::swap(va, vb);
-          std::swap(ta, tb);
-          along = steps - along;
-        }
-        key = {2, va, vb, ta, tb, along, g};
-        found = true;
+        subs[piece][i] = node_for(key_of(element, coarse, l, g), x.row(piece * nn + i).transpose());
       }
-      if (!found) key = {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g, 0};
-      subs[k][i] = node_for(key, x.row(k * nn + i).transpose());
-    }
 
-  for (std::size_t j = 0; j < geometry.first_heights.size(); ++j) {
-    height_min_ = std::min(height_min_, geometry.first_heights[j]);
-    height_max_ = std::max(height_max_, geometry.first_heights[j]);
-    ratio_sum_ += geometry.ratios[j];
-    ++vertical_edges_;
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
+    Figures& f = stats_[plan.family[slot]];
+    for (std::size_t j = 0; j < geometry.first_heights[slot].size(); ++j) {
+      f.height_min = std::min(f.height_min, geometry.first_heights[slot][j]);
+      f.height_max = std::max(f.height_max, geometry.first_heights[slot][j]);
+      f.ratio_sum += geometry.ratios[slot][j];
+      ++f.vertical_edges;
+    }
+    ++f.elements;
   }
   return subs;
 }
 
-mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stats) {
-  if (distribution_.layers < 1)
-    throw std::invalid_argument(caller_ + ": LayerDistribution::layers = " + std::to_string(distribution_.layers) +
-                                " must be >= 1");
-  if (!ratio_) ratio_at(Eigen::Vector3d::Zero(), 0);  // checks the constant ratio up front
+std::vector<std::pair<int, std::vector<NodeId>>> Splitter::cuts(std::size_t element, std::uint32_t face) const {
+  std::vector<std::pair<int, std::vector<NodeId>>> result;
+  const mesh::Element& el = in_.elements()[element];
+  const Plan& plan = plans_[element];
+  if (!plan.split()) return result;
+  const ShapeData& data = data_of(element);
+  for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+    if (el.faces[f] != face) continue;
+    for (int s = 0; s < (plan.two() ? 2 : 1); ++s) {
+      std::vector<NodeId> bottom;
+      for (int v : faces(el.shape)[f])
+        if (data.lattice[v][plan.direction[s]] == 0) bottom.push_back(el.vertices[v]);
+      if (bottom.empty() || bottom.size() == faces(el.shape)[f].size()) continue;
+      std::sort(bottom.begin(), bottom.end());
+      result.push_back({plan.family[s], bottom});
+    }
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+void Splitter::check_side_faces(const std::vector<LayerSplit>& split) {
+  // Elements using each face (at most two in a conforming mesh).
+  std::vector<std::array<long, 2>> users(in_.faces().size(), {-1, -1});
+  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
+    const mesh::Element& el = in_.elements()[e];
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+      auto& u = users[el.faces[f]];
+      (u[0] < 0 ? u[0] : u[1]) = static_cast<long>(e);
+    }
+  }
+  for (const LayerSplit& s : split) {
+    const mesh::Element& el = in_.elements()[s.element];
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
+      const auto mine = cuts(s.element, el.faces[f]);
+      if (mine.empty()) continue;
+      const auto& u = users[el.faces[f]];
+      const long other = u[0] == static_cast<long>(s.element) ? u[1] : u[0];
+      if (other < 0 || cuts(static_cast<std::size_t>(other), el.faces[f]) == mine) continue;
+      throw std::invalid_argument(caller_ + ": element " + std::to_string(s.element) + " (" + to_string(el.shape) +
+                                  ") is split across its face shared with element " + std::to_string(other) + " (" +
+                                  to_string(in_.elements()[other].shape) + "), which is " +
+                                  (plans_[other].split() ? "split in another way" : "not split") +
+                                  ": the shared face would crack; split both the same way");
+    }
+  }
+}
+
+mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
+                         std::vector<std::size_t>* first_piece) {
+  if (families_.empty()) throw std::invalid_argument(caller_ + ": no layer distribution given");
+  for (std::size_t f = 0; f < families_.size(); ++f) {
+    const LayerDistribution& d = families_[f].distribution;
+    if (d.layers < 1)
+      throw std::invalid_argument(caller_ + ": LayerDistribution::layers = " + std::to_string(d.layers) +
+                                  " must be >= 1");
+    if (!families_[f].ratio) ratio_at(Eigen::Vector3d::Zero(), 0, static_cast<int>(f));  // checks the constant ratio
+  }
+  plans_.assign(in_.elements().size(), Plan{});
   std::vector<int> position(in_.elements().size(), -1);  // [elements] index into `split` or -1
   for (std::size_t j = 0; j < split.size(); ++j) {
-    const std::size_t e = split[j];
+    const std::size_t e = split[j].element;
     if (e >= in_.elements().size())
       throw std::invalid_argument(caller_ + ": element index " + std::to_string(e) + " out of range (mesh has " +
                                   std::to_string(in_.elements().size()) + " elements)");
     const Shape s = in_.elements()[e].shape;
-    if (s != Shape::Hexahedron && !(s == Shape::Prism && direction_ == 2))
-      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is a " + to_string(s) +
-                                  (direction_ == 2 ? "; only prisms and hexahedra" : "; only hexahedra") +
-                                  " can be split in this direction");
-    if (position[e] >= 0)
-      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
+    const auto& dir = split[j].direction;
+    for (int slot = 0; slot < 2; ++slot) {
+      if (slot == 1 && dir[1] < 0) break;
+      if (dir[slot] < 0 || dir[slot] > 2)
+        throw std::invalid_argument(caller_ + ": direction " + std::to_string(dir[slot]) + " of element " +
+                                    std::to_string(e) + " must be 0 (xi), 1 (eta) or 2 (zeta)");
+      if (s != Shape::Hexahedron && !(s == Shape::Prism && dir[slot] == 2 && slot == 0))
+        throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is a " + to_string(s) +
+                                    (dir[slot] == 2 && slot == 0 ? "; only prisms and hexahedra" : "; only hexahedra") +
+                                    " can be split in this direction");
+      const int family = split[j].family[slot];
+      if (family < 0 || family >= static_cast<int>(families_.size()))
+        throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " +
+                                    std::to_string(e) + " is not one of the " + std::to_string(families_.size()) +
+                                    " given");
+      if (slot == 1 && families_[family].ratio)
+        throw std::invalid_argument(caller_ + ": element " + std::to_string(e) +
+                                    ": a ratio field is supported on the first direction only");
+      direction_data(s, dir[slot]);
+    }
+    if (dir[1] == dir[0])
+      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " lists direction " +
+                                  std::to_string(dir[0]) + " twice");
+    if (position[e] >= 0) throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
+    plans_[e] = {dir, split[j].family};
+    if (!families_[split[j].family[0]].ratio) uniform_values(s, plans_[e]);
   }
+  check_side_faces(split);
+  if (first_piece) first_piece->assign(in_.elements().size(), 0);
 
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
@@ -299,8 +482,10 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
   std::vector<std::vector<std::vector<NodeId>>> subs(split.size());
   std::size_t next = 0;  // next input element to emit
   const auto copy_until = [&](std::size_t end) {
-    for (; next < end; ++next)
+    for (; next < end; ++next) {
+      if (first_piece) (*first_piece)[next] = out_.elements().size();
       out_.add_element(in_.elements()[next].shape, in_.element_nodes(next), in_.elements()[next].region);
+    }
   };
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
@@ -313,6 +498,7 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
       const std::size_t e = ascending[first + k];
       copy_until(e);
       subs[position[e]] = split_element(e, geometry[k]);
+      if (first_piece) (*first_piece)[e] = out_.elements().size();
       for (const auto& nodes : subs[position[e]])
         out_.add_element(in_.elements()[e].shape, nodes, in_.elements()[e].region);
       next = e + 1;
@@ -320,50 +506,82 @@ mesh::Mesh Splitter::run(const std::vector<std::size_t>& split, SplitStats* stat
   }
   copy_until(in_.elements().size());
 
-  // Boundary faces: split with the element whose side face they are, copied otherwise.
-  std::map<std::uint32_t, std::size_t> side_face_owner;  // input face id -> split element
-  for (std::size_t e : split) {
-    const mesh::Element& el = in_.elements()[e];
-    const ShapeData& data = shape_data(el.shape);
-    for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
-      const auto& fv = faces(el.shape)[f];
-      const bool all_bottom = std::all_of(fv.begin(), fv.end(), [&](int v) { return data.top_of[v] >= 0; });
-      const bool all_top = std::none_of(fv.begin(), fv.end(), [&](int v) { return data.top_of[v] >= 0; });
-      if (!all_bottom && !all_top) side_face_owner[el.faces[f]] = e;
-    }
+  // Boundary faces: split with the element whose face they are when its split cuts them (each
+  // piece lying on the face gives one), copied otherwise.
+  std::map<std::uint32_t, std::size_t> cut_face_owner;  // input face id -> split element
+  for (const LayerSplit& s : split) {
+    const mesh::Element& el = in_.elements()[s.element];
+    for (std::size_t f = 0; f < faces(el.shape).size(); ++f)
+      if (!cuts(s.element, el.faces[f]).empty()) cut_face_owner[el.faces[f]] = s.element;
   }
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
     const std::string& group = in_.group_names()[bf.group];
-    const auto owner = side_face_owner.find(bf.face);
-    if (owner == side_face_owner.end()) {
+    const auto owner = cut_face_owner.find(bf.face);
+    if (owner == cut_face_owner.end()) {
       out_.add_boundary_face(group, bf.shape, in_.boundary_face_nodes(b));
       continue;
     }
-    const mesh::Element& el = in_.elements()[owner->second];
-    const int nv = num_vertices(bf.shape);
+    const std::size_t e = owner->second;
+    const mesh::Element& el = in_.elements()[e];
+    const ShapeData& data = data_of(e);
+    const Plan& plan = plans_[e];
+    const int nv = num_vertices(bf.shape), na = layers(e, 0);
     std::vector<int> local(nv);
     for (int j = 0; j < nv; ++j)
-      local[j] = static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
-    for (const auto& nodes : subs[position[owner->second]])
-      out_.add_boundary_face(group, bf.shape, detail::face_nodes_of_element(el.shape, in_.order(), nodes, local));
+      local[j] =
+          static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
+    const auto& pieces = subs[position[e]];
+    for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
+      // A piece lies on the face unless the face is at one end of a split direction and the piece
+      // is not the one at that end.
+      const std::array<int, 2> k{static_cast<int>(piece) % na, static_cast<int>(piece) / na};
+      bool on_face = true;
+      for (int s = 0; s < (plan.two() ? 2 : 1) && on_face; ++s) {
+        const int d = plan.direction[s];
+        const bool all_low = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] == 0; });
+        const bool all_high = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] != 0; });
+        if (all_low) on_face = k[s] == 0;
+        if (all_high) on_face = k[s] == layers(e, s) - 1;
+      }
+      if (on_face)
+        out_.add_boundary_face(group, bf.shape,
+                               detail::face_nodes_of_element(el.shape, in_.order(), pieces[piece], local));
+    }
   }
 
   if (stats) {
-    stats->elements_in = static_cast<int>(in_.elements().size());
-    stats->elements_out = static_cast<int>(out_.elements().size());
-    stats->first_cell_height_min = vertical_edges_ ? height_min_ : 0.0;
-    stats->first_cell_height_max = height_max_;
-    stats->achieved_ratio = vertical_edges_ ? ratio_sum_ / vertical_edges_ : 1.0;
+    stats->assign(families_.size(), SplitStats{});
+    for (std::size_t f = 0; f < families_.size(); ++f) {
+      SplitStats& s = (*stats)[f];
+      const Figures& figures = stats_[f];
+      s.elements_in = static_cast<int>(in_.elements().size());
+      s.elements_out = static_cast<int>(out_.elements().size());
+      s.first_cell_height_min = figures.vertical_edges ? figures.height_min : 0.0;
+      s.first_cell_height_max = figures.height_max;
+      s.achieved_ratio = figures.vertical_edges ? figures.ratio_sum / figures.vertical_edges : 1.0;
+    }
   }
   return std::move(out_);
 }
 
 }  // namespace
 
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
+                        std::vector<std::size_t>* first_piece) {
+  return Splitter(mesh, families, "split_layers").run(split, stats, first_piece);
+}
+
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,
                         const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats) {
-  return Splitter(mesh, 2, distribution, ratio, "split_layers").run(layer_elements, stats);
+  std::vector<LayerSplit> split;
+  split.reserve(layer_elements.size());
+  for (std::size_t e : layer_elements) split.push_back({e, {2, -1}, {0, 0}});
+  std::vector<SplitStats> per_family;
+  mesh::Mesh out = Splitter(mesh, {{distribution, ratio}}, "split_layers").run(split, &per_family, nullptr);
+  if (stats) *stats = per_family.front();
+  return out;
 }
 
 mesh::Mesh split_hex_direction(const mesh::Mesh& mesh, const std::vector<std::size_t>& hexes, int direction,
@@ -371,7 +589,12 @@ mesh::Mesh split_hex_direction(const mesh::Mesh& mesh, const std::vector<std::si
   if (direction < 0 || direction > 2)
     throw std::invalid_argument("split_hex_direction: direction " + std::to_string(direction) +
                                 " must be 0 (xi), 1 (eta) or 2 (zeta)");
-  return Splitter(mesh, direction, distribution, {}, "split_hex_direction").run(hexes, stats);
+  std::vector<LayerSplit> split;
+  for (std::size_t e : hexes) split.push_back({e, {direction, -1}, {0, 0}});
+  std::vector<SplitStats> per_family;
+  mesh::Mesh out = Splitter(mesh, {{distribution, {}}}, "split_hex_direction").run(split, &per_family, nullptr);
+  if (stats) *stats = per_family.front();
+  return out;
 }
 
 }  // namespace semimesh::ho

@@ -13,6 +13,8 @@ ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed) {
   result.invalid = certified.invalid;
   result.min_scaled_jacobian = certified.min_scaled_jacobian;
   result.median_scaled_jacobian = certified.median_scaled_jacobian;
+  result.scaled_jacobians.reserve(certified.bounds.size());
+  for (const ho::JacobianBounds& b : certified.bounds) result.scaled_jacobians.push_back(ho::scaled_jacobian(b));
   for (std::size_t i = 0; i < certified.invalid_elements.size(); ++i) {
     const std::size_t e = certified.invalid_elements[i];
     InvalidElement bad;
@@ -26,6 +28,12 @@ ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed) {
   std::stable_sort(result.worst.begin(), result.worst.end(),
                    [](const InvalidElement& a, const InvalidElement& b) { return a.scaled_jacobian < b.scaled_jacobian; });
   if (result.worst.size() > max_listed) result.worst.resize(max_listed);
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const std::string& region = mesh.region_names()[mesh.elements()[e].region];
+    const double scaled = ho::scaled_jacobian(certified.bounds[e]);
+    const auto [it, added] = result.min_scaled_jacobian_by_region.try_emplace(region, scaled);
+    if (!added) it->second = std::min(it->second, scaled);
+  }
   return result;
 }
 

@@ -5,6 +5,7 @@
 #include "pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "wall_annulus.hpp"
+#include "wall_layer.hpp"
 
 #include "semimesh/surface/curve_mesh.hpp"
 #include "semimesh/surface/error.hpp"
@@ -36,7 +37,6 @@ namespace {
 
 using mesh::CadAttachment;
 using mesh::NodeId;
-using Triangle = std::array<NodeId, 3>;
 
 void check_params(const cad::Model& model, const nearfield::NearField& nf, const FarFieldParams& p,
                   const std::vector<int>& box_surfaces, int wall_surface) {
@@ -211,9 +211,12 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
 }  // namespace
 
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
-                         const std::vector<int>& box_surfaces, int wall_surface) {
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness) {
   const nearfield::NearField& nf = near;
   check_params(model, nf, params, box_surfaces, wall_surface);
+  if (!(wall_layer_thickness >= 0) || !std::isfinite(wall_layer_thickness))
+    throw FarFieldError("far field: the wall layer's thickness must be >= 0 (0: no wall layer), got " +
+                        std::to_string(wall_layer_thickness));
   mesh::Mesh& mesh = near.mesh;
   FarFieldStats stats;
 
@@ -229,9 +232,18 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   const surface::CurveMeshes curves = surface::discretise_all_curves(model, size);
   CurveNodes curve_nodes(model, curves, mesh);
 
-  const std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
+  std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
   const std::vector<Triangle> wall = mesh_wall(model, wall_surface, nf, params, curve_nodes, mesh);
   const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
+  // With a wall layer, its tops stand between the wall and the tetrahedra.
+  std::vector<Triangle> wall_side = wall;
+  std::vector<nearfield::LayerStack> stacks = nf.stacks;
+  if (wall_layer_thickness > 0) {
+    const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, wall_layer_thickness, wall, nf, box, mesh);
+    wall_side = layer.tops;
+    stats.wall_layer_prisms = static_cast<int>(layer.stacks.size());
+    stacks.insert(stacks.end(), layer.stacks.begin(), layer.stacks.end());
+  }
 
   // The closed boundary of the tetrahedral region, numbered densely for TetGen.
   TetgenInput input;
@@ -239,7 +251,8 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   input.max_volume = params.max_volume;
   std::unordered_map<NodeId, int> plc_index;
   std::vector<NodeId> plc_node;
-  for (const auto* group : {&skin, &wall, &box})
+  const std::vector<Triangle>* groups[] = {&skin, &wall_side, &box};
+  for (const std::vector<Triangle>* group : groups)
     for (const Triangle& t : *group) {
       std::array<int, 3> local;
       for (int k = 0; k < 3; ++k) {
@@ -265,7 +278,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
-  return {std::move(mesh), stats};
+  return {std::move(mesh), stats, std::move(stacks)};
 }
 
 }  // namespace semimesh::farfield

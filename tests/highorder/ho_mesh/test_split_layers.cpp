@@ -180,11 +180,28 @@ TEST(SplitLayers, SubElementsKeepTheRegionOfTheirElement) {
     coarse.add_element(Shape::Prism, source.element_nodes(1), wake);
   }
   const int N = 3;
-  const mesh::Mesh fine = split_layers(coarse, {1}, {N, 1.5});
+  const mesh::Mesh fine = split_layers(coarse, {0, 1}, {N, 1.5});
   ASSERT_EQ(fine.region_names(), coarse.region_names());
-  ASSERT_EQ(fine.elements().size(), std::size_t(1 + N));
-  EXPECT_EQ(fine.elements()[0].region, coarse.elements()[0].region);
-  for (int k = 1; k <= N; ++k) EXPECT_EQ(fine.elements()[k].region, coarse.elements()[1].region) << "sub-element " << k;
+  ASSERT_EQ(fine.elements().size(), std::size_t(2 * N));
+  for (int k = 0; k < 2 * N; ++k)
+    EXPECT_EQ(fine.elements()[k].region, coarse.elements()[k / N].region) << "sub-element " << k;
+}
+
+TEST(SplitLayers, RefusesASplitElementWhoseSideFaceNeighbourIsNotSplitTheSameWay) {
+  const mesh::Mesh coarse = two_prisms(2, NodeSet::GLL);
+  try {
+    split_layers(coarse, {1}, {3, 1.5});
+    FAIL() << "splitting one of two prisms sharing a side face must be refused";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("element 1"), std::string::npos) << what;
+    EXPECT_NE(what.find("element 0"), std::string::npos) << what;
+  }
+  std::vector<std::size_t> first_piece;
+  const mesh::Mesh fine = split_layers(coarse, std::vector<LayerSplit>{{0, {2, -1}, {0, 0}}, {1, {2, -1}, {0, 0}}},
+                                       {SplitFamily{{3, 1.5}, {}}}, nullptr, &first_piece);
+  EXPECT_EQ(first_piece, (std::vector<std::size_t>{0, 3}));
+  EXPECT_EQ(fine.elements().size(), 6u);
 }
 
 TEST(SplitLayers, RatioFieldKeepsConformityAndUsesTheVertexRatio) {

@@ -25,6 +25,14 @@ class AtomicFile {
     if (buffer_.size() > kFlushBytes) flush_buffer();
   }
   void write(const std::string& text);
+  /// Appends raw bytes (binary formats).
+  void write(const void* data, std::size_t bytes);
+  template <typename T>
+  void write_value(const T& value) {
+    write(&value, sizeof value);
+  }
+  /// Bytes appended so far.
+  std::size_t bytes_written() const { return written_ + buffer_.size(); }
   /// Flushes, fsyncs and renames the temporary file to the final path; throws on any failure.
   void commit();
 
@@ -37,6 +45,7 @@ class AtomicFile {
   std::string path_, temp_path_;
   std::FILE* file_ = nullptr;
   fmt::memory_buffer buffer_;
+  std::size_t written_ = 0;
   bool committed_ = false;
 };
 

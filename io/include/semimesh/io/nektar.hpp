@@ -1,23 +1,23 @@
-// Nektar++ XML geometry (<NEKTAR><GEOMETRY DIM="3" SPACE="3">): VERTEX, EDGE, FACE (T/Q),
-// ELEMENT (A tet, P pyramid, R prism, H hex), CURVED (E and F, TYPE="PolyEvenlySpaced"),
-// COMPOSITE, DOMAIN. Conventions (Nektar++ user guide "XML mesh format", SpatialDomains
-// TetGeom/PyrGeom/PrismGeom/HexGeom, NekMesh Face::GetCurvedNodes):
-//  - vertex ids: element vertices renumbered from 0; edge/face ids = mesh edge/face indices.
-//  - E: "v0 v1" = the edge's own direction; curved E points run v0 -> v1, NUMPOINTS = P+1.
-//  - T: edges (f0f1, f1f2, f2f0) of the face's stored vertices f0 f1 f2; Q: (f0f1, f1f2, f2f3, f3f0).
-//  - curved F, triangle (P >= 3): NUMPOINTS = (P+1)(P+2)/2 in Nektar's NodalTriEvenlySpaced
-//    order: f0 f1 f2, the points inside f0->f1, f1->f2, f2->f0, then the interior row by row
-//    (along f0->f1 fastest, rows moving towards f2), the order NekMesh writes since Nektar++ MR !576.
-//    Quadrilateral (P >= 2): NUMPOINTS = (P+1)^2 tensor order, f0->f1 fastest, rows towards f3.
-//  - element faces in Nektar's local face order; a prism's Nektar vertices (0..5) are Gmsh's
-//    (0, 2, 5, 3, 1, 4) so that its quad face 0 is (0 1 2 3), triangles (0 1 4), (3 2 5), and the
-//    element stays right-handed. Tets, pyramids, hexes keep Gmsh's vertex numbering.
-//  - composites: C[0..] one per element shape, then one per boundary group (F[...], preceded by a comment
-//    naming the group);
-//    DOMAIN lists the element composites.
-// No Nektar++ is available here: tests/io/verify_nektar.py checks the structure and that every
-// curved point lies on the element map; Nektar++'s own collapsed-coordinate orientation rules for
-// tets/prisms (NekMesh reorders such elements) are not applied.
+// Nektar++ XML geometry (<NEKTAR><GEOMETRY DIM="3" SPACE="3">) that passes Nektar++'s load-time
+// checks (see io/src/nektar_numbering.hpp for the numbering rules and why), plus an EXPANSIONS
+// section so NekMesh / FieldConvert open the file alone.
+//  - VERTEX: element vertices, ids ranked so that the rules can hold; EDGE "v0 v1" in the edge's own
+//    direction; FACE T/Q as edge lists (a triangle rotated so its highest vertex id is third);
+//    ELEMENT A/P/R/H as face lists in Nektar's local face order (TetGeom/PyrGeom/PrismGeom/HexGeom).
+//  - CURVED (P >= 2), only for edges and faces whose nodes are off the straight-sided (affine /
+//    bilinear) map, as NekMesh writes: an edge, P+1 PolyEvenlySpaced points from its first vertex
+//    to its second;
+//    triangles (P >= 3) NodalTriEvenlySpaced, (P+1)(P+2)/2 points: the face's vertices, the points
+//    inside its edges 0-1, 1-2, 2-0, then the interior row by row (along 0->1 fastest, rows towards
+//    vertex 2), the order NekMesh writes since Nektar++ MR !576; quadrilaterals PolyEvenlySpaced,
+//    (P+1)^2 points in tensor order, 0->1 fastest, rows towards vertex 3. Element-interior nodes
+//    are not part of the format.
+//  - COMPOSITE: one per (region, element letter), NAME = the region; then one per boundary group,
+//    F[...], NAME = the group. DOMAIN lists the element composites; EXPANSIONS gives each element
+//    composite NUMMODES = P+1, TYPE MODIFIED, field u.
+// Compressed: VERTEX, EDGE, FACE, ELEMENT and CURVED hold Nektar++'s binary records (64-bit
+// integers and doubles, little endian; SpatialDomains/MeshEntities.hpp), one zlib stream per block,
+// base64 encoded, COMPRESSED="B64Z-LittleEndian" BITSIZE="64" (MeshGraphIOXmlCompressed.cpp).
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
@@ -26,7 +26,11 @@
 
 namespace semimesh::io {
 
-/// Writes atomically; GLL meshes are resampled to equispaced points.
-void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path);
+enum class NektarEncoding { Compressed, Plain };
+
+/// Writes atomically; GLL meshes are resampled to equispaced points. Throws std::runtime_error
+/// naming the element if Nektar++'s rules cannot be met (see nektar_numbering.hpp), or on I/O errors.
+void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path,
+                      NektarEncoding encoding = NektarEncoding::Compressed);
 
 }  // namespace semimesh::io

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace semimesh::checks {
@@ -24,7 +26,9 @@ struct ValidityResult {
   std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided)
   double min_scaled_jacobian = 1.0;
   double median_scaled_jacobian = 1.0;
+  std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
+  std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
   bool ok() const { return invalid == 0; }
 };
 

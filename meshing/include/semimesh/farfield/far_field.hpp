@@ -39,12 +39,14 @@ struct FarFieldStats {
   int pyramids = 0;
   int wall_triangles = 0;
   int box_triangles = 0;
+  int wall_layer_prisms = 0;
   double seconds_tetgen = 0;
 };
 
 struct FarField {
   mesh::Mesh mesh;  ///< the near field's mesh with the far field added
   FarFieldStats stats;
+  std::vector<nearfield::LayerStack> stacks;  ///< every layer element of the mesh: the near field's, then the wall layer's
 };
 
 /// The whole mesh: the near field's mesh with far-field nodes, pyramids (one on each quad of
@@ -59,9 +61,13 @@ struct FarField {
 /// Tetrahedron sizes grow from the local skin edge length towards the box size by TetGen's quality
 /// bound alone (-q radius_edge_ratio; no background size, which over-refined about 8 times on the
 /// NACA0012 case); `growth` grades the wall region and the box curves.
+/// With a wall layer (wall_layer_thickness > 0: a C-type near field, whose footprint_top gives the
+/// layer's tops over its footprint) the wall triangles carry prisms of that thickness (region
+/// "wall_layer", wall_layer.hpp): their tops bound the tetrahedra, the box faces start on the
+/// layer's top.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets).
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
-                         const std::vector<int>& box_surfaces, int wall_surface);
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0);
 
 }  // namespace semimesh::farfield

@@ -2,16 +2,22 @@
 // the skin it offers to the far field. This is the contract between the shell builder, the far
 // field, the high-order stages and the checks.
 //
-// Element convention (relied on by isoparametric splitting): every near-field prism has its
-// vertices 0,1,2 on the body (or wall) and 3,4,5 on the outer skin, 3+i being the offset of i; a
-// hex likewise has 0..3 on the body and 4..7 on the skin. The layer direction is therefore the
-// reference zeta direction of each element. The body triangle 0,1,2 is counter-clockwise seen from
-// the fluid, so the element has positive volume (Gmsh's reference prism).
+// Element convention (relied on by isoparametric splitting): every layer prism has its vertices
+// 0,1,2 on the body (or wall) and 3,4,5 on the outer skin, 3+i being the offset of i, so its
+// wall-normal direction is reference zeta and its body face is face 0. The body triangle 0,1,2 is
+// counter-clockwise seen from the fluid, so the element has positive volume (Gmsh's reference prism).
+// A junction hex (C-type) lies in the corner between the wing and the wall: its cross-section is
+// R-W-H-L (R on the root curve, W on the wing, L on the wall, H on the medial halo), vertices
+// (Gmsh order) R_a R_b W_b W_a L_a L_b H_b H_a: xi runs along the root, zeta is the wing-normal
+// direction (R->L, W->H; face R-W on the wing) and eta the wall-normal one (R->W, L->H; face R-L
+// on the wall). The near field records every such stack (LayerStack), so no later stage re-derives
+// which element is a layer, in which direction, from element shapes or indices.
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -22,6 +28,23 @@ namespace semimesh::nearfield {
 struct SkinFace {
   std::array<mesh::NodeId, 4> nodes{};
   int count = 3;
+};
+
+/// Which boundary layer a split direction belongs to: its number of layers and growth ratio.
+enum class LayerFamily { Wing, Wall };
+
+/// One wall-normal direction of a layer element: the reference axis (0 xi, 1 eta, 2 zeta) along
+/// which it is split, and whose layers (the first, thinnest one touches the face at -1 of that axis).
+struct LayerDirection {
+  int axis = 2;
+  LayerFamily family = LayerFamily::Wing;
+};
+
+/// A layer element of the near field and its wall-normal direction(s), in the order they are split
+/// (wing family first, then wall family). Prisms have one direction, junction hexes two.
+struct LayerStack {
+  std::size_t element = 0;
+  std::vector<LayerDirection> directions;
 };
 
 /// A warning about a place where the builder had to depart from what was asked (e.g. a locally
@@ -36,7 +59,13 @@ struct NearField {
   std::vector<SkinFace> skin;               ///< [faces] outer skin facing the far field
   std::vector<mesh::NodeId> footprint;      ///< closed loop (first != last) where the skin meets the wall
                                             ///< plane, counter-clockwise seen from the fluid side of the wall
-  std::vector<int> element_surface;         ///< [elements] CAD surface id of each element's body face
+  std::vector<mesh::NodeId> footprint_top;  ///< [footprint] C-type: the node at the wall-layer thickness above
+                                            ///< each footprint node (its halo point); empty for O-type
+  std::vector<LayerStack> stacks;           ///< every layer element of the mesh, with its direction(s) (the
+                                            ///< far field appends its wall-layer prisms)
+  std::vector<int> element_surface;         ///< [elements the shell built] CAD surface id of each one's body
+                                            ///< face (junction hexes: the wing surface of their R-W face)
+  int junction_hexes = 0;                   ///< C-type: hexes along the root loop(s)
   double thickness_min = 0.0;               ///< smallest layer thickness used (after local reduction)
   double thickness_max = 0.0;               ///< largest layer thickness used
   std::vector<Warning> warnings;

@@ -15,6 +15,7 @@
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/params/table.hpp"
 #include "semimesh/surface/size_field.hpp"
@@ -56,8 +57,17 @@ struct GeometryConfig {
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.
 struct NearFieldConfig {
-  std::string topology = "O";  ///< "O" (implemented), "C", "H" (rejected for now)
+  std::string topology = "O";  ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
   nearfield::ShellParams shell;
+  nearfield::JunctionParams junction;  ///< C: which body-wall curves are concave corners, supported angles
+};
+
+/// [wall_layer]: the wall's boundary layer (C topology): one prism layer of `thickness` on the
+/// wall, split like the wing's. thickness = 0: a slip wall (no wall layer, the O-type root).
+struct WallLayerConfig {
+  double thickness = 0.1;                   ///< delta_wall, model units
+  ho::LayerDistribution split;              ///< layers, ratio
+  std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
 };
 
 /// [boundary_layer]: splitting of the near-field elements into N layers.
@@ -69,6 +79,12 @@ struct BoundaryLayerConfig {
   /// each body vertex onto the segment, constant beyond its ends. Both keys or neither.
   std::optional<std::array<double, 6>> ratio_line;
   std::optional<double> ratio_end;
+  /// Instead of ratio or first_cell_height: the first cell's y+ at a Reynolds number based on
+  /// reference_length (unset: the chord), through a flat-plate skin-friction correlation
+  /// (y_plus_first_cell_height). Both y_plus and reynolds, or neither.
+  std::optional<double> y_plus;
+  std::optional<double> reynolds;
+  std::optional<double> reference_length;
 };
 
 /// [sizing]: the surface size field, and counts prescribed on the NACA wing's named curves.
@@ -84,12 +100,15 @@ struct OutputConfig {
   std::string directory = ".";   ///< resolved against the current directory
   std::string basename = "mesh";
   bool allow_invalid = false;    ///< write the mesh even when a check fails
+  bool pictures = false;         ///< SVG pictures beside the mesh (pictures.hpp)
+  double picture_station = 0.4;  ///< where the spanwise cut is, as a fraction of the span
 };
 
 struct Config {
   GeometryConfig geometry;
   NearFieldConfig nearfield;
   BoundaryLayerConfig boundary_layer;
+  WallLayerConfig wall_layer;
   SizingConfig sizing;
   farfield::FarFieldParams farfield;
   ho::CurvingParams highorder;
@@ -115,8 +134,26 @@ Config parse_config(const std::string& text, const std::string& source_name, con
 /// Reads and parses a file (see parse_config). Throws ConfigError when it cannot be read.
 Config load_config(const std::string& path, const std::vector<std::string>& overrides = {});
 
+/// Skin-friction coefficient of a turbulent flat plate at Reynolds number `reynolds`:
+/// Cf = 0.026 Re^(-1/7) (F. M. White, Fluid Mechanics, 7th ed., eq. 7.45, from the 1/7-power law).
+double flat_plate_skin_friction(double reynolds);
+
+/// First-cell height h giving `y_plus` on a plate of length `length` at Reynolds number `reynolds`
+/// (based on `length`): u_tau = U sqrt(Cf / 2), nu = U length / Re, h = y+ nu / u_tau
+/// = y+ length / (Re sqrt(Cf / 2)). Inverse: y_plus_of_height.
+double y_plus_first_cell_height(double y_plus, double reynolds, double length);
+double y_plus_of_height(double height, double reynolds, double length);
+
+/// The layer with first_cell_height set from y_plus and reynolds when they are given (`chord` is
+/// the reference length unless reference_length is set); unchanged otherwise.
+BoundaryLayerConfig resolve_y_plus(BoundaryLayerConfig layer, double chord);
+
 /// Ratio of the boundary layer: `ratio`, or the r solving h1 (r^N - 1) / (r - 1) = thickness when
 /// first_cell_height h1 is given.
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness);
+/// The same for the wall layer.
+double effective_wall_ratio(const WallLayerConfig& layer);
+/// Whether the run builds the C-type junction (topology "C" and a wall layer of thickness > 0).
+bool builds_junction(const Config& config);
 
 }  // namespace semimesh::pipeline

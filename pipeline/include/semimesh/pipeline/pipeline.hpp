@@ -60,6 +60,9 @@ struct LayerFigures {
   double first_cell_height_min = 0.0;
   double first_cell_height_max = 0.0;
   double max_first_layer_aspect = 0.0;
+  double first_cell_height_target = 0.0;  ///< from boundary_layer.y_plus (0: not targeted)
+  double y_plus_min = 0.0;                ///< y+ of first_cell_height_min / _max at the configured Reynolds number
+  double y_plus_max = 0.0;
 };
 
 /// Distance from the boundary faces to their CAD surfaces relative to reference_length (the
@@ -75,6 +78,8 @@ struct RunResult {
   mesh::Mesh mesh{1};
   std::vector<StageTiming> stages;
   std::map<std::string, std::size_t> elements_by_type;  ///< "tetrahedron" -> count, ...
+  std::map<std::string, std::size_t> elements_by_region;  ///< "wing_layer" -> count, ...
+  int junction_hexes = 0;                 ///< C-type: hexes along the root before splitting
   std::map<std::string, std::size_t> boundary_faces_by_group;
   std::size_t surface_triangles = 0;
   std::size_t surface_quads = 0;
@@ -83,7 +88,8 @@ struct RunResult {
   checks::ConformityResult conformity;
   checks::VolumeCheck volume;
   checks::ValidityResult validity;
-  LayerFigures layers;
+  LayerFigures layers;        ///< the wing's boundary layer
+  LayerFigures wall_layers;   ///< the wall's (C-type; layers = 1 and zeros without a wall layer)
   std::string node_placement;  ///< highorder.node_placement used by the curve stage; empty at order 1
   ho::CurvingStats curving;    ///< zeros at order 1
   farfield::FarFieldStats far_field;
@@ -93,6 +99,7 @@ struct RunResult {
   double expected_volume_tolerance = kExpectedVolumeTolerance;
   std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
   std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
+  std::vector<std::string> pictures;       ///< of written_files, the SVG pictures (output.pictures)
   double peak_memory_mb = 0.0;             ///< peak resident set size of the process (getrusage)
 
   bool volume_ok() const {

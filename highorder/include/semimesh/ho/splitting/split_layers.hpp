@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -58,6 +59,35 @@ struct SplitStats {
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,
                         const LayerDistribution& distribution, const RatioField& ratio = {},
                         SplitStats* stats = nullptr);
+
+/// A layer distribution with its optional per-vertex ratio field: one boundary layer (a family:
+/// e.g. the wing's, the wall's).
+struct SplitFamily {
+  LayerDistribution distribution;
+  RatioField ratio;
+};
+
+/// An element to split, along one reference direction (0 xi, 1 eta, 2 zeta; prisms: 2) or two
+/// (hexes: direction[1] >= 0, e.g. a root junction hex across both wall normals), each with the
+/// family (index into the families) whose layers it takes. A ratio field is allowed on the first
+/// direction only.
+struct LayerSplit {
+  std::size_t element = 0;
+  std::array<int, 2> direction{2, -1};
+  std::array<int, 2> family{0, 0};
+};
+
+/// Splits every listed element in one pass, each along its own direction(s): an element split in
+/// one direction into N pieces (the family's layers), in two into N_a x N_b pieces, ordered
+/// k_b N_a + k_a (k = 0 the body side of each direction). Every face cut by a split is cut the same
+/// way from both sides, so the pieces conform node for node at any order. A split element whose
+/// cut face is shared with an element that does not cut it the same way (not split, or split by
+/// another family or with other body-side vertices) is refused (std::invalid_argument naming both
+/// elements). `stats` gets one SplitStats per family (first-cell heights along its directions);
+/// (*first_piece)[e] is the output index of input element e's first piece (its copy when not split).
+mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
+                        std::vector<std::size_t>* first_piece);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a

@@ -1,0 +1,17 @@
+// Dropping the nodes no element uses (e.g. the interior nodes of the coarse prisms that
+// ho::split_layers replaced), so neither the mesh in memory nor a written file carries them.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+namespace semimesh::mesh {
+
+/// Number of nodes that no element or boundary face references.
+std::size_t count_unreferenced_nodes(const Mesh& mesh);
+
+/// A mesh with the same elements (same order, same shapes, same canonical node lists up to the
+/// renumbering), boundary faces, groups and regions, whose nodes are only the referenced ones, kept in their
+/// old relative order with their CAD attachments. Edge and face entities are rebuilt in element order.
+Mesh without_unreferenced_nodes(const Mesh& mesh);
+
+}  // namespace semimesh::mesh

@@ -1,0 +1,135 @@
+#include "zlib_stream.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <future>
+#include <stdexcept>
+#include <thread>
+
+namespace semimesh::io {
+namespace {
+
+constexpr std::size_t kChunkBytes = 1 << 20;
+
+std::runtime_error zlib_error(const char* what, int code) {
+  return std::runtime_error(std::string("zlib: ") + what + " failed (code " + std::to_string(code) + ")");
+}
+
+std::size_t num_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+int strategy(Content content) { return content == Content::Doubles ? Z_RLE : Z_DEFAULT_STRATEGY; }
+
+/// Raw deflate of one chunk, ended by a sync flush (more chunks follow) or the final block.
+std::string deflate_chunk(const std::string& in, bool last, Content content) {
+  z_stream z{};
+  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, -15, 8, strategy(content));
+  if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
+  std::string out(deflateBound(&z, in.size()) + 16, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  rc = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
+  const bool done = last ? rc == Z_STREAM_END : rc == Z_OK && z.avail_in == 0;
+  out.resize(out.size() - z.avail_out);
+  deflateEnd(&z);
+  if (!done) throw zlib_error("deflate", rc);
+  return out;
+}
+
+/// One whole zlib stream.
+std::string compress_block(const std::string& in, Content content) {
+  z_stream z{};
+  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15, 8, strategy(content));
+  if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
+  std::string out(deflateBound(&z, in.size()), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  rc = deflate(&z, Z_FINISH);
+  out.resize(out.size() - z.avail_out);
+  deflateEnd(&z);
+  if (rc != Z_STREAM_END) throw zlib_error("deflate", rc);
+  return out;
+}
+
+/// f(i) for i in [0, n), spread over the hardware threads; results in order.
+template <typename F>
+std::vector<std::string> parallel_map(std::size_t n, F f) {
+  std::vector<std::string> out(n);
+  const std::size_t threads = std::min(num_threads(), n);
+  std::vector<std::future<void>> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.push_back(std::async(std::launch::async, [&, t] {
+      for (std::size_t i = t; i < n; i += threads) out[i] = f(i);
+    }));
+  for (std::size_t i = 0; i < n; i += threads) out[i] = f(i);
+  for (auto& w : workers) w.get();  // rethrows a worker's exception
+  return out;
+}
+
+}  // namespace
+
+void ZlibStream::add(const void* data, std::size_t bytes) {
+  if (finished_) throw std::logic_error("ZlibStream::add after finish");
+  const char* c = static_cast<const char*>(data);
+  while (bytes) {
+    const std::size_t take = std::min(bytes, kChunkBytes - staged_.size());
+    staged_.append(c, take);
+    c += take, bytes -= take;
+    if (staged_.size() == kChunkBytes) {
+      pending_.push_back(std::move(staged_));
+      staged_.clear();
+      if (pending_.size() == num_threads()) deflate_pending(false);
+    }
+  }
+}
+
+void ZlibStream::deflate_pending(bool last) {
+  const auto parts = parallel_map(pending_.size(), [&](std::size_t i) {
+    return deflate_chunk(pending_[i], last && i + 1 == pending_.size(), content_);
+  });
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    body_ += parts[i];
+    adler_ = adler32_combine(adler_, adler32(1, reinterpret_cast<const Bytef*>(pending_[i].data()),
+                                             static_cast<uInt>(pending_[i].size())),
+                             static_cast<z_off_t>(pending_[i].size()));
+  }
+  pending_.clear();
+}
+
+const std::string& ZlibStream::finish() {
+  if (finished_) return out_;
+  pending_.push_back(std::move(staged_));  // possibly empty: it carries the final block
+  deflate_pending(true);
+  out_ = std::string("\x78\x01", 2) + body_;  // zlib header: deflate, 32 KiB window, fastest level
+  for (int shift = 24; shift >= 0; shift -= 8) out_ += static_cast<char>((adler_ >> shift) & 0xff);
+  body_.clear();
+  finished_ = true;
+  return out_;
+}
+
+std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
+  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
+}
+
+void write_base64(AtomicFile& out, const std::string& bytes) {
+  static const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string chunk;
+  chunk.reserve(1 << 16);
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  const std::size_t n = bytes.size();
+  for (std::size_t i = 0; i < n; i += 3) {
+    const unsigned v = (b[i] << 16) | ((i + 1 < n ? b[i + 1] : 0) << 8) | (i + 2 < n ? b[i + 2] : 0);
+    chunk += alphabet[(v >> 18) & 63];
+    chunk += alphabet[(v >> 12) & 63];
+    chunk += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
+    chunk += i + 2 < n ? alphabet[v & 63] : '=';
+    if (chunk.size() >= (1 << 16) - 4) out.write(chunk), chunk.clear();
+  }
+  out.write(chunk);
+}
+
+}  // namespace semimesh::io

@@ -1,0 +1,32 @@
+// The wall's boundary layer (C-type near field): prisms of thickness delta on the far field's wall
+// triangles, their tops over the near field's footprint being its halo points, and the box faces
+// lifted so that they start on the layer's top (the box's side faces perpendicular to the wall).
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/nearfield/near_field.hpp"
+
+#include <array>
+#include <vector>
+
+namespace semimesh::farfield {
+
+using Triangle = std::array<mesh::NodeId, 3>;
+
+struct WallLayer {
+  std::vector<Triangle> tops;                 ///< [prisms] the layer's top faces, normal away from the wall
+  std::vector<nearfield::LayerStack> stacks;  ///< [prisms] each prism, split along zeta in the wall's layers
+};
+
+/// Adds to `mesh` the wall-layer prisms (region "wall_layer") on `wall` (triangles facing out of
+/// the domain, i.e. into the wall), their tops over the near field's footprint being
+/// near.footprint_top, the "farfield" quads where the layer meets the box, and lifts the box nodes:
+/// a node at height d above the wall (box height D) moves to delta + d (1 - delta / D) on its CAD
+/// entity; `box` triangles referring to nodes on the wall then refer to their tops. Throws
+/// FarFieldError naming the surface when a box face meeting the wall is not perpendicular to it,
+/// or the footprint has no halo (near.footprint_top).
+WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
+                           double thickness, const std::vector<Triangle>& wall, const nearfield::NearField& near,
+                           std::vector<Triangle>& box, mesh::Mesh& mesh);
+
+}  // namespace semimesh::farfield

@@ -1,0 +1,341 @@
+#include "semimesh/nearfield/c_shell.hpp"
+
+#include "semimesh/ho/validity.hpp"
+#include "semimesh/nearfield/body_mesh.hpp"
+#include "semimesh/nearfield/error.hpp"
+#include "semimesh/nearfield/junction_geometry.hpp"
+#include "semimesh/nearfield/node_normals.hpp"
+
+#include "labels.hpp"
+#include "shell_common.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace semimesh::nearfield {
+namespace {
+
+using mesh::CadAttachment;
+using mesh::NodeId;
+
+void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
+                           double wall_thickness) {
+  auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
+  if (const auto bad = params::violation(j, junction_keys(), "nearfield")) fail(*bad);
+  if (!(j.min_angle_deg < j.max_angle_deg && j.max_angle_deg <= j.concave_below_deg))
+    fail("junction angles must satisfy junction_min_angle (" + number_label(j.min_angle_deg) +
+         ") < junction_max_angle (" + number_label(j.max_angle_deg) + ") <= concave_angle (" +
+         number_label(j.concave_below_deg) + ")");
+  if (!(wall_thickness > 0.0) || !std::isfinite(wall_thickness))
+    fail("the wall layer's thickness must be a finite number > 0 for a C-type junction, got " +
+         number_label(wall_thickness));
+  if (roles.wall_surface < 0) fail("a C-type near field needs a wall surface");
+  if (!model.surface(roles.wall_surface).is_planar())
+    fail("the wall " + surface_label(model, roles.wall_surface) +
+         " is not planar; the C-type near field builds its wall layer on a planar wall only (use topology \"O\")");
+}
+
+// The root curves: every body-wall curve, each of which must be a concave corner (from the CAD,
+// concave_wall_curves) of a supported angle. Returns curve -> its body surface.
+std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j) {
+  std::map<int, int> surface_of;
+  for (const WallCurve& w : concave_wall_curves(model, roles.body_surfaces, roles.wall_surface, j.concave_below_deg)) {
+    const double worst = w.min_angle_deg < j.min_angle_deg ? w.min_angle_deg : w.max_angle_deg;
+    if (w.min_angle_deg < j.min_angle_deg || w.max_angle_deg > j.max_angle_deg)
+      throw NearFieldError("near field: " + curve_label(model, w.curve) + " between " +
+                           surface_label(model, w.body_surface) + " and the wall meets the wall at " +
+                           number_label(worst) + " degrees (seen from the fluid); the junction block supports " +
+                           number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) + " degrees");
+    surface_of[w.curve] = w.body_surface;
+  }
+  for (const WallCurve& w : wall_curves(model, roles.body_surfaces, roles.wall_surface))
+    if (!surface_of.count(w.curve))
+      throw NearFieldError(
+          "near field: " + curve_label(model, w.curve) + " between " + surface_label(model, w.body_surface) +
+          " and the wall meets the wall at up to " + number_label(w.max_angle_deg) +
+          " degrees (seen from the fluid): not a concave corner (below " + number_label(j.concave_below_deg) +
+          " degrees); the junction block needs the whole root loop concave");
+  return surface_of;
+}
+
+// The curve leaving a root vertex up the body: the one of its curves that does not bound the wall.
+int spanwise_curve(const cad::Model& model, int vertex, int wall) {
+  std::vector<int> found;
+  for (int c : model.curves_of_vertex(vertex)) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::none_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; }))
+      found.push_back(c);
+  }
+  if (found.size() != 1)
+    throw NearFieldError("near field: the root vertex '" + model.vertex(vertex).name + "' (id " +
+                         std::to_string(vertex) + ") has " + std::to_string(found.size()) +
+                         " curves leaving the wall; the junction block needs exactly one");
+  return found.front();
+}
+
+struct JunctionNode {
+  Vec3 root, halo, strip_top, wall_foot;
+  CadAttachment strip_top_cad, wall_foot_cad;
+};
+
+struct Frame {
+  Vec3 normal;  // of the wall, into the fluid
+  Vec3 origin;  // a point of the wall
+  double height(const Vec3& x) const { return (x - origin).dot(normal); }
+};
+
+// The lift of the wing mesh: a node at height d moves along its CAD entity to height
+// strip + d (1 - strip / tip), so the root row lands on the strip top and the tip stays.
+Vec3 lift_node(const cad::Model& model, const Frame& wall, double strip, double tip, const Vec3& x,
+               CadAttachment& cad) {
+  const double d = wall.height(x);
+  if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
+  const double target = strip + d * (1.0 - strip / tip);
+  Vec3 p = x;
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const Vec3 aim = p + (target - wall.height(p)) * wall.normal;
+    if (cad.kind == CadAttachment::Surface) {
+      const auto proj = model.surface(cad.entity).project(aim, cad::Vec2(cad.u, cad.v));
+      p = proj.point, cad.u = proj.uv.x(), cad.v = proj.uv.y();
+    } else {
+      const auto proj = model.curve(cad.entity).project(aim, cad.u);
+      p = proj.point, cad.u = proj.t;
+    }
+  }
+  return p;
+}
+
+// Outward direction in the wall plane of a root segment a -> b whose wing triangle has normal n.
+Vec3 segment_outward(const Vec3& a, const Vec3& b, const Vec3& n_tri, const Vec3& n_wall) {
+  Vec3 m = (b - a).cross(n_wall).normalized();
+  return m.dot(n_tri) >= 0.0 ? m : Vec3(-m);
+}
+
+bool hex_corners_valid(const std::array<Vec3, 8>& x) {
+  Eigen::MatrixX3d nodes(8, 3);
+  for (int i = 0; i < 8; ++i) nodes.row(i) = x[i].transpose();
+  return ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, nodes).valid;
+}
+
+// The root loop: the body mesh's open edges, all on the wall, chained in their direction
+// (counter-clockwise seen from the fluid); body node ids.
+std::vector<int> root_loop(const cad::Model& model, const BodyMesh& body, const std::vector<std::pair<int, int>>& open,
+                           int wall) {
+  for (const auto& [a, b] : open)
+    for (int v : {a, b})
+      if (!detail::on_wall(model, body.cad[v], wall))
+        throw NearFieldError("near field: the body mesh is open at " + point_label(body.points[v]) + " on " +
+                             surface_label(model, body.node_surface[v]) + " away from the wall " +
+                             surface_label(model, wall) + "; list every surface of the body");
+  std::vector<int> loop;
+  for (NodeId v : detail::footprint_loop(body, open, 0)) loop.push_back(static_cast<int>(v));
+  if (loop.size() < 3)
+    throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, wall));
+  return loop;
+}
+
+// Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
+// plane away from the body (bisecting the two root segments' outward normals).
+JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
+                                 const std::map<int, int>& root_surface, const BodyMesh& body, int r,
+                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall) {
+  JunctionNode j;
+  j.root = body.points[r];
+  j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
+  const cad::Surface& wall_face = model.surface(roles.wall_surface);
+  const auto foot = wall_face.project(j.halo - delta_wall * wall.normal);
+  j.wall_foot = foot.point;
+  j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
+  const CadAttachment& at = body.cad[r];
+  if (at.kind == CadAttachment::Vertex) {
+    const int c = spanwise_curve(model, at.entity, roles.wall_surface);
+    const auto p = model.curve(c).project(j.halo);
+    j.strip_top = p.point;
+    j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
+  } else {
+    const auto it = root_surface.find(at.entity);
+    if (at.kind != CadAttachment::Curve || it == root_surface.end())
+      throw NearFieldError("near field: the root node at " + point_label(j.root) + " is not on a body-wall curve");
+    const cad::Surface& face = model.surface(it->second);
+    const auto p = face.project(j.halo, face.project(j.root).uv);
+    if (!p.inside)
+      throw NearFieldError("near field: the top of the root strip above " + point_label(j.root) + " falls off " +
+                           surface_label(model, it->second) + " (wall layer thickness " + number_label(delta_wall) +
+                           ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
+    j.strip_top = p.point;
+    j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
+  }
+  if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
+    throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
+                         surface_label(model, body.node_surface[r]) + " has no height");
+  return j;
+}
+
+// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
+// the strip is too tall for the body or a triangle would fold.
+void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
+                     const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
+  double tip = 0.0, strip = 0.0;
+  for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
+  for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
+  if (!(strip < 0.5 * tip))
+    throw NearFieldError("near field: the root strip (height " + number_label(strip) +
+                         ") for the wall layer thickness " + number_label(delta_wall) +
+                         " takes more than half of the body's height " + number_label(tip) +
+                         " above the wall; use a thinner wall layer");
+  const std::vector<Vec3> unlifted = body.points;
+  std::vector<char> on_root(body.num_nodes(), 0);
+  for (int r : loop) on_root[r] = 1;
+  for (int v = 0; v < body.num_nodes(); ++v)
+    if (!on_root[v]) body.points[v] = lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
+  for (const auto& t : body.triangles) {
+    const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
+    const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
+    if (!(before.dot(after) > 0.0))
+      throw NearFieldError(
+          "near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
+          ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
+          surface_label(model, body.node_surface[t[0]]) +
+          "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
+  }
+}
+
+}  // namespace
+
+const params::Table<JunctionParams>& junction_keys() {
+  static const params::Table<JunctionParams> table = {
+      params::real("concave_angle", &JunctionParams::concave_below_deg, "(0, 180]",
+                   "C: a body-wall curve whose dihedral angle seen from the fluid stays below this (degrees) is a "
+                   "concave corner"),
+      params::real("junction_min_angle", &JunctionParams::min_angle_deg, "(0, 180)",
+                   "C: smallest supported dihedral angle of a root curve, degrees"),
+      params::real("junction_max_angle", &JunctionParams::max_angle_deg, "(0, 180]",
+                   "C: largest supported dihedral angle of a root curve, degrees"),
+  };
+  return table;
+}
+
+NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                        const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
+  detail::check_shell_params(model, roles, params);
+  check_junction_params(model, roles, junction, wall_thickness);
+  const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction);
+  BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
+  const int count = body.num_nodes();
+  const auto open = open_edges(body);
+  const cad::Surface& wall_face = model.surface(roles.wall_surface);
+  const cad::Vec2 wall_mid(0.5 * (wall_face.bounds()[0].lo + wall_face.bounds()[0].hi),
+                           0.5 * (wall_face.bounds()[1].lo + wall_face.bounds()[1].hi));
+  const Frame wall{wall_face.normal(wall_mid), wall_face.point(wall_mid)};
+  const double delta_wing = params.thickness, delta_wall = wall_thickness;
+
+  // Junction geometry per root node, then the wing mesh lifted onto the strip tops.
+  const std::vector<int> loop = root_loop(model, body, open, roles.wall_surface);
+  const int n = static_cast<int>(loop.size());
+  std::map<std::pair<int, int>, int> triangle_of_edge;
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      triangle_of_edge[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+  auto outward = [&](int a, int b) {  // of the root segment a -> b
+    const auto& t = body.triangles[triangle_of_edge.at({a, b})];
+    const Vec3 n_tri =
+        (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
+    return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
+  };
+  std::vector<JunctionNode> nodes(n);
+  for (int i = 0; i < n; ++i) {
+    const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
+    nodes[i] = place_junction_node(model, roles, root_surface, body, r,
+                                   (outward(prev, r) + outward(r, next)).normalized(), wall, delta_wing, delta_wall);
+  }
+  std::vector<CadAttachment> root_cad(n);
+  for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
+  lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
+
+  // The wing layer on the lifted mesh, the strip tops' offsets pinned at the halo.
+  const auto neighbours = node_neighbours(body);
+  NormalOptions normal_options;
+  normal_options.smoothing_passes = params.normal_smoothing_passes;
+  std::vector<Vec3> normals = node_normals(body, std::vector<Vec3>(count, Vec3::Zero()), normal_options);
+  detail::OffsetConstraints constraints;
+  constraints.pinned.assign(count, 0);
+  constraints.pinned_outer.assign(count, Vec3::Zero());
+  for (int i = 0; i < n; ++i) {
+    constraints.pinned[loop[i]] = 1;
+    constraints.pinned_outer[loop[i]] = nodes[i].halo;
+    normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
+  }
+  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, body, neighbours, normals, constraints, params);
+
+  NearField field;
+  field.warnings = offsets.warnings;
+  mesh::Mesh& m = field.mesh;
+  m.reserve(ho::Shape::Prism, body.triangles.size() + n);
+  const int layer_region = m.region_index("wing_layer"), junction_region = m.region_index("junction");
+  for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
+  const auto offset = static_cast<NodeId>(count);
+  for (int i = 0; i < count; ++i) m.add_node(offsets.outer[i]);
+  auto id = [](int v) { return static_cast<NodeId>(v); };
+  for (std::size_t t = 0; t < body.triangles.size(); ++t) {
+    const auto& v = body.triangles[t];
+    m.add_element(ho::Shape::Prism,
+                  {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+                  layer_region);
+    field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
+    field.element_surface.push_back(body.triangle_surface[t]);
+    m.add_boundary_face("wing", ho::Shape::Triangle, {id(v[0]), id(v[2]), id(v[1])});
+    field.skin.push_back({{id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset, mesh::kNoNode}, 3});
+  }
+
+  // Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a; a -> b along the loop or against it, whichever
+  // gives a positive volume.
+  std::vector<NodeId> root_id(n), foot_id(n);
+  for (int i = 0; i < n; ++i) {
+    root_id[i] = m.add_node(nodes[i].root, root_cad[i]);
+    foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
+  }
+  auto hex_of = [&](int a, int b) {
+    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]),          id(loop[a]),
+                                 foot_id[a], foot_id[b], id(loop[b]) + offset, id(loop[a]) + offset};
+  };
+  auto corners = [&](const std::array<NodeId, 8>& h) {
+    std::array<Vec3, 8> x;
+    for (int k = 0; k < 8; ++k) x[k] = m.node(h[k]);
+    return x;
+  };
+  const bool along = hex_corners_valid(corners(hex_of(0, 1)));
+  for (int i = 0; i < n; ++i) {
+    const int a = along ? i : (i + 1) % n, b = along ? (i + 1) % n : i;
+    const std::array<NodeId, 8> h = hex_of(a, b);
+    if (!hex_corners_valid(corners(h)))
+      throw NearFieldError("near field: the junction hex on the root segment " + point_label(nodes[a].root) + " - " +
+                           point_label(nodes[b].root) + " on " + surface_label(model, body.node_surface[loop[a]]) +
+                           " would be inverted: the root loop turns too sharply there for thickness " +
+                           number_label(delta_wing) + " and wall layer thickness " + number_label(delta_wall) +
+                           "; use thinner layers or a finer root mesh");
+    m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), junction_region);
+    field.stacks.push_back(
+        {field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
+    field.element_surface.push_back(body.node_surface[loop[a]]);
+    m.add_boundary_face("wing", ho::Shape::Quadrilateral, {h[0], h[3], h[2], h[1]});
+    m.add_boundary_face("wall", ho::Shape::Quadrilateral, {h[0], h[1], h[5], h[4]});
+    ++field.junction_hexes;
+  }
+  for (int i = 0; i < n; ++i) {
+    field.footprint.push_back(foot_id[i]);
+    field.footprint_top.push_back(id(loop[i]) + offset);
+  }
+
+  field.thickness_min = params.thickness;
+  field.thickness_max = 0.0;
+  for (int i = 0; i < count; ++i) {
+    field.thickness_min = std::min(field.thickness_min, offsets.thickness[i]);
+    field.thickness_max = std::max(field.thickness_max, offsets.thickness[i]);
+  }
+  return field;
+}
+
+}  // namespace semimesh::nearfield

@@ -1,0 +1,95 @@
+#include "semimesh/nearfield/junction_geometry.hpp"
+
+#include "semimesh/nearfield/error.hpp"
+
+#include "labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semimesh::nearfield {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Dihedral angle at a point of a curve between a face (fluid normal n_face, the direction `into`
+// leading from the curve into the face) and the wall (fluid normal n_wall), seen from the fluid.
+double dihedral_deg(const Vec3& n_face, const Vec3& into, const Vec3& n_wall) {
+  const double opening = std::acos(std::clamp(-n_wall.dot(n_face), -1.0, 1.0)) * 180.0 / kPi;
+  return into.dot(n_wall) >= 0.0 ? opening : 360.0 - opening;
+}
+
+}  // namespace
+
+std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<int>& body_surfaces, int wall,
+                                   int samples) {
+  std::vector<WallCurve> found;
+  const cad::Surface& wall_face = model.surface(wall);
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    const bool on_wall =
+        std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; });
+    if (!on_wall) continue;
+    for (const cad::SurfaceUse& use : uses) {
+      if (!std::count(body_surfaces.begin(), body_surfaces.end(), use.surface)) continue;
+      const cad::Curve& curve = model.curve(c);
+      const cad::Surface& face = model.surface(use.surface);
+      WallCurve w{c, use.surface, 360.0, 0.0};
+      const auto bounds = curve.bounds();
+      for (int k = 0; k < samples; ++k) {
+        const double t = bounds.lo + (k + 0.5) / samples * bounds.length();
+        const cad::CurveDerivatives d = curve.derivatives(t);
+        const Vec3 n_face = face.normal(face.project(d.p).uv);
+        const Vec3 n_wall = wall_face.normal(wall_face.project(d.p).uv);
+        // The face lies on the left of its loop's walking direction seen from the fluid.
+        const Vec3 walk = (use.forward ? 1.0 : -1.0) * d.d1.normalized();
+        const double angle = dihedral_deg(n_face, n_face.cross(walk), n_wall);
+        w.min_angle_deg = std::min(w.min_angle_deg, angle);
+        w.max_angle_deg = std::max(w.max_angle_deg, angle);
+      }
+      found.push_back(w);
+    }
+  }
+  return found;
+}
+
+std::vector<WallCurve> concave_wall_curves(const cad::Model& model, const std::vector<int>& body_surfaces, int wall,
+                                           double concave_below_deg) {
+  std::vector<WallCurve> concave;
+  for (const WallCurve& w : wall_curves(model, body_surfaces, wall))
+    if (w.max_angle_deg < concave_below_deg) concave.push_back(w);
+  return concave;
+}
+
+NearestPoint nearest_on_surfaces(const cad::Model& model, const std::vector<int>& surfaces, const Vec3& x) {
+  NearestPoint best;
+  for (int s : surfaces) {
+    const cad::SurfaceProjection p = model.surface(s).project(x);
+    if (p.inside && p.distance < best.distance) best = {p.distance, p.point, s};
+  }
+  return best;
+}
+
+Vec3 medial_halo(const cad::Model& model, const std::vector<int>& body_surfaces, const Vec3& root, const Vec3& e,
+                 const Vec3& n_wall, double wing_offset, double wall_offset) {
+  const Vec3 base = root + wall_offset * n_wall;
+  const double tolerance = 1e-13 * std::max(1.0, wing_offset);
+  double a = wing_offset;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const Vec3 h = base + a * e;
+    const NearestPoint foot = nearest_on_surfaces(model, body_surfaces, h);
+    if (foot.surface < 0) break;
+    const double residual = foot.distance - wing_offset;
+    // The projections' own accuracy bounds what the last iterations can gain.
+    if (std::abs(residual) < (iteration < 40 ? tolerance : 1e3 * tolerance)) return h;
+    // d(distance)/da = (unit gradient of the distance) . e; damped when the gradient turns away.
+    const double slope = (h - foot.point).normalized().dot(e);
+    if (!(slope > 0.05)) break;
+    a = std::clamp(a - residual / slope, 0.5 * a, 2.0 * a);
+  }
+  throw NearFieldError("near field: no medial halo point at " + number_label(wing_offset) + " from the body and " +
+                       number_label(wall_offset) + " from the wall above the root point " + point_label(root) +
+                       "; the wing and the wall meet at too sharp or too open an angle there");
+}
+
+}  // namespace semimesh::nearfield

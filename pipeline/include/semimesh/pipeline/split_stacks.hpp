@@ -1,0 +1,33 @@
+// Splitting the near field's layer stacks (near_field.hpp) into their boundary layers in one pass
+// (ho::split_layers): every element along its own direction(s) with its family's layers (wing
+// prisms along zeta into the wing's layers, wall prisms into the wall's, junction hexes across
+// both), so every face shared by two stacks is cut the same way.
+#pragma once
+
+#include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/mesh/mesh.hpp"
+#include "semimesh/nearfield/near_field.hpp"
+
+#include <vector>
+
+namespace semimesh::pipeline {
+
+struct FamilySplit {
+  ho::LayerDistribution distribution;
+  ho::RatioField ratio;  ///< optional, per vertex (see split_layers.hpp)
+};
+
+struct StackSplit {
+  mesh::Mesh mesh;
+  /// [stacks] output index of each stack's first-layer piece (the one touching its body face in
+  /// every direction)
+  std::vector<std::size_t> first_layer;
+  ho::SplitStats wing, wall;  ///< first-cell figures per family (zero when nothing of it was split)
+};
+
+/// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
+/// differently, naming both elements.
+StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
+                        const FamilySplit& wing, const FamilySplit& wall);
+
+}  // namespace semimesh::pipeline

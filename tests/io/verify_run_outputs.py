@@ -1,0 +1,117 @@
+"""The files `semimesh run` writes, checked by independent readers and the solvers' own rules.
+
+Runs the CLI on a config at one order, then:
+  - Nektar++ (compressed, and plain when asked): nektar_rules.py finds no violation of Nektar++'s
+    load-time rules, and both encodings hold the same mesh; only the curved edges (the wing's,
+    not the straight far field's) have a CURVED entry;
+  - MSH: gmsh reads the binary file with the same nodes, elements and physical groups as the ASCII
+    one; every node gmsh reads is used by an element (no orphan nodes); the ASCII file meets PyFR's
+    reader rules (pyfr_rules.py) up to order 4, and a copy with the old per-dimension physical tags
+    ("3 1 fluid" beside "2 1 ...") does not;
+  - VTU: VTK reads the compressed binary file with the same points, cells and cell data as ASCII.
+
+usage: verify_run_outputs.py --exe SEMIMESH --config CONFIG --workdir DIR --order P [--all-formats]
+                             [--set key=value ...]
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import nektar_rules
+import pyfr_rules
+from sample_map import Failures
+
+
+def gmsh_content(path):
+    import gmsh
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    types, etags, enodes = gmsh.model.mesh.getElements()
+    groups = sorted((d, t, gmsh.model.getPhysicalName(d, t)) for d, t in gmsh.model.getPhysicalGroups())
+    return list(tags), list(coords), {int(t): (list(a), list(b)) for t, a, b in zip(types, etags, enodes)}, groups
+
+
+def vtu_arrays(path):
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    g = reader.GetOutput()
+    cd = g.GetCellData()
+    out = {"points": vtk_to_numpy(g.GetPoints().GetData()).copy(),
+           "connectivity": vtk_to_numpy(g.GetCells().GetConnectivityArray()).copy(),
+           "offsets": vtk_to_numpy(g.GetCells().GetOffsetsArray()).copy(),
+           "types": vtk_to_numpy(g.GetCellTypesArray()).copy()}
+    for k in range(cd.GetNumberOfArrays()):
+        out[cd.GetArrayName(k)] = vtk_to_numpy(cd.GetArray(k)).copy()
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--config", required=True)
+    ap.add_argument("--workdir", required=True)
+    ap.add_argument("--order", type=int, required=True)
+    ap.add_argument("--all-formats", action="store_true")
+    ap.add_argument("--set", action="append", default=[])
+    a = ap.parse_args()
+    formats = ["msh41", "msh41-binary", "vtu", "vtu-ascii", "nektar", "nektar-xml"] if a.all_formats else \
+        ["msh41-binary", "nektar"]
+    shutil.rmtree(a.workdir, ignore_errors=True)
+    cmd = [a.exe, "run", a.config, "-o", a.workdir, "--set", f"highorder.order={a.order}",
+           "--set", "output.formats=[" + ",".join(f'"{f}"' for f in formats) + "]"]
+    for s in a.set:
+        cmd += ["--set", s]
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    if run.returncode != 0:
+        print(run.stdout[-3000:], run.stderr[-3000:])
+        sys.exit(f"semimesh run failed with code {run.returncode}")
+    path = lambda name: os.path.join(a.workdir, name)
+    f = Failures()
+
+    nek = nektar_rules.read(path("coarse.xml"))
+    bad = nektar_rules.check(nek)
+    f.check(not bad, f"coarse.xml breaks Nektar++'s rules: {bad[:5]} ({len(bad)} in all)")
+    curved = sum(1 for kind, _ in nek.curves if kind == "E")
+    f.check(0 < curved < len(nek.edges), f"{curved} of {len(nek.edges)} edges curved: the straight far field "
+                                         "needs no CURVED entry, the wing does")
+    if a.all_formats:
+        f.check(nektar_rules.read(path("coarse.xml")).same_as(nektar_rules.read(path("coarse.plain.xml"))),
+                "compressed and plain Nektar++ files differ")
+
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    binary = gmsh_content(path("coarse.bin.msh" if a.all_formats else "coarse.msh"))
+    used = {int(n) for _, nodes in binary[2].values() for n in nodes}
+    f.check(used == {int(t) for t in binary[0]}, f"{len(set(map(int, binary[0])) - used)} node(s) used by no element")
+    if a.all_formats:
+        f.check(gmsh_content(path("coarse.msh")) == binary, "binary MSH differs from ASCII MSH in gmsh")
+    gmsh.finalize()
+
+    if a.all_formats:
+        import numpy as np
+        z, text = vtu_arrays(path("coarse.vtu")), vtu_arrays(path("coarse.ascii.vtu"))
+        f.check(z.keys() == text.keys() and all(np.array_equal(z[k], text[k]) for k in z),
+                "compressed VTU differs from ASCII VTU in VTK")
+        if a.order <= 4:
+            bad = pyfr_rules.check(path("coarse.msh"))
+            f.check(not bad, f"coarse.msh breaks PyFR's reader rules: {bad}")
+            with open(path("coarse.msh")) as fh:
+                text = fh.read()
+            old = re.sub(r'\n3 \d+ "', '\n3 1 "', text, count=1)  # the old writer's volume tag
+            with open(path("old_tags.msh"), "w") as fh:
+                fh.write(old)
+            f.check(any("Duplicate physical entity ID" in b for b in pyfr_rules.check(path("old_tags.msh"))),
+                    "PyFR's rules accept duplicate physical tags")
+    f.finish(f"verify_run_outputs order {a.order}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,289 @@
+// The C-type near field on the analytic NACA wings: the junction geometry (halo distances to the
+// CAD, strip tops on the wing, wall feet on the wall), the validity of every element, the shared
+// faces between the junction hexes and the wing prisms, the bad-input errors.
+#include "semimesh/cad/model.hpp"
+#include "semimesh/ho/validity.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/error.hpp"
+#include "semimesh/nearfield/junction_geometry.hpp"
+#include "semimesh/surface/model_surfaces.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+namespace semimesh::nearfield {
+namespace {
+
+using cad::Vec3;
+using mesh::NodeId;
+
+struct WingCase {
+  std::unique_ptr<cad::Model> model;
+  surface::SurfaceMeshes meshes;
+  BodyRoles roles;
+};
+
+WingCase wing_case(const mock_cad::NacaWingParams& wing) {
+  WingCase c;
+  c.model = mock_cad::make_naca_wing(wing);
+  surface::SizeParams size;
+  size.max_size = 0.4;
+  size.min_size = 0.01;
+  size.curvature_segments = 2.0;
+  size.gradation = 1.3;
+  size.le_size = 0.04;
+  size.te_size = 0.04;
+  const surface::SizeField field(*c.model, size);
+  c.meshes = surface::mesh_model_surfaces(*c.model, field);
+  for (const std::string name : {"upper", "lower", "te_base", "tip"})
+    if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
+  c.roles.wall_surface = c.model->find_surface("wall").value();
+  return c;
+}
+
+mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double taper = 1.0, double sweep = 0.0) {
+  mock_cad::NacaWingParams p;
+  p.code = code;
+  p.sharp_te = sharp;
+  p.taper = taper;
+  p.sweep_deg = sweep;
+  p.span = 1.5;
+  return p;
+}
+
+ShellParams shell(double thickness) {
+  ShellParams p;
+  p.thickness = thickness;
+  return p;
+}
+
+// Distance from x to the wing's CAD by dense sampling of every body surface's parameter box and a
+// local refinement by golden sections along both parameters (independent of cadapi's projection).
+double sampled_distance(const cad::Surface& s, const Vec3& x) {
+  const auto b = s.bounds();
+  const int n = 400;
+  double best = 1e300;
+  cad::Vec2 at = cad::Vec2::Zero();
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const cad::Vec2 uv(b[0].lo + b[0].length() * i / n, b[1].lo + b[1].length() * j / 40);
+      if (!s.contains(uv)) continue;
+      const double d = (s.point(uv) - x).norm();
+      if (d < best) best = d, at = uv;
+    }
+  // Coordinate descent with shrinking steps.
+  double du = b[0].length() / n, dv = b[1].length() / 40;
+  for (int k = 0; k < 200; ++k) {
+    bool moved = false;
+    for (const cad::Vec2& step : {cad::Vec2(du, 0), cad::Vec2(-du, 0), cad::Vec2(0, dv), cad::Vec2(0, -dv)}) {
+      const cad::Vec2 uv = at + step;
+      if (uv.x() < b[0].lo || uv.x() > b[0].hi || uv.y() < b[1].lo || uv.y() > b[1].hi || !s.contains(uv)) continue;
+      const double d = (s.point(uv) - x).norm();
+      if (d < best) best = d, at = uv, moved = true;
+    }
+    if (!moved) du *= 0.5, dv *= 0.5;
+  }
+  return best;
+}
+
+double sampled_wing_distance(const WingCase& c, const Vec3& x) {
+  double best = 1e300;
+  for (int s : c.roles.body_surfaces) best = std::min(best, sampled_distance(c.model->surface(s), x));
+  return best;
+}
+
+struct Built {
+  WingCase c;
+  NearField f;
+};
+
+Built build(const mock_cad::NacaWingParams& wing, double thickness, double wall_thickness) {
+  Built b{wing_case(wing), {}};
+  b.f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(thickness), JunctionParams{}, wall_thickness);
+  return b;
+}
+
+void expect_valid_linear_elements(const NearField& f) {
+  const mesh::Mesh& m = f.mesh;
+  int invalid = 0;
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    invalid += !ho::certify_jacobian(m.elements()[e].shape, 1, ho::NodeSet::Equispaced, m.element_coordinates(e)).valid;
+  EXPECT_EQ(invalid, 0);
+}
+
+TEST(CShell, HaloPointsLieAtBothThicknessesFromTheCad) {
+  const double delta_wing = 0.06, delta_wall = 0.04;
+  const Built b = build(naca("0012", false), delta_wing, delta_wall);
+  ASSERT_EQ(b.f.footprint.size(), b.f.footprint_top.size());
+  ASSERT_GT(b.f.junction_hexes, 10);
+  for (NodeId h : b.f.footprint_top) {
+    const Vec3 x = b.f.mesh.node(h);
+    EXPECT_NEAR(x.z(), delta_wall, 1e-12);  // the wall is z = 0
+    // The untapered unswept wing has the root section at every height: the distance to the wing
+    // at height z is the plane distance to the root curves, computed here by curve projections.
+    double to_section = 1e300;
+    for (int curve = 0; curve < b.c.model->num_curves(); ++curve) {
+      const std::string& name = b.c.model->curve(curve).name();
+      if (name.rfind("root", 0) != 0) continue;
+      const auto p = b.c.model->curve(curve).project(Vec3(x.x(), x.y(), 0.0));
+      to_section = std::min(to_section, p.distance);
+    }
+    EXPECT_NEAR(to_section, delta_wing, 1e-9) << "halo node " << h;
+  }
+  // A few by dense sampling of the surfaces, independent of any projection.
+  for (std::size_t i = 0; i < b.f.footprint_top.size(); i += b.f.footprint_top.size() / 5)
+    EXPECT_NEAR(sampled_wing_distance(b.c, b.f.mesh.node(b.f.footprint_top[i])), delta_wing, 1e-9);
+}
+
+TEST(CShell, ElementsAreValidAndHexesShareTheirFacesWithThePrisms) {
+  const Built b = build(naca("0012", false), 0.06, 0.04);
+  const mesh::Mesh& m = b.f.mesh;
+  expect_valid_linear_elements(b.f);
+  std::map<long, int> face_uses;
+  int hexes = 0, prisms = 0;
+  for (const auto& el : m.elements()) {
+    (el.shape == ho::Shape::Hexahedron ? hexes : prisms)++;
+    for (std::size_t k = 0; k < ho::faces(el.shape).size(); ++k) ++face_uses[el.faces[k]];
+  }
+  EXPECT_EQ(hexes, b.f.junction_hexes);
+  EXPECT_EQ(static_cast<std::size_t>(hexes), b.f.footprint.size());
+  // Each hex: face W-H (eta = +1: vertices 3,2,6,7) shared with a prism, faces at xi = +-1 with
+  // the neighbouring hexes, L-H (zeta = +1) free for the wall layer, R-W and R-L boundary faces.
+  for (std::size_t e = 0; e < m.elements().size(); ++e) {
+    const auto& el = m.elements()[e];
+    if (el.shape != ho::Shape::Hexahedron) continue;
+    const auto& faces = ho::faces(el.shape);
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+      std::set<int> v(faces[k].begin(), faces[k].end());
+      const int uses = face_uses[el.faces[k]];
+      if (v == std::set<int>{2, 3, 6, 7} || v == std::set<int>{0, 3, 4, 7} || v == std::set<int>{1, 2, 5, 6})
+        EXPECT_EQ(uses, 2) << "hex " << e << " face " << k;
+      else
+        EXPECT_EQ(uses, 1) << "hex " << e << " face " << k;
+    }
+    // Strip top W on the wing CAD, wall foot L on the wall.
+    for (int k : {2, 3}) EXPECT_NE(m.cad_attachment(el.vertices[k]).kind, mesh::CadAttachment::None);
+    for (int k : {4, 5}) EXPECT_NEAR(m.node(el.vertices[k]).z(), 0.0, 1e-12);
+  }
+  EXPECT_EQ(b.f.stacks.size(), m.elements().size());
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// The message of the NearFieldError thrown by building the C-shell with these parameters.
+std::string c_shell_error(const WingCase& c, const BodyRoles& roles, double thickness, const JunctionParams& j,
+                          double wall_thickness) {
+  try {
+    build_c_shell(*c.model, c.meshes, roles, shell(thickness), j, wall_thickness);
+  } catch (const NearFieldError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CShellBadInput, RootCurveOutsideTheSupportedAnglesNamesCurveAndAngle) {
+  const WingCase c = wing_case(naca("0012", false));
+  JunctionParams j;
+  j.min_angle_deg = 100;  // the analytic wing stands at 90 degrees on its wall
+  const std::string what = c_shell_error(c, c.roles, 0.06, j, 0.04);
+  EXPECT_TRUE(contains(what, "('root_")) << what;
+  EXPECT_TRUE(contains(what, " 90 degrees")) << what;
+}
+
+TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
+  const WingCase c = wing_case(naca("0012", false));
+  BodyRoles roles;
+  roles.wall_surface = *c.model->find_surface("upper");
+  for (const std::string name : {"lower", "te_base", "tip"})
+    roles.body_surfaces.push_back(*c.model->find_surface(name));
+  const std::string what = c_shell_error(c, roles, 0.06, {}, 0.04);
+  EXPECT_TRUE(contains(what, "('upper')")) << what;
+  EXPECT_TRUE(contains(what, "not planar")) << what;
+}
+
+TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
+  const WingCase c = wing_case(naca("0012", false));
+  const std::string what = c_shell_error(c, c.roles, 0.06, {}, 0.9);
+  EXPECT_TRUE(contains(what, "0.9")) << what;
+}
+
+TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
+  mock_cad::NacaWingParams tiny = naca("0012", true);
+  tiny.chord = 0.05;
+  const WingCase c = wing_case(tiny);
+  const std::string what = c_shell_error(c, c.roles, 0.6, {}, 0.04);
+  EXPECT_TRUE(contains(what, "surface ") || contains(what, "curve ")) << what;
+  EXPECT_TRUE(contains(what, "0.6")) << what;
+}
+
+TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
+  for (const auto& wing :
+       {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
+    const Built b{wing_case(wing), {}};
+    const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), JunctionParams{}, 0.03);
+    expect_valid_linear_elements(f);
+    EXPECT_EQ(static_cast<std::size_t>(f.junction_hexes), f.footprint.size());
+    for (NodeId h : f.footprint_top) {
+      EXPECT_NEAR(f.mesh.node(h).z(), 0.03, 1e-12);
+      EXPECT_NEAR(nearest_on_surfaces(*b.c.model, b.c.roles.body_surfaces, f.mesh.node(h)).distance, 0.05, 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// Unswept untapered wings stand upright on z = 0: every root curve is a 90 degree concave corner.
+TEST(WallCurves, RootCurvesOfStraightWingsAreConcaveRightAngles) {
+  for (const auto& wing : {naca("0012", false), naca("2412", true)}) {
+    const WingCase c = wing_case(wing);
+    const auto all = wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface);
+    const auto concave = concave_wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface, 170.0);
+    EXPECT_EQ(all.size(), wing.sharp_te ? 2u : 3u);  // root_upper, root_lower (, the TE base's root)
+    EXPECT_EQ(concave.size(), all.size());
+    for (const WallCurve& w : all) {
+      EXPECT_NEAR(w.min_angle_deg, 90.0, 1e-6) << c.model->curve(w.curve).name();
+      EXPECT_NEAR(w.max_angle_deg, 90.0, 1e-6) << c.model->curve(w.curve).name();
+    }
+    EXPECT_TRUE(concave_wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface, 80.0).empty());
+  }
+}
+
+// A swept tapered wing leans over the wall: by the LE sweep (30 degrees: up to 120 degrees seen from
+// the fluid ahead) at the leading edge and the other way by the TE sweep at the trailing edge,
+// where the flat TE base meets the wall at exactly 90 - atan(tan 30 - (1 - taper) chord / span).
+TEST(WallCurves, SweptTaperedWingLeansByItsSweepAngles) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const double pi = std::acos(-1.0);
+  const double te_sweep = std::atan(std::tan(30.0 * pi / 180.0) - 0.5 / 1.5) * 180.0 / pi;
+  for (const WallCurve& w : wall_curves(*c.model, c.roles.body_surfaces, c.roles.wall_surface)) {
+    if (c.model->surface(w.body_surface).name() == "te_base") {
+      EXPECT_NEAR(w.min_angle_deg, 90.0 - te_sweep, 1e-6);
+      EXPECT_NEAR(w.max_angle_deg, 90.0 - te_sweep, 1e-6);
+    } else {
+      EXPECT_GT(w.max_angle_deg, 110.0) << c.model->curve(w.curve).name();  // near the leading edge
+      EXPECT_LE(w.max_angle_deg, 120.0 + 1e-9) << c.model->curve(w.curve).name();
+      EXPECT_LT(w.min_angle_deg, 90.0) << c.model->curve(w.curve).name();  // near the trailing edge
+      EXPECT_GE(w.min_angle_deg, 90.0 - te_sweep - 1e-9) << c.model->curve(w.curve).name();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
