@@ -103,7 +103,6 @@ class Refiner {
     if (const std::optional<Vec2> split = wrapping_edge_midpoint(f)) {
       if (try_insert(snap_to_grid(*split, grid_step_), f, 0.0)) return;
     }
-    if (periodic_ && folded(f) && try_insert(snap_to_grid(*centroid(f), grid_step_), f, 0.0)) return;
     double longest = 0.0;
     for (int i = 0; i < 3; ++i) longest = std::max(longest, edge_length(f->vertex(i), f->vertex(Cdt::cw(i))));
     if (longest <= split_factor_ * h) return;
@@ -137,19 +136,6 @@ class Refiner {
       }
     }
     return std::nullopt;
-  }
-
-  // Whether the triangle in space turns more than 60 degrees away from the surface's normal at its
-  // (u, v) centroid: near a pole a triangle of a wide angle and unequal radii folds over.
-  bool folded(FaceHandle f) const {
-    for (int i = 0; i < 3; ++i)
-      for (int d = 0; d < 2; ++d)
-        if (periods_[d] && at_pole(to_uv(f->vertex(i)->point()), d)) return false;  // a fan at the pole
-    const Vec3 n = (point(f->vertex(1)) - point(f->vertex(0))).cross(point(f->vertex(2)) - point(f->vertex(0)));
-    const Vec2 uv = *centroid(f);
-    const cad::SurfaceDerivatives d = face_.derivatives(uv);
-    const Vec3 along = d.du.cross(d.dv);
-    return n.norm() > 0.0 && along.norm() > 0.0 && n.dot(along) < 0.5 * n.norm() * along.norm();
   }
 
   // Whether S does not move along parameter direction d at uv (a pole: an edge from it may span
