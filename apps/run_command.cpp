@@ -140,9 +140,12 @@ void print_failed_checks(const pipeline::RunResult& r, std::ostream& err) {
     fmt::print(err, "semimesh: validity: {} invalid element(s), worst first\n", r.validity.invalid);
     for (std::size_t i = 0; i < std::min(kOffendersShown, r.validity.worst.size()); ++i) {
       const checks::InvalidElement& e = r.validity.worst[i];
+      const std::string why = e.below_floor ? fmt::format(" (valid, but below checks.min_scaled_jacobian = {})",
+                                                          r.validity.floor)
+                              : e.proven ? std::string()
+                                         : std::string(" (not proven either way)");
       fmt::print(err, "  element {} ({}) at ({:.6g}, {:.6g}, {:.6g}): scaled Jacobian {:.4g}{}\n", e.element,
-                 ho::to_string(e.shape), e.centroid.x(), e.centroid.y(), e.centroid.z(), e.scaled_jacobian,
-                 e.proven ? "" : " (not proven either way)");
+                 ho::to_string(e.shape), e.centroid.x(), e.centroid.y(), e.centroid.z(), e.scaled_jacobian, why);
     }
   }
   if (!r.volume_ok())

@@ -3,15 +3,17 @@
 find_package(CGAL REQUIRED)
 add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/size_field.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/shell_size_limit.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/curve_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/boundary_nodes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/parameter_triangulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_improvement.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/flat_corners.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_surface.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/structured_surface.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_quality.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/model_surfaces.cpp)
 add_library(semimesh::surface_mesh ALIAS semimesh_surface_mesh)
 target_include_directories(semimesh_surface_mesh PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
-target_link_libraries(semimesh_surface_mesh PUBLIC semimesh_cadapi PRIVATE CGAL::CGAL semimesh_warnings)
+target_link_libraries(semimesh_surface_mesh PUBLIC semimesh_cadapi PRIVATE CGAL::CGAL fmt::fmt semimesh_warnings)
 set_target_properties(semimesh_surface_mesh PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -307,6 +307,17 @@ params::Table<Config> output_keys() {
   return table;
 }
 
+params::Table<Config> checks_keys() {
+  params::Table<ChecksConfig> k = {
+      params::real("min_scaled_jacobian", &ChecksConfig::min_scaled_jacobian, "[0, 1)",
+                   "an element counts as invalid unless proven valid with a certified scaled Jacobian of at "
+                   "least this; 0: proven validity only"),
+  };
+  params::Table<Config> table;
+  append(table, &Config::checks, k);
+  return table;
+}
+
 template <class P>
 params::Table<Config> stage_keys(P Config::*member, const params::Table<P>& keys) {
   params::Table<Config> table;
@@ -388,6 +399,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"sizing", sizing_keys()},
       {"farfield", stage_keys(&Config::farfield, farfield::far_field_keys())},
       {"highorder", stage_keys(&Config::highorder, ho::curving_keys())},
+      {"checks", checks_keys()},
       {"output", output_keys()},
   };
   return sections;

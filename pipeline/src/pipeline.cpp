@@ -16,6 +16,7 @@
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
+#include "semimesh/surface/shell_size_limit.hpp"
 
 #include <fmt/format.h>
 
@@ -49,7 +50,9 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     progress.stage_finished(timing);
   };
   auto fail = [&](Error::Cause cause, const std::string& what) -> RunError {
-    return RunError(cause, name, name + ": " + what);
+    // Stage errors that already name their stage (e.g. "near field: ...") are not prefixed twice.
+    const std::string prefix = name + ": ";
+    return RunError(cause, name, what.rfind(prefix, 0) == 0 ? what : prefix + what);
   };
   try {
     if constexpr (std::is_void_v<decltype(body())>) {
@@ -230,10 +233,17 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   return g;
 }
 
-surface::SurfaceMeshes mesh_surfaces(const Config& config, const cad::Model& model, Progress& progress,
-                                     RunResult& result) {
-  const surface::SizeField size =
-      stage("size field", progress, result, [&] { return surface::SizeField(model, config.sizing.size); });
+surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Progress& progress, RunResult& result) {
+  const cad::Model& model = *g.model;
+  const surface::SizeField size = stage("size field", progress, result, [&] {
+    surface::SizeParams params = config.sizing.size;
+    // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    if (config.highorder.order > 1) {
+      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params);
+      params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
+    }
+    return surface::SizeField(model, params);
+  });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
     return surface::mesh_model_surfaces(model, size, mesh_options(model, config.sizing));
   });
@@ -285,13 +295,18 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
                                           "within {} iterations; they keep their parameter-space positions",
                                           result.curving.optimisation_fallbacks, config.highorder.spring_iterations));
   return stage("repair", progress, result, [&] {
-    const ho::MeshValidity validity = ho::certify_mesh(curved);
+    const double floor = config.checks.min_scaled_jacobian;
+    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor);
     if (validity.all_valid()) return std::move(curved);
-    ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements);
+    ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
+    const ho::RepairStats& stats = repaired.stats;
     result.warnings.push_back(fmt::format("curving made {} element(s) invalid; repaired {}, {} could not be repaired",
                                           validity.invalid,
-                                          repaired.stats.repaired_interior + repaired.stats.repaired_free_nodes,
-                                          repaired.stats.failures.size()));
+                                          stats.repaired_interior + stats.repaired_free_nodes + stats.repaired_body_following,
+                                          stats.failures.size()));
+    constexpr std::size_t kReasonsShown = 10;
+    for (std::size_t i = 0; i < std::min(kReasonsShown, stats.failures.size()); ++i)
+      result.warnings.push_back("repair: " + stats.failures[i].reason);
     return std::move(repaired.mesh);
   });
 }
@@ -342,8 +357,8 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
   return reference_length(config.geometry, body);
 }
 
-void check(const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord, Progress& progress,
-           RunResult& result) {
+void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
+           Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&] {
     result.conformity = checks::check_conformity(result.mesh);
     std::vector<const surface::SurfaceMesh*> body, box;
@@ -355,7 +370,7 @@ void check(const Geometry& g, const surface::SurfaceMeshes& surfaces, double cho
     if (result.mesh.order() > 1)
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
-    result.validity = checks::check_validity(result.mesh);
+    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian);
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
@@ -406,7 +421,7 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
 RunResult run(const Config& config, Progress& progress) {
   RunResult result;
   const Geometry geometry = load_geometry(config, progress, result);
-  const surface::SurfaceMeshes surfaces = mesh_surfaces(config, *geometry.model, progress, result);
+  const surface::SurfaceMeshes surfaces = mesh_surfaces(config, geometry, progress, result);
   LinearMesh linear = build_linear_mesh(config, geometry, surfaces, progress, result);
   result.mesh = std::move(linear.mesh);
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
@@ -415,7 +430,7 @@ RunResult run(const Config& config, Progress& progress) {
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, result.mesh, linear.stacks, chord, progress, result);
-  check(geometry, surfaces, chord, progress, result);
+  check(config, geometry, surfaces, chord, progress, result);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

@@ -129,6 +129,7 @@ std::string report_json(const RunResult& r, const Config& config) {
                    json_number(r.curving.max_projection_distance));
   j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
+  j += fmt::format("  \"min_scaled_jacobian_floor\": {},\n", json_number(r.validity.floor));
   j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));
   {
     std::string by_region = "{";

@@ -293,5 +293,51 @@ TEST(ElementQuality, MatchesBoundsOfCertification) {
   EXPECT_NEAR(q.scaled_jacobian, 1.0 / 1.3, 1e-12);
 }
 
+// A straight prism whose top vertex above vertex 1 is at height s: det J = 1 + (s - 1) xi is linear
+// (Gmsh's reference prism: xi, eta in the unit triangle, zeta in [-1, 1]; det J at vertex 1 is s
+// times the others'), so min / max det J = s exactly.
+Eigen::MatrixX3d tapered_prism(int order, double s) {
+  return mapped_nodes(Shape::Prism, order, NodeSet::GLL, [s](const Eigen::Vector3d& r) -> Eigen::Vector3d {
+    const double height = 1.0 + (s - 1.0) * r.x();
+    return {r.x(), r.y(), 0.5 * (r.z() + 1.0) * height};
+  });
+}
+
+TEST(CertifyJacobian, FloorSeparatesNumericallyDegenerateFromValid) {
+  for (int order : {1, 2, 4}) {
+    SCOPED_TRACE(order);
+    const JacobianBounds thin = certify_jacobian(Shape::Prism, order, NodeSet::GLL, tapered_prism(order, 1e-4), 8, 1e-3);
+    EXPECT_TRUE(thin.valid);
+    EXPECT_NEAR(scaled_jacobian(thin), 1e-4, 1e-9);
+    EXPECT_FALSE(acceptable(thin, 1e-3));
+    EXPECT_TRUE(acceptable(thin, 1e-5));
+    EXPECT_TRUE(acceptable(thin, 0.0));
+    // Numerically degenerate: the scaled Jacobian of the tip prism of issue #10 was 8e-17.
+    const JacobianBounds flat = certify_jacobian(Shape::Prism, order, NodeSet::GLL, tapered_prism(order, 1e-16), 8, 1e-5);
+    EXPECT_FALSE(acceptable(flat, 1e-5));
+  }
+}
+
+// A curved element whose Bezier bound is loose: the hex x = u + a u^3 / 3 (u in [-1, 1]) has
+// det J proportional to 1 + a u^2, so min / max = 1 / (1 + a), but the Bezier coefficients of det J
+// dip below its minimum; with a floor the certification refines until the bound clears it.
+TEST(CertifyJacobian, FloorRefinesALooseBoundInsteadOfFailingAGoodElement) {
+  const double a = 0.9;  // Bezier coefficients of 1 + a u^2 on [-1, 1]: 1 + a, 1 - a, 1 + a: positive but loose
+  // On [-1, 1]: x = u + a u^3 / 3 gives dx/du = 1 + a u^2 >= 1, max 1 + a: scaled Jacobian 1 / 41.
+  const Eigen::MatrixX3d nodes = mapped_nodes(Shape::Hexahedron, 3, NodeSet::GLL, [a](const Eigen::Vector3d& r) -> Eigen::Vector3d {
+    return {r.x() + a * r.x() * r.x() * r.x() / 3.0, r.y(), r.z()};
+  });
+  const double truth = 1.0 / (1.0 + a);
+  const JacobianBounds plain = certify_jacobian(Shape::Hexahedron, 3, NodeSet::GLL, nodes);
+  ASSERT_TRUE(plain.valid);
+  const double floor = 0.9 * truth;
+  ASSERT_LT(scaled_jacobian(plain), floor);  // without the floor the bound alone would fail it
+  const JacobianBounds refined = certify_jacobian(Shape::Hexahedron, 3, NodeSet::GLL, nodes, 8, floor);
+  EXPECT_TRUE(acceptable(refined, floor));
+  EXPECT_LE(scaled_jacobian(refined), truth * (1.0 + 1e-9));  // still a lower bound
+  // Above the true value, the floor is proven unreachable.
+  EXPECT_FALSE(acceptable(certify_jacobian(Shape::Hexahedron, 3, NodeSet::GLL, nodes, 8, 1.1 * truth), 1.1 * truth));
+}
+
 }  // namespace
 }  // namespace semimesh::ho

@@ -181,6 +181,16 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
   EXPECT_NE(error_of("[nearfield]\nthickness = -1\n").find("nearfield.thickness = -1: expected > 0"), std::string::npos);
 }
 
+TEST(Config, ChecksFloorHasAPositiveDefaultAndARange) {
+  EXPECT_EQ(parse_config("", "empty.toml").checks.min_scaled_jacobian, 1e-5);
+  EXPECT_EQ(parse_config("[checks]\nmin_scaled_jacobian = 0.01\n", "case.toml").checks.min_scaled_jacobian, 0.01);
+  EXPECT_EQ(parse_config("[checks]\nmin_scaled_jacobian = 0\n", "case.toml").checks.min_scaled_jacobian, 0.0);
+  EXPECT_EQ(error_of("[checks]\nmin_scaled_jacobian = 1\n"),
+            "config error: case.toml:2: checks.min_scaled_jacobian = 1: expected [0, 1)");
+  EXPECT_NE(error_of("[checks]\nmin_scaled_jacobian = -0.1\n").find("checks.min_scaled_jacobian = -0.1"), std::string::npos);
+  EXPECT_NE(error_of("[checks]\nfloor = 0.1\n").find("unknown key checks.floor"), std::string::npos);
+}
+
 TEST(Config, WrongTypeIsAnError) {
   EXPECT_NE(error_of("[boundary_layer]\nlayers = 2.5\n").find("boundary_layer.layers = 2.5: expected an integer"),
             std::string::npos);

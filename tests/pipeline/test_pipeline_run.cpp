@@ -358,6 +358,8 @@ TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
       {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "not planar"}},
       {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
       {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"}, {"surface ", "0.6"}},
+      {{"geometry.naca.sweep=30", "geometry.naca.taper=0.5", "wall_layer.thickness=0.2"},
+       {"thicker than the wing's shell", "('root_"}},
   };
   for (const auto& [overrides, expected] : cases) {
     const fs::path dir = fresh_directory("c_bad");

@@ -1,6 +1,7 @@
 #include "semimesh/ho/mesh_validity.hpp"
 
 #include "parallel_for.hpp"
+#include "semimesh/ho/quality.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,7 +9,7 @@
 
 namespace semimesh::ho {
 
-MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth) {
+MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian) {
   if (max_depth < 0)
     throw std::invalid_argument("certify_mesh: max_depth = " + std::to_string(max_depth) + " must be >= 0");
   const std::size_t n = mesh.elements().size();
@@ -21,14 +22,14 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth) {
   out.bounds.resize(n);
   detail::parallel_for(n, true, [&](std::size_t e) {
     out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(),
-                                     mesh.element_coordinates(e), max_depth);
+                                     mesh.element_coordinates(e), max_depth, min_scaled_jacobian);
   });
 
   std::vector<double> scaled(n);
   for (std::size_t e = 0; e < n; ++e) {
     const JacobianBounds& b = out.bounds[e];
     scaled[e] = scaled_jacobian(b);
-    if (b.valid) continue;
+    if (acceptable(b, min_scaled_jacobian)) continue;
     ++out.invalid;
     if (!b.proven) ++out.unproven;
     const mesh::Element& el = mesh.elements()[e];

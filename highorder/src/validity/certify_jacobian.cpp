@@ -55,14 +55,15 @@ std::array<int, 3> longest_edge(const Piece& piece) {
 }  // namespace
 
 JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
-                                int max_depth) {
+                                int max_depth, double floor_ratio) {
   JacobianBounds bounds;
   if (affine_jacobian(shape, order, set, element_nodes, bounds)) return bounds;
-  return certify_jacobian_by_subdivision(shape, order, set, element_nodes, max_depth);
+  return certify_jacobian_by_subdivision(shape, order, set, element_nodes, max_depth, floor_ratio);
 }
 
 JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet set,
-                                               const Eigen::MatrixX3d& element_nodes, int max_depth) {
+                                               const Eigen::MatrixX3d& element_nodes, int max_depth,
+                                               double floor_ratio) {
   const int max_bisections = 3 * std::max(0, max_depth);
   JacobianBounds bounds;
   bounds.min_lower = std::numeric_limits<double>::infinity();
@@ -73,6 +74,10 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
   int pieces_examined = 0;
 
   BernsteinPolynomial root = detail::jacobian_determinant(shape, order, set, element_nodes);
+  // Every piece's coefficients lie below the root's largest (convex hull), so this bounds max det J.
+  const double floor_value = floor_ratio * root.coefficients().maxCoeff();
+  double highest_value = -std::numeric_limits<double>::infinity();  // largest evaluated det J
+  bool below_floor = false;  // proven: an evaluated det J below floor_ratio x an evaluated one
   std::vector<Piece> stack;
   stack.push_back(Piece{root, whole_domain(root.layout()), 0});
   while (!stack.empty()) {
@@ -82,13 +87,20 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
     const Eigen::VectorXd& c = piece.det_j.coefficients();
     const double lowest = c.minCoeff();
     double lowest_value = std::numeric_limits<double>::infinity();  // corners are exact values
-    for (int id : piece.det_j.layout().corners) lowest_value = std::min(lowest_value, c[id]);
+    for (int id : piece.det_j.layout().corners) {
+      lowest_value = std::min(lowest_value, c[id]);
+      highest_value = std::max(highest_value, c[id]);
+    }
     bounds.min_upper = std::min(bounds.min_upper, lowest_value);
     if (lowest_value <= 0.0) invalid_found = true;
+    if (bounds.min_upper < floor_ratio * highest_value) below_floor = true;
 
     const bool conclusive = lowest > 0.0 || invalid_found;
+    const bool floor_decided = floor_ratio <= 0.0 || lowest > floor_value || below_floor || invalid_found;
     const bool can_split = piece.depth < max_bisections && pieces_examined + 2 <= kMaxCertificationPieces;
-    if (conclusive || !can_split) {
+    // The floor may use a quarter of the piece budget, so it never leaves the sign undecided.
+    const bool floor_can_split = can_split && pieces_examined < kMaxCertificationPieces / 4;
+    if (!((!conclusive && can_split) || (!floor_decided && floor_can_split))) {
       // A leaf: its coefficients bound det J over its part of the element.
       bounds.min_lower = std::min(bounds.min_lower, lowest);
       bounds.max_upper = std::max(bounds.max_upper, c.maxCoeff());

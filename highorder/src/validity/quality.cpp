@@ -13,10 +13,14 @@ double scaled_jacobian(const JacobianBounds& bounds) {
   return bounds.min_lower / scale;
 }
 
+bool acceptable(const JacobianBounds& bounds, double min_scaled_jacobian) {
+  return bounds.valid && (min_scaled_jacobian <= 0.0 || scaled_jacobian(bounds) >= min_scaled_jacobian);
+}
+
 ElementQuality element_quality(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
-                               int max_depth) {
+                               int max_depth, double floor_ratio) {
   ElementQuality quality;
-  quality.bounds = certify_jacobian(shape, order, set, element_nodes, max_depth);
+  quality.bounds = certify_jacobian(shape, order, set, element_nodes, max_depth, floor_ratio);
   quality.scaled_jacobian = scaled_jacobian(quality.bounds);
   return quality;
 }

@@ -6,10 +6,11 @@
 
 namespace semimesh::checks {
 
-ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed) {
-  const ho::MeshValidity certified = ho::certify_mesh(mesh);
+ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed, double min_scaled_jacobian) {
+  const ho::MeshValidity certified = ho::certify_mesh(mesh, 8, min_scaled_jacobian);
   ValidityResult result;
   result.elements = mesh.elements().size();
+  result.floor = min_scaled_jacobian;
   result.invalid = certified.invalid;
   result.min_scaled_jacobian = certified.min_scaled_jacobian;
   result.median_scaled_jacobian = certified.median_scaled_jacobian;
@@ -23,6 +24,7 @@ ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed) {
     bad.centroid = certified.invalid_centroids[i];
     bad.scaled_jacobian = ho::scaled_jacobian(certified.bounds[e]);
     bad.proven = certified.bounds[e].proven;
+    bad.below_floor = certified.bounds[e].valid;
     result.worst.push_back(bad);
   }
   std::stable_sort(result.worst.begin(), result.worst.end(),

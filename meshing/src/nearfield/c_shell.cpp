@@ -38,7 +38,15 @@ void check_junction_params(const cad::Model& model, const BodyRoles& roles, cons
 
 // The root curves: every body-wall curve, each of which must be a concave corner (from the CAD,
 // concave_wall_curves) of a supported angle. Returns curve -> its body surface.
-std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j) {
+// Where the wing leans away over the fluid (angle a > 90 degrees), the point at delta_wing from the
+// wing's plane and delta_wall from the wall, (d_wing + d_wall cos a) / sin a out from the root, has
+// its foot on the wing only if delta_wall >= -delta_wing cos a (below that the halo's nearest wing
+// point is the root itself: the strip has no height), and lies in front of the root only if
+// delta_wall < delta_wing / -cos a (above that the wall layer is thicker than the wing's shell can
+// meet). Both bounds are tightest at the curve's largest angle.
+std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
+                                       double delta_wing, double delta_wall) {
+  constexpr double kDegree = 3.14159265358979323846 / 180.0;
   std::map<int, int> surface_of;
   for (const WallCurve& w : concave_wall_curves(model, roles.body_surfaces, roles.wall_surface, j.concave_below_deg)) {
     const double worst = w.min_angle_deg < j.min_angle_deg ? w.min_angle_deg : w.max_angle_deg;
@@ -47,6 +55,24 @@ std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles&
                            surface_label(model, w.body_surface) + " and the wall meets the wall at " +
                            number_label(worst) + " degrees (seen from the fluid); the junction block supports " +
                            number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) + " degrees");
+    const double cosine = std::cos(w.max_angle_deg * kDegree);
+    const double needed = -delta_wing * cosine;
+    if (cosine < 0.0 && !(delta_wall < delta_wing / -cosine))
+      throw NearFieldError("near field: the wall layer (thickness " + number_label(delta_wall) +
+                           ") is thicker than the wing's shell (thickness " + number_label(delta_wing) +
+                           ") can meet along " + curve_label(model, w.curve) + ", which meets the wall at up to " +
+                           number_label(w.max_angle_deg) +
+                           " degrees: no point at both distances lies in front of the root; use a wall layer "
+                           "thickness below " +
+                           number_label(delta_wing / -cosine) + " (thickness / -cos of the angle)");
+    if (delta_wall < needed)
+      throw NearFieldError("near field: the wall layer (thickness " + number_label(delta_wall) +
+                           ") is too thin for the wing's shell (thickness " + number_label(delta_wing) + ") along " +
+                           curve_label(model, w.curve) + ", which meets the wall at up to " +
+                           number_label(w.max_angle_deg) +
+                           " degrees: the halo would sit over the root, leaving no root strip; use a wall layer "
+                           "thickness of at least " +
+                           number_label(needed) + " (thickness x -cos of the angle)");
     surface_of[w.curve] = w.body_surface;
   }
   for (const WallCurve& w : wall_curves(model, roles.body_surfaces, roles.wall_surface))
@@ -222,7 +248,7 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
                         const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
   detail::check_shell_params(model, roles, params);
   check_junction_params(model, roles, junction, wall_thickness);
-  const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction);
+  const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
   BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
   const int count = body.num_nodes();
   const auto open = open_edges(body);

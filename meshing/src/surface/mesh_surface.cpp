@@ -1,6 +1,7 @@
 #include "semimesh/surface/surface_mesh.hpp"
 
 #include "boundary_nodes.hpp"
+#include "flat_corners.hpp"
 #include "mesh_improvement.hpp"
 #include "parameter_triangulation.hpp"
 #include "semimesh/surface/error.hpp"
@@ -33,6 +34,7 @@ SurfaceMesh mesh_surface(const cad::Model& model, int surface, const CurveMeshes
     if (collapses == 0 && swaps == 0 && moves == 0) break;
   }
   detail::swap_edges(face, mesh);
+  detail::fix_flat_corners(model, surface, mesh);
   detail::remove_pole_triangles(mesh);
   // Counter-clockwise in (u, v) means along du x dv; the fluid side is orientation() * du x dv.
   if (face.orientation() < 0)

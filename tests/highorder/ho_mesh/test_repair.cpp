@@ -106,6 +106,32 @@ TEST(RepairInvalid, ElementFoldedByItsCadFaceIsReported) {
   EXPECT_EQ(m.element_coordinates(0), before);  // left as it was
 }
 
+// A shell prism of order 2 (face 0-1-2 on the wall CAD at z = 0, straight outer face at z = 0.1)
+// whose body face bulges above the outer face: straightening the free nodes cannot help (the CAD
+// node folds it), but letting the column follow the body face does: x + f(xi, eta) e_z keeps det J.
+TEST(RepairInvalid, ShellPrismFoldedByItsCurvedBodyFaceFollowsIt) {
+  mesh::Mesh m(2, NodeSet::GLL);
+  const Eigen::MatrixX3d r = reference_nodes(Shape::Prism, 2, NodeSet::GLL);
+  std::vector<mesh::NodeId> nodes;
+  mesh::NodeId bulging = 0;
+  for (int i = 0; i < r.rows(); ++i) {
+    const Eigen::Vector3d x(r(i, 0), r(i, 1), 0.05 * (r(i, 2) + 1.0));
+    mesh::CadAttachment a;
+    if (r(i, 2) == -1.0) a = {mesh::CadAttachment::Surface, wall(), x.x(), x.y()};
+    nodes.push_back(m.add_node(x, a));
+    if (r(i, 2) == -1.0 && std::abs(r(i, 0) - 0.5) < 1e-12 && std::abs(r(i, 1)) < 1e-12) bulging = nodes.back();
+  }
+  m.add_element(Shape::Prism, nodes);
+  m.place_node_on_cad(bulging, Eigen::Vector3d(0.5, 0.0, 0.15), m.cad_attachment(bulging));
+  auto prism_valid = [&] { return certify_jacobian(Shape::Prism, 2, NodeSet::GLL, m.element_coordinates(0)).valid; };
+  ASSERT_FALSE(prism_valid());
+  const RepairStats stats = repair_in_place(m, model(), {0});
+  EXPECT_EQ(stats.repaired_body_following, 1);
+  EXPECT_TRUE(stats.failures.empty());
+  EXPECT_TRUE(prism_valid());
+  EXPECT_EQ(m.node(bulging).z(), 0.15);  // the CAD node stays where the CAD put it
+}
+
 TEST(RepairInvalid, RejectsBadInput) {
   mesh::Mesh m = hex_column(1);
   EXPECT_THROW(repair_in_place(m, model(), {1}), std::invalid_argument);

@@ -287,3 +287,28 @@ TEST(WallCurves, SweptTaperedWingLeansByItsSweepAngles) {
 
 }  // namespace
 }  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// The swept wing leans over the fluid at its leading edge (up to about 116 degrees sampled): a wall
+// layer thinner than thickness x -cos(angle) leaves no root strip there, an error naming the curve.
+TEST(CShellBadInput, WallLayerTooThinForALeaningWingNamesCurveAndThickness) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const std::string what = c_shell_error(c, c.roles, 0.1, {}, 0.01);
+  EXPECT_TRUE(contains(what, "too thin")) << what;
+  EXPECT_TRUE(contains(what, "('root_")) << what;
+  EXPECT_TRUE(contains(what, "at least 0.04")) << what;  // 0.1 x -cos(115.8 degrees) = 0.0435
+}
+
+// ... and a wall layer thicker than thickness / -cos(angle) cannot be met by the wing's shell.
+TEST(CShellBadInput, WallLayerThickerThanTheWingShellCanMeetNamesCurveAndThickness) {
+  const WingCase c = wing_case(naca("0012", false, 0.5, 30.0));
+  const std::string what = c_shell_error(c, c.roles, 0.05, {}, 0.2);
+  EXPECT_TRUE(contains(what, "thicker than the wing's shell")) << what;
+  EXPECT_TRUE(contains(what, "('root_")) << what;
+  EXPECT_TRUE(contains(what, "below 0.11")) << what;  // 0.05 / -cos(115.8 degrees) = 0.115
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield

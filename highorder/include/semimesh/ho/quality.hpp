@@ -16,8 +16,13 @@ struct ElementQuality {
   double scaled_jacobian = 0.0;  // scaled_jacobian(bounds)
 };
 
+/// Whether an element counts as valid with a floor on its scaled Jacobian: proven valid and
+/// scaled_jacobian(bounds) >= min_scaled_jacobian (bounds certified with that floor_ratio, so a
+/// loose bound does not fail a good element). A floor of 0 is plain validity.
+bool acceptable(const JacobianBounds& bounds, double min_scaled_jacobian);
+
 /// Certifies one element and derives its scaled Jacobian; same arguments as certify_jacobian.
 ElementQuality element_quality(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
-                               int max_depth = 8);
+                               int max_depth = 8, double floor_ratio = 0.0);
 
 }  // namespace semimesh::ho

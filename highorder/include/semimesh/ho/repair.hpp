@@ -7,8 +7,13 @@
 //     which the element is certified valid is kept.
 //  2. If t = 0 is not enough, every non-CAD node of the element moves (its edge and face nodes too,
 //     e.g. on the skin), and the t kept must leave every element sharing a moved node valid.
-//  3. If even t = 0 leaves it invalid, the nodes on the CAD (its boundary face) cause the inversion:
-//     the element is left as it was and reported with its id, centroid and the CAD surface.
+//  3. A shell prism (face 0-1-2 curved on the body, straight outer face) whose curved body face
+//     folds it against the straight outer face: every non-CAD node moves towards its straight
+//     position plus the body face's displacement below it (the column follows the curved body,
+//     outer face included); the first of t = 1, 3/4, 1/2, 1/4 that leaves it and every element
+//     sharing a moved node acceptable is kept (the far-field elements on the skin get curved).
+//  4. Otherwise the nodes on the CAD (its boundary face) cause the inversion: the element is left as
+//     it was and reported with its id, centroid and the CAD surface.
 #pragma once
 
 #include "semimesh/cad/model.hpp"
@@ -34,8 +39,9 @@ struct RepairStats {
   int already_valid = 0;         ///< listed but certified valid: left alone
   int repaired_interior = 0;     ///< made valid by moving volume-interior nodes only (step 1)
   int repaired_free_nodes = 0;   ///< made valid by also moving non-CAD edge/face nodes (step 2)
+  int repaired_body_following = 0;  ///< made valid by curving its column like the body face (step 3)
   double min_blend = 1.0;        ///< smallest blending parameter t kept by a repair (1: none needed)
-  std::vector<RepairFailure> failures;  ///< step 3, in the order of `elements`
+  std::vector<RepairFailure> failures;  ///< step 4, in the order of `elements`
 };
 
 struct Repaired {
@@ -46,7 +52,9 @@ struct Repaired {
 /// A copy of `mesh` whose listed elements are repaired in order (3D elements; the mesh's order and
 /// node set); `model` is the CAD the attachments refer to (used to name the surface in a failure).
 /// Nodes with a CAD attachment never move. Throws std::invalid_argument for an index out of range
-/// or a 2D element.
-Repaired repair_invalid(const mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements);
+/// or a 2D element. An element counts as repaired when acceptable(bounds, min_scaled_jacobian)
+/// (0: proven valid).
+Repaired repair_invalid(const mesh::Mesh& mesh, const cad::Model& model, const std::vector<std::size_t>& elements,
+                        double min_scaled_jacobian = 0.0);
 
 }  // namespace semimesh::ho

@@ -41,16 +41,22 @@ struct JacobianBounds {
 /// (the analogue of one split into 8 children), so the smallest piece is about 2^-max_depth of the
 /// element across; at most kMaxCertificationPieces pieces are examined in all.
 /// Throws std::invalid_argument for a 2D shape, a bad order or a wrong number of nodes.
+/// floor_ratio > 0: where a piece's lower bound is below floor_ratio x the whole element's bound of
+/// max det J, it is bisected further (same depth and piece limits) until it is above, or until an
+/// evaluated det J proves min det J / max det J < floor_ratio; so scaled_jacobian(bounds) >=
+/// floor_ratio decides "not numerically degenerate" without a loose bound failing a good element.
+/// It changes the bounds, never `valid` or `proven` (those are about the sign).
 /// Fast path: an element whose nodes are an affine image of the reference nodes (every straight-sided
 /// tet, and the far field is made of them) has the constant det J = det A, returned without the
 /// Bernstein expansion (see affine_jacobian); everything else goes to certify_jacobian_by_subdivision.
 JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
-                                int max_depth = 8);
+                                int max_depth = 8, double floor_ratio = 0.0);
 
 /// The general path of certify_jacobian (Bernstein coefficients and bisection), for every element;
 /// the reference the affine fast path is tested against.
 JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet set,
-                                               const Eigen::MatrixX3d& element_nodes, int max_depth = 8);
+                                               const Eigen::MatrixX3d& element_nodes, int max_depth = 8,
+                                               double floor_ratio = 0.0);
 
 /// When every node is within kAffineTolerance x sigma_min(A) (bounded below by 2 |det A| / |A|_F^2)
 /// of the image of its reference node

@@ -19,11 +19,13 @@ struct InvalidElement {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the vertices
   double scaled_jacobian = 0.0;
   bool proven = true;  ///< false: not proven invalid, only not proven valid
+  bool below_floor = false;  ///< proven valid, but its scaled Jacobian is below the floor
 };
 
 struct ValidityResult {
   std::size_t elements = 0;
-  std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided)
+  std::size_t invalid = 0;                   ///< not proven valid (inverted or undecided) or below the floor
+  double floor = 0.0;                        ///< the min_scaled_jacobian the check used
   double min_scaled_jacobian = 1.0;
   double median_scaled_jacobian = 1.0;
   std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
@@ -33,7 +35,8 @@ struct ValidityResult {
 };
 
 /// Certifies every element (ho::certify_mesh: OpenMP threads, the verdict independent of their
-/// count); min and median scaled Jacobian as certify_mesh defines them.
-ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100);
+/// count); min and median scaled Jacobian as certify_mesh defines them. An element counts as invalid
+/// unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable).
+ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100, double min_scaled_jacobian = 0.0);
 
 }  // namespace semimesh::checks

@@ -94,6 +94,13 @@ struct SizingConfig {
   int spanwise = 0;   ///< segments on each spanwise edge; 0: from the size field
 };
 
+/// [checks]
+struct ChecksConfig {
+  /// An element whose certified scaled Jacobian is below this counts as invalid: a positive floor
+  /// keeps numerically degenerate elements (det J ~ 1e-16 of its maximum) out of a written mesh.
+  double min_scaled_jacobian = 1e-5;
+};
+
 /// [output]
 struct OutputConfig {
   std::vector<std::string> formats = {"msh41", "vtu"};  ///< names from output_formats()
@@ -112,6 +119,7 @@ struct Config {
   SizingConfig sizing;
   farfield::FarFieldParams farfield;
   ho::CurvingParams highorder;
+  ChecksConfig checks;
   OutputConfig output;
 };
 

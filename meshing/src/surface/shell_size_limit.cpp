@@ -1,0 +1,180 @@
+#include "semimesh/surface/shell_size_limit.hpp"
+
+#include "semimesh/cad/labels.hpp"
+#include "semimesh/surface/error.hpp"
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace semimesh::surface {
+namespace {
+
+using cad::Vec2;
+
+constexpr int kMarchSteps = 16;
+constexpr int kBisections = 20;
+// The gap is not monotone in h over long arcs (an arc round the whole nose comes back out), so the
+// first failure is found by growing h from a fraction of the radius by this factor, then bisected.
+constexpr double kScanStart = 0.05;
+constexpr double kScanGrowth = 1.15;
+// The longest edges of a triangulation of target size h are about this times h (measured 0.031 to
+// 0.040 at a target of 0.03 near a leading edge), so a size source is the limit divided by it.
+constexpr double kEdgeOvershoot = 1.5;
+// Measured (bench/robustness, order 5, NACA 0006 and 2412 noses of radius 0.004 and 0.016): where the
+// body turns fast, surface sizes up to 0.75 x the thickness always gave valid prisms, sizes of one
+// thickness or more sometimes did not; the chord-gap model alone misses that, so a curved place
+// (one where the gap limits the size) also gets size <= max(kThinShell x thickness, radius).
+constexpr double kThinShell = 0.75;
+// The thickness the gap model asks for is where prisms start to fold (measured: 0.0206 folds,
+// 0.022 is marginal, 0.025 is sound); the remedy offered keeps this margin.
+constexpr double kThicknessMargin = 1.25;
+
+// The ends and the midpoint of an arc on the surface.
+struct Arc {
+  Vec2 a, m, b;
+};
+
+// Walks `length` from uv along the surface, starting in tangent direction `dir` and keeping the
+// direction tangent (transported by projection); stops at the surface's boundary.
+Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
+  const auto box = s.bounds();
+  std::vector<Vec2> path{start};
+  Vec2 uv = start;
+  for (int k = 0; k < kMarchSteps; ++k) {
+    const cad::SurfaceDerivatives d = s.derivatives(uv);
+    Eigen::Matrix<double, 3, 2> jacobian;
+    jacobian << d.du, d.dv;
+    const Vec2 step = (jacobian.transpose() * jacobian).ldlt().solve(jacobian.transpose() * dir * (length / kMarchSteps));
+    const Vec2 next = uv + step;
+    if (!std::isfinite(next.x()) || !std::isfinite(next.y()) || next.x() < box[0].lo || next.x() > box[0].hi ||
+        next.y() < box[1].lo || next.y() > box[1].hi || !s.contains(next))
+      break;
+    uv = next;
+    path.push_back(uv);
+    const Vec3 n = s.normal(uv);
+    dir = (dir - dir.dot(n) * n).normalized();
+  }
+  return {path.front(), path[path.size() / 2], path.back()};
+}
+
+// Gap of the straight offset chord over the arc's midpoint at thickness 0 (g0, negative on a convex
+// arc) and its growth per unit thickness (c): g(delta) = g0 + c delta.
+std::pair<double, double> chord_gap(const cad::Surface& s, const Arc& arc) {
+  const Vec3 a = s.point(arc.a), b = s.point(arc.b), m = s.point(arc.m);
+  const Vec3 nm = s.normal(arc.m);
+  return {(0.5 * (a + b) - m).dot(nm), 0.5 * (s.normal(arc.a) + s.normal(arc.b)).dot(nm)};
+}
+
+bool gap_ok(const cad::Surface& s, const Vec2& uv, const Vec3& dir, double h, double thickness, double fraction) {
+  for (double sign : {1.0, -1.0}) {
+    const auto [g0, c] = chord_gap(s, march(s, uv, sign * dir, h));
+    if (g0 + c * thickness < fraction * thickness) return false;
+  }
+  return true;
+}
+
+// Thickness that keeps the gap for edges of length h at uv: g0 + c delta >= q delta.
+double thickness_needed(const cad::Surface& s, const Vec2& uv, const Vec3& dir, double h, double fraction) {
+  double needed = 0.0;
+  for (double sign : {1.0, -1.0}) {
+    const auto [g0, c] = chord_gap(s, march(s, uv, sign * dir, h));
+    if (g0 >= 0.0) continue;
+    if (c <= fraction) return std::numeric_limits<double>::infinity();
+    needed = std::max(needed, -g0 / (c - fraction));
+  }
+  return needed;
+}
+
+std::string label(const Vec3& p) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x(), p.y(), p.z()); }
+
+// The name of the CAD curve of `surface` nearest to p, when one is within `within`.
+std::string nearby_curve(const cad::Model& model, int surface, const Vec3& p, double within) {
+  std::string best;
+  double best_distance = within;
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::none_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == surface; })) continue;
+    const double d = (model.curve(c).project(p).point - p).norm();
+    if (d <= best_distance) best_distance = d, best = cad::curve_label(model, c);
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
+                                              double probe_size) {
+  if (!(shell.thickness > 0.0)) throw SurfaceMeshError("shell size limit: the thickness must be > 0");
+  const double delta = shell.thickness, q = shell.min_gap_fraction;
+  std::vector<ShellSizeLimit> limits;
+  for (int id : shell.body_surfaces) {
+    const cad::Surface& s = model.surface(id);
+    if (s.is_planar()) continue;
+    const auto box = s.bounds();
+    const int n = shell.samples;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
+        if (!s.contains(uv)) continue;
+        const cad::PrincipalCurvatures k = s.curvatures(uv);
+        if (!(k.k_max > 0.0)) continue;  // concave or flat: the outer chord passes outside the arc
+        const double radius = 1.0 / k.k_max;
+        // On the osculating circle (R + delta) cos(h / 2R) >= R + q delta holds for every h: no limit.
+        const double circle = (radius + q * delta) / (radius + delta);
+        if (2.0 * radius * std::acos(circle) >= max_size) continue;
+        double lo = 0.0, hi = std::min(max_size, kScanStart * radius);  // ok at lo
+        while (hi < max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) lo = hi, hi = std::min(max_size, hi * kScanGrowth);
+        if (hi >= max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) continue;
+        for (int b = 0; b < kBisections; ++b) {
+          const double mid = 0.5 * (lo + hi);
+          (gap_ok(s, uv, k.dir_max, mid, delta, q) ? lo : hi) = mid;
+        }
+        limits.push_back({s.point(uv), id, radius, lo, thickness_needed(s, uv, k.dir_max, probe_size, q)});
+      }
+  }
+  return limits;
+}
+
+std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing) {
+  const std::vector<ShellSizeLimit> limits =
+      shell_size_limits(model, shell, sizing.max_size * kEdgeOvershoot, sizing.min_size * kEdgeOvershoot);
+  std::vector<PointSource> sources;
+  std::vector<std::pair<double, const ShellSizeLimit*>> forbidden;  // (size, place) below min_size
+  double thickest = 0.0;
+  for (const ShellSizeLimit& l : limits) {
+    const double size = std::min(l.size / kEdgeOvershoot, std::max(kThinShell * shell.thickness, l.radius));
+    sources.push_back({l.point, size});
+    if (size >= sizing.min_size) continue;
+    forbidden.push_back({size, &l});
+    const double thin_shell = l.radius >= sizing.min_size ? 0.0 : sizing.min_size / kThinShell;
+    thickest = std::max({thickest, kThicknessMargin * l.thickness_for_probe, thin_shell});
+  }
+  if (forbidden.empty()) return sources;
+  // Name the place nearest the centre of those within 1% of the smallest size: along a uniform
+  // leading edge that is mid-span, not a corner where three curves meet.
+  const double needed = std::min_element(forbidden.begin(), forbidden.end())->first;
+  std::vector<const ShellSizeLimit*> worst_places;
+  Vec3 centre = Vec3::Zero();
+  for (const auto& [size, place] : forbidden)
+    if (size <= 1.01 * needed) worst_places.push_back(place), centre += place->point;
+  centre /= static_cast<double>(worst_places.size());
+  const ShellSizeLimit* worst = *std::min_element(worst_places.begin(), worst_places.end(), [&](auto* a, auto* b) {
+    return (a->point - centre).norm() < (b->point - centre).norm();
+  });
+  const std::string curve = nearby_curve(model, worst->surface, worst->point, sizing.min_size);
+  const std::string thickness_remedy =
+      std::isfinite(thickest) ? fmt::format(" or nearfield.thickness >= {:.3g}", thickest) : std::string();
+  throw SurfaceMeshError(fmt::format(
+      "the near-field shell cannot stand on {}{} at {}: curvature radius {:.3g}, shell thickness {:.3g} "
+      "needs a surface size <= {:.3g} there (the shell's straight outer face over a curved body face folds on coarser edges), "
+      "but sizing.min_size = {:.3g} forbids it ({} such place(s)); set sizing.min_size <= {:.3g}{}",
+      cad::surface_label(model, worst->surface), curve.empty() ? "" : " near " + curve,
+      label(worst->point), worst->radius, shell.thickness, needed, sizing.min_size,
+      forbidden.size(), needed * 0.99, thickness_remedy));
+}
+
+}  // namespace semimesh::surface
