@@ -1,4 +1,4 @@
-# The near-field shell: one layer of prisms around the body (O-type), plus the root junction hexes (C-type). Included from
+# The near-field shell: one layer of prisms around the body (O-type), plus the root junction hexes (C-type), plus the wake block (H-type). Included from
 # meshing/CMakeLists.txt; paths are relative to this file's folder.
 add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/body_mesh.cpp
@@ -7,7 +7,8 @@ add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/shell_common.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_geometry.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/c_shell.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/c_shell.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/h_shell.cpp)
 add_library(semimesh::nearfield ALIAS semimesh_nearfield)
 target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_nearfield

@@ -1,12 +1,12 @@
-// C-type against O-type near field on the same case: time per stage and peak memory of the whole
-// pipeline (the C-type adds the junction hexes, the wall layer and the second split pass). Each
-// topology runs in its own process (this program run with "O" or "C"), so each peak resident memory
-// is its own.
+// C-type and H-type against O-type near field on the same case: time per stage and peak memory of
+// the whole pipeline (the C-type adds the junction hexes, the wall layer and the second split
+// direction; the H-type the wake block, its pyramids and the weld). Each topology runs in its own
+// process (this program run with "O", "C" or "H"), so each peak resident memory is its own.
 //
 //   bench_c_type [ORDER [LAYERS [SIZE]]]   defaults: order 2, 5 layers, size factor 1 (the coarse
 //                                          CLI case: ~18k linear elements; 0.5 about doubles it)
-// Prints one row per topology and the C-type's overhead in percent of the O-type's total and per
-// element (the wall layer is a new block of elements: its cost grows with them).
+// Prints one row per topology and the C- and H-type's overheads in percent of the O-type's total and
+// per element (the wall layer and the wake are new blocks of elements: their cost grows with them).
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 
@@ -30,6 +30,7 @@ pl::Config config_for(const std::string& topology, int order, int layers, double
   c.nearfield.shell.thickness = 0.05;
   c.wall_layer.thickness = 0.05;
   c.wall_layer.split.layers = layers;
+  c.wake.length = 1.5;
   c.boundary_layer.split.layers = layers;
   c.sizing.size.max_size = 1.0 * size;
   c.sizing.size.min_size = 0.02 * size;
@@ -78,9 +79,9 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "usage: bench_c_type [ORDER 1..8 [LAYERS >= 1 [SIZE > 0]]]\n");
     return 1;
   }
-  double totals[2] = {0, 0}, elements[2] = {0, 0};
-  const char* topologies[2] = {"O", "C"};
-  for (int k = 0; k < 2; ++k) {
+  double totals[3] = {0, 0, 0}, elements[3] = {0, 0, 0};
+  const char* topologies[3] = {"O", "C", "H"};
+  for (int k = 0; k < 3; ++k) {
     const std::string line = capture(fmt::format("'{}' {} {} {} {}", argv[0], topologies[k], order, layers, size));
     const auto bar = line.find('|');
     if (bar == std::string::npos) {
@@ -101,9 +102,10 @@ int main(int argc, char** argv) {
     fmt::print("{}-type: total {} s, {} elements, peak {} MB, checks passed {}\n  stages (s): {}\n", topologies[k],
                fields[0], fields[1], fields[2], fields.size() > 3 ? fields[3] : "?", stages);
   }
-  fmt::print("C-type over O-type total: {:+.1f} %; per element: {:+.1f} % (the wall layer adds {:.0f} % elements)\n",
-             100.0 * (totals[1] - totals[0]) / totals[0],
-             100.0 * (totals[1] / elements[1] - totals[0] / elements[0]) / (totals[0] / elements[0]),
-             100.0 * (elements[1] - elements[0]) / elements[0]);
+  for (int k = 1; k < 3; ++k)
+    fmt::print("{}-type over O-type total: {:+.1f} %; per element: {:+.1f} % ({:+.0f} % elements)\n", topologies[k],
+               100.0 * (totals[k] - totals[0]) / totals[0],
+               100.0 * (totals[k] / elements[k] - totals[0] / elements[0]) / (totals[0] / elements[0]),
+               100.0 * (elements[k] - elements[0]) / elements[0]);
   return 0;
 }

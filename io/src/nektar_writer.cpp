@@ -114,6 +114,11 @@ struct Geometry {
       const bool tri = num_face_vertices(f) == 3;
       face_curved[f] = m.order() >= (tri ? 3 : 2) &&
                        !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
+      // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
+      if (face_curved[f]) {
+        const auto edges = face_edges(f);
+        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[edges[k]] = 1;
+      }
     }
   }
 

@@ -235,7 +235,7 @@ params::Table<Config> naca_keys() {
 params::Table<Config> nearfield_keys() {
   params::Table<NearFieldConfig> n = {
       params::string("topology", &NearFieldConfig::topology, "\"O\" | \"C\" | \"H\"",
-                     "near-field partition: O one prism layer, C plus the root junction and the wall layer (H is not implemented yet)"),
+                     "near-field partition: O one prism layer, C plus the root junction and the wall layer, H plus the wake block"),
   };
   append(n, &NearFieldConfig::shell, nearfield::shell_keys());
   append(n, &NearFieldConfig::junction, nearfield::junction_keys());
@@ -339,8 +339,8 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
 
   Section& n = *sections.at("nearfield");
-  n.require(c.nearfield.topology != "H", "topology",
-            "\"O\" or \"C\": the H-type (trailing-edge wake block) topology is not implemented yet");
+  n.require(c.nearfield.topology != "H" || c.wall_layer.thickness > 0.0, "topology",
+            "\"O\" or \"C\" with wall_layer.thickness = 0: the H-type wake block stands a gap above the wall layer");
   const nearfield::JunctionParams& junction = c.nearfield.junction;
   n.require(junction.min_angle_deg < junction.max_angle_deg, "junction_min_angle", "< nearfield.junction_max_angle");
   n.require(junction.max_angle_deg <= junction.concave_below_deg, "junction_max_angle", "<= nearfield.concave_angle");
@@ -396,6 +396,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"nearfield", nearfield_keys()},
       {"boundary_layer", boundary_layer_keys()},
       {"wall_layer", wall_layer_keys()},
+      {"wake", stage_keys(&Config::wake, nearfield::wake_keys())},
       {"sizing", sizing_keys()},
       {"farfield", stage_keys(&Config::farfield, farfield::far_field_keys())},
       {"highorder", stage_keys(&Config::highorder, ho::curving_keys())},
@@ -497,7 +498,7 @@ double effective_wall_ratio(const WallLayerConfig& layer) {
 }
 
 bool builds_junction(const Config& config) {
-  return config.nearfield.topology == "C" && config.wall_layer.thickness > 0.0;
+  return (config.nearfield.topology == "C" || config.nearfield.topology == "H") && config.wall_layer.thickness > 0.0;
 }
 
 }  // namespace semimesh::pipeline

@@ -10,11 +10,13 @@
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
+#include "semimesh/pipeline/weld_nodes.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 #include "semimesh/surface/shell_size_limit.hpp"
 
@@ -38,6 +40,9 @@ namespace {
 constexpr int kGeometricErrorSamples = 6;
 // Bound on |curved body volume - triangulated body volume| / triangulated body volume.
 constexpr double kCurvedBodyVolumeFraction = 0.02;
+// Nodes closer than this (relative to the chord) are one node after the H-type split: the split and
+// the pre-cut skin compute the same points up to round-off.
+constexpr double kWeldTolerance = 1e-9;
 
 // Runs one stage: reports its start and end, and turns its exceptions into RunError.
 template <typename Stage>
@@ -122,8 +127,12 @@ Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
 }
 
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
-surface::ModelMeshOptions mesh_options(const cad::Model& model, const SizingConfig& s) {
+surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config) {
+  const SizingConfig& s = config.sizing;
   surface::ModelMeshOptions options;
+  // H-type: the trailing-edge base as structured quads, swept into the wake block.
+  if (config.nearfield.topology == "H")
+    if (auto te = model.find_surface(config.wake.te_base)) options.structured_surfaces.insert(*te);
   auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
     if (segments == 0) return;
     int found = 0;
@@ -155,6 +164,21 @@ ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
   return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
     const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return ratio_at_a + t * (ratio_at_b - ratio_at_a);
+  };
+}
+
+// H-type: the wing's ratio (`upstream`, or the constant `ratio`) up to the trailing edge, then
+// linear with the distance downstream to `ratio_end` at the wake's far end (paper, section 4).
+double wake_ratio(const nearfield::WakeBlock& wake, const ho::RatioField& upstream, double ratio, double ratio_end,
+                  const Eigen::Vector3d& x) {
+  const double at_te = upstream ? upstream(x) : ratio;
+  return at_te + nearfield::wake_fraction(wake, x) * (ratio_end - at_te);
+}
+
+ho::RatioField wake_ratio_field(const nearfield::WakeBlock& wake, const ho::RatioField& upstream, double ratio,
+                                double ratio_end) {
+  return [wake, upstream, ratio, ratio_end](const Eigen::Vector3d& x) {
+    return wake_ratio(wake, upstream, ratio, ratio_end, x);
   };
 }
 
@@ -245,7 +269,7 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     return surface::SizeField(model, params);
   });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
-    return surface::mesh_model_surfaces(model, size, mesh_options(model, config.sizing));
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config));
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -255,20 +279,57 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
 struct LinearMesh {
   mesh::Mesh mesh;
   std::vector<nearfield::LayerStack> stacks;  ///< every layer element, with its direction(s)
+  nearfield::WakeBlock wake;                  ///< H-type: the wake block (no hexes otherwise)
 };
 
-// The linear mesh: the near-field shell (O: prisms; C: prisms and the root junction's hexes), then
-// the far field around it (C: with the wall layer), and the layer stacks of the whole mesh.
+// The wing layer's ratio and its field along the body (from boundary_layer, y+ resolved).
+struct WingRatio {
+  double ratio = 1.0;
+  ho::RatioField upstream;
+};
+
+WingRatio wing_ratio(const Config& config, double chord) {
+  const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
+  const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
+  return {ratio, ratio_field(config.boundary_layer, ratio)};
+}
+
+// The wing layer's split interfaces along a layer edge from x, as the split will place them (its
+// reference interfaces mapped to [0, 1]); none when the layer is not split.
+nearfield::LayerFractions layer_fractions(const Config& config, double chord) {
+  const int layers = config.boundary_layer.split.layers;
+  if (layers <= 1) return {};
+  const WingRatio wing = wing_ratio(config, chord);
+  const double ratio_end = config.wake.ratio_end;
+  return [=](const Eigen::Vector3d& x, const nearfield::WakeBlock& wake) {
+    std::vector<double> f = ho::layer_interfaces(layers, wake_ratio(wake, wing.upstream, wing.ratio, ratio_end, x));
+    for (double& z : f) z = 0.5 * (z + 1.0);
+    return f;
+  };
+}
+
+// The linear mesh: the near-field shell (O: prisms; C: prisms and the root junction's hexes; H: and
+// the wake block's hexes), then the far field around it (C, H: with the wall layer), and the layer
+// stacks of the whole mesh.
 LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces,
-                             Progress& progress, RunResult& result) {
+                             double chord, Progress& progress, RunResult& result) {
   const bool junction = builds_junction(config);
   nearfield::NearField near = stage("near field", progress, result, [&] {
     const nearfield::BodyRoles roles{g.roles.body, g.roles.wall};
+    if (junction && config.nearfield.topology == "H")
+      return nearfield::build_h_shell(*g.model, surfaces, roles, config.nearfield.shell, config.nearfield.junction,
+                                      config.wall_layer.thickness, config.wake, g.model->bbox(),
+                                      layer_fractions(config, chord));
     return junction ? nearfield::build_c_shell(*g.model, surfaces, roles, config.nearfield.shell,
                                                config.nearfield.junction, config.wall_layer.thickness)
                     : nearfield::build_o_shell(*g.model, surfaces, roles, config.nearfield.shell);
   });
   result.junction_hexes = near.junction_hexes;
+  result.wake.hexes = near.wake.hexes;
+  result.wake.length = near.wake.length;
+  result.wake.streamwise_cells = near.wake.streamwise_cells;
+  result.wake.gap = near.wake.gap;
+  nearfield::WakeBlock wake = near.wake;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
@@ -279,7 +340,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
                                      junction ? config.wall_layer.thickness : 0.0);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh), std::move(far.stacks)};
+  return {std::move(far.mesh), std::move(far.stacks), std::move(wake)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -313,20 +374,32 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
-mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const std::vector<nearfield::LayerStack>& stacks,
-                 double chord, Progress& progress, RunResult& result) {
+mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMesh& linear, double chord,
+                 Progress& progress, RunResult& result) {
+  const std::vector<nearfield::LayerStack>& stacks = linear.stacks;
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
-  const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
+  const WingRatio wing = wing_ratio(config, chord);
+  const double ratio = wing.ratio;
   const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
+  ho::RatioField wing_field = wing.upstream;
+  if (linear.wake.hexes > 0) {
+    wing_field = wake_ratio_field(linear.wake, wing.upstream, ratio, config.wake.ratio_end);
+    result.wake.ratio_first = ratio;
+    result.wake.ratio_last = config.wake.ratio_end;
+  }
   StackSplit split = stage("split", progress, result, [&] {
-    StackSplit fine = split_stacks(coarse, stacks,
-                                   {ho::LayerDistribution{layers, ratio}, ratio_field(config.boundary_layer, ratio)},
+    StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
   });
+  // H-type: the far field stands on skin quads cut like the split; make their nodes the split's.
+  if (linear.wake.hexes > 0 && layers > 1)
+    split.mesh = stage("weld", progress, result, [&] {
+      return mesh::without_unreferenced_nodes(weld_coincident_nodes(split.mesh, kWeldTolerance * chord).mesh);
+    });
   if (layers > 1) {
     result.layers.requested_ratio = ratio;
     result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
@@ -422,14 +495,14 @@ RunResult run(const Config& config, Progress& progress) {
   RunResult result;
   const Geometry geometry = load_geometry(config, progress, result);
   const surface::SurfaceMeshes surfaces = mesh_surfaces(config, geometry, progress, result);
-  LinearMesh linear = build_linear_mesh(config, geometry, surfaces, progress, result);
+  const double chord = chord_of(config, geometry, surfaces);
+  LinearMesh linear = build_linear_mesh(config, geometry, surfaces, chord, progress, result);
   result.mesh = std::move(linear.mesh);
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
-  const double chord = chord_of(config, geometry, surfaces);
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
-    result.mesh = split(config, result.mesh, linear.stacks, chord, progress, result);
+    result.mesh = split(config, result.mesh, linear, chord, progress, result);
   check(config, geometry, surfaces, chord, progress, result);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);

@@ -45,6 +45,14 @@ std::string summary_table(const RunResult& r) {
                ? "\n" : fmt::format("   min scaled Jacobian {:.4f}\n", jacobian->second);
     }
   if (r.junction_hexes > 0) t += fmt::format("{:<28} {:>12}\n", "junction hexes (unsplit)", r.junction_hexes);
+  if (r.wake.hexes > 0) {
+    t += fmt::format("{:<28} {:>12}\n", "wake hexes (unsplit)", r.wake.hexes);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wake length", r.wake.length);
+    t += fmt::format("{:<28} {:>12}\n", "wake streamwise cells", r.wake.streamwise_cells);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wake ratio at the TE", r.wake.ratio_first);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wake ratio at the far end", r.wake.ratio_last);
+    t += fmt::format("{:<28} {:>12.4g}\n", "wake gap above wall layer", r.wake.gap);
+  }
   t += fmt::format("{:<28} {:>12}\n", "nodes", r.mesh.num_nodes());
   for (const auto& [group, count] : r.boundary_faces_by_group) t += fmt::format("  boundary {:<17} {:>12}\n", group, count);
   t += fmt::format("{:<28} {:>12}\n", "invalid elements", r.validity.invalid);
@@ -95,6 +103,10 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += "  \"elements_by_type\": " + json_counts(r.elements_by_type) + ",\n";
   j += "  \"elements_by_region\": " + json_counts(r.elements_by_region) + ",\n";
   j += fmt::format("  \"junction_hexes\": {},\n", r.junction_hexes);
+  j += fmt::format("  \"wake\": {{\"hexes\": {}, \"length\": {}, \"streamwise_cells\": {}, \"ratio_first\": {}, "
+                   "\"ratio_last\": {}, \"gap\": {}}},\n",
+                   r.wake.hexes, json_number(r.wake.length), r.wake.streamwise_cells, json_number(r.wake.ratio_first),
+                   json_number(r.wake.ratio_last), json_number(r.wake.gap));
   j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
   j += fmt::format("  \"far_field\": {{\"tets\": {}, \"pyramids\": {}, \"wall_triangles\": {}, \"box_triangles\": {}, "

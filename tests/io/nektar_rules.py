@@ -15,7 +15,9 @@ named in each check's message):
     element's collapsed vertex for that face.
   - the straight-sided Jacobian at local vertex 0 is positive (NekMesh's jac module reports
     negative ones; a mirrored numbering inverts the element).
-  - CURVED: NUMPOINTS matches the points; a triangle's points are a nodal triangle set
+  - CURVED: NUMPOINTS matches the points; every edge of a curved face has a curve with as many
+    points as the face has along an edge (TriGeom/QuadGeom::v_FillGeom: "Number of edge points does
+    not correspond to number of face points"); a triangle's points are a nodal triangle set
     (NodalTri*: (n)(n+1)/2 points) or, with PolyEvenlySpaced, a square number (TriGeom::v_FillGeom
     aborts otherwise); quadrilaterals a square number; an edge's points run from its first vertex
     to its second and a face's vertices come first (nodal) or at the corners (tensor) in face order.
@@ -354,7 +356,12 @@ def check_curves(m, bad, scale):
         if fverts is None:
             continue
         corners = [m.vertices[x] for x in fverts]
-        if m.faces[entity][0] == "T":
+        tri = m.faces[entity][0] == "T"
+        per_edge = (math.isqrt(8 * n + 1) - 1) // 2 if tri and ptype in NODAL_TRI else math.isqrt(n)
+        for e in m.faces[entity][1]:
+            if len(m.curves.get(("E", e), (None, [None, None]))[1]) != per_edge:
+                bad.add(where, f"Tri/QuadGeom::v_FillGeom: edge {e} has not the face's {per_edge} points per edge")
+        if tri:
             if ptype in NODAL_TRI:
                 k = (math.isqrt(8 * n + 1) - 1) // 2
                 if k * (k + 1) // 2 != n:

@@ -203,11 +203,33 @@ TEST(Config, SyntaxErrorGivesTheLine) {
   EXPECT_EQ(message.rfind("config error: case.toml:2:", 0), 0u) << message;
 }
 
-TEST(Config, HTopologyIsRejectedClearly) {
-  const std::string message = error_of("[nearfield]\ntopology = \"H\"\n");
+TEST(Config, HTopologyWithItsWakeBlock) {
+  const Config c = parse_config("[nearfield]\ntopology = \"H\"\n[wake]\ndirection = [1.0, 0.2, 0.0]\nlength = 3.0\n"
+                                "layers = 20\ngrowth = 1.1\nwidening = 5.0\ngap = 0.2\nratio_end = 1.2\n",
+                                "case.toml");
+  EXPECT_EQ(c.nearfield.topology, "H");
+  EXPECT_EQ(c.wake.direction[1], 0.2);
+  EXPECT_EQ(c.wake.length, 3.0);
+  EXPECT_EQ(c.wake.layers, 20);
+  EXPECT_EQ(c.wake.growth, 1.1);
+  EXPECT_EQ(c.wake.widening_deg, 5.0);
+  EXPECT_EQ(c.wake.gap, 0.2);
+  EXPECT_EQ(c.wake.ratio_end, 1.2);
+  EXPECT_TRUE(builds_junction(c));
+}
+
+TEST(Config, HTopologyNeedsAWallLayerAndRangedWakeKeys) {
+  const std::string message = error_of("[nearfield]\ntopology = \"H\"\n[wall_layer]\nthickness = 0.0\n");
   EXPECT_NE(message.find("nearfield.topology"), std::string::npos) << message;
-  EXPECT_NE(message.find("not implemented yet"), std::string::npos) << message;
+  EXPECT_NE(message.find("wall_layer.thickness"), std::string::npos) << message;
   EXPECT_NE(error_of("[nearfield]\ntopology = \"X\"\n").find("expected \"O\", \"C\" or \"H\""), std::string::npos);
+  for (const char* bad : {"gap = 0.0", "length = -1.0", "layers = 0", "growth = 0.5", "widening = 45.0", "ratio_end = 0.9",
+                          "direction = [1.0, 0.0]"}) {
+    const std::string text = error_of(std::string("[wake]\n") + bad + "\n");
+    const std::string key = std::string("wake.") + std::string(bad).substr(0, std::string(bad).find(' '));
+    EXPECT_NE(text.find(key), std::string::npos) << bad << ": " << text;
+    EXPECT_NE(text.find("case.toml:2"), std::string::npos) << bad << ": " << text;
+  }
 }
 
 TEST(Config, CTopologyWithItsWallLayer) {
@@ -297,12 +319,19 @@ TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
   EXPECT_THROW(load_config((dir / "missing.toml").string()), ConfigError);
 }
 
-TEST(Config, TheExampleParses) {
-  const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing.toml");
-  EXPECT_EQ(c.highorder.order, 4);
-  EXPECT_EQ(c.boundary_layer.split.layers, 5);
-  EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
-  EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05);
+TEST(Config, TheExamplesParse) {
+  for (const char* name : {"naca0012_wing.toml", "naca0012_wing_c.toml", "naca0012_wing_h.toml"}) {
+    const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/" + name);
+    EXPECT_EQ(c.highorder.order, 4) << name;
+    EXPECT_EQ(c.boundary_layer.split.layers, 5) << name;
+    EXPECT_EQ(c.boundary_layer.split.ratio, 2.0) << name;
+    EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05) << name;
+  }
+  // The paper's H-type near field.
+  const Config paper = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing_h.toml");
+  EXPECT_EQ(paper.nearfield.topology, "H");
+  EXPECT_GT(paper.wake.gap, 0.0);
+  EXPECT_EQ(paper.wake.ratio_end, 1.0);
 }
 
 }  // namespace

@@ -169,8 +169,8 @@ RepairFailure Repairer::failure(std::size_t e) const {
   msg << "element " << e << " at (" << f.centroid.x() << ", " << f.centroid.y() << ", " << f.centroid.z()
       << ") stays invalid with every node off the CAD straightened, and with its column following the curved "
          "body face: its nodes on the CAD"
-      << (surfaces.empty() ? std::string() : " surface " + surfaces)
-      << " fold it; refine the surface mesh there or reduce the near-field thickness";
+      << (surfaces.empty() ? std::string() : " (" + surfaces + ")")
+      << " fold it; refine the surface mesh there (a smaller sizing.min_size) or change the near-field thickness";
   f.reason = msg.str();
   return f;
 }

@@ -13,13 +13,7 @@
 #include <tuple>
 
 namespace semimesh::ho {
-namespace {
 
-using detail::LatticePoint;
-using mesh::NodeId;
-
-/// Reference positions z_0 = -1 < z_1 < ... < z_N = 1 of the layer interfaces: thicknesses h r^k,
-/// k = 0..N-1, summing to the reference length 2.
 std::vector<double> layer_interfaces(int layers, double ratio) {
   std::vector<double> thickness(layers);
   double total = 0.0, h = 1.0;
@@ -33,6 +27,12 @@ std::vector<double> layer_interfaces(int layers, double ratio) {
   z[layers] = 1.0;
   return z;
 }
+
+namespace {
+
+using detail::LatticePoint;
+using mesh::NodeId;
+
 
 /// The body side of a shape for one split direction.
 struct DirectionData {
@@ -225,8 +225,13 @@ std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
   const Plan& plan = plans_[element];
   if (!families_[plan.family[0]].ratio) return {};
   std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
-  for (int v : direction_of(element, 0).bottom)
-    z_of_vertex[v] = layer_interfaces(layers(element, 0), ratio_at(in_.node(el.vertices[v]), element, plan.family[0]));
+  bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
+  for (int v : direction_of(element, 0).bottom) {
+    const double r = ratio_at(in_.node(el.vertices[v]), element, plan.family[0]);
+    uniform = uniform && r == families_[plan.family[0]].distribution.ratio;
+    z_of_vertex[v] = layer_interfaces(layers(element, 0), r);
+  }
+  if (uniform) return {};  // the cached basis values of the constant ratio give the same points
   return z_of_vertex;
 }
 
@@ -464,7 +469,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
     if (position[e] >= 0) throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
     plans_[e] = {dir, split[j].family};
-    if (!families_[split[j].family[0]].ratio) uniform_values(s, plans_[e]);
+    uniform_values(s, plans_[e]);  // also for a ratio field: elements where it is constant use them
   }
   check_side_faces(split);
   if (first_piece) first_piece->assign(in_.elements().size(), 0);

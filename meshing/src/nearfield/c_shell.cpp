@@ -6,6 +6,7 @@
 #include "semimesh/nearfield/junction_geometry.hpp"
 #include "semimesh/nearfield/node_normals.hpp"
 
+#include "junction_shell.hpp"
 #include "labels.hpp"
 #include "shell_common.hpp"
 
@@ -105,32 +106,7 @@ struct JunctionNode {
   CadAttachment strip_top_cad, wall_foot_cad;
 };
 
-struct Frame {
-  Vec3 normal;  // of the wall, into the fluid
-  Vec3 origin;  // a point of the wall
-  double height(const Vec3& x) const { return (x - origin).dot(normal); }
-};
-
-// The lift of the wing mesh: a node at height d moves along its CAD entity to height
-// strip + d (1 - strip / tip), so the root row lands on the strip top and the tip stays.
-Vec3 lift_node(const cad::Model& model, const Frame& wall, double strip, double tip, const Vec3& x,
-               CadAttachment& cad) {
-  const double d = wall.height(x);
-  if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
-  const double target = strip + d * (1.0 - strip / tip);
-  Vec3 p = x;
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const Vec3 aim = p + (target - wall.height(p)) * wall.normal;
-    if (cad.kind == CadAttachment::Surface) {
-      const auto proj = model.surface(cad.entity).project(aim, cad::Vec2(cad.u, cad.v));
-      p = proj.point, cad.u = proj.uv.x(), cad.v = proj.uv.y();
-    } else {
-      const auto proj = model.curve(cad.entity).project(aim, cad.u);
-      p = proj.point, cad.u = proj.t;
-    }
-  }
-  return p;
-}
+using Frame = detail::WallFrame;
 
 // Outward direction in the wall plane of a root segment a -> b whose wing triangle has normal n.
 Vec3 segment_outward(const Vec3& a, const Vec3& b, const Vec3& n_tri, const Vec3& n_wall) {
@@ -159,6 +135,19 @@ std::vector<int> root_loop(const cad::Model& model, const BodyMesh& body, const 
   if (loop.size() < 3)
     throw NearFieldError("near field: the body has no root loop on the wall " + surface_label(model, wall));
   return loop;
+}
+
+// The body without the triangles of `bare` (same nodes): what the wing layer is built on.
+BodyMesh without_surface(const BodyMesh& body, int bare) {
+  BodyMesh layer = body;
+  layer.triangles.clear();
+  layer.triangle_surface.clear();
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    if (body.triangle_surface[t] != bare) {
+      layer.triangles.push_back(body.triangles[t]);
+      layer.triangle_surface.push_back(body.triangle_surface[t]);
+    }
+  return layer;
 }
 
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
@@ -200,8 +189,8 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
 
 // Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
 // the strip is too tall for the body or a triangle would fold.
-void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
-                     const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
+std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
+                                          const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
   double tip = 0.0, strip = 0.0;
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
@@ -214,7 +203,7 @@ void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vect
   std::vector<char> on_root(body.num_nodes(), 0);
   for (int r : loop) on_root[r] = 1;
   for (int v = 0; v < body.num_nodes(); ++v)
-    if (!on_root[v]) body.points[v] = lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
+    if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
   for (std::size_t i = 0; i < loop.size(); ++i)
     body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
   for (const auto& t : body.triangles) {
@@ -227,6 +216,7 @@ void lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vect
           surface_label(model, body.node_surface[t[0]]) +
           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
+  return {strip, tip};
 }
 
 }  // namespace
@@ -244,8 +234,11 @@ const params::Table<JunctionParams>& junction_keys() {
   return table;
 }
 
-NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
-                        const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
+namespace detail {
+
+JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                                   const ShellParams& params, const JunctionParams& junction, double wall_thickness,
+                                   int bare_surface) {
   detail::check_shell_params(model, roles, params);
   check_junction_params(model, roles, junction, wall_thickness);
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
@@ -279,24 +272,30 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   }
   std::vector<CadAttachment> root_cad(n);
   for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
-  lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
 
-  // The wing layer on the lifted mesh, the strip tops' offsets pinned at the halo.
-  const auto neighbours = node_neighbours(body);
+  const auto [strip, tip] = lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
+
+  // The wing layer on the lifted mesh (without the bare surface, whose own nodes get no offset:
+  // pinned where they are), the strip tops' offsets pinned at the halo.
+  const BodyMesh layer = bare_surface >= 0 ? without_surface(body, bare_surface) : body;
+  const auto neighbours = node_neighbours(layer);
   NormalOptions normal_options;
   normal_options.smoothing_passes = params.normal_smoothing_passes;
-  std::vector<Vec3> normals = node_normals(body, std::vector<Vec3>(count, Vec3::Zero()), normal_options);
+  std::vector<Vec3> normals = node_normals(layer, std::vector<Vec3>(count, Vec3::Zero()), normal_options);
   detail::OffsetConstraints constraints;
   constraints.pinned.assign(count, 0);
   constraints.pinned_outer.assign(count, Vec3::Zero());
+  for (int i = 0; i < count; ++i)
+    if (neighbours[i].empty()) constraints.pinned[i] = 1, constraints.pinned_outer[i] = body.points[i], normals[i] = Vec3::UnitX();
   for (int i = 0; i < n; ++i) {
     constraints.pinned[loop[i]] = 1;
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
   }
-  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, body, neighbours, normals, constraints, params);
+  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
 
-  NearField field;
+  JunctionShell shell;
+  NearField& field = shell.field;
   field.warnings = offsets.warnings;
   mesh::Mesh& m = field.mesh;
   m.reserve(ho::Shape::Prism, body.triangles.size() + n);
@@ -306,6 +305,7 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   for (int i = 0; i < count; ++i) m.add_node(offsets.outer[i]);
   auto id = [](int v) { return static_cast<NodeId>(v); };
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
+    if (body.triangle_surface[t] == bare_surface) continue;
     const auto& v = body.triangles[t];
     m.add_element(ho::Shape::Prism,
                   {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
@@ -350,18 +350,55 @@ NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     m.add_boundary_face("wall", ho::Shape::Quadrilateral, {h[0], h[1], h[5], h[4]});
     ++field.junction_hexes;
   }
-  for (int i = 0; i < n; ++i) {
-    field.footprint.push_back(foot_id[i]);
-    field.footprint_top.push_back(id(loop[i]) + offset);
-  }
-
   field.thickness_min = params.thickness;
   field.thickness_max = 0.0;
   for (int i = 0; i < count; ++i) {
+    if (neighbours[i].empty()) continue;
     field.thickness_min = std::min(field.thickness_min, offsets.thickness[i]);
     field.thickness_max = std::max(field.thickness_max, offsets.thickness[i]);
   }
-  return field;
+  shell.body = std::move(body);
+  shell.offset = offset;
+  shell.chain = loop;
+  shell.root_id = root_id;
+  shell.foot_id = foot_id;
+  shell.wall = wall;
+  shell.strip = strip;
+  shell.tip = tip;
+  return shell;
+}
+
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+               CadAttachment& cad) {
+  const double d = wall.height(x);
+  if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
+  const double target = strip + d * (1.0 - strip / tip);
+  Vec3 p = x;
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const Vec3 aim = p + (target - wall.height(p)) * wall.normal;
+    if (cad.kind == CadAttachment::Surface) {
+      const auto proj = model.surface(cad.entity).project(aim, cad::Vec2(cad.u, cad.v));
+      p = proj.point, cad.u = proj.uv.x(), cad.v = proj.uv.y();
+    } else {
+      const auto proj = model.curve(cad.entity).project(aim, cad.u);
+      p = proj.point, cad.u = proj.t;
+    }
+  }
+  return p;
+}
+
+}  // namespace detail
+
+NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                        const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
+  detail::JunctionShell shell =
+      detail::build_junction_shell(model, meshes, roles, params, junction, wall_thickness, /*bare_surface=*/-1);
+  NearField& field = shell.field;
+  for (std::size_t i = 0; i < shell.chain.size(); ++i) {
+    field.footprint.push_back(shell.foot_id[i]);
+    field.footprint_top.push_back(static_cast<mesh::NodeId>(shell.chain[i]) + shell.offset);
+  }
+  return std::move(field);
 }
 
 }  // namespace semimesh::nearfield

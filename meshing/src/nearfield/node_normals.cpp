@@ -92,10 +92,17 @@ std::vector<Vec3> node_normals(const BodyMesh& body, const std::vector<Vec3>& pl
     normals[i] = constrained(normals[i].normalized(), plane_normal[i]);
     normals[i] = widen_visibility(body, fans, i, normals[i], plane_normal[i], options.min_visibility);
     floor[i] = min_visibility(body, fans, i, normals[i]);
-    if (!(floor[i] > kNoVisibility))
+    if (!(floor[i] > kNoVisibility)) {
+      // Usually coarse triangles wrapped round a small nose radius (seen at a swept, tapered 0006 tip).
+      double longest = 0.0;
+      for (int j : neighbours[i]) longest = std::max(longest, (body.points[j] - body.points[i]).norm());
       throw NearFieldError("near field: no extrusion direction sees all the triangles around the body node at " +
                            point_label(body.points[i]) + " (surface id " + std::to_string(body.node_surface[i]) +
-                           "): the body has a cusp there, or the wall cuts its fan; refine or fix the geometry");
+                           "): its edges (up to " + number_label(longest) +
+                           " long) are too coarse for the body's curvature there, or the body has a cusp, or the wall "
+                           "cuts its fan; mesh the surface finer there (e.g. sizing.min_size <= " +
+                           number_label(0.25 * longest) + ") or fix the geometry");
+    }
     floor[i] = std::min(floor[i], options.min_visibility);
   }
   for (int pass = 0; pass < options.smoothing_passes; ++pass) {

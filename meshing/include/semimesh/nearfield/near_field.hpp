@@ -54,6 +54,23 @@ struct Warning {
   Eigen::Vector3d where = Eigen::Vector3d::Zero();
 };
 
+/// H-type: the wake block swept from the trailing edge (h_shell.hpp), for the ratio along it and
+/// the report. Empty (length 0) for the other topologies.
+struct WakeBlock {
+  std::vector<Eigen::Vector3d> origins;                  ///< trailing-edge nodes the block is swept from,
+                                                         ///< sorted by their coordinate along span_axis
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< unit
+  Eigen::Vector3d span_axis = Eigen::Vector3d::UnitZ();  ///< unit, across `direction` (the wall normal's part)
+  double length = 0.0;
+  int streamwise_cells = 0;
+  int hexes = 0;
+  double gap = 0.0;  ///< measured: lowest wake node's height above the wall layer's top
+};
+
+/// Distance downstream of the trailing edge as a fraction of the wake's length, in [0, 1]: along
+/// the direction from the origin whose line (origin + s direction) passes nearest to x (0 upstream).
+double wake_fraction(const WakeBlock& wake, const Eigen::Vector3d& x);
+
 struct NearField {
   mesh::Mesh mesh{1};                       ///< order 1; boundary groups "wing" and "wall"
   std::vector<SkinFace> skin;               ///< [faces] outer skin facing the far field
@@ -66,6 +83,7 @@ struct NearField {
   std::vector<int> element_surface;         ///< [elements the shell built] CAD surface id of each one's body
                                             ///< face (junction hexes: the wing surface of their R-W face)
   int junction_hexes = 0;                   ///< C-type: hexes along the root loop(s)
+  WakeBlock wake;                           ///< H-type
   double thickness_min = 0.0;               ///< smallest layer thickness used (after local reduction)
   double thickness_max = 0.0;               ///< largest layer thickness used
   std::vector<Warning> warnings;

@@ -16,6 +16,7 @@
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/params/table.hpp"
 #include "semimesh/surface/size_field.hpp"
@@ -57,7 +58,7 @@ struct GeometryConfig {
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.
 struct NearFieldConfig {
-  std::string topology = "O";  ///< "O", "C" (root junction block + wall layer), "H" (rejected for now)
+  std::string topology = "O";  ///< "O", "C" (root junction block + wall layer), "H" (C + wake block)
   nearfield::ShellParams shell;
   nearfield::JunctionParams junction;  ///< C: which body-wall curves are concave corners, supported angles
 };
@@ -116,6 +117,7 @@ struct Config {
   NearFieldConfig nearfield;
   BoundaryLayerConfig boundary_layer;
   WallLayerConfig wall_layer;
+  nearfield::WakeParams wake;  ///< [wake]: the H-type wake block
   SizingConfig sizing;
   farfield::FarFieldParams farfield;
   ho::CurvingParams highorder;
@@ -161,7 +163,7 @@ BoundaryLayerConfig resolve_y_plus(BoundaryLayerConfig layer, double chord);
 double effective_layer_ratio(const BoundaryLayerConfig& layer, double thickness);
 /// The same for the wall layer.
 double effective_wall_ratio(const WallLayerConfig& layer);
-/// Whether the run builds the C-type junction (topology "C" and a wall layer of thickness > 0).
+/// Whether the run builds the C-type junction (topology "C" or "H" and a wall layer of thickness > 0).
 bool builds_junction(const Config& config);
 
 }  // namespace semimesh::pipeline

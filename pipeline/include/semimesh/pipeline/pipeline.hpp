@@ -80,6 +80,12 @@ struct RunResult {
   std::map<std::string, std::size_t> elements_by_type;  ///< "tetrahedron" -> count, ...
   std::map<std::string, std::size_t> elements_by_region;  ///< "wing_layer" -> count, ...
   int junction_hexes = 0;                 ///< C-type: hexes along the root before splitting
+  /// H-type (hexes 0 otherwise): the wake block before splitting, its length and streamwise cells,
+  /// the wing layers' ratio at the trailing edge and at the far end, the measured gap above the wall layer.
+  struct WakeFigures {
+    int hexes = 0, streamwise_cells = 0;
+    double length = 0.0, ratio_first = 1.0, ratio_last = 1.0, gap = 0.0;
+  } wake;
   std::map<std::string, std::size_t> boundary_faces_by_group;
   std::size_t surface_triangles = 0;
   std::size_t surface_quads = 0;

@@ -27,6 +27,10 @@ struct LayerDistribution {
   double ratio = 2.0;
 };
 
+/// Reference positions z_0 = -1 < z_1 < ... < z_N = 1 of the layer interfaces: thicknesses h r^k,
+/// k = 0..N-1, summing to the reference length 2 (what every split uses).
+std::vector<double> layer_interfaces(int layers, double ratio);
+
 /// One row per key of LayerDistribution (the config's [boundary_layer] section).
 const params::Table<LayerDistribution>& layer_keys();
 

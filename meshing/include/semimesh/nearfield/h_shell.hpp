@@ -1,0 +1,70 @@
+// The H-type near field (paper, section 3 "H-type", "wake block", "wake gap"; DESIGN.md section 5):
+// the C-type near field whose wing layer ends at the squared-off trailing edge, and a block of hexes
+// swept from the trailing edge downstream, standing a gap above the wall layer.
+//
+// Construction:
+//  - the C-type wing layer and root junction (c_shell.hpp) with the trailing-edge base bare: the base
+//    (meshed with structured quads) is lifted and carries junction hexes along its root like the
+//    rest of the wing, but no prisms; the upper and lower layers end at the trailing edge with
+//    their own normals (no rounding around it). Each has a rear interface, the quads (a, b, b', a')
+//    over its trailing-edge edges a-b up to its outer edge a'-b' (the tip's layer likewise over the
+//    tip's trailing-edge edge);
+//  - the wake block: the base quads and the rear interfaces above the cut row (the lowest
+//    trailing-edge row at least `gap` above the wall layer's top) are swept along `direction` in
+//    `layers` streamwise cells growing by `growth` up to `length`, the layer offsets moving away
+//    from the wake sheet by tan(widening) per unit length. Hexes over rear interfaces continue their
+//    wing layer (a LayerStack of the wing family), hexes over the base are not split;
+//  - the skin: every near-field face used once that is neither body, wall nor on the footprint,
+//    plus the base quads below the cut. A skin quad that the wing layer's split will cut (the rear
+//    interfaces below the cut, the junction's faces behind the base, the wake's root and outflow
+//    faces) is given to the far field already cut, at the split's interfaces along its straight
+//    layer edges, so the pyramids and tetrahedra match the split elements' faces once the split
+//    nodes are welded to these (the paper's pyramids on "(split) quadrilaterals").
+// Boundary orientation as for the C-type; the base quads are in group "wing".
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/near_field.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/params/table.hpp"
+#include "semimesh/surface/model_surfaces.hpp"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace semimesh::nearfield {
+
+/// Keys, ranges and meanings: wake_keys() (the config's [wake] section).
+struct WakeParams {
+  std::array<double, 3> direction{1.0, 0.0, 0.0};
+  double length = 2.0;
+  int layers = 12;
+  double growth = 1.15;
+  double widening_deg = 0.0;
+  double gap = 0.1;
+  double ratio_end = 1.0;
+  std::string te_base = "te_base";
+};
+
+/// One row per key of WakeParams (semimesh/params/table.hpp).
+const params::Table<WakeParams>& wake_keys();
+
+/// The wing layer's split as the near field must foresee it on the skin: the split's interfaces
+/// (fractions 0 = f_0 < ... < f_N = 1 from the body side) along a layer edge whose body-side vertex
+/// is at x, given the wake block (for the ratio along it). Empty: the layer is not split.
+using LayerFractions = std::function<std::vector<double>(const Eigen::Vector3d& x, const WakeBlock& wake)>;
+
+/// Body surface meshes (the trailing-edge base `wake.te_base` meshed with structured quads, the
+/// rest with triangles) -> wing prisms, junction hexes and wake hexes (order 1). `box` bounds the
+/// domain (the far field's box); `fractions` the wing layer's split (see LayerFractions). Throws NearFieldError naming the key and value, or the surface,
+/// when: no trailing-edge base is found among the body surfaces, the direction points upstream
+/// (x <= 0) or into the wall, the gap leaves no trailing-edge row below the tip, the wake leaves
+/// the box, a wake hex would be inverted (widening or direction), or the C-type junction fails.
+NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                        const ShellParams& params, const JunctionParams& junction, double wall_thickness,
+                        const WakeParams& wake, const cad::BBox& box, const LayerFractions& fractions);
+
+}  // namespace semimesh::nearfield

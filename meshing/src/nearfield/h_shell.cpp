@@ -1,0 +1,340 @@
+#include "semimesh/nearfield/h_shell.hpp"
+
+#include "semimesh/ho/element_type.hpp"
+#include "semimesh/ho/validity.hpp"
+#include "semimesh/nearfield/error.hpp"
+
+#include "junction_shell.hpp"
+#include "labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+
+namespace semimesh::nearfield {
+namespace {
+
+using mesh::NodeId;
+
+constexpr double kPi = 3.14159265358979323846;
+
+[[noreturn]] void fail(const std::string& what) { throw NearFieldError("near field: " + what); }
+
+std::string direction_label(const WakeParams& w) {
+  return "[" + number_label(w.direction[0]) + ", " + number_label(w.direction[1]) + ", " + number_label(w.direction[2]) + "]";
+}
+
+// Streamwise stations 0 = s_0 < ... < s_K = length, each cell `growth` times the previous one.
+std::vector<double> stations(const WakeParams& w) {
+  std::vector<double> s(w.layers + 1, 0.0);
+  double h = 1.0;
+  for (int k = 1; k <= w.layers; ++k, h *= w.growth) s[k] = s[k - 1] + h;
+  for (double& x : s) x *= w.length / s.back();
+  return s;
+}
+
+// The surface meshes with the base's quads as triangle pairs (q0 q1 q2, q0 q2 q3), so the junction
+// machinery sees one triangulated body; quad i becomes triangles 2i and 2i + 1 of the base.
+surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, int te) {
+  surface::SurfaceMeshes out = meshes;
+  surface::SurfaceMesh& m = out.surfaces.at(te);
+  for (const auto& q : m.quads) {
+    m.triangles.push_back({q[0], q[1], q[2]});
+    m.triangles.push_back({q[0], q[2], q[3]});
+  }
+  m.quads.clear();
+  return out;
+}
+
+bool hex_valid(const mesh::Mesh& m, const std::array<NodeId, 8>& h) {
+  Eigen::MatrixX3d x(8, 3);
+  for (int k = 0; k < 8; ++k) x.row(k) = m.node(h[k]).transpose();
+  return ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, x).valid;
+}
+
+// One quad of the wake's cross-section at the trailing edge: q0 -> q1 its body-side edge and
+// q0 -> q3 its layer direction for a rear interface (`layer`); a base quad otherwise.
+struct Section {
+  std::array<NodeId, 4> q;
+  bool layer = false;
+};
+
+// Vertex pairs (bottom, top) along reference axis 0, 1, 2 of a hexahedron (Gmsh order).
+constexpr int kHexAxisEdges[3][4][2] = {{{0, 1}, {3, 2}, {4, 5}, {7, 6}},
+                                        {{0, 3}, {1, 2}, {4, 7}, {5, 6}},
+                                        {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+// Every layer edge (bottom vertex, top vertex) of the near field's stacks, by its sorted ends,
+// with its family.
+std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>> layer_edges(const NearField& f) {
+  std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>> edges;
+  for (const LayerStack& s : f.stacks) {
+    const mesh::Element& e = f.mesh.elements()[s.element];
+    for (const LayerDirection& d : s.directions) {
+      auto add = [&](int a, int b) {
+        const NodeId u = e.vertices[a], w = e.vertices[b];
+        edges[{std::min(u, w), std::max(u, w)}] = {u, w, d.family};
+      };
+      if (e.shape == ho::Shape::Prism)
+        for (int i = 0; i < 3; ++i) add(i, i + 3);
+      else
+        for (const auto& pair : kHexAxisEdges[d.axis]) add(pair[0], pair[1]);
+    }
+  }
+  return edges;
+}
+
+}  // namespace
+
+double wake_fraction(const WakeBlock& wake, const Eigen::Vector3d& x) {
+  if (wake.origins.empty() || !(wake.length > 0.0)) return 0.0;
+  // The distance across `direction` is at least the one along span_axis: search outwards from x's
+  // place in the sorted origins and stop where that bound exceeds the best distance found.
+  const double key = x.dot(wake.span_axis);
+  const auto& o = wake.origins;
+  const auto start = std::lower_bound(o.begin(), o.end(), key, [&](const Eigen::Vector3d& p, double k) {
+                       return p.dot(wake.span_axis) < k;
+                     }) - o.begin();
+  double best = 1e300, s = 0.0;
+  auto visit = [&](long i) {
+    const double gap = o[i].dot(wake.span_axis) - key;
+    if (gap * gap > best) return false;
+    const double along = (x - o[i]).dot(wake.direction);
+    const double across = (x - o[i] - along * wake.direction).squaredNorm();
+    if (across < best) best = across, s = along;
+    return true;
+  };
+  for (long i = start; i < static_cast<long>(o.size()) && visit(i); ++i) {}
+  for (long i = start - 1; i >= 0 && visit(i); --i) {}
+  return std::clamp(s / wake.length, 0.0, 1.0);
+}
+
+const params::Table<WakeParams>& wake_keys() {
+  static const params::Table<WakeParams> table = {
+      params::reals("direction", &WakeParams::direction, "",
+                    "H: the wake block's sweep direction (the freestream), x > 0 and not into the wall"),
+      params::real("length", &WakeParams::length, "> 0", "H: the wake block's length behind the trailing edge, model units"),
+      params::integer("layers", &WakeParams::layers, "[1, 1000]", "H: streamwise cells of the wake block"),
+      params::real("growth", &WakeParams::growth, "[1, 3]", "H: each streamwise cell this times the previous one"),
+      params::real("widening", &WakeParams::widening_deg, "[0, 45)",
+                   "H: angle (degrees) by which the block's cross-flow thickness grows downstream"),
+      params::real("gap", &WakeParams::gap, "> 0", "H: height of the wake block's root above the wall layer's top"),
+      params::real("ratio_end", &WakeParams::ratio_end, ">= 1",
+                   "H: the layer ratio at the wake's far end (r at the trailing edge, linear in between)"),
+      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface"),
+  };
+  return table;
+}
+
+NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                        const ShellParams& params, const JunctionParams& junction, double wall_thickness,
+                        const WakeParams& wake, const cad::BBox& box, const LayerFractions& fractions) {
+  if (const auto bad = params::violation(wake, wake_keys(), "wake")) fail(*bad);
+  const Vec3 d0(wake.direction[0], wake.direction[1], wake.direction[2]);
+  if (!(d0.norm() > 0.0)) fail("wake.direction = " + direction_label(wake) + ": expected a non-zero vector");
+  const Vec3 d = d0.normalized();
+  if (!(d.x() > 0.0)) fail("wake.direction = " + direction_label(wake) + " points upstream (x <= 0)");
+  const auto te_found = model.find_surface(wake.te_base);
+  if (!te_found || !std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *te_found))
+    fail("wake.te_base = \"" + wake.te_base +
+         "\": no such trailing-edge base among the body surfaces; the H-type near field sweeps the wake from a "
+         "squared-off trailing edge (a sharp trailing edge is not supported yet: use topology \"C\")");
+  const int te = *te_found;
+  const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
+  if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
+    fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
+
+  detail::JunctionShell js =
+      detail::build_junction_shell(model, base_as_triangles(meshes, te), roles, params, junction, wall_thickness, te);
+  if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
+  NearField& field = js.field;
+  mesh::Mesh& m = field.mesh;
+  for (std::size_t i = 0; i < js.chain.size(); ++i) {
+    field.footprint.push_back(js.foot_id[i]);
+    field.footprint_top.push_back(static_cast<NodeId>(js.chain[i]) + js.offset);
+  }
+
+  // The base's quads (body node ids, lifted) and the layer's open edges off the root (its rear interfaces).
+  std::vector<std::array<NodeId, 4>> base;
+  BodyMesh layer = js.body;
+  layer.triangles.clear();
+  layer.triangle_surface.clear();
+  std::vector<std::array<int, 3>> pair;
+  for (std::size_t t = 0; t < js.body.triangles.size(); ++t) {
+    const auto& v = js.body.triangles[t];
+    if (js.body.triangle_surface[t] != te) {
+      layer.triangles.push_back(v);
+      layer.triangle_surface.push_back(js.body.triangle_surface[t]);
+    } else if (pair.empty()) {
+      pair.push_back(v);
+    } else {
+      base.push_back({static_cast<NodeId>(pair[0][0]), static_cast<NodeId>(pair[0][1]), static_cast<NodeId>(pair[0][2]),
+                      static_cast<NodeId>(v[2])});
+      pair.clear();
+    }
+  }
+
+  // The cut row: the lowest trailing-edge row at least `gap` above the wall layer's top.
+  const double tolerance = 1e-6 * std::max(1.0, js.tip);
+  const double wanted = wall_thickness + wake.gap;
+  double cut = 1e300;
+  for (const auto& q : base)
+    for (NodeId v : q) {
+      const double h = js.wall.height(m.node(v));
+      if (h >= wanted - tolerance && h > js.strip + tolerance) cut = std::min(cut, h);
+    }
+  if (!(cut < js.tip - tolerance))
+    fail("wake.gap = " + number_label(wake.gap) + ": the wake block's root would stand at " + number_label(wanted) +
+         " above the wall, leaving no trailing-edge row below the wing's tip (" + number_label(js.tip) +
+         "); use a smaller gap");
+  auto above_cut = [&](NodeId v) { return js.wall.height(m.node(v)) >= cut - tolerance; };
+
+  std::vector<Section> section;
+  std::vector<std::array<NodeId, 4>> exposed_base;
+  for (const auto& q : base) {
+    if (std::all_of(q.begin(), q.end(), above_cut)) section.push_back({q, false});
+    else exposed_base.push_back(q);
+  }
+  const std::set<int> chain(js.chain.begin(), js.chain.end());
+  for (const auto& [a, b] : open_edges(layer)) {
+    if (chain.count(a) && chain.count(b)) continue;  // the root row over the junction
+    const NodeId na = static_cast<NodeId>(a), nb = static_cast<NodeId>(b);
+    if (above_cut(na) && above_cut(nb)) section.push_back({{na, nb, nb + js.offset, na + js.offset}, true});
+  }
+  if (section.empty()) fail("no trailing edge found: the wing layer has no rear interface above the cut");
+
+  // The sweep: node p at station k is p + s_k d, the layer offsets also moved away from the sheet.
+  const std::vector<double> s = stations(wake);
+  const double spread = std::tan(wake.widening_deg * kPi / 180.0);
+  std::map<NodeId, Vec3> away;  // offset node -> unit direction away from the sheet, across d
+  for (const Section& c : section)
+    if (c.layer)
+      for (int k : {0, 1}) {
+        const Vec3 across = m.node(c.q[3 - k]) - m.node(c.q[k]);
+        away[c.q[3 - k]] = (across - across.dot(d) * d).normalized();
+      }
+  const Vec3 inner = box.lo + 1e-3 * (box.hi - box.lo), outer = box.hi - 1e-3 * (box.hi - box.lo);
+  std::map<NodeId, std::vector<NodeId>> swept;
+  auto station_nodes = [&](NodeId p) -> const std::vector<NodeId>& {
+    auto it = swept.find(p);
+    if (it != swept.end()) return it->second;
+    std::vector<NodeId> ids{p};
+    const Vec3 x0 = m.node(p);
+    const auto a = away.find(p);
+    for (std::size_t k = 1; k < s.size(); ++k) {
+      Vec3 x = x0 + s[k] * d;
+      if (a != away.end()) x += s[k] * spread * a->second;
+      if ((x.array() < inner.array()).any() || (x.array() > outer.array()).any())
+        fail("wake.length = " + number_label(wake.length) + " with wake.direction = " + direction_label(wake) +
+             ": the wake block leaves the far-field box at " + point_label(x) + "; use a shorter wake or a larger box");
+      ids.push_back(m.add_node(x));
+    }
+    return swept.emplace(p, std::move(ids)).first->second;
+  };
+
+  const int wake_region = m.region_index("wake");
+  for (Section c : section) {
+    const Vec3 n = (m.node(c.q[1]) - m.node(c.q[0])).cross(m.node(c.q[3]) - m.node(c.q[0]));
+    int axis = 1;  // the layer direction q0 -> q3
+    if (n.dot(d) < 0.0) std::swap(c.q[1], c.q[3]), axis = 0;
+    if (!c.layer) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {c.q[0], c.q[3], c.q[2], c.q[1]});
+    for (std::size_t k = 0; k + 1 < s.size(); ++k) {
+      std::array<NodeId, 8> h;
+      for (int v = 0; v < 4; ++v) h[v] = station_nodes(c.q[v])[k], h[v + 4] = station_nodes(c.q[v])[k + 1];
+      if (!hex_valid(m, h))
+        fail(std::string(wake.widening_deg > 0.0 ? "wake.widening = " + number_label(wake.widening_deg) + " with " : "") +
+             "wake.direction = " + direction_label(wake) + ": the wake hex behind " + point_label(m.node(c.q[0])) +
+             " at station " + std::to_string(k) +
+             " would be inverted (the block folds); use a smaller widening or a direction closer to the chord");
+      m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), wake_region);
+      if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
+      field.element_surface.push_back(te);
+      ++field.wake.hexes;
+    }
+  }
+  for (const auto& q : exposed_base) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {q[0], q[3], q[2], q[1]});
+
+  WakeBlock& w = field.wake;
+  w.direction = d;
+  w.length = wake.length;
+  w.streamwise_cells = wake.layers;
+  double lowest = 1e300;
+  for (const auto& [p, ids] : swept)
+    for (NodeId v : ids) lowest = std::min(lowest, js.wall.height(m.node(v)));
+  w.gap = lowest - wall_thickness;
+  for (const Section& c : section)  // the trailing-edge nodes: rear interfaces' body side, base quads
+    for (int k = 0; k < (c.layer ? 2 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
+  const Vec3 span = js.wall.normal - js.wall.normal.dot(d) * d;
+  w.span_axis = span.norm() > 1e-6 ? Vec3(span.normalized()) : d.unitOrthogonal();
+  std::sort(w.origins.begin(), w.origins.end(),
+            [&](const Vec3& p, const Vec3& q) { return p.dot(w.span_axis) < q.dot(w.span_axis); });
+
+  // The skin: faces used by one element that are not body or wall faces and do not stand on the
+  // footprint (those the wall layer's prisms share), plus the exposed base.
+  std::set<NodeId> on_footprint(field.footprint.begin(), field.footprint.end());
+  on_footprint.insert(field.footprint_top.begin(), field.footprint_top.end());
+  std::map<std::vector<NodeId>, std::pair<int, SkinFace>> uses;
+  auto key = [](std::vector<NodeId> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (const mesh::Element& e : m.elements())
+    for (const std::vector<int>& f : ho::faces(e.shape)) {
+      SkinFace face;
+      face.count = static_cast<int>(f.size());
+      std::vector<NodeId> v;
+      for (int k = 0; k < face.count; ++k) v.push_back(face.nodes[k] = e.vertices[f[k]]);
+      if (face.count == 3) face.nodes[3] = mesh::kNoNode;
+      auto& slot = uses[key(v)];
+      ++slot.first, slot.second = face;
+    }
+  for (const mesh::BoundaryFace& b : m.boundary_faces()) {
+    const int count = b.shape == ho::Shape::Triangle ? 3 : 4;
+    uses[key(std::vector<NodeId>(b.vertices.begin(), b.vertices.begin() + count))].first += 2;
+  }
+  std::vector<SkinFace> skin;
+  for (const auto& [k, use] : uses)
+    if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }))
+      skin.push_back(use.second);
+  for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
+
+  // Skin quads the split will cut, cut already at its interfaces (nodes shared by neighbours).
+  const auto edges = layer_edges(field);
+  std::map<std::pair<NodeId, int>, NodeId> interface_node;  // (bottom vertex, k) -> node
+  auto along = [&](NodeId from, NodeId to) {  // the nodes from -> to on a layer edge
+    const auto& [bottom, top, family] = edges.at({std::min(from, to), std::max(from, to)});
+    if (family != LayerFamily::Wing)
+      fail("the skin quad at " + point_label(m.node(from)) + " is cut by the wall layer's split (not supported)");
+    const std::vector<double> f = fractions(m.node(bottom), field.wake);
+    std::vector<NodeId> ids;
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      NodeId id = k == 0 ? bottom : k + 1 == f.size() ? top : mesh::kNoNode;
+      if (id == mesh::kNoNode) {
+        auto [it, fresh] = interface_node.emplace(std::make_pair(bottom, static_cast<int>(k)), mesh::kNoNode);
+        if (fresh) it->second = m.add_node(m.node(bottom) + f[k] * (m.node(top) - m.node(bottom)));
+        id = it->second;
+      }
+      ids.push_back(id);
+    }
+    if (bottom != from) std::reverse(ids.begin(), ids.end());
+    return ids;
+  };
+  auto is_layer_edge = [&](NodeId a, NodeId b) { return edges.count({std::min(a, b), std::max(a, b)}) > 0; };
+  field.skin.clear();
+  for (SkinFace f : skin) {
+    if (f.count == 4 && fractions && !is_layer_edge(f.nodes[0], f.nodes[3]) && is_layer_edge(f.nodes[0], f.nodes[1]))
+      f.nodes = {f.nodes[1], f.nodes[2], f.nodes[3], f.nodes[0]};
+    if (f.count != 4 || !fractions || !is_layer_edge(f.nodes[0], f.nodes[3]) || !is_layer_edge(f.nodes[1], f.nodes[2])) {
+      field.skin.push_back(f);
+      continue;
+    }
+    const std::vector<NodeId> left = along(f.nodes[0], f.nodes[3]), right = along(f.nodes[1], f.nodes[2]);
+    for (std::size_t k = 0; k + 1 < left.size(); ++k)
+      field.skin.push_back({{left[k], right[k], right[k + 1], left[k + 1]}, 4});
+  }
+  return std::move(field);
+}
+
+}  // namespace semimesh::nearfield

@@ -1,0 +1,46 @@
+// What the C-type and H-type near fields share: the wing layer lifted off the wall by the root strip
+// and the junction hexes along the root loop (c_shell.hpp describes the construction). The H-type
+// builds it with its trailing-edge base bare: the base is lifted and carries junction hexes along
+// its root like the rest of the wing, but no prisms, and the layer ends at it with its own normals.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/nearfield/body_mesh.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/near_field.hpp"
+
+#include <vector>
+
+namespace semimesh::nearfield::detail {
+
+/// The planar wall: its normal into the fluid and a point of it.
+struct WallFrame {
+  Vec3 normal;
+  Vec3 origin;
+  double height(const Vec3& x) const { return (x - origin).dot(normal); }
+};
+
+struct JunctionShell {
+  NearField field;                   ///< wing prisms, junction hexes, their boundary faces and stacks; no footprint
+  BodyMesh body;                     ///< the layer's body mesh, lifted onto the strip
+  mesh::NodeId offset = 0;           ///< body node i is mesh node i, its offset mesh node i + offset
+  std::vector<int> chain;            ///< body nodes of the root row (strip tops W), in loop order
+  std::vector<mesh::NodeId> root_id; ///< [chain] the root node R on the wall below each
+  std::vector<mesh::NodeId> foot_id; ///< [chain] the wall foot L of each halo
+  WallFrame wall;
+  double strip = 0.0, tip = 0.0;     ///< the lift's strip and tip heights (lift_node)
+};
+
+/// The wing layer and junction on `roles.body_surfaces` (as build_c_shell), no prisms on the
+/// triangles of `bare_surface` (-1: none), whose nodes off the other surfaces get no offset and do
+/// not count in the thickness figures. Throws NearFieldError.
+JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
+                                   const ShellParams& params, const JunctionParams& junction, double wall_thickness,
+                                   int bare_surface);
+
+/// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / tip),
+/// updating its attachment; nodes at the tip and CAD vertices stay.
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+               mesh::CadAttachment& cad);
+
+}  // namespace semimesh::nearfield::detail

@@ -1,0 +1,24 @@
+// Welding coincident nodes: the H-type near field gives the far field its skin quads already cut at
+// the wing layer's split interfaces (h_shell.hpp), so after the split the far field's nodes on those
+// quads and the split elements' new nodes are the same points under two ids. The weld makes them one.
+#pragma once
+
+#include "semimesh/mesh/mesh.hpp"
+
+#include <cstddef>
+
+namespace semimesh::pipeline {
+
+struct Welded {
+  mesh::Mesh mesh;
+  std::size_t merged = 0;  ///< nodes replaced by an equal one
+};
+
+/// A copy of `mesh` in which every node that lies within `tolerance` of a node seen before it is
+/// replaced by that node (ids and CAD attachments kept; the replaced ones stay unreferenced). Only
+/// elements with a vertex coinciding with another element's vertex are searched for their other
+/// nodes (a weld starts at the vertices). Throws std::invalid_argument (from Mesh::add_element)
+/// when two elements would then give one edge or face different nodes.
+Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance);
+
+}  // namespace semimesh::pipeline

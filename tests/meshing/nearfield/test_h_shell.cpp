@@ -1,0 +1,141 @@
+// The H-type near field alone (order 1): the wing layer ends at the trailing edge with each side's
+// own normal (measured against the CAD's), the wake block's hexes are valid, continue the layer
+// and stand the gap above the wall layer, and bad wake parameters are refused naming the key.
+#include "semimesh/cad/model.hpp"
+#include "semimesh/ho/validity.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+#include "semimesh/nearfield/error.hpp"
+#include "semimesh/nearfield/h_shell.hpp"
+#include "semimesh/surface/model_surfaces.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+namespace semimesh::nearfield {
+namespace {
+
+using cad::Vec3;
+
+struct Built {
+  std::unique_ptr<cad::Model> model;
+  NearField field;
+};
+
+Built build(const WakeParams& wake) {
+  Built b;
+  mock_cad::NacaWingParams wing;
+  wing.code = "0012";
+  wing.span = 1.5;
+  b.model = mock_cad::make_naca_wing(wing);
+  surface::SizeParams size;
+  size.max_size = 0.4;
+  size.min_size = 0.01;
+  size.curvature_segments = 2.0;
+  size.le_size = 0.04;
+  size.te_size = 0.04;
+  surface::ModelMeshOptions options;
+  options.structured_surfaces.insert(*b.model->find_surface("te_base"));
+  const surface::SurfaceMeshes meshes =
+      surface::mesh_model_surfaces(*b.model, surface::SizeField(*b.model, size), options);
+  BodyRoles roles;
+  for (const std::string name : {"upper", "lower", "te_base", "tip"}) roles.body_surfaces.push_back(*b.model->find_surface(name));
+  roles.wall_surface = *b.model->find_surface("wall");
+  ShellParams shell;
+  shell.thickness = 0.05;
+  b.field = build_h_shell(*b.model, meshes, roles, shell, JunctionParams{}, 0.04, wake, b.model->bbox(), {});
+  return b;
+}
+
+WakeParams short_wake() {
+  WakeParams w;
+  w.length = 1.0;
+  w.layers = 6;
+  return w;
+}
+
+TEST(HShell, LayersEndAtTheTrailingEdgeWithTheirOwnNormals) {
+  const Built b = build(short_wake());
+  const mesh::Mesh& m = b.field.mesh;
+  const int upper = *b.model->find_surface("upper"), lower = *b.model->find_surface("lower");
+  auto curve = [&](const std::string& name) {
+    for (int c = 0; c < b.model->num_curves(); ++c)
+      if (b.model->curve(c).name() == name) return c;
+    return -1;
+  };
+  const int te_upper = curve("te_upper"), te_lower = curve("te_lower");
+  int checked = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.shape != ho::Shape::Prism) continue;
+    for (int i = 0; i < 3; ++i) {
+      const mesh::CadAttachment& at = m.cad_attachment(e.vertices[i]);
+      if (at.kind != mesh::CadAttachment::Curve || (at.entity != te_upper && at.entity != te_lower)) continue;
+      const Vec3 a = m.node(e.vertices[i]);
+      if (a.z() < 0.2 || a.z() > 1.3) continue;  // away from the root strip and the tip
+      const cad::Surface& side = b.model->surface(at.entity == te_upper ? upper : lower);
+      const Vec3 n = side.normal(side.project(a).uv);
+      const Vec3 u = (m.node(e.vertices[i + 3]) - a).normalized();
+      EXPECT_GT(u.dot(n), 0.98) << "at " << a.transpose();
+      // A normal rounded over the trailing-edge base (O-type) would lean about 45 degrees downstream.
+      EXPECT_LT(u.x(), 0.25) << "at " << a.transpose();
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(HShell, WakeHexesAreValidContinueTheLayerAndStandAboveTheGap) {
+  const WakeParams wake = short_wake();
+  const Built b = build(wake);
+  const mesh::Mesh& m = b.field.mesh;
+  const int region = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "wake") -
+                                      m.region_names().begin());
+  int hexes = 0;
+  double lowest = 1e300, farthest = 0.0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != region) continue;
+    ++hexes;
+    Eigen::MatrixX3d x(8, 3);
+    for (int k = 0; k < 8; ++k) {
+      x.row(k) = m.node(e.vertices[k]).transpose();
+      lowest = std::min(lowest, x(k, 2));
+      farthest = std::max(farthest, x(k, 0));
+    }
+    EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, x).valid);
+  }
+  EXPECT_EQ(hexes, b.field.wake.hexes);
+  EXPECT_EQ(hexes % wake.layers, 0);
+  EXPECT_GE(lowest, 0.04 + wake.gap - 1e-12);
+  EXPECT_NEAR(b.field.wake.gap, lowest - 0.04, 1e-12);
+  EXPECT_GT(farthest, 1.0 + wake.length - 1e-9);  // from the trailing edge at x = 1 (plus the layer's lean)
+  int layer_hexes = 0;  // wake hexes in the wing family's stacks: the rear-interface ones
+  for (const LayerStack& s : b.field.stacks)
+    if (m.elements()[s.element].region == region) ++layer_hexes;
+  EXPECT_GT(layer_hexes, 0);
+  EXPECT_LT(layer_hexes, hexes);  // the base's hexes are not split
+}
+
+TEST(HShellBadInput, WakeKeysOutOfReachAreNamed) {
+  WakeParams up = short_wake();
+  up.direction = {-1.0, 0.0, 0.0};
+  WakeParams far = short_wake();
+  far.length = 50.0;
+  WakeParams high = short_wake();
+  high.gap = 2.0;
+  WakeParams missing = short_wake();
+  missing.te_base = "no_such_face";
+  for (const auto& [wake, expected] : {std::pair{up, "wake.direction"}, std::pair{far, "wake.length = 50"},
+                                       std::pair{high, "wake.gap = 2"}, std::pair{missing, "no_such_face"}}) {
+    try {
+      build(wake);
+      ADD_FAILURE() << "no error for " << expected;
+    } catch (const NearFieldError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield

@@ -1,0 +1,236 @@
+// The H-type near field end to end (semimesh run as a library): the wing layer ends at the
+// squared-off trailing edge, the wake block of hexes behind it stands a gap above the wall layer,
+// and the far field fills the gap. Conformity, volume and proven validity from the run's own checks;
+// the wake's layer ratios and its gap measured here on the mesh's vertices.
+#include "semimesh/backends/builtin.hpp"
+#include "semimesh/pipeline/pipeline.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace semimesh::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The coarse case of the CLI tests (unit-span wing, 7 x 6 x 3 chord box, 0.05 chord shell), H-type.
+const char* const kCoarseH = R"(
+[geometry.naca]
+span = 1.0
+box = [-3.0, -3.0, 0.0, 4.0, 3.0, 3.0]
+[nearfield]
+topology = "H"
+thickness = 0.05
+[wall_layer]
+thickness = 0.04
+layers = 3
+[wake]
+length = 1.5
+layers = 12
+growth = 1.15
+gap = 0.1
+[sizing]
+max_size = 1.0
+min_size = 0.02
+curvature_segments = 2
+le_size = 0.06
+te_size = 0.03
+[farfield]
+box_size = 1.0
+wall_size = 0.6
+[highorder]
+order = 1
+[boundary_layer]
+layers = 1
+[output]
+formats = ["msh41"]
+basename = "h"
+)";
+
+class Silent : public Progress {
+ public:
+  void stage_started(const std::string&) override {}
+  void stage_finished(const StageTiming&) override {}
+};
+
+fs::path fresh_directory(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("semimesh_h_type_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+RunResult run_h(const std::string& name, const std::vector<std::string>& overrides) {
+  Config c = parse_config(kCoarseH, "h.toml", {}, overrides);
+  c.output.directory = fresh_directory(name).string();
+  Silent progress;
+  return run(c, progress);
+}
+
+void expect_valid_conforming(const RunResult& r, const std::string& what) {
+  EXPECT_EQ(r.conformity.problems.size(), 0u) << what;
+  EXPECT_EQ(r.validity.invalid, 0) << what;
+  EXPECT_LT(r.volume.mesh.boundary_relative_error(), 1e-9) << what;
+  EXPECT_LT(r.volume.expected_relative_error(), std::max(1e-6, r.expected_volume_tolerance)) << what;
+  for (const char* region : {"wing_layer", "junction", "wall_layer", "wake", "farfield"}) {
+    ASSERT_TRUE(r.elements_by_region.count(region)) << what << ": " << region;
+    EXPECT_GT(r.validity.min_scaled_jacobian_by_region.at(region), 0.0) << what << ": " << region;
+  }
+  EXPECT_GT(r.wake.hexes, 0) << what;
+  EXPECT_GT(r.elements_by_type.at("pyramid"), 0u) << what;
+  EXPECT_TRUE(r.checks_passed()) << what;
+}
+
+// Element vertices (not high-order nodes) of one region.
+std::vector<Eigen::Vector3d> region_vertices(const mesh::Mesh& m, const std::string& region) {
+  const auto it = std::find(m.region_names().begin(), m.region_names().end(), region);
+  std::vector<char> seen(m.num_nodes(), 0);
+  std::vector<Eigen::Vector3d> out;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != it - m.region_names().begin()) continue;
+    for (int v = 0; v < ho::num_vertices(e.shape); ++v)
+      if (!seen[e.vertices[v]]) seen[e.vertices[v]] = 1, out.push_back(m.node(e.vertices[v]));
+  }
+  return out;
+}
+
+// Consecutive distances between the points of `cloud` on the segment a -> b, from a.
+std::vector<double> gaps_on_segment(const std::vector<Eigen::Vector3d>& cloud, const Eigen::Vector3d& a,
+                                    const Eigen::Vector3d& b) {
+  const Eigen::Vector3d u = (b - a).normalized();
+  const double length = (b - a).norm();
+  std::vector<double> t;
+  for (const Eigen::Vector3d& x : cloud) {
+    const double along = (x - a).dot(u);
+    if (along > -1e-9 && along < length + 1e-9 && (x - a - along * u).norm() < 1e-9) t.push_back(along);
+  }
+  std::sort(t.begin(), t.end());
+  std::vector<double> gaps;
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) gaps.push_back(t[k + 1] - t[k]);
+  return gaps;
+}
+
+TEST(HTypeEndToEnd, LinearMeshOnTheBluntWing) {
+  const RunResult r = run_h("linear", {});
+  expect_valid_conforming(r, "linear");
+  // 12 streamwise cells over every cross-section quad above the gap.
+  EXPECT_EQ(r.wake.hexes % 12, 0);
+  EXPECT_EQ(r.wake.streamwise_cells, 12);
+  EXPECT_EQ(r.wake.length, 1.5);
+}
+
+// The paper's split: the wake continues the wing's N layers with the ratio r at the trailing edge,
+// falling linearly to ratio_end at the far end; the block stands at least `gap` above the wall layer.
+TEST(HTypeEndToEnd, CurvedAndSplitWakeRatiosAndGapMeasured) {
+  const RunResult r = run_h("split", {"highorder.order=2", "boundary_layer.layers=4", "boundary_layer.ratio=2",
+                                      "wake.ratio_end=1.3"});
+  expect_valid_conforming(r, "order 2");
+  const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
+
+  // The upper trailing-edge vertex nearest mid-span, its layer offset at the trailing edge.
+  double row = 1e300;
+  for (const Eigen::Vector3d& x : wake)
+    if (std::abs(x.x() - 1.0) < 1e-9 && std::abs(x.z() - 0.5) < std::abs(row - 0.5)) row = x.z();
+  Eigen::Vector3d a(0, -1, 0);
+  for (const Eigen::Vector3d& x : wake)
+    if (std::abs(x.x() - 1.0) < 1e-9 && x.z() == row && x.y() > a.y()) a = x;
+  ASSERT_GT(a.y(), 0.0);
+  Eigen::Vector3d top = a;  // the layer's outer vertex above a (its normal may lean a little spanwise)
+  for (const Eigen::Vector3d& x : wake)
+    if (std::abs(x.z() - a.z()) < 0.005 && x.x() < 1.0 + 0.04 && x.y() > top.y()) top = x;
+  EXPECT_NEAR((top - a).norm(), 0.05, 1e-6);
+
+  const std::vector<double> at_te = gaps_on_segment(wake, a, top);
+  ASSERT_EQ(at_te.size(), 4u);
+  for (std::size_t k = 1; k < at_te.size(); ++k) EXPECT_NEAR(at_te[k] / at_te[k - 1], 2.0, 1e-6) << k;
+  const Eigen::Vector3d far(1.5, 0.0, 0.0);
+  const std::vector<double> at_end = gaps_on_segment(wake, a + far, top + far);
+  ASSERT_EQ(at_end.size(), 4u);
+  for (std::size_t k = 1; k < at_end.size(); ++k) EXPECT_NEAR(at_end[k] / at_end[k - 1], 1.3, 1e-6) << k;
+
+  double lowest = 1e300;
+  for (const Eigen::Vector3d& x : wake) lowest = std::min(lowest, x.z());
+  EXPECT_GE(lowest, 0.04 + 0.1 - 1e-9);
+  EXPECT_LT(lowest, 0.04 + 0.1 + 0.05);  // the next trailing-edge row (te_size 0.03)
+  EXPECT_NEAR(r.wake.gap, lowest - 0.04, 1e-12);
+  EXPECT_EQ(r.wake.ratio_first, 2.0);
+  EXPECT_EQ(r.wake.ratio_last, 1.3);
+}
+
+struct Variant {
+  std::string name;
+  std::vector<std::string> overrides;
+};
+
+class HTypeVariants : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(HTypeVariants, ConformingValidMeshWithTheRightVolume) {
+  const Variant& v = GetParam();
+  if (std::find(v.overrides.begin(), v.overrides.end(), "geometry.backend=occ") != v.overrides.end() &&
+      !backends::default_registry().available("occ"))
+    GTEST_SKIP() << "no OCC backend in this build";
+  std::vector<std::string> all = v.overrides;
+  all.push_back("boundary_layer.layers=3");
+  expect_valid_conforming(run_h(v.name, all), v.name);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Wings, HTypeVariants,
+    ::testing::Values(Variant{"cambered_4412", {"geometry.naca.code=\"4412\""}},
+                      Variant{"swept_tapered", {"geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
+                      Variant{"incidence_10_degrees", {"wake.direction=[0.9848, 0.1736, 0.0]"}},
+                      Variant{"widening_5_degrees", {"wake.widening=5"}}),
+    [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
+
+TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  const RunResult analytic = run_h("analytic", {"boundary_layer.layers=3"});
+  const RunResult occ = run_h("occ", {"geometry.backend=occ", "boundary_layer.layers=3"});
+  expect_valid_conforming(occ, "occ");
+  for (const char* region : {"wing_layer", "junction", "wake"})
+    EXPECT_EQ(occ.elements_by_region.at(region), analytic.elements_by_region.at(region)) << region;
+  EXPECT_EQ(occ.wake.hexes, analytic.wake.hexes);
+  EXPECT_NEAR(occ.wake.gap, analytic.wake.gap, 1e-6);
+  const std::vector<Eigen::Vector3d> a = region_vertices(analytic.mesh, "wake"), o = region_vertices(occ.mesh, "wake");
+  ASSERT_EQ(a.size(), o.size());
+  double worst = 0.0;  // every wake vertex of one has a counterpart in the other
+  for (const Eigen::Vector3d& x : o) {
+    double nearest = 1e300;
+    for (const Eigen::Vector3d& y : a) nearest = std::min(nearest, (x - y).norm());
+    worst = std::max(worst, nearest);
+  }
+  EXPECT_LT(worst, 1e-5);
+}
+
+// Bad H-type input: a BadInput RunError naming the key and value, and no file written.
+TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
+      {{"wake.length=20"}, {"wake.length = 20", "leaves the far-field box"}},
+      {{"wake.gap=5"}, {"wake.gap = 5", "tip"}},
+      {{"wake.direction=[-1.0, 0.0, 0.0]"}, {"wake.direction = [-1, 0, 0]", "upstream"}},
+      {{"wake.direction=[1.0, 0.0, -0.5]"}, {"wake.direction = [1, 0, -0.5]", "into the wall"}},
+      {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
+      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"te_base\"", "sharp"}},
+  };
+  for (const auto& [overrides, expected] : cases) {
+    Config c = parse_config(kCoarseH, "h.toml", {}, overrides);
+    const fs::path dir = fresh_directory("bad");
+    c.output.directory = dir.string();
+    Silent progress;
+    try {
+      run(c, progress);
+      ADD_FAILURE() << "no RunError for " << overrides.front();
+    } catch (const RunError& e) {
+      EXPECT_EQ(e.cause(), Error::Cause::BadInput) << e.what();
+      for (const std::string& part : expected) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir)) << overrides.front();
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline
