@@ -26,7 +26,7 @@ std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
   std::vector<SurfaceRow> rows;
   for (int s = 0; s < model.num_surfaces(); ++s) {
     const cad::Surface& surface = model.surface(s);
-    rows.push_back(SurfaceRow{s, surface.name(), cad::to_string(surface.kind()), cad::trimmed_area(surface),
+    rows.push_back(SurfaceRow{s, surface.name(), cad::to_string(surface.kind()), cad::face_area(surface),
                               static_cast<int>(model.loops(s).size())});
   }
   return rows;

@@ -3,6 +3,7 @@
 // Prints a table; not a test.
 #include "semimesh/backends/builtin.hpp"
 #include "semimesh/cad/model.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
 #ifdef SEMIMESH_HAVE_VENDOR_FAKE
 #include "semimesh/vendor/vendor_backend.hpp"
 #endif
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -97,6 +99,26 @@ void bench_model(const std::string& label, const cad::Model& m, int per_entity) 
   fmt::print("{:<28} {:>14.3g} {:>14.3g} {:>14.3g} {:>14.3g} {:>14.3g}\n", label, s_free, s_guess, s_contains, c_free, c_guess);
 }
 
+// What `semimesh cad-info` spends on a file: loading it and every face's area (the backend's
+// exact integrator where it has one, else the generic quadrature). Target: under 2 s per file.
+void bench_cad_info(const cad::Registry& registry, const std::string& file) {
+  const std::string path = std::string(SEMIMESH_TESTDATA_DIR) + "/cad/" + file;
+  const auto start = Clock::now();
+  std::unique_ptr<cad::Model> model;
+  try {
+    model = registry.load("occ", cad::Source{path, {}});
+  } catch (const std::exception& e) {
+    fmt::print("{:<40} not measured: {}\n", file, e.what());
+    return;
+  }
+  const double load = std::chrono::duration<double>(Clock::now() - start).count();
+  int exact = 0;
+  for (int s = 0; s < model->num_surfaces(); ++s) exact += cad::face_area(model->surface(s)).exact ? 1 : 0;
+  const double total = std::chrono::duration<double>(Clock::now() - start).count();
+  fmt::print("{:<40} load {:6.2f} s, load + {} face areas ({} exact) {:6.2f} s\n", file, load, model->num_surfaces(),
+             exact, total);
+}
+
 }  // namespace
 
 int main() {
@@ -118,5 +140,9 @@ int main() {
   auto sq = surface_queries(*analytic, 1000, rng);
   double r = rate(sq.size(), [&](size_t i) { return analytic->surface(sq[i].surface).project(sq[i].x, sq[i].guess).distance; }, 1.0);
   fmt::print("\nanalytic surface projections/s: {:.3g} (with guess; target >= 1e6 per core)\n", r);
+
+  fmt::print("\ncad-info work per shared STEP file (target: under 2 s each)\n");
+  if (registry.available("occ"))
+    for (const char* file : {"nektar_3d_bl_wing_naca0012.stp", "onera_m6_sharp_te.stp"}) bench_cad_info(registry, file);
   return 0;
 }

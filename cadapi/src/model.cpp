@@ -104,7 +104,8 @@ void Model::finalize() {
     }
   }
   closed_ = num_curves() > 0;
-  for (const auto& uses : curve_surfaces_) closed_ = closed_ && uses.size() == 2;
+  for (int c = 0; c < num_curves(); ++c)
+    closed_ = closed_ && (curve_surfaces_[c].size() == 2 || (curves_[c]->is_degenerate() && curve_surfaces_[c].size() == 1));
 
   bbox_ = BBox{};
   for (const Vertex& v : vertices_) bbox_.add(v.point);
@@ -140,6 +141,13 @@ const std::vector<SurfaceUse>& Model::surfaces_of_curve(int curve) const {
 std::array<int, 2> Model::curve_vertices(int curve) const { return checked(curve_vertices_, curve, "curve", backend_); }
 const std::vector<int>& Model::curves_of_vertex(int vertex) const {
   return checked(vertex_curves_, vertex, "vertex", backend_);
+}
+
+bool Model::is_seam(int surface, int curve) const {
+  bool forward = false, reversed = false;
+  for (const SurfaceUse& use : surfaces_of_curve(curve))
+    if (use.surface == surface) (use.forward ? forward : reversed) = true;
+  return forward && reversed;
 }
 
 std::optional<int> Model::find_surface(const std::string& name) const {

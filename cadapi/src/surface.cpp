@@ -1,5 +1,7 @@
 #include "semimesh/cad/surface.hpp"
 
+#include "semimesh/cad/error.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -7,6 +9,14 @@
 #include <limits>
 
 namespace semimesh::cad {
+
+std::optional<double> Surface::period(int direction) const {
+  if (direction != 0 && direction != 1)
+    throw CadError(CadError::Kind::BadParameter, "surface " + std::to_string(id_) + " ('" + name_ +
+                                                     "'): period of parameter direction " + std::to_string(direction) +
+                                                     " asked for; directions are 0 (u) and 1 (v)");
+  return std::nullopt;
+}
 
 Vec3 Surface::normal(const Vec2& uv) const {
   SurfaceDerivatives d = derivatives(uv);

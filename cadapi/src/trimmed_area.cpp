@@ -117,4 +117,9 @@ TrimmedArea trimmed_area(const Surface& surface, double relative_tolerance) {
   return out;
 }
 
+TrimmedArea face_area(const Surface& surface, double relative_tolerance) {
+  if (const std::optional<double> exact = surface.exact_area()) return TrimmedArea{*exact, 0.0, true};
+  return trimmed_area(surface, relative_tolerance);
+}
+
 }  // namespace semimesh::cad

@@ -3,6 +3,7 @@
 #include "naca_validation.hpp"
 #include "naca_wing.hpp"
 #include "plane_entities.hpp"
+#include "revolution_entities.hpp"
 #include "wing_entities.hpp"
 
 #include "semimesh/cad/error.hpp"
@@ -185,10 +186,32 @@ class Builder {
   std::map<std::string, int> vertices_, curves_;
 };
 
+// The body of revolution: vertices nose, tail; curves meridian (seam), nose, tail (poles); one face
+// whose loop runs clockwise in (u, w) (orientation -1): up the nose pole, along the seam at
+// w = 2 pi, down the tail pole, back along the seam at w = 0.
+std::unique_ptr<cad::Model> make_revolution_body(const NacaWingParams& p) {
+  auto section = std::make_shared<const detail::NacaSection>(detail::parse_naca_code(p.code), true);
+  auto model = std::make_unique<cad::Model>("naca");
+  const double tol = kSolverTolerance * p.chord;
+  const int nose = model->add_vertex(Vec3::Zero(), "nose");
+  const int tail = model->add_vertex(p.chord * Vec3(section->point(Side::Upper, 1.0).x(), 0.0, 0.0), "tail");
+  const int meridian = model->add_curve(std::make_unique<detail::MeridianCurve>(0, "meridian", section, p.chord), nose, tail);
+  const int nose_pole = model->add_curve(std::make_unique<detail::PoleCurve>(1, "nose", model->vertex(nose).point), nose, nose);
+  const int tail_pole = model->add_curve(std::make_unique<detail::PoleCurve>(2, "tail", model->vertex(tail).point), tail, tail);
+  model->add_surface(std::make_unique<detail::RevolutionBody>(0, "body", section, p.chord, tol),
+                     {Loop{{fwd(nose_pole), fwd(meridian), rev(tail_pole), rev(meridian)}}});
+  model->set_units(p.units, 1.0);
+  model->set_tolerance(tol);
+  model->set_thread_safe(true);
+  model->finalize();
+  return model;
+}
+
 }  // namespace
 
 std::unique_ptr<cad::Model> make_naca_wing(const NacaWingParams& params) {
   detail::validate(params);
+  if (params.revolution) return make_revolution_body(params);
   return Builder(params).build();
 }
 

@@ -36,7 +36,7 @@ std::array<double, 6> parse_box(const std::string& text) {
 
 NacaWingParams naca_params_from(const cad::Params& p) {
   p.require_known({"naca.code", "naca.chord", "naca.span", "naca.taper", "naca.sweep", "naca.te", "naca.farfield",
-                   "naca.box", "naca.units"},
+                   "naca.box", "naca.units", "naca.shape"},
                   "naca");
   NacaWingParams out;
   out.code = p.get_string("naca.code", out.code);
@@ -50,6 +50,10 @@ NacaWingParams naca_params_from(const cad::Params& p) {
   out.farfield = p.get_bool("naca.farfield", out.farfield);
   if (p.has("naca.box")) out.box = parse_box(p.get_string("naca.box", ""));
   out.units = p.get_string("naca.units", out.units);
+  const std::string shape = p.get_string("naca.shape", "wing");
+  if (shape != "wing" && shape != "revolution")
+    reject("naca.shape", shape, "wing (a wing on a wall) or revolution (the section's thickness revolved about the chord line)");
+  out.revolution = shape == "revolution";
   detail::validate(out);
   return out;
 }

@@ -52,6 +52,13 @@ void validate(const NacaWingParams& p) {
   if (!(p.taper > 0.0)) reject("naca.taper", number(p.taper), "a taper ratio (tip chord / root chord) > 0");
   if (!(std::abs(p.sweep_deg) < 80.0)) reject("naca.sweep", number(p.sweep_deg), "a sweep angle in degrees with |sweep| < 80");
   if (p.units.empty()) reject("naca.units", p.units, "a unit name (e.g. chord, m, mm)");
+  if (p.revolution) {
+    const std::string what = "for naca.shape = revolution";
+    if (digits.max_camber > 0.0) reject("naca.code", p.code, "a symmetric code 00TT " + what);
+    if (!p.sharp_te) reject("naca.te", "blunt", "sharp " + what + " (the tail is a pole)");
+    if (p.farfield) reject("naca.farfield", "true", "false " + what + " (the body has no wall)");
+    return;
+  }
   if (!p.farfield) return;
 
   const auto& b = p.box;

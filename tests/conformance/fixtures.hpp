@@ -6,6 +6,8 @@
 #include "semimesh/mock_cad/naca.hpp"
 #ifdef SEMIMESH_HAVE_OCC
 #include "semimesh/occ/occ_backend.hpp"
+
+#include <BRepPrimAPI_MakeSphere.hxx>
 #endif
 #ifdef SEMIMESH_HAVE_VENDOR_FAKE
 #include "semimesh/vendor/vendor_backend.hpp"
@@ -13,6 +15,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +40,8 @@ struct Expectations {
   int winding_surfaces = 0;
   /// Why the closedness checks do not apply (when closed is false).
   std::string open_reason;
+  /// Numbers of seam curves (used twice by one face) and of degenerate curves (poles), when known.
+  std::optional<int> seams, poles;
 };
 
 inline std::string testdata(const std::string& file) { return std::string(SEMIMESH_TESTDATA_DIR) + "/cad/" + file; }
@@ -44,6 +49,22 @@ inline std::string testdata(const std::string& file) { return std::string(SEMIME
 /// Empty when the file exists, else the reason to skip.
 inline std::string missing(const std::string& path) {
   return std::filesystem::exists(path) ? "" : "test CAD file " + path + " not found (see shared/testdata/cad/README.md)";
+}
+
+/// Models without periodic faces: no seam, no pole.
+inline Expectations smooth_wing(Expectations e = {}) {
+  e.seams = 0;
+  e.poles = 0;
+  return e;
+}
+
+/// A body of revolution: one periodic face, one seam, two poles; fluid outside.
+inline Expectations revolved_body() {
+  Expectations e;
+  e.fluid_encloses = false;
+  e.seams = 1;
+  e.poles = 2;
+  return e;
 }
 
 struct NacaDefault {
@@ -55,8 +76,18 @@ struct NacaDefault {
     // NACA 4-digit: y_t = 5t(0.2969 sqrt(x) + ...) ~ sqrt(2 r x) near the LE, so
     // r = (5 * 0.2969 t)^2 / 2 = 1.1019 t^2 c (Abbott & von Doenhoff 1959, sec. 6.4).
     e.le_radius = 0.5 * std::pow(5 * 0.2969 * 0.12, 2);
-    return e;
+    return smooth_wing(e);
   }
+};
+
+inline const cad::Params kRevolutionKeys = {
+    {"naca.shape", "revolution"}, {"naca.code", "0012"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}, {"naca.chord", "2"}};
+
+struct NacaRevolution {
+  static constexpr const char* kName = "naca body of revolution (0012, seam and two poles)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() { return semimesh::mock_cad::load_naca(cad::Source{"", kRevolutionKeys}); }
+  static Expectations expect() { return revolved_body(); }
 };
 
 struct NacaBluntNoBox {
@@ -72,7 +103,7 @@ struct NacaBluntNoBox {
     e.fluid_encloses = false;
     e.open_reason = "without the wall the root section is an open boundary";
     e.le_radius = 0.5 * std::pow(5 * 0.2969 * 0.15, 2) * 2.0;
-    return e;
+    return smooth_wing(e);
   }
 };
 
@@ -83,7 +114,7 @@ struct NacaCamberedTaperedSweptSharp {
     return semimesh::mock_cad::load_naca(cad::Source{
         "", {{"naca.code", "2412"}, {"naca.te", "sharp"}, {"naca.taper", "0.5"}, {"naca.sweep", "25"}, {"naca.span", "2"}}});
   }
-  static Expectations expect() { return {}; }
+  static Expectations expect() { return smooth_wing(); }
 };
 
 #ifdef SEMIMESH_HAVE_OCC
@@ -96,8 +127,18 @@ struct OccNaca {
     e.le_radius = NacaDefault::expect().le_radius;
     e.le_radius_tolerance = 1e-2;  // B-spline fit of the section: curvature is approximate
     e.winding_surfaces = 2;
-    return e;
+    return smooth_wing(e);
   }
+};
+
+/// OCC's own sphere: periodic in u (seam on the meridian u = 0), poles at v = +-pi/2.
+struct OccSphere {
+  static constexpr const char* kName = "occ sphere (BRepPrimAPI)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::occ::model_from_shape(BRepPrimAPI_MakeSphere(1.5).Shape(), "occ");
+  }
+  static Expectations expect() { return revolved_body(); }
 };
 
 struct OccStepNektarWing {
@@ -136,8 +177,19 @@ struct VendorFake {
   static Expectations expect() {
     Expectations e;
     e.le_radius = NacaDefault::expect().le_radius;
-    return e;
+    return smooth_wing(e);
   }
+};
+
+struct VendorFakeRevolution {
+  static constexpr const char* kName = "vendor adapter over the fake kernel (body of revolution)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    std::string path = "naca:";
+    for (const auto& [key, value] : kRevolutionKeys.all()) path += key + "=" + value + ";";
+    return semimesh::vendor::load_vendor(cad::Source{path, {}});
+  }
+  static Expectations expect() { return revolved_body(); }
 };
 #endif
 

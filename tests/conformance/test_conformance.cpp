@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <iostream>
+#include <set>
 #include <cmath>
 
 namespace conformance {
@@ -40,14 +42,14 @@ class Conformance : public ::testing::Test {
   static inline std::string load_error_;
 };
 
-using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp
+using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution
 #ifdef SEMIMESH_HAVE_OCC
                                 ,
-                                OccNaca, OccStepNektarWing, OccStepOneraM6
+                                OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6
 #endif
 #ifdef SEMIMESH_HAVE_VENDOR_FAKE
                                 ,
-                                VendorFake
+                                VendorFake, VendorFakeRevolution
 #endif
                                 >;
 
@@ -127,10 +129,9 @@ TYPED_TEST(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
     for (const cad::Loop& loop : m.loops(s))
       for (const cad::CurveUse& use : loop.uses) {
         const cad::Curve& curve = m.curve(use.curve);
+        if (curve.is_degenerate()) continue;  // a pole has no tangent (PeriodicFacesSeamsAndPoles)
         const auto range = curve.bounds();
-        bool seam = false;  // walked both ways by this same face: both sides are on it
-        for (const cad::SurfaceUse& other : m.surfaces_of_curve(use.curve))
-          seam = seam || (other.surface == s && other.forward != use.forward);
+        const bool seam = m.is_seam(s, use.curve);  // walked both ways by this face: both sides are on it
         for (int k = 1; k <= 3; ++k) {
           const double t = range.lo + range.length() * k / 4.0;
           const Vec3 tangent = (use.forward ? 1.0 : -1.0) * curve.tangent(t);
@@ -144,9 +145,15 @@ TYPED_TEST(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
           dir.normalize();
           // The face must lie on the left and not on the right at some small step (narrow faces
           // need small steps); a reversed loop has it on the right at every step.
+          // On a seam the curve has two images one period apart; the use walks one of them.
+          std::vector<Vec2> images{on.uv};
+          for (int p = 0; p < 2 && seam; ++p)
+            if (const auto period = surface.period(p))
+              for (double sign : {-1.0, 1.0}) images.push_back(on.uv + sign * *period * Vec2::Unit(p));
           bool left_only = false;
           for (double step = 1e-3 * size; step > 1e-9 * size && !left_only; step *= 0.5)
-            left_only = surface.contains(on.uv + step * dir) && (seam || !surface.contains(on.uv - step * dir));
+            for (const Vec2& uv : images)
+              left_only = left_only || (surface.contains(uv + step * dir) && (seam || !surface.contains(uv - step * dir)));
           EXPECT_TRUE(left_only) << "surface " << s << " '" << surface.name() << "', curve " << use.curve << " '"
                                  << curve.name() << "' at t = " << t << ": the face is not on the loop's left only";
         }
@@ -223,6 +230,7 @@ TYPED_TEST(Conformance, ProjectionWithInitialGuess) {
   }
   for (int c = 0; c < m.num_curves(); ++c) {
     const cad::Curve& curve = m.curve(c);
+    if (curve.is_degenerate()) continue;  // every parameter is the answer
     const auto range = curve.bounds();
     for (int k = 1; k < 4; ++k) {
       const double t = range.lo + range.length() * k / 4.0;
@@ -305,6 +313,10 @@ TYPED_TEST(Conformance, AdjacencyAndOrientation) {
   EXPECT_TRUE(m.is_closed());
   for (int c = 0; c < m.num_curves(); ++c) {
     const auto& uses = m.surfaces_of_curve(c);
+    if (m.curve(c).is_degenerate()) {
+      EXPECT_EQ(uses.size(), 1u) << "degenerate curve " << c << " '" << m.curve(c).name() << "' bounds one face once";
+      continue;
+    }
     ASSERT_EQ(uses.size(), 2u) << "curve " << c << " '" << m.curve(c).name() << "'";
     EXPECT_NE(uses[0].forward, uses[1].forward) << "curve " << c << " '" << m.curve(c).name()
                                                 << "' must be walked once each way by its two surfaces";
@@ -319,6 +331,10 @@ TYPED_TEST(Conformance, ArcLengthMatchesSimpson) {
   for (int c = 0; c < m.num_curves(); ++c) {
     const cad::Curve& curve = m.curve(c);
     const auto range = curve.bounds();
+    if (curve.is_degenerate()) {
+      EXPECT_EQ(curve.length(), 0.0) << "degenerate curve " << c << " '" << curve.name() << "'";
+      continue;
+    }
     const double expected = simpson_length(curve, range.lo, range.hi, 20000);
     EXPECT_NEAR(curve.arc_length(range.lo, range.hi), expected, 1e-5 * expected) << "curve " << c << " '" << curve.name() << "'";
     const double mid = 0.5 * (range.lo + range.hi);
@@ -326,6 +342,93 @@ TYPED_TEST(Conformance, ArcLengthMatchesSimpson) {
     EXPECT_NEAR(curve.arc_length(mid, range.lo), -half, 1e-5 * expected) << "curve " << c << " reversed half";
     EXPECT_NEAR(curve.parameter_at_length(range.lo, half), mid, 1e-5 * range.length()) << "curve " << c;
   }
+}
+
+// Periodic faces, seams and poles, the contract the surface mesher relies on (surface.hpp,
+// curve.hpp, model.hpp):
+//  - a period p of direction i is positive, the parameter box spans at most p, and the surface
+//    closes on itself: S at the box's lower side equals S one period further;
+//  - a seam (a curve one face walks once each way) lies where that face's box wraps: its points
+//    project onto the lower or upper side of a periodic direction of the box;
+//  - a degenerate curve is one point (zero derivatives, the same vertex at both ends, zero
+//    length), used once by one face, and that face is singular there: du or dv vanishes at the
+//    pole (relative to the other), so a whole side of the box maps onto it.
+TYPED_TEST(Conformance, PeriodicFacesSeamsAndPoles) {
+  const cad::Model& m = this->model();
+  const double tol = 1e-9 * this->diagonal();
+  int seams = 0, poles = 0;
+  for (int s = 0; s < m.num_surfaces(); ++s) {
+    const cad::Surface& surface = m.surface(s);
+    const auto box = surface.bounds();
+    const std::string where = "surface " + std::to_string(s) + " '" + surface.name() + "'";
+    for (int dir = 0; dir < 2; ++dir) {
+      const std::optional<double> period = surface.period(dir);
+      if (!period) continue;
+      ASSERT_TRUE(*period > 0.0 && std::isfinite(*period)) << where << " direction " << dir;
+      EXPECT_LE(box[dir].length(), *period * (1 + 1e-12)) << where << ": the box spans more than a period";
+      for (int k = 0; k <= 6; ++k) {
+        const int other = 1 - dir;
+        Vec2 lo;
+        lo[dir] = box[dir].lo;
+        lo[other] = box[other].lo + box[other].length() * (k + 0.31) / 7.0;
+        Vec2 shifted = lo;
+        shifted[dir] += *period;
+        EXPECT_LE((surface.point(shifted) - surface.point(lo)).norm(), tol)
+            << where << ": S does not repeat after the period " << *period << " of direction " << dir;
+      }
+    }
+    EXPECT_THROW(surface.period(2), cad::CadError);
+    std::set<int> counted;
+    for (const cad::Loop& loop : m.loops(s))
+      for (const cad::CurveUse& use : loop.uses) {
+        if (!m.is_seam(s, use.curve) || !counted.insert(use.curve).second) continue;
+        ++seams;
+        const cad::Curve& curve = m.curve(use.curve);
+        ASSERT_TRUE(surface.period(0) || surface.period(1)) << where << " has seam curve " << use.curve << " '"
+                                                            << curve.name() << "' but no periodic direction";
+        const auto range = curve.bounds();
+        for (int k = 1; k <= 3; ++k) {
+          const Vec2 uv = surface.project(curve.point(range.lo + range.length() * k / 4.0)).uv;
+          bool on_wrap = false;
+          for (int dir = 0; dir < 2; ++dir)
+            if (surface.period(dir))
+              on_wrap = on_wrap || std::min(std::abs(uv[dir] - box[dir].lo), std::abs(uv[dir] - box[dir].hi)) <=
+                                       1e-7 * box[dir].length();
+          EXPECT_TRUE(on_wrap) << where << ": seam curve " << use.curve << " '" << curve.name()
+                               << "' projects to (" << uv.x() << ", " << uv.y() << "), not onto a side of the box";
+        }
+      }
+  }
+  for (int c = 0; c < m.num_curves(); ++c) {
+    const cad::Curve& curve = m.curve(c);
+    if (!curve.is_degenerate()) continue;
+    ++poles;
+    const std::string where = "degenerate curve " + std::to_string(c) + " '" + curve.name() + "'";
+    const auto ends = m.curve_vertices(c);
+    EXPECT_EQ(ends[0], ends[1]) << where;
+    const auto range = curve.bounds();
+    EXPECT_GT(range.length(), 0.0) << where << ": a pole still spans a parameter interval";
+    for (int k = 0; k <= 4; ++k) {
+      const auto d = curve.derivatives(range.lo + range.length() * k / 4.0);
+      EXPECT_LE((d.p - m.vertex(ends[0]).point).norm(), tol) << where;
+      EXPECT_EQ(d.d1.norm(), 0.0) << where;
+    }
+    ASSERT_EQ(m.surfaces_of_curve(c).size(), 1u) << where;
+    const cad::Surface& surface = m.surface(m.surfaces_of_curve(c).front().surface);
+    const auto on = surface.project(m.vertex(ends[0]).point);
+    const double vertex_tol = std::max(1e3 * m.tolerance(), 1e-7 * this->diagonal());  // as AdjacencyAndOrientation
+    EXPECT_LE(on.distance, vertex_tol) << where << " is off its face '" << surface.name() << "'";
+    const auto d = surface.derivatives(on.uv);
+    EXPECT_LE(std::min(d.du.norm(), d.dv.norm()), 1e-6 * std::max(d.du.norm(), d.dv.norm()))
+        << where << ": face '" << surface.name() << "' is not singular at the pole";
+  }
+  if (const auto expected = this->expect().seams) {
+    EXPECT_EQ(seams, *expected) << "seam curves";
+  }
+  if (const auto expected = this->expect().poles) {
+    EXPECT_EQ(poles, *expected) << "degenerate curves";
+  }
+  std::cout << "[ info ] " << seams << " seam curve(s), " << poles << " pole(s)\n";
 }
 
 TYPED_TEST(Conformance, BoundingBoxContainsAllSamples) {

@@ -89,7 +89,26 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"naca.box", "-10,-10,0,11,10,2", "enclos"}, BadCase{"naca.box", "1,2,3", "6 comma-separated"},
                       BadCase{"naca.box", "-10,-10,0,11,10,10,4", "6 comma-separated"},
                       BadCase{"naca.box", "-10;-10;0;11;10;10", "6 comma-separated"}, BadCase{"naca.units", "", "unit"},
-                      BadCase{"naca.cord", "1", "unknown parameter"}));
+                      BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.cord", "1", "unknown parameter"}));
+
+// The body of revolution has no wall, a pole at the tail and no camber: each conflict is named.
+TEST(NacaParams, RevolutionNeedsSymmetricSharpAndNoWall) {
+  const Params ok{{"naca.shape", "revolution"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}};
+  EXPECT_NO_THROW(semimesh::mock_cad::load_naca(semimesh::cad::Source{"", ok}));
+  for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
+           {"naca.te", "blunt"}, {"naca.farfield", "true"}, {"naca.code", "2412"}}) {
+    Params p = ok;
+    p.set(key, value);
+    try {
+      semimesh::mock_cad::load_naca(semimesh::cad::Source{"", p});
+      FAIL() << key << " = " << value << " was accepted with naca.shape = revolution";
+    } catch (const CadError& e) {
+      const std::string msg = e.what();
+      EXPECT_NE(msg.find(key), std::string::npos) << msg;
+      EXPECT_NE(msg.find("revolution"), std::string::npos) << msg;
+    }
+  }
+}
 
 TEST(NacaParams, CodeMessageIsActionable) {
   try {

@@ -118,10 +118,9 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
 
   const ShapeNames edge_names = name_map(options.edge_names);
   std::set<std::string> curve_names_taken;
-  std::vector<int> curve_of_edge(edges.Extent() + 1, -1);  // map index -> curve id; -1: degenerated
+  std::vector<int> curve_of_edge(edges.Extent() + 1, -1);  // map index -> curve id
   for (int i = 1; i <= edges.Extent(); ++i) {
     TopoDS_Edge edge = TopoDS::Edge(edges(i).Oriented(TopAbs_FORWARD));
-    if (BRep_Tool::Degenerated(edge)) continue;
     const int id = model->num_curves();
     auto curve = std::make_unique<OccCurve>(id, unique_name(edge_names, edges(i), "edge", id, curve_names_taken), edge);
     thread_safe = thread_safe && !curve->has_mutable_evaluator();
@@ -147,7 +146,6 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
       for (BRepTools_WireExplorer e(wire, face); e.More(); e.Next()) {
         const TopoDS_Edge& edge = e.Current();
         const int curve = curve_of_edge[edges.FindIndex(edge)];
-        if (curve < 0) continue;  // degenerated: starts and ends on the same vertex
         if (edge.Orientation() != TopAbs_FORWARD && edge.Orientation() != TopAbs_REVERSED) continue;  // internal
         loop.uses.push_back(cad::CurveUse{curve, edge.Orientation() == TopAbs_FORWARD});
       }

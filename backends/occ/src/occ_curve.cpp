@@ -5,6 +5,8 @@
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
+#include <TopExp.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <Standard_Failure.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
@@ -29,6 +31,14 @@ cad::CurveKind kind_of(GeomAbs_CurveType type) {
 
 OccCurve::OccCurve(int id, std::string name, const TopoDS_Edge& edge) : cad::Curve(id, std::move(name)) {
   double first = 0.0, last = 0.0;
+  if (BRep_Tool::Degenerated(edge)) {  // a pole: no 3D curve, its vertex stands for every t
+    BRep_Tool::Range(edge, first, last);
+    TopoDS_Vertex start, end;
+    TopExp::Vertices(edge, start, end);
+    pole_ = to_vec(BRep_Tool::Pnt(start).XYZ());
+    range_ = {first, last};
+    return;
+  }
   curve_ = BRep_Tool::Curve(edge, first, last);  // location already applied
   if (curve_.IsNull())
     throw cad::CadError(cad::CadError::Kind::Geometry,
@@ -40,6 +50,7 @@ OccCurve::OccCurve(int id, std::string name, const TopoDS_Edge& edge) : cad::Cur
 }
 
 cad::CurveDerivatives OccCurve::derivatives(double t) const {
+  if (pole_) return {*pole_, cad::Vec3::Zero(), cad::Vec3::Zero()};
   gp_Pnt p;
   gp_Vec d1, d2;
   curve_->D2(t, p, d1, d2);
@@ -47,6 +58,10 @@ cad::CurveDerivatives OccCurve::derivatives(double t) const {
 }
 
 cad::CurveProjection OccCurve::project(const cad::Vec3& x, std::optional<double> guess) const {
+  if (pole_) {
+    const double t = range_.clamp(guess.value_or(0.5 * (range_.lo + range_.hi)));
+    return {t, *pole_, (x - *pole_).norm(), true};
+  }
   if (guess) return cad::Curve::project(x, guess);
   // Extrema finds interior stationary points only; the edge ends compete with them.
   double best_t = range_.lo;

@@ -2,7 +2,9 @@
 
 #include "semimesh/cad/error.hpp"
 
+#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
+#include <GProp_GProps.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <GeomAdaptor_Surface.hxx>
@@ -16,6 +18,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -108,6 +111,29 @@ cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
   gp_Vec du, dv, duu, dvv, duv;
   surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
+}
+
+std::optional<double> OccSurface::period(int direction) const {
+  cad::Surface::period(direction);  // checks the direction
+  const bool along_u = direction == 0;
+  if (along_u ? surface_->IsUPeriodic() : surface_->IsVPeriodic())
+    return along_u ? surface_->UPeriod() : surface_->VPeriod();
+  if (!(along_u ? surface_->IsUClosed() : surface_->IsVClosed())) return std::nullopt;
+  double u0, u1, v0, v1;
+  surface_->Bounds(u0, u1, v0, v1);
+  const double length = along_u ? u1 - u0 : v1 - v0;
+  if (!std::isfinite(length) || !(length > 0.0)) return std::nullopt;
+  return length;
+}
+
+std::optional<double> OccSurface::exact_area() const {
+  try {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face_, props);
+    return props.Mass();
+  } catch (const Standard_Failure&) {
+    return std::nullopt;  // OCC gave up: the generic quadrature answers
+  }
 }
 
 bool OccSurface::contains(const cad::Vec2& uv) const {

@@ -30,6 +30,12 @@ class OccSurface final : public cad::Surface {
   /// With a guess: the local Newton only.
   cad::SurfaceProjection project(const cad::Vec3& x, std::optional<cad::Vec2> guess = std::nullopt) const override;
 
+  /// OCC's period of a periodic parameter; for a closed, non-periodic one (a closed B-spline) the
+  /// length of the surface's parameter range, over which it closes on itself.
+  std::optional<double> period(int direction) const override;
+  /// BRepGProp::SurfaceProperties over the trimmed face (Gauss integration on the face's domain).
+  std::optional<double> exact_area() const override;
+
   /// True when OCC evaluates this surface through a cached adaptor (revolution, extrusion, offset).
   bool has_mutable_evaluator() const { return mutable_evaluator_; }
 

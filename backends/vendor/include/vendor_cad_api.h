@@ -42,7 +42,7 @@ typedef struct vc_model_s* vc_model;     /* a loaded model (its bodies, faces, e
 typedef int64_t vc_entity;               /* entity id within a model, 1-based */
 
 #define VC_NULL_ENTITY ((vc_entity)0)
-#define VC_API_VERSION 3
+#define VC_API_VERSION 4  /* 4: vc_face_periodicity, vc_edge_degenerate */
 
 /* ---- status codes ------------------------------------------------------------------------- */
 
@@ -184,6 +184,11 @@ VC_API vc_status vc_face_eval(vc_model model, vc_entity face, const double uv[2]
  * Errors as vc_face_eval; VC_ERR_INTERNAL at a degenerate point where du x dv vanishes. */
 VC_API vc_status vc_face_normal(vc_model model, vc_entity face, const double uv[2], double normal[3]);
 
+/* Periodicity of the face's parameters: periodic[i] = 1 when S closes on itself along parameter i
+ * (0: u, 1: v), S(.. + period[i] ..) = S; then period[i] is that period, else 0. A face on a
+ * periodic surface is usually bounded by a seam edge its loop uses twice, once each way. */
+VC_API vc_status vc_face_periodicity(vc_model model, vc_entity face, int periodic[2], double period[2]);
+
 /* Whether uv[2] lies inside the trimmed face (1) or outside it (0); on the boundary is inside. */
 VC_API vc_status vc_face_inside(vc_model model, vc_entity face, const double uv[2], int* inside);
 
@@ -225,6 +230,11 @@ VC_API vc_status vc_edge_eval(vc_model model, vc_entity edge, double t, double p
  *   t, p[3], distance, converged: as vc_face_project (p, distance, converged may be NULL). */
 VC_API vc_status vc_edge_project(vc_model model, vc_entity edge, const double x[3], const double* t_guess, double* t,
                           double p[3], double* distance, int* converged);
+
+/* Whether an edge is degenerate (1) or not (0): a single point walked over [t0, t1], the pole
+ * of the face that uses it (the apex of a cone, the nose of a body of revolution). Its derivatives
+ * are zero and its two end vertices are the same. */
+VC_API vc_status vc_edge_degenerate(vc_model model, vc_entity edge, int* degenerate);
 
 /* End vertices of an edge: `start` at t0, `end` at t1 (equal for a closed edge). */
 VC_API vc_status vc_edge_vertices(vc_model model, vc_entity edge, vc_entity* start, vc_entity* end);

@@ -136,10 +136,13 @@ class Builder {
       connection_->call("vc_edge_range", ref, [&](vc_model m) { return vc_edge_range(m, e, &range.lo, &range.hi); });
       connection_->call("vc_edge_geometry", ref, [&](vc_model m) { return vc_edge_geometry(m, e, &type); });
       connection_->call("vc_edge_vertices", ref, [&](vc_model m) { return vc_edge_vertices(m, e, &start, &end); });
+      int degenerate = 0;
+      connection_->call("vc_edge_degenerate", ref, [&](vc_model m) { return vc_edge_degenerate(m, e, &degenerate); });
       int first = lookup(vertex_ids_, start, "vertex", ref), last = lookup(vertex_ids_, end, "vertex", ref);
       int id = model_->num_curves();
       edge_ids_[e] = id;
-      model_->add_curve(std::make_unique<VendorCurve>(id, std::move(name), connection_, e, curve_kind(type), range),
+      model_->add_curve(std::make_unique<VendorCurve>(id, std::move(name), connection_, e, curve_kind(type), range,
+                                                      degenerate != 0),
                         first, last);
     }
   }
@@ -175,12 +178,18 @@ class Builder {
       connection_->call("vc_face_geometry", ref, [&](vc_model m) { return vc_face_geometry(m, f, &type); });
       box[0] = {lo[0], hi[0]};
       box[1] = {lo[1], hi[1]};
+      int periodic[2] = {0, 0};
+      double period[2] = {0.0, 0.0};
+      connection_->call("vc_face_periodicity", ref, [&](vc_model m) { return vc_face_periodicity(m, f, periodic, period); });
+      std::array<std::optional<double>, 2> periods;
+      for (int i = 0; i < 2; ++i)
+        if (periodic[i]) periods[i] = period[i];
       auto sense = face_senses_.find(f);
       const bool reversed = sense != face_senses_.end() && sense->second == VC_SENSE_REVERSED;
       std::vector<cad::Loop> loops = read_loops(f, ref, reversed);
       int id = model_->num_surfaces();
       model_->add_surface(std::make_unique<VendorSurface>(id, std::move(name), reversed ? -1 : +1, connection_, f,
-                                                          surface_kind(type), box),
+                                                          surface_kind(type), box, periods),
                           std::move(loops));
     }
   }

@@ -3,8 +3,13 @@
 namespace semimesh::vendor {
 
 VendorCurve::VendorCurve(int id, std::string name, std::shared_ptr<const Connection> connection, vc_entity edge,
-                         cad::CurveKind kind, cad::Interval bounds)
-    : cad::Curve(id, std::move(name)), connection_(std::move(connection)), edge_(edge), kind_(kind), bounds_(bounds) {}
+                         cad::CurveKind kind, cad::Interval bounds, bool degenerate)
+    : cad::Curve(id, std::move(name)),
+      connection_(std::move(connection)),
+      edge_(edge),
+      kind_(kind),
+      bounds_(bounds),
+      degenerate_(degenerate) {}
 
 cad::CurveDerivatives VendorCurve::derivatives(double t) const {
   cad::CurveDerivatives d;

@@ -3,12 +3,19 @@
 namespace semimesh::vendor {
 
 VendorSurface::VendorSurface(int id, std::string name, int orientation, std::shared_ptr<const Connection> connection,
-                             vc_entity face, cad::SurfaceKind kind, std::array<cad::Interval, 2> bounds)
+                             vc_entity face, cad::SurfaceKind kind, std::array<cad::Interval, 2> bounds,
+                             std::array<std::optional<double>, 2> periods)
     : cad::Surface(id, std::move(name), orientation),
       connection_(std::move(connection)),
       face_(face),
       kind_(kind),
-      bounds_(bounds) {}
+      bounds_(bounds),
+      periods_(periods) {}
+
+std::optional<double> VendorSurface::period(int direction) const {
+  cad::Surface::period(direction);  // checks the direction
+  return periods_[direction];
+}
 
 cad::SurfaceDerivatives VendorSurface::derivatives(const cad::Vec2& uv) const {
   cad::SurfaceDerivatives d;

@@ -3,9 +3,13 @@
 #include "semimesh/cad/error.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace semimesh::ho::detail {
 namespace {
@@ -90,6 +94,52 @@ cad::Vec2 surface_parameter(const cad::Model& model, int surface, const mesh::Ca
   if (a.kind == mesh::CadAttachment::Surface && a.entity == surface) return {a.u, a.v};
   const cad::Surface& s = model.surface(surface);
   return guess ? s.project(x, *guess).uv : s.project(x).uv;
+}
+
+namespace {
+
+/// The parameter direction along which the surface does not move at uv (a pole), or -1.
+int pole_direction(const cad::Surface& surface, const cad::Vec2& uv) {
+  const cad::SurfaceDerivatives d = surface.derivatives(uv);
+  if (d.du.norm() <= 1e-9 * d.dv.norm()) return 0;
+  if (d.dv.norm() <= 1e-9 * d.du.norm()) return 1;
+  return -1;
+}
+
+}  // namespace
+
+void continuous_parameters(const cad::Surface& surface, Eigen::Ref<Eigen::MatrixXd> uv, int count, int vertices) {
+  const std::array<std::optional<double>, 2> periods{surface.period(0), surface.period(1)};
+  std::vector<int> pole(vertices);
+  int reference = -1;
+  for (int v = 0; v < vertices; ++v) {
+    pole[v] = pole_direction(surface, uv.row(v).transpose());
+    if (reference < 0 && pole[v] < 0) reference = v;
+  }
+  if (reference < 0) return;  // every vertex at a pole: nothing to go by
+  for (int d = 0; d < 2; ++d)
+    if (periods[d])
+      for (int j = 0; j < count; ++j)
+        uv(j, d) += std::round((uv(reference, d) - uv(j, d)) / *periods[d]) * *periods[d];
+  for (int v = 0; v < vertices; ++v) {
+    if (pole[v] < 0) continue;
+    double sum = 0.0;
+    int others = 0;
+    for (int w = 0; w < vertices; ++w)
+      if (pole[w] < 0) {
+        sum += uv(w, pole[v]);
+        ++others;
+      }
+    uv(v, pole[v]) = sum / others;
+  }
+}
+
+cad::Vec2 into_box(const cad::Surface& surface, cad::Vec2 uv) {
+  const auto box = surface.bounds();
+  for (int d = 0; d < 2; ++d)
+    if (const std::optional<double> period = surface.period(d))
+      uv[d] -= std::floor((uv[d] - box[d].lo) / *period) * *period;
+  return uv;
 }
 
 }  // namespace semimesh::ho::detail

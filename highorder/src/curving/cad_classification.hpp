@@ -10,6 +10,8 @@
 #include "semimesh/cad/model.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
+#include <Eigen/Core>
+
 #include <vector>
 
 namespace semimesh::ho::detail {
@@ -33,5 +35,15 @@ double curve_parameter(const cad::Model& model, int curve, const mesh::CadAttach
 /// else the projection of x (seeded by `guess` when given).
 cad::Vec2 surface_parameter(const cad::Model& model, int surface, const mesh::CadAttachment& a, const cad::Vec3& x,
                             const cad::Vec2* guess = nullptr);
+
+/// Makes rows [0, count) of `uv` (an element's nodes on `surface`, vertices first) one continuous
+/// patch of the surface's parameters: across a periodic seam each row moves by whole periods next
+/// to the first vertex that is not at a pole; a vertex at a pole (where the surface does not move
+/// along one parameter) takes along that parameter the mean of the other vertices, the parameter
+/// its fan reaches it with. `vertices`: how many of the rows are the element's vertices.
+void continuous_parameters(const cad::Surface& surface, Eigen::Ref<Eigen::MatrixXd> uv, int count, int vertices);
+
+/// uv moved by whole periods into the surface's parameter box where it is periodic.
+cad::Vec2 into_box(const cad::Surface& surface, cad::Vec2 uv);
 
 }  // namespace semimesh::ho::detail

@@ -114,8 +114,12 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     }
   } else if (place.kind == CadPlace::Surface) {
     const cad::Surface& s = model_.surface(place.id);
-    const cad::Vec2 uva = detail::surface_parameter(model_, place.id, in_.cad_attachment(a), xa);
-    const cad::Vec2 uvb = detail::surface_parameter(model_, place.id, in_.cad_attachment(b), xb, &uva);
+    const cad::Vec2 start = detail::surface_parameter(model_, place.id, in_.cad_attachment(a), xa);
+    Eigen::MatrixXd ends(2, 2);
+    ends.row(0) = start.transpose();
+    ends.row(1) = detail::surface_parameter(model_, place.id, in_.cad_attachment(b), xb, &start).transpose();
+    detail::continuous_parameters(s, ends, 2, 2);
+    const cad::Vec2 uva = ends.row(0).transpose(), uvb = ends.row(1).transpose();
     Eigen::MatrixX2d uv(P + 1, 2);
     Eigen::MatrixX3d pts(P + 1, 3);
     uv.row(0) = uva.transpose();
@@ -190,12 +194,14 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(n, 2);
     for (int v = 0; v < face.num_vertices; ++v)
       uv.row(v) = detail::surface_parameter(model_, place.id, corner_att[v], X.row(v).transpose()).transpose();
+    detail::continuous_parameters(s, uv, face.num_vertices, face.num_vertices);
     const cad::Vec2 guess = uv.topRows(face.num_vertices).colwise().mean().transpose();
     for (int j : ext.boundary)
       if (j >= face.num_vertices)
         uv.row(j) =
             detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
                 .transpose();
+    detail::continuous_parameters(s, uv, static_cast<int>(uv.rows()), face.num_vertices);
     extend_harmonically(ext, uv);
     Eigen::MatrixX2d uv2 = uv;
     Eigen::MatrixX3d pts = X;

@@ -51,12 +51,14 @@ GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, 
     for (std::size_t j = 0; j < ids.size(); ++j)
       uv.row(j) = detail::surface_parameter(model, place.id, mesh.cad_attachment(ids[j]), X.row(j).transpose())
                       .transpose();
+    detail::continuous_parameters(surface, uv, static_cast<int>(uv.rows()), nv);
     const LagrangeBasis basis(bf.shape, mesh.order(), mesh.node_set());
     const Eigen::MatrixXd phi = basis.values(sample_points(bf.shape, samples_per_edge));
     const Eigen::MatrixX3d points = phi * X;
     const Eigen::MatrixX2d guesses = phi * uv;
     for (Eigen::Index k = 0; k < points.rows(); ++k) {
-      const cad::Vec2 guess = guesses.row(k).transpose();
+      // Interpolated across a seam cut, a guess may lie a little outside the parameter box.
+      const cad::Vec2 guess = detail::into_box(surface, guesses.row(k).transpose());
       const double d = surface.project(points.row(k).transpose(), guess).distance / reference_length;
       err.max_rel = std::max(err.max_rel, d);
       sum_squares += d * d;

@@ -1,5 +1,6 @@
 // The boundary of a surface mesh: the curve mesh nodes of its loops, mapped into the surface's
-// parameter space. Nodes at CAD vertices appear once even when two curve uses meet there.
+// parameter space. A node at a CAD vertex appears once per image of the vertex in (u, v): once,
+// except on seams and at poles.
 #pragma once
 
 #include "semimesh/cad/labels.hpp"
@@ -11,9 +12,17 @@ namespace semimesh::surface::detail {
 
 /// Fills `mesh.uv/points/origin` with the boundary nodes and returns the loops as closed chains of
 /// node ids in walking order ([loops][nodes], the last node joins back to the first).
-/// Throws SurfaceMeshError when a curve node is off the surface or a curve is used twice.
+/// A periodic face is cut open along its seams: a seam's nodes appear twice, one period apart in
+/// (u, v), the image with the face on the use's left for each use. A pole appears twice too, as
+/// the two ends of a segment along the side of the parameter box that maps onto it (remove_pole_
+/// triangles then drops the triangle on that segment). Nodes of one CAD vertex at one (u, v) are one
+/// node. Throws SurfaceMeshError when a curve node is off the surface or a curve is used twice in
+/// the same direction.
 std::vector<std::vector<int>> add_boundary_nodes(const cad::Model& model, int surface, const CurveMeshes& curves,
                                                  SurfaceMesh& mesh);
+
+/// Drops the triangles with two corners at one CAD vertex (on a pole segment: no area in space).
+void remove_pole_triangles(SurfaceMesh& mesh);
 
 /// Spacing of the grid that parameter coordinates are snapped to: a power of two near 2^-32 of the
 /// surface's parameter box (of the boundary nodes' (u, v) box where the surface is unbounded), so

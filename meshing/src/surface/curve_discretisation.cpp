@@ -50,11 +50,23 @@ CurveMesh mesh_from_fractions(const cad::Model& model, int curve, const std::vec
   return mesh;
 }
 
+/// A pole: one segment over the parameter range, both nodes at its vertex.
+CurveMesh pole_mesh(const cad::Model& model, int curve) {
+  const cad::Interval range = model.curve(curve).bounds();
+  const Vec3 at = model.vertex(model.curve_vertices(curve)[0]).point;
+  CurveMesh mesh;
+  mesh.curve = curve;
+  mesh.t = {range.lo, range.hi};
+  mesh.points = {at, at};
+  return mesh;
+}
+
 }  // namespace
 
 CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& size, int min_segments) {
   check_curve_id(model, curve);
   if (min_segments < 1) throw SurfaceMeshError("min_segments must be >= 1, got " + std::to_string(min_segments));
+  if (model.curve(curve).is_degenerate()) return pole_mesh(model, curve);
   const cad::Curve& c = model.curve(curve);
   const cad::Interval range = c.bounds();
 
@@ -108,6 +120,7 @@ CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& 
 
 CurveMesh discretise_curve(const cad::Model& model, int curve, const CurveCount& count) {
   check_curve_id(model, curve);
+  if (model.curve(curve).is_degenerate()) return pole_mesh(model, curve);
   const int n = count.segments;
   if (n < 1) throw SurfaceMeshError(cad::curve_label(model, curve) + ": segments must be >= 1, got " + std::to_string(n));
   if (is_closed(model, curve) && n < 3)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -42,13 +43,27 @@ bool positive_uv(const SurfaceMesh& m, int a, int b, int c) {
   return signed_area_uv(m, a, b, c) > kMinRelativeArea * scale;
 }
 
-double quality(const SurfaceMesh& m, const std::array<int, 3>& t) {
-  return min_angle_sine(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+// The sine of the smallest angle; negative when the triangle in space faces against the surface's
+// du x dv at its (u, v) centroid (a fold, possible where the surface shrinks to a pole).
+double quality(const cad::Surface& face, const SurfaceMesh& m, const std::array<int, 3>& t) {
+  const double sine = min_angle_sine(m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+  const cad::SurfaceDerivatives d = face.derivatives((m.uv[t[0]] + m.uv[t[1]] + m.uv[t[2]]) / 3.0);
+  const Vec3 n = (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]);
+  return n.dot(d.du.cross(d.dv)) < 0.0 ? -1.0 - sine : sine;
+}
+
+// Whether an edge spans a third of a period or more of a periodic parameter: on a face cut open
+// along its seam it would go the long way round (the refinement splits such edges).
+bool wraps(const cad::Surface& face, const Vec2& a, const Vec2& b) {
+  for (int d = 0; d < 2; ++d)
+    if (const std::optional<double> period = face.period(d))
+      if (std::abs(b[d] - a[d]) >= *period / 3.0) return true;
+  return false;
 }
 
 }  // namespace
 
-int swap_edges(SurfaceMesh& mesh) {
+int swap_edges(const cad::Surface& face, SurfaceMesh& mesh) {
   auto& tris = mesh.triangles;
   int total = 0;
   for (int pass = 0; pass < kMaxSwapPasses; ++pass) {
@@ -75,14 +90,15 @@ int swap_edges(SurfaceMesh& mesh) {
       };
       const int c = opposite(ta), d = opposite(tb);
       if (c == d || uses.count(edge_key(c, d)) || created.count(edge_key(c, d))) continue;
+      if (wraps(face, mesh.uv[c], mesh.uv[d])) continue;
       // Orient: in ta the edge runs p -> q with c after q (counter-clockwise).
       int p = a, q = b;
       for (int i = 0; i < 3; ++i)
         if (tris[ta][i] == b && tris[ta][(i + 1) % 3] == a) std::swap(p, q);
       const std::array<int, 3> n1{c, p, d}, n2{c, d, q};
       if (!positive_uv(mesh, n1[0], n1[1], n1[2]) || !positive_uv(mesh, n2[0], n2[1], n2[2])) continue;
-      const double before = std::min(quality(mesh, tris[ta]), quality(mesh, tris[tb]));
-      const double after = std::min(quality(mesh, n1), quality(mesh, n2));
+      const double before = std::min(quality(face, mesh, tris[ta]), quality(face, mesh, tris[tb]));
+      const double after = std::min(quality(face, mesh, n1), quality(face, mesh, n2));
       if (after <= before + kMinGain) continue;
       tris[ta] = n1;
       tris[tb] = n2;
@@ -136,7 +152,7 @@ int collapse_short_edges(const cad::Surface& face, const SizeField& size, Surfac
       for (int v : {a, b})
         for (int t : ball[v]) {
           if (std::find(kept.begin(), kept.end(), t) != kept.end()) continue;
-          before = std::min(before, quality(mesh, tris[t]));
+          before = std::min(before, quality(face, mesh, tris[t]));
           const bool has_a = std::count(tris[t].begin(), tris[t].end(), a) > 0;
           const bool has_b = std::count(tris[t].begin(), tris[t].end(), b) > 0;
           if (has_a && has_b) continue;
@@ -151,7 +167,7 @@ int collapse_short_edges(const cad::Surface& face, const SizeField& size, Surfac
         for (int& w : renamed)
           if (w == b) w = a;
         ok = ok && positive_uv(mesh, renamed[0], renamed[1], renamed[2]);
-        after = std::min(after, quality(mesh, renamed));
+        after = std::min(after, quality(face, mesh, renamed));
       }
       if (!ok || after < before - kQualityNoise) {
         mesh.uv[a] = uv_a;
@@ -229,7 +245,7 @@ int smooth_nodes(const cad::Surface& face, SurfaceMesh& mesh) {
     const std::array<Vec2, 2> steps{solver.solve(J.transpose() * (ideal - d.p)), solver.solve(J.transpose() * (mean - d.p))};
 
     double before = 1.0;
-    for (int t : ball[v]) before = std::min(before, quality(mesh, mesh.triangles[t]));
+    for (int t : ball[v]) before = std::min(before, quality(face, mesh, mesh.triangles[t]));
     const Vec2 old_uv = mesh.uv[v];
     const Vec3 old_point = mesh.points[v];
     // Each full step, else half of it: accepted when the ball stays valid and its worst angle
@@ -243,7 +259,7 @@ int smooth_nodes(const cad::Surface& face, SurfaceMesh& mesh) {
       for (int t : ball[v]) {
         const auto& tri = mesh.triangles[t];
         ok = ok && positive_uv(mesh, tri[0], tri[1], tri[2]);
-        after = std::min(after, quality(mesh, tri));
+        after = std::min(after, quality(face, mesh, tri));
       }
       accepted = ok && after >= before - kQualityNoise;
     }

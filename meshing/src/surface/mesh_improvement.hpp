@@ -9,8 +9,9 @@
 
 namespace semimesh::surface::detail {
 
-/// Triangles must be counter-clockwise in (u, v); they stay so. Returns the number of swaps.
-int swap_edges(SurfaceMesh& mesh);
+/// Triangles must be counter-clockwise in (u, v); they stay so. A swap that unfolds a triangle
+/// facing against the surface in space counts as a gain. Returns the number of swaps.
+int swap_edges(const cad::Surface& face, SurfaceMesh& mesh);
 
 /// Merges the two ends of interior edges (both nodes interior) much shorter than the size field
 /// asks, when the merged node keeps its triangles valid and does not lower the worst angle.

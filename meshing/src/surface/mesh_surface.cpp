@@ -24,14 +24,18 @@ SurfaceMesh mesh_surface(const cad::Model& model, int surface, const CurveMeshes
   const double grid_step = detail::parameter_grid_step(face, mesh);
   detail::canonicalise_boundary(grid_step, mesh, loops);
   detail::triangulate_parameter_space(model, surface, loops, size, options.split_factor, grid_step, mesh);
+  // On a periodic face collapses measured in space would undo the splits of edges that wrap
+  // round (short chords near a pole): the refinement's sizes stand there.
+  const bool periodic = face.period(0) || face.period(1);
   for (int pass = 0; pass < options.improvement_passes; ++pass) {
-    const int collapses = detail::collapse_short_edges(face, size, mesh);
-    const int swaps = detail::swap_edges(mesh);
+    const int collapses = periodic ? 0 : detail::collapse_short_edges(face, size, mesh);
+    const int swaps = detail::swap_edges(face, mesh);
     const int moves = detail::smooth_nodes(face, mesh);
     if (collapses == 0 && swaps == 0 && moves == 0) break;
   }
-  detail::swap_edges(mesh);
+  detail::swap_edges(face, mesh);
   detail::fix_flat_corners(model, surface, mesh);
+  detail::remove_pole_triangles(mesh);
   // Counter-clockwise in (u, v) means along du x dv; the fluid side is orientation() * du x dv.
   if (face.orientation() < 0)
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);

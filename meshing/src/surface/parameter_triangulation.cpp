@@ -75,7 +75,9 @@ class Refiner {
  public:
   Refiner(const cad::Surface& face, const SizeField& size, double split_factor, double grid_step, SurfaceMesh& mesh,
           Cdt& cdt)
-      : face_(face), size_(size), split_factor_(split_factor), grid_step_(grid_step), mesh_(mesh), cdt_(cdt) {}
+      : face_(face), size_(size), split_factor_(split_factor), grid_step_(grid_step), mesh_(mesh), cdt_(cdt),
+        periods_{face.period(0), face.period(1)},
+        periodic_(periods_[0] || periods_[1]) {}
 
   void run() {
     for (FaceHandle f : cdt_.finite_face_handles())
@@ -98,10 +100,51 @@ class Refiner {
   void refine(FaceHandle f) {
     const Vec3 &a = point(f->vertex(0)), &b = point(f->vertex(1)), &c = point(f->vertex(2));
     const double h = size_((a + b + c) / 3.0);
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    if (const std::optional<Vec2> split = wrapping_edge_midpoint(f)) {
+      if (try_insert(snap_to_grid(*split, grid_step_), f, 0.0)) return;
+    }
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i) longest = std::max(longest, edge_length(f->vertex(i), f->vertex(Cdt::cw(i))));
     if (longest <= split_factor_ * h) return;
     for (const std::optional<Vec2>& candidate : {metric_circumcentre(f), longest_free_edge_midpoint(f), centroid(f)})
       if (candidate && try_insert(snap_to_grid(*candidate, grid_step_), f, h)) return;
+  }
+
+  // The chord, or on a periodic face the path through the edge's (u, v) midpoint: an edge joining
+  // the two sides of a seam cut can have a short chord while it wraps all the way round.
+  double edge_length(VertexHandle p, VertexHandle q) const {
+    if (!periodic_) return (point(q) - point(p)).norm();
+    const Vec3 mid = face_.point(0.5 * (to_uv(p->point()) + to_uv(q->point())));
+    return (mid - point(p)).norm() + (point(q) - mid).norm();
+  }
+
+  // The (u, v) midpoint of a free edge spanning more than a third of a period: on a periodic face
+  // such an edge goes a long way round even where its chord is short (near a pole, or joining two
+  // images of one seam point), so it is split whatever its length in space.
+  // In a fan at a pole the limit is a twelfth of a period: a wide fan triangle whose other two
+  // corners lie at unequal distances from the pole folds over.
+  std::optional<Vec2> wrapping_edge_midpoint(FaceHandle f) const {
+    for (int d = 0; d < 2; ++d) {
+      if (!periods_[d]) continue;
+      bool fan = false;
+      for (int i = 0; i < 3; ++i) fan = fan || at_pole(to_uv(f->vertex(i)->point()), d);
+      for (int i = 0; i < 3; ++i) {
+        if (cdt_.is_constrained(Cdt::Edge(f, i))) continue;
+        const Vec2 p = to_uv(f->vertex(Cdt::cw(i))->point()), q = to_uv(f->vertex(Cdt::ccw(i))->point());
+        if (std::abs(q[d] - p[d]) > *periods_[d] / (fan ? 12.0 : 3.0) && !at_pole(p, d) && !at_pole(q, d))
+          return 0.5 * (p + q);
+      }
+    }
+    return std::nullopt;
+  }
+
+  // Whether S does not move along parameter direction d at uv (a pole: an edge from it may span
+  // any angle).
+  bool at_pole(const Vec2& uv, int d) const {
+    const cad::SurfaceDerivatives s = face_.derivatives(uv);
+    const Vec3& along = d == 0 ? s.du : s.dv;
+    const Vec3& across = d == 0 ? s.dv : s.du;
+    return along.norm() <= 1e-9 * across.norm();
   }
 
   // Circumcentre in the tangent-plane metric at the centroid: where the 3D circumcentre would be.
@@ -184,6 +227,8 @@ class Refiner {
   double grid_step_;
   SurfaceMesh& mesh_;
   Cdt& cdt_;
+  std::array<std::optional<double>, 2> periods_;
+  bool periodic_;
   std::deque<Key> queue_;
 };
 

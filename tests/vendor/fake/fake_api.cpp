@@ -337,6 +337,19 @@ vc_status vc_face_normal(vc_model model, vc_entity face, const double uv[2], dou
   });
 }
 
+vc_status vc_face_periodicity(vc_model model, vc_entity face, int periodic[2], double period[2]) {
+  return on_model(model, [&](const FakeModel& k) {
+    require(periodic, "periodic");
+    require(period, "period");
+    const cad::Surface& s = k.geometry().surface(k.index_of(face, VC_TYPE_FACE));
+    for (int i = 0; i < 2; ++i) {
+      const std::optional<double> p = s.period(i);
+      periodic[i] = p ? 1 : 0;
+      period[i] = p.value_or(0.0);
+    }
+  });
+}
+
 vc_status vc_face_inside(vc_model model, vc_entity face, const double uv[2], int* inside) {
   return on_model(model, [&](const FakeModel& k) {
     require(uv, "uv");
@@ -404,6 +417,13 @@ vc_status vc_edge_range(vc_model model, vc_entity edge, double* t0, double* t1) 
     cad::Interval range = k.geometry().curve(k.index_of(edge, VC_TYPE_EDGE)).bounds();
     *t0 = range.lo;
     *t1 = range.hi;
+  });
+}
+
+vc_status vc_edge_degenerate(vc_model model, vc_entity edge, int* degenerate) {
+  return on_model(model, [&](const FakeModel& k) {
+    require(degenerate, "degenerate");
+    *degenerate = k.geometry().curve(k.index_of(edge, VC_TYPE_EDGE)).is_degenerate() ? 1 : 0;
   });
 }
 

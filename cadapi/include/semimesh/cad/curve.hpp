@@ -29,6 +29,12 @@ class Curve {
   virtual CurveDerivatives derivatives(double t) const = 0;
   virtual Vec3 point(double t) const { return derivatives(t).p; }
 
+  /// A degenerate curve is one point in space walked over a parameter interval: the pole of a
+  /// surface (the apex of a cone, the nose of a body of revolution), where a whole side of the
+  /// face's parameter box maps to that point. Its derivatives are zero, its length is zero, its
+  /// two end vertices are the same, and only one face uses it (once). Default: false.
+  virtual bool is_degenerate() const { return false; }
+
   /// Closest point to x on the curve (clamped to bounds()). `guess` seeds the local solver;
   /// without it the default samples the curve to find a start.
   virtual CurveProjection project(const Vec3& x, std::optional<double> guess = std::nullopt) const;

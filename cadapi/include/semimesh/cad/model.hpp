@@ -86,6 +86,10 @@ class Model {
   /// Curves that start or end at a vertex.
   const std::vector<int>& curves_of_vertex(int vertex) const;
 
+  /// Whether the loops of `surface` walk `curve` twice, once each way: a seam of a periodic face,
+  /// whose two sides are the same curve one period apart in the face's parameters.
+  bool is_seam(int surface, int curve) const;
+
   /// First surface with that name, if any.
   std::optional<int> find_surface(const std::string& name) const;
 
@@ -96,7 +100,8 @@ class Model {
   /// Unit of all coordinates ("mm", "m", "chord", ...) and the factor applied at load.
   const std::string& units() const { return units_; }
   double scale_applied() const { return scale_applied_; }
-  /// Watertight: every curve bounds exactly two surfaces (seam curves: one surface, twice).
+  /// Watertight: every curve bounds exactly two surfaces (seam curves: one surface, twice;
+  /// degenerate curves are points and bound one surface once).
   bool is_closed() const { return closed_; }
   /// Whether queries may run concurrently from several threads.
   bool thread_safe() const { return thread_safe_; }

@@ -35,6 +35,17 @@ class Surface {
   virtual Vec3 point(const Vec2& uv) const { return derivatives(uv).p; }
   virtual bool is_planar() const { return kind() == SurfaceKind::Plane; }
 
+  /// The period of parameter `direction` (0: u, 1: v) when the surface closes on itself in it:
+  /// S(u + period, v) = S(u, v) with all derivatives (a cylinder, a body of revolution, a closed
+  /// B-spline). Such a face is usually bounded by a seam curve its loop walks twice (Model::is_seam);
+  /// its two images lie one period apart. Default: not periodic. Throws CadError on a direction
+  /// other than 0 or 1.
+  virtual std::optional<double> period(int direction) const;
+
+  /// Area of the trimmed face from the backend's own exact integrator, when it has one; nullopt
+  /// otherwise (callers then integrate with cad::face_area's generic quadrature).
+  virtual std::optional<double> exact_area() const { return std::nullopt; }
+
   /// Whether (u,v) lies inside the trimmed face (on the boundary counts as inside).
   virtual bool contains(const Vec2& uv) const = 0;
 

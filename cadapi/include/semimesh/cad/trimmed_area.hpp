@@ -9,6 +9,7 @@ namespace semimesh::cad {
 struct TrimmedArea {
   double area = 0.0;
   double error_estimate = 0.0;  ///< estimated |true area - area| (see trimmed_area)
+  bool exact = false;           ///< from the backend's own integrator (Surface::exact_area)
 };
 
 /// Adaptive quadtree over the parameter box. A cell is classified by the trim test at its corners
@@ -21,5 +22,9 @@ struct TrimmedArea {
 /// is the change of the result over the last refinement (1e-5..1e-3 relative on the test faces). A trim
 /// feature (hole, notch, sliver) that no corner or centre of the 12 x 12 base grid sees is missed.
 TrimmedArea trimmed_area(const Surface& surface, double relative_tolerance = 1e-6);
+
+/// The face's area: the backend's exact integrator where it has one (Surface::exact_area, error
+/// estimate 0), else trimmed_area() with `relative_tolerance`.
+TrimmedArea face_area(const Surface& surface, double relative_tolerance = 1e-6);
 
 }  // namespace semimesh::cad

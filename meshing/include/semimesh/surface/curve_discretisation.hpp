@@ -40,7 +40,8 @@ struct CurveCount {
 
 /// Size-driven: n = max(min_segments, round(integral of ds / h)) segments (at least 3 on a closed
 /// curve), nodes placed by arc length so that each segment holds an equal share of the integral.
-/// Throws SurfaceMeshError on an unknown curve id or min_segments < 1.
+/// A degenerate curve (a pole) gets one segment whatever the size or count: both its nodes are its
+/// vertex. Throws SurfaceMeshError on an unknown curve id or min_segments < 1.
 CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& size, int min_segments = 1);
 
 /// Prescribed count with a bunching law (fractions of the arc length). Throws SurfaceMeshError on

@@ -43,8 +43,11 @@ struct SurfaceMeshOptions {
 /// holes) in parameter space, refined where 3D edges are longer than the size field asks (points
 /// at the circumcentre in the local surface metric), then improved in 3D by collapsing too short
 /// interior edges, edge swaps and smoothing. Boundary edges are exactly the curve mesh segments.
+/// Periodic faces are cut open along their seams (a seam's nodes appear once per side, one period
+/// apart in (u, v), same point and origin); a pole's side of the parameter box is one boundary
+/// segment whose triangle is dropped, so the triangles around the pole form a fan in space.
 /// Throws SurfaceMeshError when a curve node does not lie on the surface, the loops intersect in
-/// parameter space, or the surface uses a curve twice (periodic seam: not supported).
+/// parameter space, or the surface uses a curve twice in the same direction.
 SurfaceMesh mesh_surface(const cad::Model& model, int surface, const CurveMeshes& curves, const SizeField& size,
                          const SurfaceMeshOptions& options = {});
 

@@ -31,6 +31,13 @@
 // with t = the running coordinate. Vertices: root_le, tip_le, root_te_upper, root_te_lower,
 // tip_te_upper, tip_te_lower (blunt) or root_te, tip_te (sharp), box_<x>_<y>_<z> corners.
 // With farfield the model is watertight: every curve bounds exactly two surfaces.
+//
+// naca.shape = revolution builds instead a body of revolution: the section's thickness (a
+// symmetric code, sharp TE) revolved a full turn about the chord line on the x axis, no wall and
+// no box. One periodic surface "body" (u, w) in [0,1] x [0,2 pi], w the angle from +y towards +z,
+// period 2 pi in w; curves: "meridian" (the seam w = 0, t = u, nose -> tail, walked once each way
+// by the body's loop), "nose" and "tail" (degenerate curves, the poles u = 0 and u = 1, t = w);
+// vertices "nose" and "tail". See src/revolution_entities.hpp.
 #pragma once
 
 #include "semimesh/cad/model.hpp"
@@ -52,6 +59,7 @@ struct NacaWingParams {
   bool farfield = true;       ///< add the wall (root section as a hole) and the far-field box (naca.farfield)
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 (naca.box)
   std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
+  bool revolution = false;  ///< naca.shape = revolution: a body of revolution, not a wing (naca.shape)
 };
 
 /// Reads the naca.* keys of `p` (unknown keys are errors) over the defaults and validates them.

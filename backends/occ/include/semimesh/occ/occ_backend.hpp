@@ -58,8 +58,9 @@ struct ModelOptions {
 std::unique_ptr<cad::Model> load_occ(const cad::Source& source);
 
 /// Maps an OCC shape onto a cadapi Model: faces in TopExp::MapShapes order become surfaces
-/// 0..n-1, non-degenerated edges become curves, vertices become vertices. Degenerated edges
-/// (poles) are left out of the loops, which stay closed since they start and end on one vertex.
+/// 0..n-1, edges become curves, vertices become vertices. Degenerated edges (poles) become
+/// degenerate curves (Curve::is_degenerate) at their vertex, in the loops where the face uses them;
+/// a face's seam edge is walked twice by its loop (Model::is_seam).
 std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const std::string& backend_label,
                                              const ModelOptions& options = {});
 
