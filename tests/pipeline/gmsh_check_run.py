@@ -99,7 +99,7 @@ def main():
         return
     bad = os.path.join(args.workdir, "bad")
     c_type = ["nearfield.topology=C", "wall_layer.thickness=0.04"]
-    for overrides, expected in ((["nearfield.topology=H"], "not implemented yet"),
+    for overrides, expected in ((["nearfield.topology=H", "wall_layer.thickness=0"], "stands a gap above the wall layer"),
                                 (["boundary_layer.ratio=0.5"], "boundary_layer.ratio = 0.5: expected >= 1"),
                                 (["geometry.wall=floor"], "no surface named 'floor'"),
                                 (c_type + ["nearfield.junction_min_angle=100"], "meets the wall at 90 degrees"),
