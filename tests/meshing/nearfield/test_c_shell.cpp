@@ -8,6 +8,7 @@
 #include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/junction_geometry.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
+#include "wing_case.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,39 +25,9 @@ namespace {
 using cad::Vec3;
 using mesh::NodeId;
 
-struct WingCase {
-  std::unique_ptr<cad::Model> model;
-  surface::SurfaceMeshes meshes;
-  BodyRoles roles;
-};
-
-WingCase wing_case(const mock_cad::NacaWingParams& wing) {
-  WingCase c;
-  c.model = mock_cad::make_naca_wing(wing);
-  surface::SizeParams size;
-  size.max_size = 0.4;
-  size.min_size = 0.01;
-  size.curvature_segments = 2.0;
-  size.gradation = 1.3;
-  size.le_size = 0.04;
-  size.te_size = 0.04;
-  const surface::SizeField field(*c.model, size);
-  c.meshes = surface::mesh_model_surfaces(*c.model, field);
-  for (const std::string name : {"upper", "lower", "te_base", "tip"})
-    if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
-  c.roles.wall_surface = c.model->find_surface("wall").value();
-  return c;
-}
-
-mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double taper = 1.0, double sweep = 0.0) {
-  mock_cad::NacaWingParams p;
-  p.code = code;
-  p.sharp_te = sharp;
-  p.taper = taper;
-  p.sweep_deg = sweep;
-  p.span = 1.5;
-  return p;
-}
+using testing::naca;
+using testing::wing_case;
+using testing::WingCase;
 
 ShellParams shell(double thickness) {
   ShellParams p;

@@ -6,6 +6,7 @@
 #include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
+#include "wing_case.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,40 +24,9 @@ namespace {
 using cad::Vec3;
 using mesh::NodeId;
 
-struct WingCase {
-  std::unique_ptr<cad::Model> model;
-  surface::SurfaceMeshes meshes;
-  BodyRoles roles;
-};
-
-// Coarse surface meshes of a NACA wing on its wall: body = upper, lower, te_base (blunt), tip.
-WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4) {
-  WingCase c;
-  c.model = mock_cad::make_naca_wing(wing);
-  surface::SizeParams size;
-  size.max_size = max_size;
-  size.min_size = 0.01;
-  size.curvature_segments = 2.0;
-  size.gradation = 1.3;
-  size.le_size = 0.04;
-  size.te_size = 0.04;
-  const surface::SizeField field(*c.model, size);
-  c.meshes = surface::mesh_model_surfaces(*c.model, field);
-  for (const std::string name : {"upper", "lower", "te_base", "tip"})
-    if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
-  c.roles.wall_surface = c.model->find_surface("wall").value();
-  return c;
-}
-
-mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double taper = 1.0, double sweep = 0.0) {
-  mock_cad::NacaWingParams p;
-  p.code = code;
-  p.sharp_te = sharp;
-  p.taper = taper;
-  p.sweep_deg = sweep;
-  p.span = 1.5;
-  return p;
-}
+using testing::naca;
+using testing::wing_case;
+using testing::WingCase;
 
 bool is_body_surface(const WingCase& c, int s) {
   return std::count(c.roles.body_surfaces.begin(), c.roles.body_surfaces.end(), s) > 0;

@@ -1,0 +1,48 @@
+// The near-field tests' wings: coarse surface meshes of an analytic NACA wing on its wall, with
+// the body (upper, lower, te_base when blunt, tip) and the wall as roles.
+#pragma once
+
+#include "semimesh/mock_cad/naca.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/surface/model_surfaces.hpp"
+
+#include <memory>
+#include <string>
+
+namespace semimesh::nearfield::testing {
+
+struct WingCase {
+  std::unique_ptr<cad::Model> model;
+  surface::SurfaceMeshes meshes;
+  BodyRoles roles;
+};
+
+inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4) {
+  WingCase c;
+  c.model = mock_cad::make_naca_wing(wing);
+  surface::SizeParams size;
+  size.max_size = max_size;
+  size.min_size = 0.01;
+  size.curvature_segments = 2.0;
+  size.gradation = 1.3;
+  size.le_size = 0.04;
+  size.te_size = 0.04;
+  const surface::SizeField field(*c.model, size);
+  c.meshes = surface::mesh_model_surfaces(*c.model, field);
+  for (const std::string name : {"upper", "lower", "te_base", "tip"})
+    if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
+  c.roles.wall_surface = c.model->find_surface("wall").value();
+  return c;
+}
+
+inline mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double taper = 1.0, double sweep = 0.0) {
+  mock_cad::NacaWingParams p;
+  p.code = code;
+  p.sharp_te = sharp;
+  p.taper = taper;
+  p.sweep_deg = sweep;
+  p.span = 1.5;
+  return p;
+}
+
+}  // namespace semimesh::nearfield::testing
