@@ -230,6 +230,56 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
   return {strip, tip};
 }
 
+// The root curve a root node lies on (of its vertex: the first curve on the wall).
+int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) {
+  if (root.kind == CadAttachment::Curve) return root.entity;
+  for (int c : model.curves_of_vertex(root.entity)) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; })) return c;
+  }
+  return -1;
+}
+
+// The strip top next to body node `node` (the node itself, or one of a triangle it shares), -1 when
+// it is away from the root strip.
+int strip_top_next_to(const BodyMesh& layer, const std::map<int, int>& loop_index, int node) {
+  if (loop_index.count(node)) return node;
+  for (const auto& t : layer.triangles)
+    if (std::count(t.begin(), t.end(), node))
+      for (int v : t)
+        if (loop_index.count(v)) return v;
+  return -1;
+}
+
+// The wing layer's offsets at the strip tops are pinned at the halo: where the layer cannot be
+// built next to them even at its thinnest, the root loop is too short (too few segments, too tight
+// a turn) for the thickness and the wall layer's thickness: said so, naming the root curve.
+detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const BodyMesh& layer,
+                                              const std::vector<std::vector<int>>& neighbours,
+                                              const std::vector<Vec3>& normals,
+                                              const detail::OffsetConstraints& constraints, const ShellParams& params,
+                                              const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
+                                              int wall, double delta_wall) {
+  try {
+    return detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  } catch (const detail::LayerFoldError& fold) {
+    std::map<int, int> loop_index;
+    for (std::size_t i = 0; i < loop.size(); ++i) loop_index[loop[i]] = static_cast<int>(i);
+    const int top = strip_top_next_to(layer, loop_index, fold.node);
+    if (top < 0) throw;
+    const int curve = root_curve_of(model, root_cad[loop_index.at(top)], wall);
+    throw NearFieldError("near field: the root loop is too short for the requested sizes along " +
+                         (curve >= 0 ? curve_label(model, curve) : std::string("the root")) + " near " +
+                         point_label(layer.points[top]) + ": the wing layer (thickness " +
+                         number_label(params.thickness) + ") cannot meet the halo above the root strip (wall layer "
+                         "thickness " + number_label(delta_wall) + ") without folding at " +
+                         point_label(layer.points[fold.node]) + ", even at min_thickness_fraction (" +
+                         number_label(params.min_thickness_fraction) +
+                         "); use a smaller thickness or wall layer thickness, or more segments along the root "
+                         "(smaller sizing sizes)");
+  }
+}
+
 }  // namespace
 
 const params::Table<JunctionParams>& junction_keys() {
@@ -303,7 +353,8 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
   }
-  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
+                                                                loop, root_cad, roles.wall_surface, delta_wall);
 
   JunctionShell shell;
   NearField& field = shell.field;
