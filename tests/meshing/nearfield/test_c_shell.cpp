@@ -113,6 +113,41 @@ TEST(CShell, HaloPointsLieAtBothThicknessesFromTheCad) {
     EXPECT_NEAR(sampled_wing_distance(b.c, b.f.mesh.node(b.f.footprint_top[i])), delta_wing, 1e-9);
 }
 
+// The same off 90 degrees: the swept tapered wing meets the wall at up to 116 degrees (seen from
+// the fluid) near its leading edge and at 80 degrees at its trailing edge. The halo is at both
+// thicknesses by a measure independent of cadapi's projections; where the halo's feet are kept
+// (R-L wider than delta_wing, W above delta_wall: not where the wing leans over the fluid, see
+// JunctionHexesKeepBothStripsWhereTheWingLeans), L is straight below H and W at delta_wing from H.
+TEST(CShell, HaloPointsLieAtBothThicknessesOnASweptTaperedWing) {
+  const double delta_wing = 0.06, delta_wall = 0.04;
+  const Built b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
+  ASSERT_GT(b.f.junction_hexes, 10);
+  for (std::size_t i = 0; i < b.f.footprint_top.size(); ++i) {
+    const Vec3 h = b.f.mesh.node(b.f.footprint_top[i]);
+    EXPECT_NEAR(h.z(), delta_wall, 1e-12);
+    if (i % 4 == 0) EXPECT_NEAR(sampled_wing_distance(b.c, h), delta_wing, 1e-9) << "halo node " << i;
+  }
+  const mesh::Mesh& m = b.f.mesh;
+  int feet = 0, tops = 0;
+  for (const auto& el : m.elements()) {
+    if (el.shape != ho::Shape::Hexahedron) continue;
+    for (int k : {0, 1}) {
+      const Vec3 root = m.node(el.vertices[k]), strip_top = m.node(el.vertices[3 - k]);
+      const Vec3 foot = m.node(el.vertices[4 + k]), halo = m.node(el.vertices[7 - k]);
+      if ((foot - root).norm() > delta_wing * (1.0 + 1e-9)) {
+        EXPECT_LT((foot - Vec3(halo.x(), halo.y(), 0.0)).norm(), 1e-12) << root.transpose();
+        ++feet;
+      }
+      if (strip_top.z() > delta_wall * (1.0 + 1e-9)) {
+        EXPECT_NEAR((halo - strip_top).norm(), delta_wing, 1e-9) << root.transpose();
+        ++tops;
+      }
+    }
+  }
+  EXPECT_GT(feet, 0);
+  EXPECT_GT(tops, 0);
+}
+
 TEST(CShell, ElementsAreValidAndHexesShareTheirFacesWithThePrisms) {
   const Built b = build(naca("0012", false), 0.06, 0.04);
   const mesh::Mesh& m = b.f.mesh;
