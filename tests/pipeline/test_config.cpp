@@ -175,6 +175,12 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
   EXPECT_NE(error_of("[boundary_layer]\nratio_line = [0, 0, 0, 0, 0, 1]\nratio_end = 0.5\n")
                 .find("boundary_layer.ratio_end = 0.5: expected >= 1"),
             std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_end = 1.5\n").find("wall_layer.ratio_end = 1.5: expected together with"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [0, 0, 0, 1, 0, 0]\n").find("wall_layer.ratio_line"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [1, 1, 0, 1, 1, 0]\nratio_end = 1\n").find("A != B"),
+            std::string::npos);
   EXPECT_NE(error_of("[highorder]\nspring_iterations = 0\n").find("highorder.spring_iterations = 0"), std::string::npos);
   EXPECT_NE(error_of("[sizing]\nmax_size = 0.1\nmin_size = 0.2\n").find("sizing.min_size = 0.2"), std::string::npos);
   EXPECT_NE(error_of("[output]\nformats = [\"stl\"]\n").find("output.formats"), std::string::npos);
