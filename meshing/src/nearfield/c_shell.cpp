@@ -170,11 +170,16 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
   const CadAttachment& at = body.cad[r];
+  // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
+  // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
+  // foot projected onto the edge of its face, raised, could land on the next root's own).
+  CadAttachment from_root;
   if (at.kind == CadAttachment::Vertex) {
     const int c = spanwise_curve(model, at.entity, roles.wall_surface);
     const auto p = model.curve(c).project(j.halo);
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
+    from_root = {CadAttachment::Curve, c, model.curve(c).project(j.root).t, 0.0};
   } else {
     const auto it = root_surface.find(at.entity);
     if (at.kind != CadAttachment::Curve || it == root_surface.end())
@@ -187,9 +192,13 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
                            ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
+    const cad::Vec2 root_uv = face.project(j.root).uv;
+    from_root = {CadAttachment::Surface, it->second, root_uv.x(), root_uv.y()};
   }
-  if (wall.height(j.strip_top) < delta_wall)
-    j.strip_top = detail::move_to_height(model, wall, j.strip_top, j.strip_top_cad, delta_wall);
+  if (wall.height(j.strip_top) < delta_wall) {
+    j.strip_top_cad = from_root;
+    j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
+  }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
