@@ -263,10 +263,12 @@ void write_plain(AtomicFile& out, const Geometry& g) {
 template <typename Fill>
 void compressed_block(AtomicFile& out, const std::string& indent, const std::string& tag, Fill fill,
                       bool attributes = true, Content content = Content::Integers) {
-  ZlibStream z(content);
-  fill(z);
   out.print("{}<{}{}{}>", indent, tag, attributes ? " " : "", attributes ? kCompressed : "");
-  write_base64(out, z.finish());
+  Base64Out text(out);
+  ZlibStream z([&](const char* data, std::size_t bytes) { text.add(data, bytes); }, content);
+  fill(z);
+  z.finish();
+  text.finish();
   out.print("</{}>\n", tag);
 }
 

@@ -72,6 +72,10 @@ std::vector<std::string> parallel_map(std::size_t n, F f) {
 
 }  // namespace
 
+ZlibStream::ZlibStream(Sink sink, Content content) : sink_(std::move(sink)), content_(content) {
+  sink_("\x78\x01", 2);  // zlib header: deflate, 32 KiB window, fastest level
+}
+
 void ZlibStream::add(const void* data, std::size_t bytes) {
   if (finished_) throw std::logic_error("ZlibStream::add after finish");
   const char* c = static_cast<const char*>(data);
@@ -82,6 +86,7 @@ void ZlibStream::add(const void* data, std::size_t bytes) {
     if (staged_.size() == kChunkBytes) {
       pending_.push_back(std::move(staged_));
       staged_.clear();
+      staged_.reserve(kChunkBytes);
       if (pending_.size() == num_threads()) deflate_pending(false);
     }
   }
@@ -92,7 +97,7 @@ void ZlibStream::deflate_pending(bool last) {
     return deflate_chunk(pending_[i], last && i + 1 == pending_.size(), content_);
   });
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    body_ += parts[i];
+    sink_(parts[i].data(), parts[i].size());
     adler_ = adler32_combine(adler_, adler32(1, reinterpret_cast<const Bytef*>(pending_[i].data()),
                                              static_cast<uInt>(pending_[i].size())),
                              static_cast<z_off_t>(pending_[i].size()));
@@ -100,36 +105,59 @@ void ZlibStream::deflate_pending(bool last) {
   pending_.clear();
 }
 
-const std::string& ZlibStream::finish() {
-  if (finished_) return out_;
+void ZlibStream::finish() {
+  if (finished_) return;
   pending_.push_back(std::move(staged_));  // possibly empty: it carries the final block
   deflate_pending(true);
-  out_ = std::string("\x78\x01", 2) + body_;  // zlib header: deflate, 32 KiB window, fastest level
-  for (int shift = 24; shift >= 0; shift -= 8) out_ += static_cast<char>((adler_ >> shift) & 0xff);
-  body_.clear();
+  char checksum[4];
+  for (int k = 0; k < 4; ++k) checksum[k] = static_cast<char>((adler_ >> (24 - 8 * k)) & 0xff);
+  sink_(checksum, 4);
   finished_ = true;
-  return out_;
 }
 
 std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
   return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
 }
 
-void write_base64(AtomicFile& out, const std::string& bytes) {
+void Base64Out::add(const char* data, std::size_t bytes) {
+  const auto* b = reinterpret_cast<const unsigned char*>(data);
+  while (carried_ > 0 && bytes > 0) {  // complete the triple carried over from the last piece
+    if (carried_ == 2) {
+      const unsigned char triple[3] = {carry_[0], carry_[1], *b};
+      encode(triple, 3);
+      carried_ = 0;
+    } else {  // one carried
+      carry_[1] = *b;
+      carried_ = 2;
+    }
+    ++b, --bytes;
+  }
+  const std::size_t whole = bytes - bytes % 3;
+  encode(b, whole);
+  if (bytes > whole) {  // nothing is carried here: bytes is 0 whenever the loop above left some
+    carry_[0] = b[whole];
+    if (bytes - whole == 2) carry_[1] = b[whole + 1];
+    carried_ = static_cast<int>(bytes - whole);
+  }
+}
+
+void Base64Out::encode(const unsigned char* b, std::size_t n) {
   static const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string chunk;
-  chunk.reserve(1 << 16);
-  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
-  const std::size_t n = bytes.size();
   for (std::size_t i = 0; i < n; i += 3) {
     const unsigned v = (b[i] << 16) | ((i + 1 < n ? b[i + 1] : 0) << 8) | (i + 2 < n ? b[i + 2] : 0);
-    chunk += alphabet[(v >> 18) & 63];
-    chunk += alphabet[(v >> 12) & 63];
-    chunk += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
-    chunk += i + 2 < n ? alphabet[v & 63] : '=';
-    if (chunk.size() >= (1 << 16) - 4) out.write(chunk), chunk.clear();
+    text_ += alphabet[(v >> 18) & 63];
+    text_ += alphabet[(v >> 12) & 63];
+    text_ += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
+    text_ += i + 2 < n ? alphabet[v & 63] : '=';
+    if (text_.size() >= (1 << 16)) out_.write(text_), text_.clear();
   }
-  out.write(chunk);
+}
+
+void Base64Out::finish() {
+  encode(carry_, carried_);
+  carried_ = 0;
+  out_.write(text_);
+  text_.clear();
 }
 
 }  // namespace semimesh::io
