@@ -103,10 +103,18 @@ struct Geometry {
   // Only curved entities get a CURVED entry (as NekMesh writes): a straight one is the same
   // geometry without it, and the straight-sided far field is most of a mesh.
   std::vector<char> edge_curved, face_curved;
+  // Edge k of a face joins its stored vertices k and k+1 (found once: the lookups are most of the cost).
+  std::vector<std::array<std::uint32_t, 4>> stored_face_edges;
 
   Geometry(const mesh::Mesh& mesh, const EquispacedNodes& nodes) : m(mesh), node(nodes), numbering(number_for_nektar(mesh)) {
     if (m.order() < 2) return;
     tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
+    stored_face_edges.resize(m.faces().size());
+    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+      const auto& v = m.faces()[f].vertices;
+      const int n = num_face_vertices(f);
+      for (int k = 0; k < n; ++k) stored_face_edges[f][k] = static_cast<std::uint32_t>(m.find_edge(v[k], v[(k + 1) % n]));
+    }
     edge_curved.resize(m.edges().size());
     for (std::size_t e = 0; e < m.edges().size(); ++e) edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
     face_curved.resize(m.faces().size());
@@ -155,12 +163,19 @@ struct Geometry {
 
   int num_face_vertices(std::size_t f) const { return m.faces()[f].num_vertices; }
 
+  /// How far the written vertices of a face are rotated from the stored ones.
+  int written_rotation(std::size_t f) const {
+    const auto w = written_face_vertices(m, numbering, f);
+    int s = 0;
+    while (m.faces()[f].vertices[s] != w[0]) ++s;
+    return s;
+  }
+
   /// Edge ids of a face as written.
   std::array<std::int64_t, 4> face_edges(std::size_t f) const {
-    const auto w = written_face_vertices(m, numbering, f);
-    const int n = num_face_vertices(f);
+    const int n = num_face_vertices(f), s = written_rotation(f);
     std::array<std::int64_t, 4> e{};
-    for (int k = 0; k < n; ++k) e[k] = m.find_edge(w[k], w[(k + 1) % n]);
+    for (int k = 0; k < n; ++k) e[k] = stored_face_edges[f][(k + s) % n];
     return e;
   }
 
@@ -192,10 +207,7 @@ struct Geometry {
   void face_nodes_written(std::size_t f, Emit emit) const {
     const auto ids = m.face_nodes(f);
     if (num_face_vertices(f) == 3) {
-      const auto w = written_face_vertices(m, numbering, f);
-      int s = 0;
-      while (m.faces()[f].vertices[s] != w[0]) ++s;
-      for (int k : tri_point_order[s]) emit(ids[k]);
+      for (int k : tri_point_order[written_rotation(f)]) emit(ids[k]);
     } else {
       for (int k : quad_point_order) emit(ids[k]);
     }

@@ -143,13 +143,13 @@ void Base64Out::add(const char* data, std::size_t bytes) {
 
 void Base64Out::encode(const unsigned char* b, std::size_t n) {
   static const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  constexpr std::size_t kTextBytes = 1 << 16;
   for (std::size_t i = 0; i < n; i += 3) {
     const unsigned v = (b[i] << 16) | ((i + 1 < n ? b[i + 1] : 0) << 8) | (i + 2 < n ? b[i + 2] : 0);
-    text_ += alphabet[(v >> 18) & 63];
-    text_ += alphabet[(v >> 12) & 63];
-    text_ += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
-    text_ += i + 2 < n ? alphabet[v & 63] : '=';
-    if (text_.size() >= (1 << 16)) out_.write(text_), text_.clear();
+    const char quad[4] = {alphabet[(v >> 18) & 63], alphabet[(v >> 12) & 63], i + 1 < n ? alphabet[(v >> 6) & 63] : '=',
+                          i + 2 < n ? alphabet[v & 63] : '='};
+    text_.append(quad, 4);
+    if (text_.size() >= kTextBytes) out_.write(text_), text_.clear();
   }
 }
 
