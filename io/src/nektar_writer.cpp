@@ -8,8 +8,10 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdint>
+#include <future>
 #include <map>
 #include <stdexcept>
+#include <thread>
 
 namespace semimesh::io {
 namespace {
@@ -93,6 +95,19 @@ std::vector<int> quad_order(int p) {
   return order;
 }
 
+/// f(i) for i in [0, n) on every hardware thread; f(i) may write only entries of its own i.
+template <typename F>
+void parallel_for(std::size_t n, F f) {
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::future<void>> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.push_back(std::async(std::launch::async, [&, t] {
+      for (std::size_t i = n * t / threads; i < n * (t + 1) / threads; ++i) f(i);
+    }));
+  for (std::size_t i = 0; i < n / threads; ++i) f(i);
+  for (auto& w : workers) w.get();  // rethrows a worker's exception
+}
+
 /// Everything the sections need, computed once.
 struct Geometry {
   const mesh::Mesh& m;
@@ -107,27 +122,30 @@ struct Geometry {
   std::vector<std::array<std::uint32_t, 4>> stored_face_edges;
 
   Geometry(const mesh::Mesh& mesh, const EquispacedNodes& nodes) : m(mesh), node(nodes), numbering(number_for_nektar(mesh)) {
-    if (m.order() < 2) return;
-    tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
     stored_face_edges.resize(m.faces().size());
-    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    parallel_for(m.faces().size(), [&](std::size_t f) {
       const auto& v = m.faces()[f].vertices;
       const int n = num_face_vertices(f);
       for (int k = 0; k < n; ++k) stored_face_edges[f][k] = static_cast<std::uint32_t>(m.find_edge(v[k], v[(k + 1) % n]));
-    }
-    edge_curved.resize(m.edges().size());
-    for (std::size_t e = 0; e < m.edges().size(); ++e) edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    });
+    if (m.order() < 2) return;
+    tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
+    tri_reference_ = ho::reference_nodes(ho::Shape::Triangle, m.order(), ho::NodeSet::Equispaced);
+    quad_reference_ = ho::reference_nodes(ho::Shape::Quadrilateral, m.order(), ho::NodeSet::Equispaced);
     face_curved.resize(m.faces().size());
-    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    parallel_for(m.faces().size(), [&](std::size_t f) {
       const bool tri = num_face_vertices(f) == 3;
       face_curved[f] = m.order() >= (tri ? 3 : 2) &&
                        !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
-      // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
-      if (face_curved[f]) {
-        const auto edges = face_edges(f);
-        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[edges[k]] = 1;
-      }
-    }
+    });
+    edge_curved.resize(m.edges().size());
+    parallel_for(m.edges().size(), [&](std::size_t e) {
+      edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    });
+    // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
+    for (std::size_t f = 0; f < m.faces().size(); ++f)
+      if (face_curved[f])
+        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[stored_face_edges[f][k]] = 1;
   }
 
   /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
@@ -155,11 +173,9 @@ struct Geometry {
   const Eigen::MatrixX3d& reference(ho::Shape shape) const {
     static const Eigen::MatrixX3d none;
     if (shape == ho::Shape::Segment) return none;
-    auto& r = shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
-    if (r.rows() == 0) r = ho::reference_nodes(shape, m.order(), ho::NodeSet::Equispaced);
-    return r;
+    return shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
   }
-  mutable Eigen::MatrixX3d tri_reference_, quad_reference_;
+  Eigen::MatrixX3d tri_reference_, quad_reference_;
 
   int num_face_vertices(std::size_t f) const { return m.faces()[f].num_vertices; }
 

@@ -93,22 +93,35 @@ void ZlibStream::add(const void* data, std::size_t bytes) {
 }
 
 void ZlibStream::deflate_pending(bool last) {
-  const auto parts = parallel_map(pending_.size(), [&](std::size_t i) {
-    return deflate_chunk(pending_[i], last && i + 1 == pending_.size(), content_);
+  // The batch compresses in the background while the caller produces the next one.
+  drain();
+  in_flight_ = std::async(std::launch::async, [batch = std::move(pending_), last, content = content_] {
+    Batch out;
+    out.parts = parallel_map(batch.size(), [&](std::size_t i) {
+      return deflate_chunk(batch[i], last && i + 1 == batch.size(), content);
+    });
+    for (const std::string& chunk : batch)
+      out.adler.emplace_back(adler32(1, reinterpret_cast<const Bytef*>(chunk.data()), static_cast<uInt>(chunk.size())),
+                             chunk.size());
+    return out;
   });
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    sink_(parts[i].data(), parts[i].size());
-    adler_ = adler32_combine(adler_, adler32(1, reinterpret_cast<const Bytef*>(pending_[i].data()),
-                                             static_cast<uInt>(pending_[i].size())),
-                             static_cast<z_off_t>(pending_[i].size()));
-  }
   pending_.clear();
+}
+
+void ZlibStream::drain() {
+  if (!in_flight_.valid()) return;
+  const Batch batch = in_flight_.get();  // rethrows a compression error
+  for (std::size_t i = 0; i < batch.parts.size(); ++i) {
+    sink_(batch.parts[i].data(), batch.parts[i].size());
+    adler_ = adler32_combine(adler_, batch.adler[i].first, static_cast<z_off_t>(batch.adler[i].second));
+  }
 }
 
 void ZlibStream::finish() {
   if (finished_) return;
   pending_.push_back(std::move(staged_));  // possibly empty: it carries the final block
   deflate_pending(true);
+  drain();
   char checksum[4];
   for (int k = 0; k < 4; ++k) checksum[k] = static_cast<char>((adler_ >> (24 - 8 * k)) & 0xff);
   sink_(checksum, 4);

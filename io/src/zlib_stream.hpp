@@ -4,13 +4,16 @@
 // with sync flushes into one zlib stream (the way pigz does; the dictionary restarts per chunk,
 // which costs a fraction of a percent); zlib_compress_blocks compresses independent blocks.
 // Chunk and block boundaries depend on the data only, so the bytes do not depend on the threads.
-// Output is handed on as it is made (to the file): nothing holds a whole array.
+// Output is handed on as it is made (to the file): nothing holds a whole array. A ZlibStream
+// compresses one batch in the background while its caller produces the next.
 #pragma once
 
 #include "semimesh/io/atomic_file.hpp"
 
 #include <cstddef>
 #include <functional>
+#include <future>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -34,9 +37,15 @@ class ZlibStream {
   void finish();
 
  private:
+  struct Batch {
+    std::vector<std::string> parts;                               // deflated chunks, in order
+    std::vector<std::pair<unsigned long, std::size_t>> adler;     // each chunk's Adler-32 and length
+  };
   void deflate_pending(bool last);
+  void drain();  // waits for the batch in flight and hands its bytes to the sink
 
   Sink sink_;
+  std::future<Batch> in_flight_;
   std::vector<std::string> pending_;  // full chunks waiting for a free thread each
   std::string staged_;
   Content content_;
