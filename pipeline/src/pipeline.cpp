@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -457,15 +458,38 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 
 }  // namespace
 
+namespace {
+
+/// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
+/// positions are computed once for all. Files written are added to `written` in config order, also
+/// when another format failed (its first error, in config order, is rethrown).
+void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
+                      const std::vector<std::string>& paths, std::vector<std::string>& written) {
+  if (formats.empty()) return;
+  const io::EquispacedNodes nodes(mesh);
+  std::vector<std::future<void>> writers;
+  for (std::size_t i = 0; i < formats.size(); ++i)
+    writers.push_back(std::async(std::launch::async, [&, i] { output_format(formats[i]).write(mesh, nodes, paths[i]); }));
+  std::exception_ptr first_error;
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    try {
+      writers[i].get();
+      written.push_back(paths[i]);
+    } catch (...) {
+      if (!first_error) first_error = std::current_exception();
+    }
+  }
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace
+
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
   stage("write", progress, result, [&] {
     const std::vector<std::string> paths = output_paths(config.output);
     try {
       std::filesystem::create_directories(config.output.directory);
-      for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
-        result.written_files.push_back(paths[i]);
-      }
+      write_mesh_files(result.mesh, config.output.formats, paths, result.written_files);
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =
