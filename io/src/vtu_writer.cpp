@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
-#include <optional>
 
 namespace semimesh::io {
 namespace {
@@ -68,9 +67,10 @@ class CompressedArray {
 /// The arrays of the file, each produced value by value by a generator that takes an emitter.
 struct Arrays {
   const mesh::Mesh& m;
+  const EquispacedNodes& x;
 
   void points(const std::function<void(double)>& emit) const {
-    for (const auto& x : m.nodes()) emit(x[0]), emit(x[1]), emit(x[2]);
+    for (const auto& p : x.all()) emit(p[0]), emit(p[1]), emit(p[2]);
   }
   template <typename Emit>
   void cells(Emit emit_cell) const {
@@ -129,7 +129,7 @@ void write_ascii(AtomicFile& out, const Arrays& a) {
   const mesh::Mesh& m = a.m;
   header(out, m, false);
   out.print("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-  for (const auto& x : m.nodes()) out.print("{} {} {}\n", x[0], x[1], x[2]);
+  for (const auto& p : a.x.all()) out.print("{} {} {}\n", p[0], p[1], p[2]);
   out.print("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
   bool first = true;
   a.connectivity([&](std::int64_t v) { out.print(first ? "{}" : " {}", v), first = false; }, true,
@@ -199,9 +199,11 @@ void write_compressed(AtomicFile& out, const Arrays& a) {
 }  // namespace
 
 void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding) {
-  std::optional<mesh::Mesh> resampled;
-  if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
-  const Arrays arrays{resampled ? *resampled : mesh};
+  write_vtu(mesh, EquispacedNodes(mesh), path, encoding);
+}
+
+void write_vtu(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path, VtuEncoding encoding) {
+  const Arrays arrays{mesh, nodes};
   AtomicFile out(path);
   if (encoding == VtuEncoding::Ascii)
     write_ascii(out, arrays);

@@ -10,6 +10,7 @@
 // Lagrange pyramid): their curvature is not shown.
 #pragma once
 
+#include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
 #include <string>
@@ -20,5 +21,8 @@ enum class VtuEncoding { CompressedBinary, Ascii };
 
 /// Writes atomically; throws std::runtime_error for I/O failures.
 void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding = VtuEncoding::CompressedBinary);
+/// The same with the equispaced node positions given (computed once for several formats).
+void write_vtu(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+               VtuEncoding encoding = VtuEncoding::CompressedBinary);
 
 }  // namespace semimesh::io
