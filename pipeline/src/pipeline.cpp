@@ -13,6 +13,7 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -98,13 +99,14 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
     source.params.set("naca.box", box_text(g.naca.box));
-    source.params.set("naca.units", g.units);
+    if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
                         ": expected 1 for a generated wing (scale applies to CAD files; set naca.chord instead)");
   } else if (g.backend == "occ") {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
-    source.params.set("occ.units", g.units);
+    if (g.units != "auto") source.params.set("occ.units", g.units);
+    if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
   }
   return source;
 }
@@ -249,7 +251,9 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   const cad::Registry registry = backends::default_registry();
   Geometry g;
   g.model = stage("load CAD", progress, result, [&] {
-    return registry.load(config.geometry.backend, cad_source(config.geometry));
+    auto model = registry.load(config.geometry.backend, cad_source(config.geometry));
+    require_closed(*model, config.geometry.sew_tolerance);
+    return model;
   });
   g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
