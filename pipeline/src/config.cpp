@@ -203,8 +203,14 @@ params::Table<Config> geometry_keys() {
                      "CAD kernel from the registry: naca (analytic wing), occ (OpenCASCADE), vendor"),
       params::string("source", &GeometryConfig::source, "",
                      "CAD file, relative to the config file's folder; empty: the generated wing"),
-      params::string("units", &GeometryConfig::units, "non-empty", "label of the model's unit"),
+      params::string("units", &GeometryConfig::units,
+                     "\"auto\" | \"mm\" | \"cm\" | \"m\" | \"km\" | \"um\" | \"in\" | \"ft\" | \"chord\"",
+                     "the unit of the model's numbers (a CAD file's after scale), overriding the one the file declares; "
+                     "\"auto\": the declared one (chord for a generated wing). Sizes in this config are in it"),
       params::real("scale", &GeometryConfig::scale, "> 0", "factor applied to a CAD file's coordinates at load"),
+      params::real("sew_tolerance", &GeometryConfig::sew_tolerance, "> 0",
+                   "CAD file: faces whose edges lie closer than this (model units) are sewn together; unset: 1e-6 "
+                   "of the model's diagonal"),
       params::strings("body", &GeometryConfig::body, "non-empty",
                       "surfaces wrapped by the near-field shell: names, ids (\"#7\") or \"auto\" (found from the model)"),
       params::string("wall", &GeometryConfig::wall, "non-empty",
@@ -349,6 +355,10 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   GeometryConfig& geo = c.geometry;
   if (!geo.source.empty() && !base_directory.empty() && std::filesystem::path(geo.source).is_relative())
     geo.source = (std::filesystem::path(base_directory) / geo.source).lexically_normal().string();
+  Section& g = *sections.at("geometry");
+  g.require(geo.source.empty() || geo.units != "chord", "units",
+            "a length unit for a CAD file (mm, cm, m, km, um, in, ft), or \"auto\" for the one it declares");
+  g.require(!geo.source.empty() || !geo.sew_tolerance, "sew_tolerance", "unset for a generated wing (no file to sew)");
   const auto& box = geo.naca.box;
   sections.at("geometry.naca")
       ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",

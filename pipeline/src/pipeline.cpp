@@ -13,6 +13,7 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -30,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -97,13 +99,14 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
     source.params.set("naca.box", box_text(g.naca.box));
-    source.params.set("naca.units", g.units);
+    if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
                         ": expected 1 for a generated wing (scale applies to CAD files; set naca.chord instead)");
   } else if (g.backend == "occ") {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
-    source.params.set("occ.units", g.units);
+    if (g.units != "auto") source.params.set("occ.units", g.units);
+    if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
   }
   return source;
 }
@@ -248,7 +251,9 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   const cad::Registry registry = backends::default_registry();
   Geometry g;
   g.model = stage("load CAD", progress, result, [&] {
-    return registry.load(config.geometry.backend, cad_source(config.geometry));
+    auto model = registry.load(config.geometry.backend, cad_source(config.geometry));
+    require_closed(*model, config.geometry.sew_tolerance);
+    return model;
   });
   g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
@@ -457,15 +462,38 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 
 }  // namespace
 
+namespace {
+
+/// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
+/// positions are computed once for all. Files written are added to `written` in config order, also
+/// when another format failed (its first error, in config order, is rethrown).
+void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
+                      const std::vector<std::string>& paths, std::vector<std::string>& written) {
+  if (formats.empty()) return;
+  const io::EquispacedNodes nodes(mesh);
+  std::vector<std::future<void>> writers;
+  for (std::size_t i = 0; i < formats.size(); ++i)
+    writers.push_back(std::async(std::launch::async, [&, i] { output_format(formats[i]).write(mesh, nodes, paths[i]); }));
+  std::exception_ptr first_error;
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    try {
+      writers[i].get();
+      written.push_back(paths[i]);
+    } catch (...) {
+      if (!first_error) first_error = std::current_exception();
+    }
+  }
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace
+
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
   stage("write", progress, result, [&] {
     const std::vector<std::string> paths = output_paths(config.output);
     try {
       std::filesystem::create_directories(config.output.directory);
-      for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
-        result.written_files.push_back(paths[i]);
-      }
+      write_mesh_files(result.mesh, config.output.formats, paths, result.written_files);
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =

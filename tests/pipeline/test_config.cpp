@@ -140,6 +140,19 @@ allow_invalid = true
   EXPECT_TRUE(c.output.allow_invalid);
 }
 
+TEST(Config, UnitsAndSewingAreCheckedAgainstTheSource) {
+  EXPECT_NE(error_of("[geometry]\nunits = \"furlong\"\n").find("geometry.units = \"furlong\": expected \"auto\", \"mm\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nsource = \"wing.step\"\nbackend = \"occ\"\nunits = \"chord\"\n")
+                .find("a length unit for a CAD file"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nsew_tolerance = 0.01\n").find("unset for a generated wing"), std::string::npos);
+  const Config c = parse_config("[geometry]\nsource = \"wing.igs\"\nbackend = \"occ\"\nunits = \"m\"\nsew_tolerance = 1e-4\n",
+                                "case.toml");
+  EXPECT_EQ(c.geometry.units, "m");
+  EXPECT_EQ(c.geometry.sew_tolerance, 1e-4);
+}
+
 TEST(Config, ABareStringIsAListOfOne) {
   EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
   EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,

@@ -48,8 +48,9 @@ struct NacaConfig {
 struct GeometryConfig {
   std::string backend = "naca";  ///< registry name: "naca", "occ", "vendor"
   std::string source;            ///< CAD file, resolved against the config file's folder; empty: generator
-  std::string units = "chord";   ///< label of the model's unit
+  std::string units = "auto";    ///< unit of the file's numbers; "auto": the one it declares (generated: chord)
   double scale = 1.0;            ///< factor applied to a CAD file's coordinates at load
+  std::optional<double> sew_tolerance;  ///< CAD files: sewing tolerance; unset: the backend's
   NacaConfig naca;
   /// Surface names or ids ("#7"), or "auto": found from the model (pipeline/roles.hpp).
   std::vector<std::string> body = {"auto"};
