@@ -226,19 +226,10 @@ TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
   EXPECT_TRUE(contains(what, "0.9")) << what;
 }
 
-// A root loop of a few segments around a 0.05 chord cannot carry a 0.6 shell: the wing layer next
-// to the strip cannot meet the halo at any thickness the reduction allows. Its own error, naming
-// the root curve and both thicknesses (before: a fold of the wing layer naming neither).
-TEST(CShellBadInput, RootLoopTooShortForTheThicknessNamesThePlace) {
-  mock_cad::NacaWingParams tiny = naca("0012", true);
-  tiny.chord = 0.05;
-  const WingCase c = wing_case(tiny);
-  const std::string what = c_shell_error(c, c.roles, 0.6, {}, 0.04);
-  EXPECT_TRUE(contains(what, "root loop is too short")) << what;
-  EXPECT_TRUE(contains(what, "('root_")) << what;
-  EXPECT_TRUE(contains(what, "thickness 0.6")) << what;
-  EXPECT_TRUE(contains(what, "wall layer thickness 0.04")) << what;
-}
+// The too-short root loop (its own error naming the root curve and both thicknesses) is tested end
+// to end in tests/pipeline/test_pipeline_run.cpp (PipelineRunCType.BadInputNamesTheEntityAndWritesNothing):
+// since main's surface mesher changes (merged 22:30) the 0.05-chord wing of this file's fixture
+// meshes with a 0.6 shell, so it is no bad input here any more.
 
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
   for (const auto& wing :
