@@ -1,10 +1,129 @@
 #include "semimesh/io/equispaced.hpp"
 
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
+#include <algorithm>
 #include <map>
+#include <future>
+#include <numeric>
+#include <thread>
 
 namespace semimesh::io {
+namespace {
+
+Eigen::MatrixXd resampling(ho::Shape shape, int order, ho::NodeSet from) {
+  return ho::interpolation_matrix(ho::LagrangeBasis(shape, order, from),
+                                  ho::LagrangeBasis(shape, order, ho::NodeSet::Equispaced));
+}
+
+/// The rows of the resampling matrix for the nodes an entity owns, and which canonical positions
+/// they are: a face's or an element's positions of kind `owned` in its node layout.
+struct OwnedRows {
+  std::vector<int> positions;
+  Eigen::MatrixXd rows;  // (positions, num_nodes)
+};
+
+OwnedRows owned_rows(ho::Shape shape, int order, ho::NodeSet from, mesh::NodeSlot::Kind owned) {
+  const Eigen::MatrixXd m = resampling(shape, order, from);
+  OwnedRows r;
+  const auto& slots = mesh::node_layout(shape, order).slots;
+  for (std::size_t i = 0; i < slots.size(); ++i)
+    if (slots[i].kind == owned) r.positions.push_back(static_cast<int>(i));
+  r.rows.resize(r.positions.size(), m.cols());
+  for (std::size_t k = 0; k < r.positions.size(); ++k) r.rows.row(k) = m.row(r.positions[k]);
+  return r;
+}
+
+/// Edges: Mesh::edge_nodes lists the nodes by position along the edge, the canonical segment
+/// order does not; so the matrix is re-indexed by the nodes' order along the reference segment.
+Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from) {
+  const Eigen::MatrixXd m = resampling(ho::Shape::Segment, order, from);
+  const Eigen::MatrixX3d ref = ho::reference_nodes(ho::Shape::Segment, order, ho::NodeSet::Equispaced);
+  std::vector<int> along(ref.rows());
+  std::iota(along.begin(), along.end(), 0);
+  std::sort(along.begin(), along.end(), [&](int a, int b) { return ref(a, 0) < ref(b, 0); });
+  Eigen::MatrixXd out(order - 1, order + 1);  // interior nodes from every node, both along the edge
+  for (int i = 1; i < order; ++i)
+    for (int j = 0; j <= order; ++j) out(i - 1, j) = m(along[i], along[j]);
+  return out;
+}
+
+/// Resamples the nodes an entity owns from all its nodes `ids`; the buffers are reused between calls.
+struct Resampler {
+  const std::vector<Eigen::Vector3d>& from;
+  std::vector<Eigen::Vector3d>& to;
+  Eigen::MatrixX3d x, y;
+
+  template <typename Ids>
+  void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& ids) {
+    x.resize(static_cast<Eigen::Index>(ids.size()), 3);
+    for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = from[ids[i]].transpose();
+    y.resize(rows.rows(), 3);
+    y.noalias() = rows * x;
+    for (std::size_t k = 0; k < positions.size(); ++k) to[ids[positions[k]]] = y.row(k).transpose();
+  }
+};
+
+/// f(begin, end, resampler) over [0, n) split among the hardware threads: the entities own
+/// disjoint nodes, so the threads write disjoint entries.
+template <typename F>
+void parallel_ranges(std::size_t n, const std::vector<Eigen::Vector3d>& from, std::vector<Eigen::Vector3d>& to, F f) {
+  const std::size_t threads = std::max<std::size_t>(1, std::min<std::size_t>(std::thread::hardware_concurrency(), n / 1024 + 1));
+  std::vector<std::future<void>> workers;
+  for (std::size_t t = 0; t < threads; ++t)
+    workers.push_back(std::async(t == 0 ? std::launch::deferred : std::launch::async, [&, t] {
+      Resampler r{from, to, {}, {}};
+      f(n * t / threads, n * (t + 1) / threads, r);
+    }));
+  for (auto& w : workers) w.get();  // the deferred first range runs here; rethrows a worker's exception
+}
+
+}  // namespace
+
+EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
+  const int p = m.order();
+  if (m.node_set() == ho::NodeSet::Equispaced || p < 2) return;
+  const ho::NodeSet set = m.node_set();
+  resampled_ = m.nodes();  // vertices keep their place
+  const auto& from = m.nodes();
+
+  const Eigen::MatrixXd edge = edge_resampling(p, set);
+  std::vector<int> edge_positions(p - 1);
+  std::iota(edge_positions.begin(), edge_positions.end(), 1);
+  parallel_ranges(m.edges().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    std::vector<mesh::NodeId> ids(p + 1);
+    for (std::size_t e = begin; e < end; ++e) {
+      const mesh::Edge& edge_entity = m.edges()[e];
+      ids.front() = edge_entity.vertices[0], ids.back() = edge_entity.vertices[1];
+      std::copy_n(m.edge_pool().begin() + edge_entity.first_node, p - 1, ids.begin() + 1);
+      r(edge, edge_positions, ids);
+    }
+  });
+
+  const OwnedRows tri = owned_rows(ho::Shape::Triangle, p, set, mesh::NodeSlot::Face);
+  const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, p, set, mesh::NodeSlot::Face);
+  parallel_ranges(m.faces().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const OwnedRows& owned = m.faces()[f].num_vertices == 3 ? tri : quad;
+      if (!owned.positions.empty()) r(owned.rows, owned.positions, m.face_nodes(f));
+    }
+  });
+
+  std::map<ho::Shape, OwnedRows> interior;
+  for (const mesh::Element& el : m.elements())
+    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, p, set, mesh::NodeSlot::Interior));
+  parallel_ranges(m.elements().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    std::vector<mesh::NodeId> ids;
+    for (std::size_t e = begin; e < end; ++e) {
+      const OwnedRows& owned = interior.at(m.elements()[e].shape);
+      if (owned.positions.empty()) continue;
+      m.element_nodes(e, ids);
+      r(owned.rows, owned.positions, ids);
+    }
+  });
+  nodes_ = &resampled_;
+}
 
 mesh::Mesh to_equispaced(const mesh::Mesh& source) {
   mesh::Mesh out = source;
@@ -14,11 +133,7 @@ mesh::Mesh to_equispaced(const mesh::Mesh& source) {
   std::map<ho::Shape, Eigen::MatrixXd> resample;  // (n, n) per shape
   auto matrix = [&](ho::Shape shape) -> const Eigen::MatrixXd& {
     auto it = resample.find(shape);
-    if (it == resample.end())
-      it = resample
-               .emplace(shape, ho::interpolation_matrix(ho::LagrangeBasis(shape, order, source.node_set()),
-                                                        ho::LagrangeBasis(shape, order, ho::NodeSet::Equispaced)))
-               .first;
+    if (it == resample.end()) it = resample.emplace(shape, resampling(shape, order, source.node_set())).first;
     return it->second;
   };
   auto move_nodes = [&](ho::Shape shape, const std::vector<mesh::NodeId>& ids) {

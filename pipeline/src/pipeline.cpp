@@ -1,6 +1,7 @@
 #include "semimesh/pipeline/pipeline.hpp"
 
 #include "semimesh/backends/builtin.hpp"
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -12,9 +13,11 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
+#include "semimesh/pipeline/roles.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/pipeline/weld_nodes.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
@@ -28,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -95,44 +99,38 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
     source.params.set("naca.box", box_text(g.naca.box));
-    source.params.set("naca.units", g.units);
+    if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
                         ": expected 1 for a generated wing (scale applies to CAD files; set naca.chord instead)");
   } else if (g.backend == "occ") {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
-    source.params.set("occ.units", g.units);
+    if (g.units != "auto") source.params.set("occ.units", g.units);
+    if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
   }
   return source;
 }
 
-int surface_id(const cad::Model& model, const std::string& key, const std::string& name) {
-  if (auto id = model.find_surface(name)) return *id;
-  std::string names;
-  for (int s = 0; s < model.num_surfaces(); ++s) names += (s ? ", " : "") + model.surface(s).name();
-  throw ConfigError("config error: " + key + ": the CAD model has no surface named '" + name + "' (its surfaces: " + names + ")");
-}
-
-struct Roles {
-  std::vector<int> body, farfield;
-  int wall = -1;
-};
-
-Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
-  Roles roles;
-  for (const std::string& name : g.body) roles.body.push_back(surface_id(model, "geometry.body", name));
-  for (const std::string& name : g.farfield) roles.farfield.push_back(surface_id(model, "geometry.farfield", name));
-  roles.wall = surface_id(model, "geometry.wall", g.wall);
-  return roles;
+// The wake's keys with te_base naming the resolved base (the near field finds it by name); left
+// as written when none was found (a sharp trailing edge), for the near field's own message.
+nearfield::WakeParams wake_with_base(const cad::Model& model, nearfield::WakeParams wake, const Roles& roles) {
+  if (!roles.te_base) return wake;
+  const std::string& name = model.surface(*roles.te_base).name();
+  if (model.find_surface(name) != roles.te_base)
+    throw ConfigError(fmt::format("config error: wake.te_base: the trailing-edge base {} shares its name with {}: give "
+                                  "the CAD faces distinct names",
+                                  cad::surface_label(model, *roles.te_base),
+                                  cad::surface_label(model, *model.find_surface(name))));
+  wake.te_base = name;
+  return wake;
 }
 
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
-surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config) {
+surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config, const Roles& roles) {
   const SizingConfig& s = config.sizing;
   surface::ModelMeshOptions options;
   // H-type: the trailing-edge base as structured quads, swept into the wake block.
-  if (config.nearfield.topology == "H")
-    if (auto te = model.find_surface(config.wake.te_base)) options.structured_surfaces.insert(*te);
+  if (roles.te_base) options.structured_surfaces.insert(*roles.te_base);
   auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
     if (segments == 0) return;
     int found = 0;
@@ -156,11 +154,13 @@ surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& co
 
 // boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
 // `ratio_at_a` at A to ratio_end at B; no field (the uniform ratio) without them.
-ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
-  if (!b.ratio_line || !b.ratio_end) return {};
-  const std::array<double, 6>& l = *b.ratio_line;
+// (wall_layer's alike.)
+ho::RatioField ratio_field(const std::optional<std::array<double, 6>>& line, const std::optional<double>& end,
+                           double ratio_at_a) {
+  if (!line || !end) return {};
+  const std::array<double, 6>& l = *line;
   const Eigen::Vector3d a(l[0], l[1], l[2]), ab = Eigen::Vector3d(l[3], l[4], l[5]) - a;
-  const double ratio_at_b = *b.ratio_end;
+  const double ratio_at_b = *end;
   return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
     const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return ratio_at_a + t * (ratio_at_b - ratio_at_a);
@@ -251,9 +251,11 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   const cad::Registry registry = backends::default_registry();
   Geometry g;
   g.model = stage("load CAD", progress, result, [&] {
-    return registry.load(config.geometry.backend, cad_source(config.geometry));
+    auto model = registry.load(config.geometry.backend, cad_source(config.geometry));
+    require_closed(*model, config.geometry.sew_tolerance);
+    return model;
   });
-  g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config.geometry); });
+  g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
 }
 
@@ -269,7 +271,7 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     return surface::SizeField(model, params);
   });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
-    return surface::mesh_model_surfaces(model, size, mesh_options(model, config));
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles));
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -291,7 +293,7 @@ struct WingRatio {
 WingRatio wing_ratio(const Config& config, double chord) {
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
   const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
-  return {ratio, ratio_field(config.boundary_layer, ratio)};
+  return {ratio, ratio_field(config.boundary_layer.ratio_line, config.boundary_layer.ratio_end, ratio)};
 }
 
 // The wing layer's split interfaces along a layer edge from x, as the split will place them (its
@@ -318,7 +320,8 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
     const nearfield::BodyRoles roles{g.roles.body, g.roles.wall};
     if (junction && config.nearfield.topology == "H")
       return nearfield::build_h_shell(*g.model, surfaces, roles, config.nearfield.shell, config.nearfield.junction,
-                                      config.wall_layer.thickness, config.wake, g.model->bbox(),
+                                      config.wall_layer.thickness, wake_with_base(*g.model, config.wake, g.roles),
+                                      g.model->bbox(),
                                       layer_fractions(config, chord));
     return junction ? nearfield::build_c_shell(*g.model, surfaces, roles, config.nearfield.shell,
                                                config.nearfield.junction, config.wall_layer.thickness)
@@ -390,7 +393,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   }
   StackSplit split = stage("split", progress, result, [&] {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
-                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+                                   {ho::LayerDistribution{wall_layers, wall_ratio},
+                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)});
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
@@ -415,7 +419,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     }
   }
   if (wall_layers > 1) {
-    result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
+    result.wall_layers.requested_ratio = wall_ratio;
+    result.wall_layers.requested_ratio_end = config.wall_layer.ratio_end.value_or(wall_ratio);
     result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
     result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
     result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;
@@ -457,15 +462,38 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 
 }  // namespace
 
+namespace {
+
+/// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
+/// positions are computed once for all. Files written are added to `written` in config order, also
+/// when another format failed (its first error, in config order, is rethrown).
+void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
+                      const std::vector<std::string>& paths, std::vector<std::string>& written) {
+  if (formats.empty()) return;
+  const io::EquispacedNodes nodes(mesh);
+  std::vector<std::future<void>> writers;
+  for (std::size_t i = 0; i < formats.size(); ++i)
+    writers.push_back(std::async(std::launch::async, [&, i] { output_format(formats[i]).write(mesh, nodes, paths[i]); }));
+  std::exception_ptr first_error;
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    try {
+      writers[i].get();
+      written.push_back(paths[i]);
+    } catch (...) {
+      if (!first_error) first_error = std::current_exception();
+    }
+  }
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace
+
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
   stage("write", progress, result, [&] {
     const std::vector<std::string> paths = output_paths(config.output);
     try {
       std::filesystem::create_directories(config.output.directory);
-      for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
-        result.written_files.push_back(paths[i]);
-      }
+      write_mesh_files(result.mesh, config.output.formats, paths, result.written_files);
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =

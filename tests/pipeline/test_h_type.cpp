@@ -216,7 +216,7 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
       // Widening at incidence twists the block's outer faces at the tip beyond what a pyramid stands on.
       {{"wake.widening=30", "wake.direction=[1.0, 0.6, 0.0]"}, {"wake.widening = 30", "the wake block folds"}},
-      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"te_base\"", "sharp"}},
+      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"auto\"", "sharp"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

@@ -108,6 +108,9 @@ struct JunctionNode {
 
 using Frame = detail::WallFrame;
 
+// Smallest ratio of a lifted triangle's area to its own before the lift (projected on its normal).
+constexpr double kFlattest = 1e-6;
+
 // Outward direction in the wall plane of a root segment a -> b whose wing triangle has normal n.
 Vec3 segment_outward(const Vec3& a, const Vec3& b, const Vec3& n_tri, const Vec3& n_wall) {
   Vec3 m = (b - a).cross(n_wall).normalized();
@@ -159,15 +162,24 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
   const cad::Surface& wall_face = model.surface(roles.wall_surface);
-  const auto foot = wall_face.project(j.halo - delta_wall * wall.normal);
+  // Where the wing leans over the fluid, the halo's feet come close to the root: the hex would be a
+  // sliver there, folded by the curved root. Its wall strip keeps the width delta_wing (the wall
+  // layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
+  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
+  const auto foot = wall_face.project(j.root + std::max(out, delta_wing) * outward);
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
   const CadAttachment& at = body.cad[r];
+  // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
+  // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
+  // foot projected onto the edge of its face, raised, could land on the next root's own).
+  CadAttachment from_root;
   if (at.kind == CadAttachment::Vertex) {
     const int c = spanwise_curve(model, at.entity, roles.wall_surface);
     const auto p = model.curve(c).project(j.halo);
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
+    from_root = {CadAttachment::Curve, c, model.curve(c).project(j.root).t, 0.0};
   } else {
     const auto it = root_surface.find(at.entity);
     if (at.kind != CadAttachment::Curve || it == root_surface.end())
@@ -180,6 +192,12 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
                            ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
+    const cad::Vec2 root_uv = face.project(j.root).uv;
+    from_root = {CadAttachment::Surface, it->second, root_uv.x(), root_uv.y()};
+  }
+  if (wall.height(j.strip_top) < delta_wall) {
+    j.strip_top_cad = from_root;
+    j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
   }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
@@ -209,14 +227,66 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
   for (const auto& t : body.triangles) {
     const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
     const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
-    if (!(before.dot(after) > 0.0))
+    // Relative: a triangle flattened onto a line (e.g. all three nodes on a CAD edge) keeps a
+    // round-off area of either sign.
+    if (!(before.dot(after) > kFlattest * before.squaredNorm()))
       throw NearFieldError(
           "near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
-          ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
+          ") folds or flattens a triangle at " + point_label(body.points[t[0]]) + " on " +
           surface_label(model, body.node_surface[t[0]]) +
           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
   return {strip, tip};
+}
+
+// The root curve a root node lies on (of its vertex: the first curve on the wall).
+int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) {
+  if (root.kind == CadAttachment::Curve) return root.entity;
+  for (int c : model.curves_of_vertex(root.entity)) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; })) return c;
+  }
+  return -1;
+}
+
+// The strip top next to body node `node` (the node itself, or one of a triangle it shares), -1 when
+// it is away from the root strip.
+int strip_top_next_to(const BodyMesh& layer, const std::map<int, int>& loop_index, int node) {
+  if (loop_index.count(node)) return node;
+  for (const auto& t : layer.triangles)
+    if (std::count(t.begin(), t.end(), node))
+      for (int v : t)
+        if (loop_index.count(v)) return v;
+  return -1;
+}
+
+// The wing layer's offsets at the strip tops are pinned at the halo: where the layer cannot be
+// built next to them even at its thinnest, the root loop is too short (too few segments, too tight
+// a turn) for the thickness and the wall layer's thickness: said so, naming the root curve.
+detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const BodyMesh& layer,
+                                              const std::vector<std::vector<int>>& neighbours,
+                                              const std::vector<Vec3>& normals,
+                                              const detail::OffsetConstraints& constraints, const ShellParams& params,
+                                              const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
+                                              int wall, double delta_wall) {
+  try {
+    return detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  } catch (const detail::LayerFoldError& fold) {
+    std::map<int, int> loop_index;
+    for (std::size_t i = 0; i < loop.size(); ++i) loop_index[loop[i]] = static_cast<int>(i);
+    const int top = strip_top_next_to(layer, loop_index, fold.node);
+    if (top < 0) throw;
+    const int curve = root_curve_of(model, root_cad[loop_index.at(top)], wall);
+    throw NearFieldError("near field: the root loop is too short for the requested sizes along " +
+                         (curve >= 0 ? curve_label(model, curve) : std::string("the root")) + " near " +
+                         point_label(layer.points[top]) + ": the wing layer (thickness " +
+                         number_label(params.thickness) + ") cannot meet the halo above the root strip (wall layer "
+                         "thickness " + number_label(delta_wall) + ") without folding at " +
+                         point_label(layer.points[fold.node]) + ", even at min_thickness_fraction (" +
+                         number_label(params.min_thickness_fraction) +
+                         "); use a smaller thickness or wall layer thickness, or more segments along the root "
+                         "(smaller sizing sizes)");
+  }
 }
 
 }  // namespace
@@ -292,7 +362,8 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
   }
-  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
+                                                                loop, root_cad, roles.wall_surface, delta_wall);
 
   JunctionShell shell;
   NearField& field = shell.field;
@@ -368,23 +439,41 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   return shell;
 }
 
+Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, CadAttachment& cad, double target) {
+  // Newton on the height along its gradient in the entity's parameters: on a lofted wing the
+  // chordwise parameter stays (the height grows with the spanwise one), so a node near a swept
+  // leading edge keeps its place along the section. A move in space projected back (vertical or
+  // steepest ascent on the surface) drifts to the closest point, onto the edge itself.
+  Vec3 p = x;
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    const double missing = target - wall.height(p);
+    if (cad.kind == CadAttachment::Surface) {
+      const cad::Surface& face = model.surface(cad.entity);
+      const cad::SurfaceDerivatives d = face.derivatives(cad::Vec2(cad.u, cad.v));
+      const cad::Vec2 gradient(d.du.dot(wall.normal), d.dv.dot(wall.normal));
+      if (!(gradient.squaredNorm() > 0.0)) break;
+      const auto bounds = face.bounds();
+      const cad::Vec2 uv(std::clamp(cad.u + missing * gradient.x() / gradient.squaredNorm(), bounds[0].lo, bounds[0].hi),
+                         std::clamp(cad.v + missing * gradient.y() / gradient.squaredNorm(), bounds[1].lo, bounds[1].hi));
+      cad.u = uv.x(), cad.v = uv.y();
+      p = face.point(uv);
+    } else {
+      const cad::Curve& curve = model.curve(cad.entity);
+      const double slope = curve.derivatives(cad.u).d1.dot(wall.normal);
+      if (slope == 0.0) break;
+      const auto bounds = curve.bounds();
+      cad.u = std::clamp(cad.u + missing / slope, bounds.lo, bounds.hi);
+      p = curve.derivatives(cad.u).p;
+    }
+  }
+  return p;
+}
+
 Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
                CadAttachment& cad) {
   const double d = wall.height(x);
   if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
-  const double target = strip + d * (1.0 - strip / tip);
-  Vec3 p = x;
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const Vec3 aim = p + (target - wall.height(p)) * wall.normal;
-    if (cad.kind == CadAttachment::Surface) {
-      const auto proj = model.surface(cad.entity).project(aim, cad::Vec2(cad.u, cad.v));
-      p = proj.point, cad.u = proj.uv.x(), cad.v = proj.uv.y();
-    } else {
-      const auto proj = model.curve(cad.entity).project(aim, cad.u);
-      p = proj.point, cad.u = proj.t;
-    }
-  }
-  return p;
+  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / tip));
 }
 
 }  // namespace detail
