@@ -1,6 +1,7 @@
 #include "cad_info.hpp"
 
 #include "semimesh/cad/trimmed_area.hpp"
+#include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
 #include "semimesh/io/json.hpp"
@@ -84,9 +85,11 @@ std::string report_json(const std::string& backend, const cad::Model& model, con
                         json_string(r.name), json_string(r.kind), json_number(r.area.area));
   return fmt::format(
       "{{\"backend\":{},\"vertices\":{},\"curves\":{},\"surfaces\":{},\"bbox\":{},\"closed\":{},\"units\":{},"
+      "\"units_origin\":{},"
       "\"surface_list\":[{}],\"roles\":{}}}\n",
       json_string(backend), model.num_vertices(), model.num_curves(), model.num_surfaces(), bbox_json(model.bbox()),
-      model.is_closed() ? "true" : "false", json_string(model.units()), list, roles_json(roles));
+      model.is_closed() ? "true" : "false", json_string(model.units()), json_string(model.units_origin()), list,
+      roles_json(roles));
 }
 
 std::string report_table(const std::string& backend, const std::string& source, const cad::Model& model,
@@ -94,8 +97,12 @@ std::string report_table(const std::string& backend, const std::string& source, 
   std::string out;
   out += fmt::format("source    {}\n", source.empty() ? "(generated)" : source);
   out += fmt::format("backend   {}\n", backend);
-  out += fmt::format("units     {} (scale applied at load: {})\n", model.units(), model.scale_applied());
-  out += fmt::format("closed    {}\n", model.is_closed() ? "yes (every curve bounds two surfaces)" : "no");
+  out += fmt::format("units     {}: {} (scale applied at load: {})\n", model.units(),
+                     model.units_origin().empty() ? "as the backend says" : model.units_origin(), model.scale_applied());
+  const std::vector<int> free = pipeline::free_curves(model);
+  out += fmt::format("closed    {}\n", free.empty() ? std::string("yes (every curve bounds two surfaces)")
+                                                    : fmt::format("no: {} free curve(s): {}", free.size(),
+                                                                  pipeline::free_curves_text(model, free)));
   const cad::BBox& b = model.bbox();
   if (b.empty()) out += "bbox      (empty)\n";
   else

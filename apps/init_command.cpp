@@ -43,8 +43,8 @@ std::string config_text(const pipeline::Config& values, const std::string& heade
 }
 
 std::string default_config_text() {
-  return config_text(pipeline::Config{},
-                     "semimesh run configuration: every key at its default (the paper's NACA 0012 wing case).\n");
+  const pipeline::Config defaults;
+  return config_text(defaults, "semimesh run configuration: every key at its default (the paper's NACA 0012 wing case).\n");
 }
 
 namespace {

@@ -44,6 +44,7 @@ class Builder {
     add_wing_surfaces();
     if (p_.farfield) add_farfield_surfaces();
     model_->set_units(p_.units, 1.0);
+    model_->set_units_origin("naca.units (the generated wing's lengths; its chord is naca.chord)");
     model_->set_tolerance(tol_);
     model_->set_thread_safe(true);
     model_->finalize();
@@ -201,6 +202,7 @@ std::unique_ptr<cad::Model> make_revolution_body(const NacaWingParams& p) {
   model->add_surface(std::make_unique<detail::RevolutionBody>(0, "body", section, p.chord, tol),
                      {Loop{{fwd(nose_pole), fwd(meridian), rev(tail_pole), rev(meridian)}}});
   model->set_units(p.units, 1.0);
+  model->set_units_origin("naca.units (the generated body's lengths; its chord is naca.chord)");
   model->set_tolerance(tol);
   model->set_thread_safe(true);
   model->finalize();

@@ -13,6 +13,7 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
+#include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
@@ -98,13 +99,14 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
     source.params.set("naca.box", box_text(g.naca.box));
-    source.params.set("naca.units", g.units);
+    if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
                         ": expected 1 for a generated wing (scale applies to CAD files; set naca.chord instead)");
   } else if (g.backend == "occ") {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
-    source.params.set("occ.units", g.units);
+    if (g.units != "auto") source.params.set("occ.units", g.units);
+    if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
   }
   return source;
 }
@@ -152,11 +154,13 @@ surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& co
 
 // boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
 // `ratio_at_a` at A to ratio_end at B; no field (the uniform ratio) without them.
-ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
-  if (!b.ratio_line || !b.ratio_end) return {};
-  const std::array<double, 6>& l = *b.ratio_line;
+// (wall_layer's alike.)
+ho::RatioField ratio_field(const std::optional<std::array<double, 6>>& line, const std::optional<double>& end,
+                           double ratio_at_a) {
+  if (!line || !end) return {};
+  const std::array<double, 6>& l = *line;
   const Eigen::Vector3d a(l[0], l[1], l[2]), ab = Eigen::Vector3d(l[3], l[4], l[5]) - a;
-  const double ratio_at_b = *b.ratio_end;
+  const double ratio_at_b = *end;
   return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
     const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return ratio_at_a + t * (ratio_at_b - ratio_at_a);
@@ -247,7 +251,9 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   const cad::Registry registry = backends::default_registry();
   Geometry g;
   g.model = stage("load CAD", progress, result, [&] {
-    return registry.load(config.geometry.backend, cad_source(config.geometry));
+    auto model = registry.load(config.geometry.backend, cad_source(config.geometry));
+    require_closed(*model, config.geometry.sew_tolerance);
+    return model;
   });
   g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
@@ -287,7 +293,7 @@ struct WingRatio {
 WingRatio wing_ratio(const Config& config, double chord) {
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
   const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
-  return {ratio, ratio_field(config.boundary_layer, ratio)};
+  return {ratio, ratio_field(config.boundary_layer.ratio_line, config.boundary_layer.ratio_end, ratio)};
 }
 
 // The wing layer's split interfaces along a layer edge from x, as the split will place them (its
@@ -387,7 +393,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   }
   StackSplit split = stage("split", progress, result, [&] {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
-                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+                                   {ho::LayerDistribution{wall_layers, wall_ratio},
+                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)});
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
@@ -412,7 +419,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     }
   }
   if (wall_layers > 1) {
-    result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
+    result.wall_layers.requested_ratio = wall_ratio;
+    result.wall_layers.requested_ratio_end = config.wall_layer.ratio_end.value_or(wall_ratio);
     result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
     result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
     result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;

@@ -140,6 +140,19 @@ allow_invalid = true
   EXPECT_TRUE(c.output.allow_invalid);
 }
 
+TEST(Config, UnitsAndSewingAreCheckedAgainstTheSource) {
+  EXPECT_NE(error_of("[geometry]\nunits = \"furlong\"\n").find("geometry.units = \"furlong\": expected \"auto\", \"mm\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nsource = \"wing.step\"\nbackend = \"occ\"\nunits = \"chord\"\n")
+                .find("a length unit for a CAD file"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nsew_tolerance = 0.01\n").find("unset for a generated wing"), std::string::npos);
+  const Config c = parse_config("[geometry]\nsource = \"wing.igs\"\nbackend = \"occ\"\nunits = \"m\"\nsew_tolerance = 1e-4\n",
+                                "case.toml");
+  EXPECT_EQ(c.geometry.units, "m");
+  EXPECT_EQ(c.geometry.sew_tolerance, 1e-4);
+}
+
 TEST(Config, ABareStringIsAListOfOne) {
   EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
   EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,
@@ -176,6 +189,12 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
             std::string::npos);
   EXPECT_NE(error_of("[boundary_layer]\nratio_line = [0, 0, 0, 0, 0, 1]\nratio_end = 0.5\n")
                 .find("boundary_layer.ratio_end = 0.5: expected >= 1"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_end = 1.5\n").find("wall_layer.ratio_end = 1.5: expected together with"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [0, 0, 0, 1, 0, 0]\n").find("wall_layer.ratio_line"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [1, 1, 0, 1, 1, 0]\nratio_end = 1\n").find("A != B"),
             std::string::npos);
   EXPECT_NE(error_of("[highorder]\nspring_iterations = 0\n").find("highorder.spring_iterations = 0"), std::string::npos);
   EXPECT_NE(error_of("[sizing]\nmax_size = 0.1\nmin_size = 0.2\n").find("sizing.min_size = 0.2"), std::string::npos);

@@ -9,6 +9,7 @@
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -37,6 +38,28 @@ std::string number_label(double x) {
   return out.str();
 }
 
+// The unit of the model's numbers (after occ.scale): occ.units when set (a known label: files often
+// declare a wrong one), else what the file declares.
+std::string file_unit(const cad::Params& params, const ReadShape& read) {
+  if (!params.has("occ.units")) return read.unit;
+  const std::string unit = params.get_string("occ.units", "");
+  const auto& known = known_unit_labels();
+  if (std::find(known.begin(), known.end(), unit) == known.end()) {
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'occ.units' = '" + unit + "': unknown length unit (known: " + list + ")");
+  }
+  return unit;
+}
+
+std::string unit_origin(const cad::Params& params, const ReadShape& read) {
+  const std::string declared = read.declared.empty() ? "the file declares no unit" : "the file declares " + read.unit +
+                                                                                        " (" + read.declared + ")";
+  if (params.has("occ.units")) return "set by occ.units (geometry.units); " + declared;
+  return read.declared.empty() ? "the file declares no unit: its numbers as they are" : "declared by the file (" + read.declared + ")";
+}
+
 std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   const cad::Params& params = source.params;
   params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside"},
@@ -58,8 +81,9 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
 
   ModelOptions options;
   options.scale_applied = scale;
-  options.units = scale == 1.0 ? read.unit : read.unit + " x " + number_label(scale);
-  options.units = params.get_string("occ.units", options.units);
+  const std::string unit = file_unit(params, read);
+  options.units = scale == 1.0 || params.has("occ.units") ? unit : unit + " x " + number_label(scale);
+  options.units_origin = unit_origin(params, read);
   options.fluid_side = fluid_side;
   options.face_names = std::move(read.face_names);
   try {
@@ -92,6 +116,7 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
   options.edge_names = naca_wing_edge_names(shape, options.face_names);  // the analytic curve names
   options.scale_applied = scale;
   options.units = source.params.get_string("occ.units", scale == 1.0 ? "chord" : "chord x " + number_label(scale));
+  options.units_origin = source.params.has("occ.units") ? "set by occ.units (geometry.units)" : "the generated wing, in chords";
   return model_from_shape(shape, kBackend, options);
 }
 

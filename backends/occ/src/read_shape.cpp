@@ -48,6 +48,13 @@ const UnitInfo* unit_from_name(std::string name) {
   return nullptr;
 }
 
+// The entries of unit_from_name's table, once per label.
+std::vector<std::string> unit_labels() {
+  std::vector<std::string> labels;
+  for (const char* name : {"MM", "CM", "M", "KM", "UM", "IN", "FT"}) labels.push_back(unit_from_name(name)->label);
+  return labels;
+}
+
 void require_readable(const std::string& path) {
   std::ifstream probe(path, std::ios::binary);
   if (!probe) throw CadError(CadError::Kind::FileNotFound, "cannot open '" + path + "': no such file");
@@ -74,6 +81,7 @@ ReadShape read_step(const std::string& path) {
     if (const UnitInfo* unit = unit_from_name(lengths.First().ToCString())) {
       out.unit = unit->label;
       out.to_file_unit = 1.0 / unit->mm;
+      out.declared = std::string("STEP length unit '") + lengths.First().ToCString() + "'";
     }
 
   // Face names: the name of the STEP entity each face was made from (ADVANCED_FACE('name', ...)).
@@ -99,6 +107,7 @@ ReadShape read_iges(const std::string& path) {
     if (const UnitInfo* unit = unit_from_name(unit_name->ToCString())) {
       out.unit = unit->label;
       out.to_file_unit = 1.0 / unit->mm;
+      out.declared = std::string("IGES global section unit '") + unit_name->ToCString() + "'";
     }
   return out;
 }
@@ -127,6 +136,11 @@ ReadShape read_brep(const std::string& path) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& known_unit_labels() {
+  static const std::vector<std::string> labels = unit_labels();
+  return labels;
+}
 
 std::string extension_of(const std::string& path) {
   const auto slash = path.find_last_of("/\\");

@@ -16,7 +16,12 @@ struct ReadShape {
   /// Factor from the coordinates OCC produced to the file's unit (OCC's STEP and IGES readers
   /// convert to millimetres; this undoes it so coordinates stay in the file's unit).
   double to_file_unit = 1.0;
+  /// Where the unit comes from, e.g. "STEP length unit 'MILLIMETRE'"; empty when the file says none.
+  std::string declared;
 };
+
+/// The unit labels a file may declare (and occ.units may set): mm, cm, m, km, um, in, ft.
+const std::vector<std::string>& known_unit_labels();
 
 /// Dispatches on the extension (any case). Throws CadError: FileNotFound when `path` cannot be
 /// opened, FileUnreadable when it does not parse, NoGeometry when it holds no faces,

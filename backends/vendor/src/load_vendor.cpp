@@ -113,6 +113,7 @@ class Builder {
     connection_->call("vc_model_units", model_ref(), [&](vc_model m) { return vc_model_units(m, &unit); });
     connection_->call("vc_model_tolerance", model_ref(), [&](vc_model m) { return vc_model_tolerance(m, &tolerance); });
     model_->set_units(unit_name(unit), 1.0);
+    model_->set_units_origin("declared by the vendor kernel's model");
     model_->set_tolerance(tolerance);
   }
 

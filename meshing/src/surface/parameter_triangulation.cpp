@@ -42,7 +42,32 @@ using VertexHandle = Cdt::Vertex_handle;
 constexpr double kMinSpacing = 0.5;
 constexpr std::size_t kMaxNodes = 20'000'000;
 
-Vec2 to_uv(const Point& p) { return Vec2(p.x(), p.y()); }
+// Beyond this ratio between the mean lengths of S_u and S_v a Delaunay triangulation in raw (u, v)
+// joins nodes far apart in space (on a revolved tip, u an angle on a radius of ~70 and v a length,
+// it joined nodes a third of the way round), so the triangulation runs in (u, v) scaled by them.
+constexpr double kMaxParameterStretch = 3.0;
+
+// The triangulation's coordinates: v times `v_scale` (1 unless the face stretches its parameters).
+// Only the Delaunay criterion sees them; nodes keep their (u, v).
+double v_scale_of(const cad::Surface& face) {
+  const auto box = face.bounds();
+  constexpr int n = 8;
+  double su = 0.0, sv = 0.0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
+      if (!face.contains(uv)) continue;
+      const cad::SurfaceDerivatives d = face.derivatives(uv);
+      su += d.du.norm();
+      sv += d.dv.norm();
+    }
+  if (!(su > 0.0 && sv > 0.0)) return 1.0;
+  const double ratio = sv / su;
+  return ratio > kMaxParameterStretch || ratio < 1.0 / kMaxParameterStretch ? ratio : 1.0;
+}
+
+Vec2 to_uv(const Point& p, double v_scale) { return Vec2(p.x(), p.y() / v_scale); }
+Point to_point(const Vec2& uv, double v_scale) { return Point(uv.x(), uv.y() * v_scale); }
 
 // Nesting level by flood fill: faces reached from the infinite face without crossing a loop have
 // level 0, each loop crossed adds one; the face is the odd levels (outer loop + holes).
@@ -73,9 +98,10 @@ void mark_domain(Cdt& cdt) {
 
 class Refiner {
  public:
-  Refiner(const cad::Surface& face, const SizeField& size, double split_factor, double grid_step, SurfaceMesh& mesh,
-          Cdt& cdt)
-      : face_(face), size_(size), split_factor_(split_factor), grid_step_(grid_step), mesh_(mesh), cdt_(cdt),
+  Refiner(const cad::Surface& face, const SizeField& size, double split_factor, double grid_step, double v_scale,
+          SurfaceMesh& mesh, Cdt& cdt)
+      : face_(face), size_(size), split_factor_(split_factor), grid_step_(grid_step), v_scale_(v_scale), mesh_(mesh),
+        cdt_(cdt),
         periods_{face.period(0), face.period(1)},
         periodic_(periods_[0] || periods_[1]) {}
 
@@ -93,6 +119,7 @@ class Refiner {
 
  private:
   using Key = std::array<VertexHandle, 3>;
+  Vec2 uv_of(const Point& p) const { return to_uv(p, v_scale_); }
   static Key key(FaceHandle f) { return {f->vertex(0), f->vertex(1), f->vertex(2)}; }
 
   const Vec3& point(VertexHandle v) const { return mesh_.points[v->info().node]; }
@@ -114,7 +141,7 @@ class Refiner {
   // the two sides of a seam cut can have a short chord while it wraps all the way round.
   double edge_length(VertexHandle p, VertexHandle q) const {
     if (!periodic_) return (point(q) - point(p)).norm();
-    const Vec3 mid = face_.point(0.5 * (to_uv(p->point()) + to_uv(q->point())));
+    const Vec3 mid = face_.point(0.5 * (uv_of(p->point()) + uv_of(q->point())));
     return (mid - point(p)).norm() + (point(q) - mid).norm();
   }
 
@@ -127,10 +154,10 @@ class Refiner {
     for (int d = 0; d < 2; ++d) {
       if (!periods_[d]) continue;
       bool fan = false;
-      for (int i = 0; i < 3; ++i) fan = fan || at_pole(to_uv(f->vertex(i)->point()), d);
+      for (int i = 0; i < 3; ++i) fan = fan || at_pole(uv_of(f->vertex(i)->point()), d);
       for (int i = 0; i < 3; ++i) {
         if (cdt_.is_constrained(Cdt::Edge(f, i))) continue;
-        const Vec2 p = to_uv(f->vertex(Cdt::cw(i))->point()), q = to_uv(f->vertex(Cdt::ccw(i))->point());
+        const Vec2 p = uv_of(f->vertex(Cdt::cw(i))->point()), q = uv_of(f->vertex(Cdt::ccw(i))->point());
         if (std::abs(q[d] - p[d]) > *periods_[d] / (fan ? 12.0 : 3.0) && !at_pole(p, d) && !at_pole(q, d))
           return 0.5 * (p + q);
       }
@@ -149,7 +176,7 @@ class Refiner {
 
   // Circumcentre in the tangent-plane metric at the centroid: where the 3D circumcentre would be.
   std::optional<Vec2> metric_circumcentre(FaceHandle f) const {
-    const Vec2 p0 = to_uv(f->vertex(0)->point()), p1 = to_uv(f->vertex(1)->point()), p2 = to_uv(f->vertex(2)->point());
+    const Vec2 p0 = uv_of(f->vertex(0)->point()), p1 = uv_of(f->vertex(1)->point()), p2 = uv_of(f->vertex(2)->point());
     const Vec2 mid = (p0 + p1 + p2) / 3.0;
     const cad::SurfaceDerivatives d = face_.derivatives(mid);
     // A maps parameter steps to tangent-plane coordinates with |A du| = |S_u du + S_v dv|.
@@ -175,17 +202,17 @@ class Refiner {
       if (l > best_length) { best_length = l; best = i; }
     }
     if (best < 0) return std::nullopt;
-    return 0.5 * (to_uv(f->vertex(Cdt::cw(best))->point()) + to_uv(f->vertex(Cdt::ccw(best))->point()));
+    return 0.5 * (uv_of(f->vertex(Cdt::cw(best))->point()) + uv_of(f->vertex(Cdt::ccw(best))->point()));
   }
 
-  static std::optional<Vec2> centroid(FaceHandle f) {
-    return (to_uv(f->vertex(0)->point()) + to_uv(f->vertex(1)->point()) + to_uv(f->vertex(2)->point())) / 3.0;
+  std::optional<Vec2> centroid(FaceHandle f) const {
+    return (uv_of(f->vertex(0)->point()) + uv_of(f->vertex(1)->point()) + uv_of(f->vertex(2)->point())) / 3.0;
   }
 
   bool try_insert(const Vec2& uv, FaceHandle hint, double h) {
     Cdt::Locate_type type;
     int index;
-    const Point p(uv.x(), uv.y());
+    const Point p = to_point(uv, v_scale_);
     FaceHandle at = cdt_.locate(p, type, index, hint);
     if (type == Cdt::VERTEX || type == Cdt::OUTSIDE_CONVEX_HULL || type == Cdt::OUTSIDE_AFFINE_HULL) return false;
     if (cdt_.is_infinite(at) || !at->info().in_domain()) return false;
@@ -225,6 +252,7 @@ class Refiner {
   const SizeField& size_;
   double split_factor_;
   double grid_step_;
+  double v_scale_;
   SurfaceMesh& mesh_;
   Cdt& cdt_;
   std::array<std::optional<double>, 2> periods_;
@@ -247,10 +275,11 @@ void triangulate_parameter_space(const cad::Model& model, int surface, const std
   std::vector<int> by_position(mesh.num_nodes());
   std::iota(by_position.begin(), by_position.end(), 0);
   std::sort(by_position.begin(), by_position.end(), lower);
+  const double v_scale = v_scale_of(model.surface(surface));
   Cdt cdt;
   std::vector<VertexHandle> handles(mesh.num_nodes());
   for (int node : by_position) {
-    handles[node] = cdt.insert(Point(snapped[node].x(), snapped[node].y()));
+    handles[node] = cdt.insert(to_point(snapped[node], v_scale));
     if (handles[node]->info().node != -1)
       throw SurfaceMeshError(cad::surface_label(model, surface) + ": boundary nodes " + std::to_string(handles[node]->info().node) +
                              " and " + std::to_string(node) + " coincide in parameter space (degenerate edge or pole?)");
@@ -271,7 +300,7 @@ void triangulate_parameter_space(const cad::Model& model, int surface, const std
     throw SurfaceMeshError(cad::surface_label(model, surface) +
                            ": boundary loops intersect in parameter space (curves crossing, or too coarse for the trim)");
   mark_domain(cdt);
-  Refiner(model.surface(surface), size, split_factor, grid_step, mesh, cdt).run();
+  Refiner(model.surface(surface), size, split_factor, grid_step, v_scale, mesh, cdt).run();
 
   for (FaceHandle f : cdt.finite_face_handles())
     if (f->info().in_domain())

@@ -102,7 +102,7 @@ TEST(PeriodicSurface, BodyOfRevolutionAreaConvergesToTheQuadrature) {
   const auto model = revolution_body();
   const double exact = area_of_revolution();
   double previous_error = 0.0;
-  for (double segments : {1.0, 2.0, 4.0}) {
+  for (double segments : {2.0, 4.0, 8.0}) {
     const SurfaceMesh m = mesh_body(*model, segments).surfaces.at(0);
     double area = 0.0;
     for (const auto& t : m.triangles) area += triangle_area(m, t);

@@ -60,6 +60,8 @@ class Model {
   /// Takes ownership; `surface->id()` must equal the number of surfaces added before it.
   int add_surface(std::unique_ptr<Surface> surface, std::vector<Loop> loops);
   void set_units(std::string units, double scale_applied);
+  /// Why the model is in that unit, for users: e.g. "declared by the file (STEP: MILLI METRE)".
+  void set_units_origin(std::string origin) { units_origin_ = std::move(origin); }
   void set_tolerance(double tolerance) { tolerance_ = tolerance; }
   void set_thread_safe(bool thread_safe) { thread_safe_ = thread_safe; }
   /// Keeps a backend object (e.g. the OCC shape) alive as long as the model.
@@ -100,6 +102,8 @@ class Model {
   /// Unit of all coordinates ("mm", "m", "chord", ...) and the factor applied at load.
   const std::string& units() const { return units_; }
   double scale_applied() const { return scale_applied_; }
+  /// Why units() is what it is (empty when the backend does not say).
+  const std::string& units_origin() const { return units_origin_; }
   /// Watertight: every curve bounds exactly two surfaces (seam curves: one surface, twice;
   /// degenerate curves are points and bound one surface once).
   bool is_closed() const { return closed_; }
@@ -119,6 +123,7 @@ class Model {
   BBox bbox_;
   double tolerance_ = 1e-7;
   std::string units_ = "unknown";
+  std::string units_origin_;
   double scale_applied_ = 1.0;
   bool closed_ = false;
   bool thread_safe_ = true;

@@ -48,8 +48,9 @@ struct NacaConfig {
 struct GeometryConfig {
   std::string backend = "naca";  ///< registry name: "naca", "occ", "vendor"
   std::string source;            ///< CAD file, resolved against the config file's folder; empty: generator
-  std::string units = "chord";   ///< label of the model's unit
+  std::string units = "auto";    ///< unit of the file's numbers; "auto": the one it declares (generated: chord)
   double scale = 1.0;            ///< factor applied to a CAD file's coordinates at load
+  std::optional<double> sew_tolerance;  ///< CAD files: sewing tolerance; unset: the backend's
   NacaConfig naca;
   /// Surface names or ids ("#7"), or "auto": found from the model (pipeline/roles.hpp).
   std::vector<std::string> body = {"auto"};
@@ -70,6 +71,10 @@ struct WallLayerConfig {
   double thickness = 0.1;                   ///< delta_wall, model units
   ho::LayerDistribution split;              ///< layers, ratio
   std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
+  /// Optional, as boundary_layer's: the ratio linear along A -> B (by each wall vertex's projection),
+  /// ratio_end at B; e.g. a wall layer growing downstream. Both keys or neither.
+  std::optional<std::array<double, 6>> ratio_line;
+  std::optional<double> ratio_end;
 };
 
 /// [boundary_layer]: splitting of the near-field elements into N layers.
