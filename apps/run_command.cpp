@@ -151,10 +151,10 @@ void print_failed_checks(const pipeline::RunResult& r, std::ostream& err) {
   if (!r.volume_ok())
     fmt::print(err,
                "semimesh: volume: elements {:.12g}, boundary flux {:.12g} (relative error {:.3e}, limit {:.0e}), "
-               "box - body {:.12g} (relative error {:.3e}, limit {:.0e})\n",
+               "box - body {:.12g} (relative error {:.3e}, limit {:.3g})\n",
                r.volume.mesh.element_volume, r.volume.mesh.boundary_volume, r.volume.mesh.boundary_relative_error(),
                pipeline::kBoundaryVolumeTolerance, r.volume.expected_volume(), r.volume.expected_relative_error(),
-               pipeline::kExpectedVolumeTolerance);
+               r.expected_volume_tolerance);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <mutex>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <stdexcept>
@@ -32,9 +33,15 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   if (fd < 0) throw os_error("cannot create a temporary file in directory", directory_of(path));
   temp_path_ = name.data();
   // mkstemp creates the file 0600; a mesh file should get the usual 0666 less the umask (umask has
-  // no read-only query, so it is set and restored; writers run one at a time).
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
+  // no read-only query, so it is set and restored; files are written by several threads at once,
+  // so no other AtomicFile may read the umask in between).
+  static std::mutex umask_mutex;
+  mode_t mask;
+  {
+    const std::lock_guard<std::mutex> lock(umask_mutex);
+    mask = ::umask(0);
+    ::umask(mask);
+  }
   ::fchmod(fd, 0666 & ~mask);
   file_ = ::fdopen(fd, "wb");
   if (!file_) {
@@ -59,6 +66,18 @@ void AtomicFile::write(const void* data, std::size_t bytes) {
   const char* c = static_cast<const char*>(data);
   buffer_.append(c, c + bytes);
   if (buffer_.size() > kFlushBytes) flush_buffer();
+}
+
+void AtomicFile::overwrite(std::size_t position, const void* data, std::size_t bytes) {
+  if (position + bytes > bytes_written()) throw std::logic_error("AtomicFile::overwrite past the end of " + temp_path_);
+  if (position >= written_) {  // still in the buffer
+    std::memcpy(buffer_.data() + (position - written_), data, bytes);
+    return;
+  }
+  flush_buffer();
+  if (std::fflush(file_) != 0 ||
+      ::pwrite(::fileno(file_), data, bytes, static_cast<off_t>(position)) != static_cast<ssize_t>(bytes))
+    throw os_error("cannot write to", temp_path_);
 }
 
 void AtomicFile::flush_buffer() {

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <map>
+#include <future>
 #include <numeric>
+#include <thread>
 
 namespace semimesh::io {
 namespace {
@@ -47,13 +49,34 @@ Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from) {
   return out;
 }
 
-template <typename Ids>
-void resample(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& ids,
-              const std::vector<Eigen::Vector3d>& from, std::vector<Eigen::Vector3d>& to) {
-  Eigen::MatrixX3d x(ids.size(), 3);
-  for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = from[ids[i]].transpose();
-  const Eigen::MatrixX3d y = rows * x;
-  for (std::size_t k = 0; k < positions.size(); ++k) to[ids[positions[k]]] = y.row(k).transpose();
+/// Resamples the nodes an entity owns from all its nodes `ids`; the buffers are reused between calls.
+struct Resampler {
+  const std::vector<Eigen::Vector3d>& from;
+  std::vector<Eigen::Vector3d>& to;
+  Eigen::MatrixX3d x, y;
+
+  template <typename Ids>
+  void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& ids) {
+    x.resize(static_cast<Eigen::Index>(ids.size()), 3);
+    for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = from[ids[i]].transpose();
+    y.resize(rows.rows(), 3);
+    y.noalias() = rows * x;
+    for (std::size_t k = 0; k < positions.size(); ++k) to[ids[positions[k]]] = y.row(k).transpose();
+  }
+};
+
+/// f(begin, end, resampler) over [0, n) split among the hardware threads: the entities own
+/// disjoint nodes, so the threads write disjoint entries.
+template <typename F>
+void parallel_ranges(std::size_t n, const std::vector<Eigen::Vector3d>& from, std::vector<Eigen::Vector3d>& to, F f) {
+  const std::size_t threads = std::max<std::size_t>(1, std::min<std::size_t>(std::thread::hardware_concurrency(), n / 1024 + 1));
+  std::vector<std::future<void>> workers;
+  for (std::size_t t = 0; t < threads; ++t)
+    workers.push_back(std::async(t == 0 ? std::launch::deferred : std::launch::async, [&, t] {
+      Resampler r{from, to, {}, {}};
+      f(n * t / threads, n * (t + 1) / threads, r);
+    }));
+  for (auto& w : workers) w.get();  // the deferred first range runs here; rethrows a worker's exception
 }
 
 }  // namespace
@@ -68,25 +91,37 @@ EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
   const Eigen::MatrixXd edge = edge_resampling(p, set);
   std::vector<int> edge_positions(p - 1);
   std::iota(edge_positions.begin(), edge_positions.end(), 1);
-  for (std::size_t e = 0; e < m.edges().size(); ++e) resample(edge, edge_positions, m.edge_nodes(e), from, resampled_);
+  parallel_ranges(m.edges().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    std::vector<mesh::NodeId> ids(p + 1);
+    for (std::size_t e = begin; e < end; ++e) {
+      const mesh::Edge& edge_entity = m.edges()[e];
+      ids.front() = edge_entity.vertices[0], ids.back() = edge_entity.vertices[1];
+      std::copy_n(m.edge_pool().begin() + edge_entity.first_node, p - 1, ids.begin() + 1);
+      r(edge, edge_positions, ids);
+    }
+  });
 
   const OwnedRows tri = owned_rows(ho::Shape::Triangle, p, set, mesh::NodeSlot::Face);
   const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, p, set, mesh::NodeSlot::Face);
-  for (std::size_t f = 0; f < m.faces().size(); ++f) {
-    const OwnedRows& r = m.faces()[f].num_vertices == 3 ? tri : quad;
-    if (!r.positions.empty()) resample(r.rows, r.positions, m.face_nodes(f), from, resampled_);
-  }
+  parallel_ranges(m.faces().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const OwnedRows& owned = m.faces()[f].num_vertices == 3 ? tri : quad;
+      if (!owned.positions.empty()) r(owned.rows, owned.positions, m.face_nodes(f));
+    }
+  });
 
   std::map<ho::Shape, OwnedRows> interior;
-  std::vector<mesh::NodeId> ids;
-  for (std::size_t e = 0; e < m.elements().size(); ++e) {
-    const ho::Shape shape = m.elements()[e].shape;
-    if (mesh::node_layout(shape, p).num_interior == 0) continue;
-    auto it = interior.find(shape);
-    if (it == interior.end()) it = interior.emplace(shape, owned_rows(shape, p, set, mesh::NodeSlot::Interior)).first;
-    m.element_nodes(e, ids);
-    resample(it->second.rows, it->second.positions, ids, from, resampled_);
-  }
+  for (const mesh::Element& el : m.elements())
+    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, p, set, mesh::NodeSlot::Interior));
+  parallel_ranges(m.elements().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    std::vector<mesh::NodeId> ids;
+    for (std::size_t e = begin; e < end; ++e) {
+      const OwnedRows& owned = interior.at(m.elements()[e].shape);
+      if (owned.positions.empty()) continue;
+      m.element_nodes(e, ids);
+      r(owned.rows, owned.positions, ids);
+    }
+  });
   nodes_ = &resampled_;
 }
 

@@ -8,8 +8,10 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdint>
+#include <future>
 #include <map>
 #include <stdexcept>
+#include <thread>
 
 namespace semimesh::io {
 namespace {
@@ -93,6 +95,19 @@ std::vector<int> quad_order(int p) {
   return order;
 }
 
+/// f(i) for i in [0, n) on every hardware thread; f(i) may write only entries of its own i.
+template <typename F>
+void parallel_for(std::size_t n, F f) {
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::future<void>> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.push_back(std::async(std::launch::async, [&, t] {
+      for (std::size_t i = n * t / threads; i < n * (t + 1) / threads; ++i) f(i);
+    }));
+  for (std::size_t i = 0; i < n / threads; ++i) f(i);
+  for (auto& w : workers) w.get();  // rethrows a worker's exception
+}
+
 /// Everything the sections need, computed once.
 struct Geometry {
   const mesh::Mesh& m;
@@ -103,23 +118,34 @@ struct Geometry {
   // Only curved entities get a CURVED entry (as NekMesh writes): a straight one is the same
   // geometry without it, and the straight-sided far field is most of a mesh.
   std::vector<char> edge_curved, face_curved;
+  // Edge k of a face joins its stored vertices k and k+1 (found once: the lookups are most of the cost).
+  std::vector<std::array<std::uint32_t, 4>> stored_face_edges;
 
   Geometry(const mesh::Mesh& mesh, const EquispacedNodes& nodes) : m(mesh), node(nodes), numbering(number_for_nektar(mesh)) {
+    stored_face_edges.resize(m.faces().size());
+    parallel_for(m.faces().size(), [&](std::size_t f) {
+      const auto& v = m.faces()[f].vertices;
+      const int n = num_face_vertices(f);
+      for (int k = 0; k < n; ++k) stored_face_edges[f][k] = static_cast<std::uint32_t>(m.find_edge(v[k], v[(k + 1) % n]));
+    });
     if (m.order() < 2) return;
     tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
-    edge_curved.resize(m.edges().size());
-    for (std::size_t e = 0; e < m.edges().size(); ++e) edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    tri_reference_ = ho::reference_nodes(ho::Shape::Triangle, m.order(), ho::NodeSet::Equispaced);
+    quad_reference_ = ho::reference_nodes(ho::Shape::Quadrilateral, m.order(), ho::NodeSet::Equispaced);
     face_curved.resize(m.faces().size());
-    for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    parallel_for(m.faces().size(), [&](std::size_t f) {
       const bool tri = num_face_vertices(f) == 3;
       face_curved[f] = m.order() >= (tri ? 3 : 2) &&
                        !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
-      // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
-      if (face_curved[f]) {
-        const auto edges = face_edges(f);
-        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[edges[k]] = 1;
-      }
-    }
+    });
+    edge_curved.resize(m.edges().size());
+    parallel_for(m.edges().size(), [&](std::size_t e) {
+      edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+    });
+    // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
+    for (std::size_t f = 0; f < m.faces().size(); ++f)
+      if (face_curved[f])
+        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[stored_face_edges[f][k]] = 1;
   }
 
   /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
@@ -147,20 +173,25 @@ struct Geometry {
   const Eigen::MatrixX3d& reference(ho::Shape shape) const {
     static const Eigen::MatrixX3d none;
     if (shape == ho::Shape::Segment) return none;
-    auto& r = shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
-    if (r.rows() == 0) r = ho::reference_nodes(shape, m.order(), ho::NodeSet::Equispaced);
-    return r;
+    return shape == ho::Shape::Triangle ? tri_reference_ : quad_reference_;
   }
-  mutable Eigen::MatrixX3d tri_reference_, quad_reference_;
+  Eigen::MatrixX3d tri_reference_, quad_reference_;
 
   int num_face_vertices(std::size_t f) const { return m.faces()[f].num_vertices; }
 
+  /// How far the written vertices of a face are rotated from the stored ones.
+  int written_rotation(std::size_t f) const {
+    const auto w = written_face_vertices(m, numbering, f);
+    int s = 0;
+    while (m.faces()[f].vertices[s] != w[0]) ++s;
+    return s;
+  }
+
   /// Edge ids of a face as written.
   std::array<std::int64_t, 4> face_edges(std::size_t f) const {
-    const auto w = written_face_vertices(m, numbering, f);
-    const int n = num_face_vertices(f);
+    const int n = num_face_vertices(f), s = written_rotation(f);
     std::array<std::int64_t, 4> e{};
-    for (int k = 0; k < n; ++k) e[k] = m.find_edge(w[k], w[(k + 1) % n]);
+    for (int k = 0; k < n; ++k) e[k] = stored_face_edges[f][(k + s) % n];
     return e;
   }
 
@@ -192,10 +223,7 @@ struct Geometry {
   void face_nodes_written(std::size_t f, Emit emit) const {
     const auto ids = m.face_nodes(f);
     if (num_face_vertices(f) == 3) {
-      const auto w = written_face_vertices(m, numbering, f);
-      int s = 0;
-      while (m.faces()[f].vertices[s] != w[0]) ++s;
-      for (int k : tri_point_order[s]) emit(ids[k]);
+      for (int k : tri_point_order[written_rotation(f)]) emit(ids[k]);
     } else {
       for (int k : quad_point_order) emit(ids[k]);
     }
@@ -263,10 +291,12 @@ void write_plain(AtomicFile& out, const Geometry& g) {
 template <typename Fill>
 void compressed_block(AtomicFile& out, const std::string& indent, const std::string& tag, Fill fill,
                       bool attributes = true, Content content = Content::Integers) {
-  ZlibStream z(content);
-  fill(z);
   out.print("{}<{}{}{}>", indent, tag, attributes ? " " : "", attributes ? kCompressed : "");
-  write_base64(out, z.finish());
+  Base64Out text(out);
+  ZlibStream z([&](const char* data, std::size_t bytes) { text.add(data, bytes); }, content);
+  fill(z);
+  z.finish();
+  text.finish();
   out.print("</{}>\n", tag);
 }
 
@@ -323,7 +353,8 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
 
   // CURVED: MeshCurvedInfo records {id, entityid, npoints, ptid, ptoffset, ptype} for edges and
   // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
-  // Curves share their points through INDEX: every edge/face node is stored once.
+  // Curves share their points through INDEX: every edge/face node is stored once. INDEX cannot be
+  // left out: MeshGraphIOXmlCompressed::v_ReadCurves requires it and reads every point through it.
   std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
   std::vector<mesh::NodeId> point_node;
   auto point_of = [&](mesh::NodeId id) {

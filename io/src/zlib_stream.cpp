@@ -72,6 +72,10 @@ std::vector<std::string> parallel_map(std::size_t n, F f) {
 
 }  // namespace
 
+ZlibStream::ZlibStream(Sink sink, Content content) : sink_(std::move(sink)), content_(content) {
+  sink_("\x78\x01", 2);  // zlib header: deflate, 32 KiB window, fastest level
+}
+
 void ZlibStream::add(const void* data, std::size_t bytes) {
   if (finished_) throw std::logic_error("ZlibStream::add after finish");
   const char* c = static_cast<const char*>(data);
@@ -82,54 +86,91 @@ void ZlibStream::add(const void* data, std::size_t bytes) {
     if (staged_.size() == kChunkBytes) {
       pending_.push_back(std::move(staged_));
       staged_.clear();
+      staged_.reserve(kChunkBytes);
       if (pending_.size() == num_threads()) deflate_pending(false);
     }
   }
 }
 
 void ZlibStream::deflate_pending(bool last) {
-  const auto parts = parallel_map(pending_.size(), [&](std::size_t i) {
-    return deflate_chunk(pending_[i], last && i + 1 == pending_.size(), content_);
+  // The batch compresses in the background while the caller produces the next one.
+  drain();
+  in_flight_ = std::async(std::launch::async, [batch = std::move(pending_), last, content = content_] {
+    Batch out;
+    out.parts = parallel_map(batch.size(), [&](std::size_t i) {
+      return deflate_chunk(batch[i], last && i + 1 == batch.size(), content);
+    });
+    for (const std::string& chunk : batch)
+      out.adler.emplace_back(adler32(1, reinterpret_cast<const Bytef*>(chunk.data()), static_cast<uInt>(chunk.size())),
+                             chunk.size());
+    return out;
   });
-  for (std::size_t i = 0; i < parts.size(); ++i) {
-    body_ += parts[i];
-    adler_ = adler32_combine(adler_, adler32(1, reinterpret_cast<const Bytef*>(pending_[i].data()),
-                                             static_cast<uInt>(pending_[i].size())),
-                             static_cast<z_off_t>(pending_[i].size()));
-  }
   pending_.clear();
 }
 
-const std::string& ZlibStream::finish() {
-  if (finished_) return out_;
+void ZlibStream::drain() {
+  if (!in_flight_.valid()) return;
+  const Batch batch = in_flight_.get();  // rethrows a compression error
+  for (std::size_t i = 0; i < batch.parts.size(); ++i) {
+    sink_(batch.parts[i].data(), batch.parts[i].size());
+    adler_ = adler32_combine(adler_, batch.adler[i].first, static_cast<z_off_t>(batch.adler[i].second));
+  }
+}
+
+void ZlibStream::finish() {
+  if (finished_) return;
   pending_.push_back(std::move(staged_));  // possibly empty: it carries the final block
   deflate_pending(true);
-  out_ = std::string("\x78\x01", 2) + body_;  // zlib header: deflate, 32 KiB window, fastest level
-  for (int shift = 24; shift >= 0; shift -= 8) out_ += static_cast<char>((adler_ >> shift) & 0xff);
-  body_.clear();
+  drain();
+  char checksum[4];
+  for (int k = 0; k < 4; ++k) checksum[k] = static_cast<char>((adler_ >> (24 - 8 * k)) & 0xff);
+  sink_(checksum, 4);
   finished_ = true;
-  return out_;
 }
 
 std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
   return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
 }
 
-void write_base64(AtomicFile& out, const std::string& bytes) {
+void Base64Out::add(const char* data, std::size_t bytes) {
+  const auto* b = reinterpret_cast<const unsigned char*>(data);
+  while (carried_ > 0 && bytes > 0) {  // complete the triple carried over from the last piece
+    if (carried_ == 2) {
+      const unsigned char triple[3] = {carry_[0], carry_[1], *b};
+      encode(triple, 3);
+      carried_ = 0;
+    } else {  // one carried
+      carry_[1] = *b;
+      carried_ = 2;
+    }
+    ++b, --bytes;
+  }
+  const std::size_t whole = bytes - bytes % 3;
+  encode(b, whole);
+  if (bytes > whole) {  // nothing is carried here: bytes is 0 whenever the loop above left some
+    carry_[0] = b[whole];
+    if (bytes - whole == 2) carry_[1] = b[whole + 1];
+    carried_ = static_cast<int>(bytes - whole);
+  }
+}
+
+void Base64Out::encode(const unsigned char* b, std::size_t n) {
   static const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string chunk;
-  chunk.reserve(1 << 16);
-  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
-  const std::size_t n = bytes.size();
+  constexpr std::size_t kTextBytes = 1 << 16;
   for (std::size_t i = 0; i < n; i += 3) {
     const unsigned v = (b[i] << 16) | ((i + 1 < n ? b[i + 1] : 0) << 8) | (i + 2 < n ? b[i + 2] : 0);
-    chunk += alphabet[(v >> 18) & 63];
-    chunk += alphabet[(v >> 12) & 63];
-    chunk += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
-    chunk += i + 2 < n ? alphabet[v & 63] : '=';
-    if (chunk.size() >= (1 << 16) - 4) out.write(chunk), chunk.clear();
+    const char quad[4] = {alphabet[(v >> 18) & 63], alphabet[(v >> 12) & 63], i + 1 < n ? alphabet[(v >> 6) & 63] : '=',
+                          i + 2 < n ? alphabet[v & 63] : '='};
+    text_.append(quad, 4);
+    if (text_.size() >= kTextBytes) out_.write(text_), text_.clear();
   }
-  out.write(chunk);
+}
+
+void Base64Out::finish() {
+  encode(carry_, carried_);
+  carried_ = 0;
+  out_.write(text_);
+  text_.clear();
 }
 
 }  // namespace semimesh::io

@@ -3,11 +3,17 @@
 // on every hardware thread at once: a ZlibStream deflates each chunk on its own and joins them
 // with sync flushes into one zlib stream (the way pigz does; the dictionary restarts per chunk,
 // which costs a fraction of a percent); zlib_compress_blocks compresses independent blocks.
+// Chunk and block boundaries depend on the data only, so the bytes do not depend on the threads.
+// Output is handed on as it is made (to the file): nothing holds a whole array. A ZlibStream
+// compresses one batch in the background while its caller produces the next.
 #pragma once
 
 #include "semimesh/io/atomic_file.hpp"
 
 #include <cstddef>
+#include <functional>
+#include <future>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -17,23 +23,31 @@ namespace semimesh::io {
 /// for little gain on them; run-length matching keeps most of the gain at 2-3 times the speed.
 enum class Content { Integers, Doubles };
 
-/// One zlib-format (RFC 1950) stream fed piece by piece.
+/// One zlib-format (RFC 1950) stream fed piece by piece; its bytes go to `sink` in order.
 class ZlibStream {
  public:
-  explicit ZlibStream(Content content = Content::Integers) : content_(content) {}
+  using Sink = std::function<void(const char* data, std::size_t bytes)>;
+  explicit ZlibStream(Sink sink, Content content = Content::Integers);
   void add(const void* data, std::size_t bytes);
   template <typename T>
   void add_value(const T& value) {
     add(&value, sizeof value);
   }
-  /// Ends the stream and returns its bytes; add() is no longer allowed.
-  const std::string& finish();
+  /// Ends the stream (the last chunk and the checksum go to the sink); add() is no longer allowed.
+  void finish();
 
  private:
+  struct Batch {
+    std::vector<std::string> parts;                               // deflated chunks, in order
+    std::vector<std::pair<unsigned long, std::size_t>> adler;     // each chunk's Adler-32 and length
+  };
   void deflate_pending(bool last);
+  void drain();  // waits for the batch in flight and hands its bytes to the sink
 
+  Sink sink_;
+  std::future<Batch> in_flight_;
   std::vector<std::string> pending_;  // full chunks waiting for a free thread each
-  std::string staged_, body_, out_;
+  std::string staged_;
   Content content_;
   unsigned long adler_ = 1;
   bool finished_ = false;
@@ -42,7 +56,20 @@ class ZlibStream {
 /// Each block compressed as its own zlib stream (VTK's vtkZLibDataCompressor layout), in parallel.
 std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content);
 
-/// Appends the standard base64 (RFC 4648, padded) encoding of `bytes` to `out`.
-void write_base64(AtomicFile& out, const std::string& bytes);
+/// Standard base64 (RFC 4648, padded) of a byte stream fed piece by piece, appended to a file.
+class Base64Out {
+ public:
+  explicit Base64Out(AtomicFile& out) : out_(out) {}
+  void add(const char* data, std::size_t bytes);
+  /// Encodes the last one or two bytes with padding.
+  void finish();
+
+ private:
+  void encode(const unsigned char* b, std::size_t n);  // n a multiple of 3, or the padded tail
+  AtomicFile& out_;
+  unsigned char carry_[2] = {0, 0};
+  int carried_ = 0;
+  std::string text_;
+};
 
 }  // namespace semimesh::io

@@ -281,6 +281,9 @@ params::Table<Config> wall_layer_keys() {
   append(w, &WallLayerConfig::split, ho::layer_keys());
   w.push_back(params::real("first_cell_height", &WallLayerConfig::first_cell_height, "> 0",
                            "instead of ratio: height of the first wall layer"));
+  w.push_back(params::reals("ratio_line", &WallLayerConfig::ratio_line, "",
+                            "[xa, ya, za, xb, yb, zb]: the wall ratio varies linearly from A to B (with ratio_end)"));
+  w.push_back(params::real("ratio_end", &WallLayerConfig::ratio_end, ">= 1", "the wall ratio at B of ratio_line"));
   params::Table<Config> table;
   append(table, &Config::wall_layer, w);
   return table;
@@ -335,6 +338,18 @@ params::Table<Config> stage_keys(P Config::*member, const params::Table<P>& keys
   return table;
 }
 
+// ratio_line and ratio_end of `section` (boundary_layer or wall_layer): both or neither, A != B.
+void check_ratio_line(Section& s, const std::string& section, const std::optional<std::array<double, 6>>& line,
+                      const std::optional<double>& end) {
+  if (line) {
+    const auto& l = *line;
+    const double length2 = (l[3] - l[0]) * (l[3] - l[0]) + (l[4] - l[1]) * (l[4] - l[1]) + (l[5] - l[2]) * (l[5] - l[2]);
+    s.require(length2 > 0.0, "ratio_line", "[xa, ya, za, xb, yb, zb] with A != B");
+    s.require(end.has_value(), "ratio_line", "together with " + section + ".ratio_end (the ratio at B)");
+  }
+  if (end) s.require(line.has_value(), "ratio_end", "together with " + section + ".ratio_line (where it applies)");
+}
+
 // What the rows cannot say: conditions between keys.
 void check_across_keys(Config& c, const std::map<std::string, Section*>& sections, const std::string& base_directory) {
   GeometryConfig& geo = c.geometry;
@@ -374,14 +389,8 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
               fmt::format("<= nearfield.thickness / layers = {}", thickness / layer.split.layers) +
                   " (the layers must fit in the shell with a ratio >= 1)");
   }
-  if (layer.ratio_line) {
-    const auto& l = *layer.ratio_line;
-    const double length2 = (l[3] - l[0]) * (l[3] - l[0]) + (l[4] - l[1]) * (l[4] - l[1]) + (l[5] - l[2]) * (l[5] - l[2]);
-    b.require(length2 > 0.0, "ratio_line", "[xa, ya, za, xb, yb, zb] with A != B");
-    b.require(layer.ratio_end.has_value(), "ratio_line", "together with boundary_layer.ratio_end (the ratio at B)");
-  }
-  if (layer.ratio_end)
-    b.require(layer.ratio_line.has_value(), "ratio_end", "together with boundary_layer.ratio_line (where it applies)");
+  check_ratio_line(b, "boundary_layer", layer.ratio_line, layer.ratio_end);
+  check_ratio_line(w, "wall_layer", wall.ratio_line, wall.ratio_end);
   if (layer.y_plus) {
     b.require(layer.reynolds.has_value(), "y_plus", "together with boundary_layer.reynolds");
     b.require(!b.has("ratio") && !layer.first_cell_height, "y_plus",

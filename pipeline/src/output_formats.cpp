@@ -9,21 +9,26 @@
 namespace semimesh::pipeline {
 
 const std::vector<OutputFormat>& output_formats() {
+  using Mesh = mesh::Mesh;
+  using Nodes = io::EquispacedNodes;
+  using S = std::string;
   static const std::vector<OutputFormat> formats = {
-      {"msh41", ".msh", "", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V41); }},
+      {"msh41", ".msh", "",
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_msh(m, x, p, io::MshVersion::V41); }},
       {"msh41-binary", ".msh", ".bin.msh",
-       [](const mesh::Mesh& m, const std::string& p) {
-         io::write_msh(m, p, io::MshVersion::V41, io::MshEncoding::Binary);
+       [](const Mesh& m, const Nodes& x, const S& p) {
+         io::write_msh(m, x, p, io::MshVersion::V41, io::MshEncoding::Binary);
        }},
-      {"msh22", ".msh", ".v22.msh", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V22); }},
+      {"msh22", ".msh", ".v22.msh",
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_msh(m, x, p, io::MshVersion::V22); }},
       {"vtu", ".vtu", "",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::CompressedBinary); }},
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_vtu(m, x, p, io::VtuEncoding::CompressedBinary); }},
       {"vtu-ascii", ".vtu", ".ascii.vtu",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::Ascii); }},
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_vtu(m, x, p, io::VtuEncoding::Ascii); }},
       {"nektar", ".xml", "",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Compressed); }},
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_nektar_xml(m, x, p, io::NektarEncoding::Compressed); }},
       {"nektar-xml", ".xml", ".plain.xml",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Plain); }},
+       [](const Mesh& m, const Nodes& x, const S& p) { io::write_nektar_xml(m, x, p, io::NektarEncoding::Plain); }},
   };
   return formats;
 }

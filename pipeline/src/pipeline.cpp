@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -153,11 +154,13 @@ surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& co
 
 // boundary_layer.ratio_line / ratio_end: the ratio linear along A -> B (projection, clamped), from
 // `ratio_at_a` at A to ratio_end at B; no field (the uniform ratio) without them.
-ho::RatioField ratio_field(const BoundaryLayerConfig& b, double ratio_at_a) {
-  if (!b.ratio_line || !b.ratio_end) return {};
-  const std::array<double, 6>& l = *b.ratio_line;
+// (wall_layer's alike.)
+ho::RatioField ratio_field(const std::optional<std::array<double, 6>>& line, const std::optional<double>& end,
+                           double ratio_at_a) {
+  if (!line || !end) return {};
+  const std::array<double, 6>& l = *line;
   const Eigen::Vector3d a(l[0], l[1], l[2]), ab = Eigen::Vector3d(l[3], l[4], l[5]) - a;
-  const double ratio_at_b = *b.ratio_end;
+  const double ratio_at_b = *end;
   return [a, ab, ratio_at_a, ratio_at_b](const Eigen::Vector3d& x) {
     const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     return ratio_at_a + t * (ratio_at_b - ratio_at_a);
@@ -290,7 +293,7 @@ struct WingRatio {
 WingRatio wing_ratio(const Config& config, double chord) {
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
   const double ratio = effective_layer_ratio(layer, config.nearfield.shell.thickness);
-  return {ratio, ratio_field(config.boundary_layer, ratio)};
+  return {ratio, ratio_field(config.boundary_layer.ratio_line, config.boundary_layer.ratio_end, ratio)};
 }
 
 // The wing layer's split interfaces along a layer edge from x, as the split will place them (its
@@ -390,7 +393,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   }
   StackSplit split = stage("split", progress, result, [&] {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
-                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+                                   {ho::LayerDistribution{wall_layers, wall_ratio},
+                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)});
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
@@ -415,7 +419,8 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     }
   }
   if (wall_layers > 1) {
-    result.wall_layers.requested_ratio = result.wall_layers.requested_ratio_end = wall_ratio;
+    result.wall_layers.requested_ratio = wall_ratio;
+    result.wall_layers.requested_ratio_end = config.wall_layer.ratio_end.value_or(wall_ratio);
     result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
     result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
     result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;
@@ -457,15 +462,38 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 
 }  // namespace
 
+namespace {
+
+/// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
+/// positions are computed once for all. Files written are added to `written` in config order, also
+/// when another format failed (its first error, in config order, is rethrown).
+void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
+                      const std::vector<std::string>& paths, std::vector<std::string>& written) {
+  if (formats.empty()) return;
+  const io::EquispacedNodes nodes(mesh);
+  std::vector<std::future<void>> writers;
+  for (std::size_t i = 0; i < formats.size(); ++i)
+    writers.push_back(std::async(std::launch::async, [&, i] { output_format(formats[i]).write(mesh, nodes, paths[i]); }));
+  std::exception_ptr first_error;
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    try {
+      writers[i].get();
+      written.push_back(paths[i]);
+    } catch (...) {
+      if (!first_error) first_error = std::current_exception();
+    }
+  }
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace
+
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
   stage("write", progress, result, [&] {
     const std::vector<std::string> paths = output_paths(config.output);
     try {
       std::filesystem::create_directories(config.output.directory);
-      for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
-        result.written_files.push_back(paths[i]);
-      }
+      write_mesh_files(result.mesh, config.output.formats, paths, result.written_files);
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =

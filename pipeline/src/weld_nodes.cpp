@@ -1,5 +1,6 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <unordered_map>
@@ -45,6 +46,59 @@ class PointIndex {
   std::unordered_map<Cell, std::vector<mesh::NodeId>, CellHash> cells_;
 };
 
+// Inner nodes of `mine` mapped to the nearest of `theirs` (then through `to`) when that one is
+// clearly the nearest (under half the distance to the next); the others are left alone.
+void match_inner_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine,
+                       const std::vector<mesh::NodeId>& theirs, std::vector<mesh::NodeId>& to) {
+  for (mesh::NodeId m : mine) {
+    if (to[m] != m) continue;
+    double best = 1e300, next = 1e300;
+    mesh::NodeId nearest = m;
+    for (mesh::NodeId n : theirs) {
+      const double d = (mesh.node(n) - mesh.node(m)).norm();
+      if (d < best) next = best, best = d, nearest = n;
+      else next = std::min(next, d);
+    }
+    if (nearest != m && best < 0.5 * next) to[m] = to[nearest];
+  }
+}
+
+// An edge or face whose vertices were all welded onto another entity's takes that entity's inner
+// nodes: the far field's straight skin quads place theirs between their vertices, the split places
+// its own where the interfaces, interpolated between the vertices', fall on the element's map;
+// they differ inside the entity by more than round-off where the ratio varies (the wake).
+void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to) {
+  const int P = mesh.order();
+  if (P < 2) return;
+  auto pool = [](const std::vector<mesh::NodeId>& from, std::size_t first, std::size_t count) {
+    return std::vector<mesh::NodeId>(from.begin() + first, from.begin() + first + count);
+  };
+  for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
+    const mesh::Edge& edge = mesh.edges()[e];
+    const mesh::NodeId a = to[edge.vertices[0]], b = to[edge.vertices[1]];
+    if (a == edge.vertices[0] && b == edge.vertices[1]) continue;
+    const long other = mesh.find_edge(a, b);
+    if (other < 0 || static_cast<std::size_t>(other) == e) continue;
+    match_inner_nodes(mesh, pool(mesh.edge_pool(), edge.first_node, P - 1),
+                      pool(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1), to);
+  }
+  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+    const mesh::Face& face = mesh.faces()[f];
+    std::vector<mesh::NodeId> welded;
+    bool moved = false;
+    for (int k = 0; k < face.num_vertices; ++k) {
+      welded.push_back(to[face.vertices[k]]);
+      moved = moved || welded.back() != face.vertices[k];
+    }
+    if (!moved) continue;
+    const long other = mesh.find_face(welded);
+    if (other < 0 || static_cast<std::size_t>(other) == f) continue;
+    const std::size_t count = face.num_vertices == 4 ? (P - 1) * (P - 1) : (P - 1) * (P - 2) / 2;
+    match_inner_nodes(mesh, pool(mesh.face_pool(), face.first_node, count),
+                      pool(mesh.face_pool(), mesh.faces()[other].first_node, count), to);
+  }
+}
+
 }  // namespace
 
 Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance) {
@@ -80,6 +134,8 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance) {
         if (to[v] != v) ++out.merged;
       }
   }
+
+  snap_welded_entities(mesh, to);
 
   out.mesh.copy_regions_from(mesh);
   for (std::size_t v = 0; v < n; ++v)

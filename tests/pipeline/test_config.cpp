@@ -190,6 +190,12 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
   EXPECT_NE(error_of("[boundary_layer]\nratio_line = [0, 0, 0, 0, 0, 1]\nratio_end = 0.5\n")
                 .find("boundary_layer.ratio_end = 0.5: expected >= 1"),
             std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_end = 1.5\n").find("wall_layer.ratio_end = 1.5: expected together with"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [0, 0, 0, 1, 0, 0]\n").find("wall_layer.ratio_line"),
+            std::string::npos);
+  EXPECT_NE(error_of("[wall_layer]\nratio_line = [1, 1, 0, 1, 1, 0]\nratio_end = 1\n").find("A != B"),
+            std::string::npos);
   EXPECT_NE(error_of("[highorder]\nspring_iterations = 0\n").find("highorder.spring_iterations = 0"), std::string::npos);
   EXPECT_NE(error_of("[sizing]\nmax_size = 0.1\nmin_size = 0.2\n").find("sizing.min_size = 0.2"), std::string::npos);
   EXPECT_NE(error_of("[output]\nformats = [\"stl\"]\n").find("output.formats"), std::string::npos);
@@ -335,15 +341,15 @@ TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
 }
 
 TEST(Config, TheExamplesParse) {
-  for (const char* name : {"naca0012_wing.toml", "naca0012_wing_c.toml", "naca0012_wing_h.toml"}) {
+  for (const char* name : {"naca0012_wing.toml", "naca0012_wing_o.toml", "naca0012_wing_c.toml"}) {
     const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/" + name);
     EXPECT_EQ(c.highorder.order, 4) << name;
     EXPECT_EQ(c.boundary_layer.split.layers, 5) << name;
     EXPECT_EQ(c.boundary_layer.split.ratio, 2.0) << name;
     EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05) << name;
   }
-  // The paper's H-type near field.
-  const Config paper = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing_h.toml");
+  // The paper's example is its H-type near field.
+  const Config paper = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing.toml");
   EXPECT_EQ(paper.nearfield.topology, "H");
   EXPECT_GT(paper.wake.gap, 0.0);
   EXPECT_EQ(paper.wake.ratio_end, 1.0);

@@ -214,6 +214,8 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[-1.0, 0.0, 0.0]"}, {"wake.direction = [-1, 0, 0]", "upstream"}},
       {{"wake.direction=[1.0, 0.0, -0.5]"}, {"wake.direction = [1, 0, -0.5]", "into the wall"}},
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
+      // Widening at incidence twists the block's outer faces at the tip beyond what a pyramid stands on.
+      {{"wake.widening=30", "wake.direction=[1.0, 0.6, 0.0]"}, {"wake.widening = 30", "the wake block folds"}},
       {{"geometry.naca.te=sharp"}, {"wake.te_base = \"auto\"", "sharp"}},
   };
   for (const auto& [overrides, expected] : cases) {

@@ -351,13 +351,37 @@ TEST(PipelineRunCType, OrderTwoReportsRegionsAndBothLayers) {
     EXPECT_NE(text.str().find(key), std::string::npos) << key;
 }
 
+// wall_layer.ratio_line: the wall ratio 1.5 at the box's upstream side (x = -3), 1 at its downstream
+// side (x = 4): the wall's first cell is 0.04 x 0.5 / (1.5^3 - 1) at the upstream box corners and
+// 0.04 / 3 at the downstream ones; the junction hexes, split across the wall with the ratios of
+// their wall feet, still conform to the wall prisms (checks passed) and are valid.
+TEST(PipelineRunCType, WallRatioVaryingAlongTheWall) {
+  const fs::path dir = fresh_directory("c_type_wall_ratio_line");
+  CountingProgress progress;
+  const RunResult r = run(coarse_config(dir, {"nearfield.topology=C", "wall_layer.thickness=0.04", "wall_layer.layers=3",
+                                              "wall_layer.ratio=1.5", "wall_layer.ratio_line=[-3, 0, 0, 4, 0, 0]",
+                                              "wall_layer.ratio_end=1", "highorder.order=2", "boundary_layer.layers=2",
+                                              "output.formats=[\"msh41\"]"}),
+                          progress);
+  EXPECT_TRUE(r.checks_passed());
+  EXPECT_TRUE(r.conformity.ok());
+  EXPECT_GT(r.validity.min_scaled_jacobian_by_region.at("junction"), 0.0);
+  const double upstream_h1 = 0.04 * 0.5 / (1.5 * 1.5 * 1.5 - 1.0), downstream_h1 = 0.04 / 3.0;
+  EXPECT_NEAR(r.wall_layers.first_cell_height_min, upstream_h1, 1e-9);
+  EXPECT_NEAR(r.wall_layers.first_cell_height_max, downstream_h1, 1e-9);
+  EXPECT_EQ(r.wall_layers.requested_ratio, 1.5);
+  EXPECT_EQ(r.wall_layers.requested_ratio_end, 1.0);
+  fs::remove_all(dir);
+}
+
 // Bad C-type input: a BadInput RunError naming the entity and value, and no file written.
 TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{"nearfield.junction_min_angle=100"}, {"('root_", "90 degrees"}},
       {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "not planar"}},
       {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
-      {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"}, {"surface ", "0.6"}},
+      {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"},
+       {"root loop is too short", "('root_", "thickness 0.6", "wall layer thickness 0.04"}},
       {{"geometry.naca.sweep=30", "geometry.naca.taper=0.5", "wall_layer.thickness=0.2"},
        {"thicker than the wing's shell", "('root_"}},
   };

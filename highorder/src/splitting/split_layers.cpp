@@ -107,9 +107,9 @@ class Splitter {
   /// families have constant ratios (cached).
   const Eigen::MatrixXd& uniform_values(Shape shape, const Plan& plan);
   /// Reference points of every node of every piece, piece (k_a, k_b) at rows (k_b N_a + k_a) nodes;
-  /// `interface_a(r, k)` gives interface k of the first direction at reference point r.
+  /// `interface(s, r, k)` gives interface k of direction slot s at reference point r.
   template <typename Interface>
-  Eigen::MatrixX3d sub_points(const ShapeData& data, const Plan& plan, const Interface& interface_a) const;
+  Eigen::MatrixX3d sub_points(const ShapeData& data, const Plan& plan, const Interface& interface) const;
   /// Throws naming both elements when a split element's face cut by its split is shared with an
   /// element that does not cut it the same way (same families, same body-side vertices).
   void check_side_faces(const std::vector<LayerSplit>& split);
@@ -121,10 +121,11 @@ class Splitter {
     std::array<std::vector<double>, 2> first_heights;  // per direction slot: [bottom vertices]
     std::array<std::vector<double>, 2> ratios;
   };
-  /// Layer interfaces of the first direction at each of its bottom vertices (calls the ratio
-  /// field; serial). Empty when that family's ratio is constant.
-  std::vector<std::vector<double>> interfaces_of(std::size_t element);
-  SplitGeometry place_sub_nodes(std::size_t element, const std::vector<std::vector<double>>& z_of_vertex) const;
+  /// Per direction slot, the layer interfaces at each bottom vertex of that direction (calls the
+  /// ratio field; serial). Empty for a slot whose ratio is constant over the element.
+  using VertexInterfaces = std::array<std::vector<std::vector<double>>, 2>;
+  VertexInterfaces interfaces_of(std::size_t element);
+  SplitGeometry place_sub_nodes(std::size_t element, const VertexInterfaces& z_of_vertex) const;
   /// Piece node lists of one coarse element, body-side pieces first; creates the new nodes.
   std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
   NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
@@ -170,22 +171,24 @@ const DirectionData& Splitter::direction_data(Shape shape, int direction) {
 }
 
 template <typename Interface>
-Eigen::MatrixX3d Splitter::sub_points(const ShapeData& data, const Plan& plan, const Interface& interface_a) const {
+Eigen::MatrixX3d Splitter::sub_points(const ShapeData& data, const Plan& plan, const Interface& interface) const {
   const int da = plan.direction[0], db = plan.direction[1];
   const int na = families_[plan.family[0]].distribution.layers;
   const int nb = plan.two() ? families_[plan.family[1]].distribution.layers : 1;
-  const std::vector<double> zb =
-      plan.two() ? layer_interfaces(nb, families_[plan.family[1]].distribution.ratio) : std::vector<double>{};
   const int nn = static_cast<int>(data.reference.rows());
   Eigen::MatrixX3d q(na * nb * nn, 3);
   for (int kb = 0; kb < nb; ++kb)
     for (int ka = 0; ka < na; ++ka)
       for (int i = 0; i < nn; ++i) {
         Eigen::RowVector3d r = data.reference.row(i);
-        // The second direction first (constant ratio), so the first one's interfaces are read
+        // The second direction first (its interfaces do not depend on where the point is along
+        // either split direction: see place_sub_nodes), so the first one's interfaces are read
         // where the point lands across it.
-        if (plan.two()) r(db) = zb[kb] + 0.5 * (r(db) + 1.0) * (zb[kb + 1] - zb[kb]);
-        const double z0 = interface_a(r, ka), z1 = interface_a(r, ka + 1);
+        if (plan.two()) {
+          const double y0 = interface(1, r, kb), y1 = interface(1, r, kb + 1);
+          r(db) = y0 + 0.5 * (r(db) + 1.0) * (y1 - y0);
+        }
+        const double z0 = interface(0, r, ka), z1 = interface(0, r, ka + 1);
         r(da) = z0 + 0.5 * (r(da) + 1.0) * (z1 - z0);
         q.row((kb * na + ka) * nn + i) = r;
       }
@@ -197,9 +200,13 @@ const Eigen::MatrixXd& Splitter::uniform_values(Shape shape, const Plan& plan) {
   auto it = uniform_.find(key);
   if (it != uniform_.end()) return it->second;
   const ShapeData& data = shape_data(shape);
-  const LayerDistribution& a = families_[plan.family[0]].distribution;
-  const std::vector<double> z = layer_interfaces(a.layers, a.ratio);
-  const Eigen::MatrixX3d q = sub_points(data, plan, [&](const Eigen::RowVector3d&, int k) { return z[k]; });
+  std::array<std::vector<double>, 2> z;
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
+    const LayerDistribution& d = families_[plan.family[slot]].distribution;
+    z[slot] = layer_interfaces(d.layers, d.ratio);
+  }
+  const Eigen::MatrixX3d q =
+      sub_points(data, plan, [&](int slot, const Eigen::RowVector3d&, int k) { return z[slot][k]; });
   return uniform_.emplace(key, data.basis.values(q)).first->second;
 }
 
@@ -220,23 +227,27 @@ NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
   return id;
 }
 
-std::vector<std::vector<double>> Splitter::interfaces_of(std::size_t element) {
+Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element) {
   const mesh::Element& el = in_.elements()[element];
   const Plan& plan = plans_[element];
-  if (!families_[plan.family[0]].ratio) return {};
-  std::vector<std::vector<double>> z_of_vertex(num_vertices(el.shape));
-  bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
-  for (int v : direction_of(element, 0).bottom) {
-    const double r = ratio_at(in_.node(el.vertices[v]), element, plan.family[0]);
-    uniform = uniform && r == families_[plan.family[0]].distribution.ratio;
-    z_of_vertex[v] = layer_interfaces(layers(element, 0), r);
+  VertexInterfaces z_of_vertex;
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
+    const int family = plan.family[slot];
+    if (!families_[family].ratio) continue;
+    std::vector<std::vector<double>> z(num_vertices(el.shape));
+    bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
+    for (int v : direction_of(element, slot).bottom) {
+      const double r = ratio_at(in_.node(el.vertices[v]), element, family);
+      uniform = uniform && r == families_[family].distribution.ratio;
+      z[v] = layer_interfaces(layers(element, slot), r);
+    }
+    // Uniform: the cached basis values of the constant ratio give the same points.
+    if (!uniform) z_of_vertex[slot] = std::move(z);
   }
-  if (uniform) return {};  // the cached basis values of the constant ratio give the same points
   return z_of_vertex;
 }
 
-Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
-                                                  const std::vector<std::vector<double>>& z_of_vertex) const {
+Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const VertexInterfaces& z_of_vertex) const {
   const mesh::Element& el = in_.elements()[element];
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
@@ -246,22 +257,28 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
   // constant ratios they are the same for every element of a shape and plan: the basis values are
   // cached.
   SplitGeometry out;
-  if (z_of_vertex.empty()) {
+  std::array<std::vector<double>, 2> uniform;
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot)
+    uniform[slot] = layer_interfaces(layers(element, slot), families_[plan.family[slot]].distribution.ratio);
+  // Interfaces per bottom vertex, interpolated linearly in between (see RatioField). The first
+  // direction's at the foot of the point across it; the second's at the foot across it taken at
+  // the top of the first (a junction hex: along its wall foot L, where the wall layer's prisms
+  // meet it), so they depend on neither split coordinate and match those prisms' side faces.
+  const auto interface_at = [&](int slot, const Eigen::RowVector3d& q, int k) {
+    if (z_of_vertex[slot].empty()) return uniform[slot][k];
+    Eigen::MatrixX3d foot = q;
+    foot(0, plan.direction[slot]) = -1.0;
+    if (slot == 1) foot(0, plan.direction[0]) = 1.0;
+    const Eigen::MatrixXd w = data.linear.values(foot);
+    double z = 0.0;
+    for (int v : direction_of(element, slot).bottom) z += w(0, v) * z_of_vertex[slot][v][k];
+    return z;
+  };
+  if (z_of_vertex[0].empty() && z_of_vertex[1].empty()) {
     out.x =
         uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) *
         X;
   } else {
-    // Interfaces per bottom vertex, interpolated linearly in between (see RatioField).
-    const DirectionData& bottom = direction_of(element, 0);
-    const int d = plan.direction[0];
-    const auto interface_at = [&](const Eigen::RowVector3d& q, int k) {
-      Eigen::MatrixX3d foot = q;
-      foot(0, d) = -1.0;
-      const Eigen::MatrixXd w = data.linear.values(foot);
-      double z = 0.0;
-      for (int v : bottom.bottom) z += w(0, v) * z_of_vertex[v][k];
-      return z;
-    };
     out.x = map_points(data.basis, X, sub_points(data, plan, interface_at));
   }
 
@@ -269,10 +286,9 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element,
   const Eigen::MatrixX3d corners = reference_vertices(el.shape);
   for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
     const int d = plan.direction[slot], N = layers(element, slot);
-    const LayerDistribution& distribution = families_[plan.family[slot]].distribution;
-    const std::vector<double> uniform = layer_interfaces(N, distribution.ratio);
     for (int v : direction_of(element, slot).bottom) {
-      const std::vector<double>& z = slot == 0 && !z_of_vertex.empty() ? z_of_vertex[v] : uniform;
+      std::vector<double> z(N + 1);
+      for (int k = 0; k <= N; ++k) z[k] = interface_at(slot, corners.row(v), k);
       Eigen::MatrixX3d ends(4, 3);
       const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
       for (int j = 0; j < 4; ++j) {
@@ -458,9 +474,6 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
         throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " +
                                     std::to_string(e) + " is not one of the " + std::to_string(families_.size()) +
                                     " given");
-      if (slot == 1 && families_[family].ratio)
-        throw std::invalid_argument(caller_ + ": element " + std::to_string(e) +
-                                    ": a ratio field is supported on the first direction only");
       direction_data(s, dir[slot]);
     }
     if (dir[1] == dir[0])
@@ -494,7 +507,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   };
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
-    std::vector<std::vector<std::vector<double>>> interfaces(count);
+    std::vector<VertexInterfaces> interfaces(count);
     for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k]);
     std::vector<SplitGeometry> geometry(count);
     detail::parallel_for(count, true,

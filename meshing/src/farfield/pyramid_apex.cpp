@@ -1,46 +1,22 @@
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
-#include "semimesh/ho/validity.hpp"
+#include "semimesh/nearfield/pyramid_apex.hpp"
 
-#include <Eigen/Geometry>
-
-#include <algorithm>
 #include <sstream>
 
 namespace semimesh::farfield {
 
-constexpr double kHeightPerShortestEdge = 0.3;
-
 Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
-  double perimeter = 0.0, shortest = 1e300;
-  for (int i = 0; i < 4; ++i) {
-    const Eigen::Vector3d& p = quad[i];
-    const Eigen::Vector3d& q = quad[(i + 1) % 4];
-    centroid += 0.25 * p;
-    normal += p.cross(q);  // Newell: twice the vector area of the (possibly warped) quad
-    perimeter += (q - p).norm();
-    shortest = std::min(shortest, (q - p).norm());
-  }
+  if (const auto apex = nearfield::pyramid_apex(quad)) return *apex;
+  const Eigen::Vector3d centroid = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
   std::ostringstream where;
   where << "(" << centroid.x() << ", " << centroid.y() << ", " << centroid.z() << ")";
-  if (normal.norm() <= 1e-14 * perimeter * perimeter)
+  double perimeter = 0.0;
+  for (int i = 0; i < 4; ++i) perimeter += (quad[(i + 1) % 4] - quad[i]).norm();
+  // Twice the vector area (Newell), as nearfield::pyramid_apex measures it.
+  if ((quad[2] - quad[0]).cross(quad[3] - quad[1]).norm() <= 1e-14 * perimeter * perimeter)
     throw FarFieldError("pyramid on the skin quad at " + where.str() + ": the quad has zero area");
-  normal.normalize();
-
-  Eigen::MatrixX3d nodes(5, 3);
-  for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
-  // Two pyramids on skin quads meeting at a right-angled concave corner (the H-type's wake root and
-  // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
-  // degrees: 2 height / edge <= 0.6 for every edge.
-  // Lower first (flat quads), then higher: a warped quad needs the apex above all four corner planes.
-  const double start = kHeightPerShortestEdge * shortest;
-  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) {
-    const Eigen::Vector3d apex = centroid + factor * start * normal;
-    nodes.row(4) = apex.transpose();
-    if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
-  }
   throw FarFieldError("pyramid on the skin quad at " + where.str() +
                       ": no apex height gives a valid pyramid (is the quad folded or far from planar?)");
 }

@@ -170,11 +170,16 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
   const CadAttachment& at = body.cad[r];
+  // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
+  // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
+  // foot projected onto the edge of its face, raised, could land on the next root's own).
+  CadAttachment from_root;
   if (at.kind == CadAttachment::Vertex) {
     const int c = spanwise_curve(model, at.entity, roles.wall_surface);
     const auto p = model.curve(c).project(j.halo);
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
+    from_root = {CadAttachment::Curve, c, model.curve(c).project(j.root).t, 0.0};
   } else {
     const auto it = root_surface.find(at.entity);
     if (at.kind != CadAttachment::Curve || it == root_surface.end())
@@ -187,9 +192,13 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
                            ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
+    const cad::Vec2 root_uv = face.project(j.root).uv;
+    from_root = {CadAttachment::Surface, it->second, root_uv.x(), root_uv.y()};
   }
-  if (wall.height(j.strip_top) < delta_wall)
-    j.strip_top = detail::move_to_height(model, wall, j.strip_top, j.strip_top_cad, delta_wall);
+  if (wall.height(j.strip_top) < delta_wall) {
+    j.strip_top_cad = from_root;
+    j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
+  }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
@@ -228,6 +237,56 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
   return {strip, tip};
+}
+
+// The root curve a root node lies on (of its vertex: the first curve on the wall).
+int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) {
+  if (root.kind == CadAttachment::Curve) return root.entity;
+  for (int c : model.curves_of_vertex(root.entity)) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; })) return c;
+  }
+  return -1;
+}
+
+// The strip top next to body node `node` (the node itself, or one of a triangle it shares), -1 when
+// it is away from the root strip.
+int strip_top_next_to(const BodyMesh& layer, const std::map<int, int>& loop_index, int node) {
+  if (loop_index.count(node)) return node;
+  for (const auto& t : layer.triangles)
+    if (std::count(t.begin(), t.end(), node))
+      for (int v : t)
+        if (loop_index.count(v)) return v;
+  return -1;
+}
+
+// The wing layer's offsets at the strip tops are pinned at the halo: where the layer cannot be
+// built next to them even at its thinnest, the root loop is too short (too few segments, too tight
+// a turn) for the thickness and the wall layer's thickness: said so, naming the root curve.
+detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const BodyMesh& layer,
+                                              const std::vector<std::vector<int>>& neighbours,
+                                              const std::vector<Vec3>& normals,
+                                              const detail::OffsetConstraints& constraints, const ShellParams& params,
+                                              const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
+                                              int wall, double delta_wall) {
+  try {
+    return detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  } catch (const detail::LayerFoldError& fold) {
+    std::map<int, int> loop_index;
+    for (std::size_t i = 0; i < loop.size(); ++i) loop_index[loop[i]] = static_cast<int>(i);
+    const int top = strip_top_next_to(layer, loop_index, fold.node);
+    if (top < 0) throw;
+    const int curve = root_curve_of(model, root_cad[loop_index.at(top)], wall);
+    throw NearFieldError("near field: the root loop is too short for the requested sizes along " +
+                         (curve >= 0 ? curve_label(model, curve) : std::string("the root")) + " near " +
+                         point_label(layer.points[top]) + ": the wing layer (thickness " +
+                         number_label(params.thickness) + ") cannot meet the halo above the root strip (wall layer "
+                         "thickness " + number_label(delta_wall) + ") without folding at " +
+                         point_label(layer.points[fold.node]) + ", even at min_thickness_fraction (" +
+                         number_label(params.min_thickness_fraction) +
+                         "); use a smaller thickness or wall layer thickness, or more segments along the root "
+                         "(smaller sizing sizes)");
+  }
 }
 
 }  // namespace
@@ -303,7 +362,8 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
   }
-  const detail::LayerOffsets offsets = detail::offset_body_nodes(model, layer, neighbours, normals, constraints, params);
+  const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
+                                                                loop, root_cad, roles.wall_surface, delta_wall);
 
   JunctionShell shell;
   NearField& field = shell.field;

@@ -3,6 +3,7 @@
 #include "semimesh/ho/element_type.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/nearfield/error.hpp"
+#include "semimesh/nearfield/pyramid_apex.hpp"
 
 #include "junction_shell.hpp"
 #include "labels.hpp"
@@ -333,6 +334,18 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     const std::vector<NodeId> left = along(f.nodes[0], f.nodes[3]), right = along(f.nodes[1], f.nodes[2]);
     for (std::size_t k = 0; k + 1 < left.size(); ++k)
       field.skin.push_back({{left[k], right[k], right[k + 1], left[k + 1]}, 4});
+  }
+  // The block's outer faces must stay flat enough to carry the far field's pyramids.
+  std::set<NodeId> in_wake;
+  for (const auto& [p, ids] : swept) in_wake.insert(ids.begin() + 1, ids.end());
+  for (const SkinFace& f : field.skin) {
+    if (f.count != 4 || std::none_of(f.nodes.begin(), f.nodes.end(), [&](NodeId v) { return in_wake.count(v) > 0; }))
+      continue;
+    if (!pyramid_apex({m.node(f.nodes[0]), m.node(f.nodes[1]), m.node(f.nodes[2]), m.node(f.nodes[3])}))
+      fail((wake.widening_deg > 0.0 ? "wake.widening = " + number_label(wake.widening_deg) + " with " : std::string()) +
+           "wake.direction = " + direction_label(wake) + ": the wake block folds: its outer face at " +
+           point_label(m.node(f.nodes[0])) + " is too warped to carry a pyramid; use a smaller widening or a "
+           "direction closer to the chord");
   }
   return std::move(field);
 }

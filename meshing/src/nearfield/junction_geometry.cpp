@@ -37,7 +37,8 @@ std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<in
       WallCurve w{c, use.surface, 360.0, 0.0};
       const auto bounds = curve.bounds();
       for (int k = 0; k < samples; ++k) {
-        const double t = bounds.lo + (k + 0.5) / samples * bounds.length();
+        // Ends included: a swept wing leans most at its leading-edge vertex.
+        const double t = bounds.lo + static_cast<double>(k) / (samples - 1) * bounds.length();
         const cad::CurveDerivatives d = curve.derivatives(t);
         const Vec3 n_face = face.normal(face.project(d.p).uv);
         const Vec3 n_wall = wall_face.normal(wall_face.project(d.p).uv);

@@ -152,20 +152,22 @@ LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
       reasons[i] |= bad[i];
       reducible = true;
       if (thickness[i] <= thinnest_allowed * (1.0 + 1e-12) || round == max_rounds)
-        throw NearFieldError(
+        throw LayerFoldError(
             "near field: cannot build the prism layer on " + surface_label(model, body.node_surface[i]) + " at " +
             point_label(body.points[i]) + ": " + reason_text(bad[i]) + " even at min_thickness_fraction (" +
             number_label(params.min_thickness_fraction) + ") x thickness (" + number_label(params.thickness) +
-            "); use a smaller 'thickness' or a finer surface mesh there");
+            "); use a smaller 'thickness' or a finer surface mesh there",
+            i);
       thickness[i] = std::max(thickness[i] * params.reduction_factor, thinnest_allowed);
     }
     if (!reducible) {
       const int i =
           static_cast<int>(std::find_if(bad.begin(), bad.end(), [](unsigned b) { return b != 0; }) - bad.begin());
-      throw NearFieldError("near field: the prism layer above the root strip on " +
+      throw LayerFoldError("near field: the prism layer above the root strip on " +
                            surface_label(model, body.node_surface[i]) + " at " + point_label(body.points[i]) +
                            " is not sound: " + reason_text(bad[i]) +
-                           "; use a smaller 'wall_layer.thickness' or 'thickness', or a finer surface mesh there");
+                           "; use a smaller 'wall_layer.thickness' or 'thickness', or a finer surface mesh there",
+                           i);
     }
     limit_gradation(body, neighbours, params.gradation, pinned, thickness);
   }

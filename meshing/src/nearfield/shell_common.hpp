@@ -4,6 +4,7 @@
 
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/body_mesh.hpp"
+#include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/near_field.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 
@@ -36,8 +37,15 @@ struct LayerOffsets {
   std::vector<Warning> warnings;         ///< one per reduced region
 };
 
+/// The layer cannot be built at body node `node` (its message names the place).
+class LayerFoldError : public NearFieldError {
+ public:
+  LayerFoldError(const std::string& message, int node) : NearFieldError(message), node(node) {}
+  int node;
+};
+
 /// Offsets x + thickness n along the node normals, reducing the thickness where prisms would fold
-/// or the layer would crowd another part of the body (see o_shell.hpp). Throws NearFieldError.
+/// or the layer would crowd another part of the body (see o_shell.hpp). Throws LayerFoldError.
 LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
                                const std::vector<std::vector<int>>& neighbours, const std::vector<Vec3>& normals,
                                const OffsetConstraints& constraints, const ShellParams& params);

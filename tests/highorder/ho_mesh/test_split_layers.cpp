@@ -266,6 +266,35 @@ TEST(SplitLayers, HexSplitInTwoDirections) {
   EXPECT_EQ(referenced.size(), 105u);
 }
 
+// A junction-like hex split along zeta (first direction, constant ratio) and eta (second, a ratio
+// field): the eta interfaces follow the field's ratios at the two vertices of the foot at the top
+// of zeta (xi = -1 and 1, eta = -1, zeta = 1), linearly in xi, whatever the zeta of the node.
+TEST(SplitLayers, RatioFieldOnTheSecondDirectionFollowsTheFootAtTheTopOfTheFirst) {
+  const int P = 2;
+  const mesh::Mesh coarse = single_element(Shape::Hexahedron, P, NodeSet::Equispaced, hex_map);
+  const RatioField ratio = [](const Eigen::Vector3d& x) { return 2.0 + 0.5 * x(0) + 0.25 * x(2); };
+  const int Na = 3, Nb = 4;
+  const mesh::Mesh fine = split_layers(coarse, std::vector<LayerSplit>{{0, {2, 1}, {0, 1}}},
+                                       {SplitFamily{{Na, 1.5}, {}}, SplitFamily{{Nb, 2.0}, ratio}}, nullptr, nullptr);
+  ASSERT_EQ(fine.elements().size(), static_cast<std::size_t>(Na * Nb));
+  const std::vector<double> left = expected_interfaces(Nb, ratio(hex_map({-1, -1, 1})));
+  const std::vector<double> right = expected_interfaces(Nb, ratio(hex_map({1, -1, 1})));
+  ASSERT_NE(left, right);
+  for (std::size_t e = 0; e < fine.elements().size(); ++e) {
+    EXPECT_TRUE(certify_jacobian(Shape::Hexahedron, P, NodeSet::Equispaced, fine.element_coordinates(e)).valid);
+    for (mesh::NodeId id : fine.element_nodes(e)) {
+      const Eigen::Vector3d q = hex_inverse(fine.node(id));
+      const double t = 0.5 * (q(0) + 1.0);
+      double best = 1e9;  // eta at an interface of the interpolated distribution or a mid-layer
+      for (int k = 0; k < Nb; ++k) {
+        const double y0 = (1 - t) * left[k] + t * right[k], y1 = (1 - t) * left[k + 1] + t * right[k + 1];
+        for (double y : {y0, 0.5 * (y0 + y1), y1}) best = std::min(best, std::abs(q(1) - y));
+      }
+      EXPECT_LT(best, 1e-12) << "node " << id << " at reference " << q.transpose();
+    }
+  }
+}
+
 TEST(SplitLayers, RejectsBadInput) {
   const mesh::Mesh coarse = single_element(Shape::Prism, 2, NodeSet::GLL, prism_map);
   EXPECT_THROW(split_layers(coarse, {1}, {5, 2.0}), std::invalid_argument);

@@ -33,6 +33,9 @@ class AtomicFile {
   }
   /// Bytes appended so far.
   std::size_t bytes_written() const { return written_ + buffer_.size(); }
+  /// Replaces bytes already appended, at [position, position + bytes) (a placeholder whose value
+  /// is known only once what follows it is written); throws std::logic_error past the end.
+  void overwrite(std::size_t position, const void* data, std::size_t bytes);
   /// Flushes, fsyncs and renames the temporary file to the final path; throws on any failure.
   void commit();
 

@@ -5,8 +5,9 @@
 // Mesh::group_names()[i]; "region": the volume region id of a volume cell (names in a comment), -1
 // for boundary faces.
 // Encodings: CompressedBinary (ParaView's own default): every array appended as raw binary,
-// zlib-compressed in 64 KiB blocks (compressor="vtkZLibDataCompressor", header_type UInt64); or
-// ASCII (every reader, much larger). Pyramids are linear VTK_PYRAMID cells (VTK 9.1 has no
+// zlib-compressed in 64 KiB blocks (compressor="vtkZLibDataCompressor", header_type UInt64),
+// written block by block as compressed; or ASCII (every reader, much larger). Points are Float64;
+// connectivity and offsets Int32 (Int64 only when a value could overflow it). Pyramids are linear VTK_PYRAMID cells (VTK 9.1 has no
 // Lagrange pyramid): their curvature is not shown.
 #pragma once
 

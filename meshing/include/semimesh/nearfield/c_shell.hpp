@@ -9,7 +9,7 @@
 //  - W_i, the top of the root strip: the foot of H_i on R_i's own wing surface (on the spanwise
 //    curve leaving R_i when R_i is a CAD vertex), so H_i - W_i is the wing's normal at W_i; where
 //    the wing leans over the fluid (angle > 90 degrees) that foot sinks below delta_wall, and W_i is
-//    raised along the wing to the height delta_wall;
+//    the point at the height delta_wall straight up the wing from R_i (its chordwise parameter);
 //  - L_i = H_i - delta_wall n_wall, on the wall: the wing layer's footprint; where the wing leans
 //    over the fluid that foot comes nearer than delta_wing to the root, and L_i is moved out along
 //    e_i to delta_wing from R_i (the wall layer's prisms there lean to meet the halo).

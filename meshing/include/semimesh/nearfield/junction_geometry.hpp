@@ -20,7 +20,7 @@ struct WallCurve {
 };
 
 /// Every curve shared by one of `body_surfaces` and `wall`, with its angle range from both surfaces'
-/// fluid normals at `samples` points along it (the side of the body face from the loop direction:
+/// fluid normals at `samples` points along it, both ends included (the side of the body face from the loop direction:
 /// the face lies on the left of its loop seen from the fluid).
 std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<int>& body_surfaces, int wall,
                                    int samples = 9);

@@ -71,6 +71,10 @@ struct WallLayerConfig {
   double thickness = 0.1;                   ///< delta_wall, model units
   ho::LayerDistribution split;              ///< layers, ratio
   std::optional<double> first_cell_height;  ///< instead of ratio: height of the first layer
+  /// Optional, as boundary_layer's: the ratio linear along A -> B (by each wall vertex's projection),
+  /// ratio_end at B; e.g. a wall layer growing downstream. Both keys or neither.
+  std::optional<std::array<double, 6>> ratio_line;
+  std::optional<double> ratio_end;
 };
 
 /// [boundary_layer]: splitting of the near-field elements into N layers.

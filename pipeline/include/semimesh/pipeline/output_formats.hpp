@@ -2,6 +2,7 @@
 // used by the config's output.formats, the output paths and the write stage.
 #pragma once
 
+#include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
 #include <string>
@@ -13,7 +14,8 @@ struct OutputFormat {
   std::string name;       ///< as in output.formats
   std::string extension;  ///< of BASENAME.EXT
   std::string extension_when_shared;  ///< used instead when another requested format has the same extension
-  void (*write)(const mesh::Mesh& mesh, const std::string& path);
+  /// Writes the mesh at its equispaced node positions (computed once for every format).
+  void (*write)(const mesh::Mesh& mesh, const io::EquispacedNodes& nodes, const std::string& path);
 };
 
 /// Every format, in the order docs/config.md lists them.

@@ -73,8 +73,9 @@ struct SplitFamily {
 
 /// An element to split, along one reference direction (0 xi, 1 eta, 2 zeta; prisms: 2) or two
 /// (hexes: direction[1] >= 0, e.g. a root junction hex across both wall normals), each with the
-/// family (index into the families) whose layers it takes. A ratio field is allowed on the first
-/// direction only.
+/// family (index into the families) whose layers it takes. A ratio field on the second direction
+/// is read at the top of the first (a junction hex: along its wall foot, where the wall layer's
+/// prisms meet it), so it varies along the third direction only.
 struct LayerSplit {
   std::size_t element = 0;
   std::array<int, 2> direction{2, -1};

@@ -1,0 +1,42 @@
+#include "semimesh/nearfield/pyramid_apex.hpp"
+
+#include "semimesh/ho/validity.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace semimesh::nearfield {
+
+constexpr double kHeightPerShortestEdge = 0.3;
+
+std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
+  double perimeter = 0.0, shortest = 1e300;
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Vector3d& p = quad[i];
+    const Eigen::Vector3d& q = quad[(i + 1) % 4];
+    centroid += 0.25 * p;
+    normal += p.cross(q);  // Newell: twice the vector area of the (possibly warped) quad
+    perimeter += (q - p).norm();
+    shortest = std::min(shortest, (q - p).norm());
+  }
+  if (normal.norm() <= 1e-14 * perimeter * perimeter) return std::nullopt;
+  normal.normalize();
+
+  Eigen::MatrixX3d nodes(5, 3);
+  for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
+  // Two pyramids on skin quads meeting at a right-angled concave corner (the H-type's wake root and
+  // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
+  // degrees: 2 height / edge <= 0.6 for every edge.
+  // Lower first (flat quads), then higher: a warped quad needs the apex above all four corner planes.
+  const double start = kHeightPerShortestEdge * shortest;
+  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) {
+    const Eigen::Vector3d apex = centroid + factor * start * normal;
+    nodes.row(4) = apex.transpose();
+    if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
+  }
+  return std::nullopt;
+}
+
+}  // namespace semimesh::nearfield
