@@ -229,7 +229,8 @@ TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
 // A shell 12 chords thick on a wing of chord 0.05. Refused ("the root loop is too short") while
 // the surface mesher triangulated the wing's stretched parameters (u along 0.05, v along the span
 // of 1.5) unscaled; in scaled parameters (since #13) its surface mesh is isotropic and the shell
-// builds, its linear elements valid. The refusal itself needs a new case that reaches it.
+// builds, its linear elements valid. The refusal keeps its test through the pipeline's own sizes
+// (PipelineRunCType.BadInputNamesTheEntityAndWritesNothing).
 TEST(CShell, AShortRootLoopUnderAThickShellIsValid) {
   mock_cad::NacaWingParams tiny = naca("0012", true);
   tiny.chord = 0.05;
