@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: install the dependencies, build semimesh (Release, build/) and mesh the paper's case:
 # a NACA 0012 wing (chord 1, squared-off trailing edge) standing on a wall, far field about 10 chords
-# away, O-type near field curved at order 4 and split into 5 layers with ratio 2. Writes the mesh
+# away, with the paper's H-type near field (wall layer, junction, a wake block of hexes standing a gap
+# above the wall layer), curved at order 4 and split into 5 layers with ratio 2. Writes the mesh
 # (MSH 4.1, VTU, Nektar++ XML) and report.json into out/naca0012_wing/.
 set -euo pipefail
 cd "$(dirname "$0")/.."

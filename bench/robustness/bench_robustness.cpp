@@ -26,7 +26,7 @@
 #define SEMIMESH_BINARY "semimesh"
 #endif
 #ifndef SEMIMESH_EXAMPLE
-#define SEMIMESH_EXAMPLE "examples/naca0012_wing.toml"
+#define SEMIMESH_EXAMPLE "examples/naca0012_wing_o.toml"
 #endif
 
 namespace {

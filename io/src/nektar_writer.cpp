@@ -353,7 +353,8 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
 
   // CURVED: MeshCurvedInfo records {id, entityid, npoints, ptid, ptoffset, ptype} for edges and
   // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
-  // Curves share their points through INDEX: every edge/face node is stored once.
+  // Curves share their points through INDEX: every edge/face node is stored once. INDEX cannot be
+  // left out: MeshGraphIOXmlCompressed::v_ReadCurves requires it and reads every point through it.
   std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
   std::vector<mesh::NodeId> point_node;
   auto point_of = [&](mesh::NodeId id) {

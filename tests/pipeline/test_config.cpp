@@ -341,15 +341,15 @@ TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
 }
 
 TEST(Config, TheExamplesParse) {
-  for (const char* name : {"naca0012_wing.toml", "naca0012_wing_c.toml", "naca0012_wing_h.toml"}) {
+  for (const char* name : {"naca0012_wing.toml", "naca0012_wing_o.toml", "naca0012_wing_c.toml"}) {
     const Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/" + name);
     EXPECT_EQ(c.highorder.order, 4) << name;
     EXPECT_EQ(c.boundary_layer.split.layers, 5) << name;
     EXPECT_EQ(c.boundary_layer.split.ratio, 2.0) << name;
     EXPECT_NEAR(c.nearfield.shell.thickness, 0.1, 0.05) << name;
   }
-  // The paper's H-type near field.
-  const Config paper = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing_h.toml");
+  // The paper's example is its H-type near field.
+  const Config paper = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/examples/naca0012_wing.toml");
   EXPECT_EQ(paper.nearfield.topology, "H");
   EXPECT_GT(paper.wake.gap, 0.0);
   EXPECT_EQ(paper.wake.ratio_end, 1.0);

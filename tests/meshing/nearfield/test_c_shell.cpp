@@ -226,10 +226,19 @@ TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {
   EXPECT_TRUE(contains(what, "0.9")) << what;
 }
 
-// The too-short root loop (its own error naming the root curve and both thicknesses) is tested end
-// to end in tests/pipeline/test_pipeline_run.cpp (PipelineRunCType.BadInputNamesTheEntityAndWritesNothing):
-// since main's surface mesher changes (merged 22:30) the 0.05-chord wing of this file's fixture
-// meshes with a 0.6 shell, so it is no bad input here any more.
+// A shell 12 chords thick on a wing of chord 0.05. Refused ("the root loop is too short") while
+// the surface mesher triangulated the wing's stretched parameters (u along 0.05, v along the span
+// of 1.5) unscaled; in scaled parameters (since #13) its surface mesh is isotropic and the shell
+// builds, its linear elements valid. The refusal keeps its test through the pipeline's own sizes
+// (PipelineRunCType.BadInputNamesTheEntityAndWritesNothing).
+TEST(CShell, AShortRootLoopUnderAThickShellIsValid) {
+  mock_cad::NacaWingParams tiny = naca("0012", true);
+  tiny.chord = 0.05;
+  const WingCase c = wing_case(tiny);
+  const NearField f = build_c_shell(*c.model, c.meshes, c.roles, shell(0.6), {}, 0.04);
+  expect_valid_linear_elements(f);
+  EXPECT_EQ(static_cast<std::size_t>(f.junction_hexes), f.footprint.size());
+}
 
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
   for (const auto& wing :

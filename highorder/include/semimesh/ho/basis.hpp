@@ -30,8 +30,12 @@ class LagrangeBasis {
   int size() const;                        ///< number of nodes = number of functions
   const Eigen::MatrixX3d& nodes() const;  ///< (size, 3) reference nodes, canonical order
 
-  /// Values of every function at reference points (npoints, 3): (npoints, size).
+  /// Values of every function at reference points (npoints, 3): (npoints, size). Quadrilaterals,
+  /// hexahedra and prisms as products of their factors' values (segments, triangle).
   Eigen::MatrixXd values(const Eigen::MatrixX3d& points) const;
+  /// The same through the modal basis and the inverse Vandermonde matrix, for every shape: the
+  /// reference the product path is tested against.
+  Eigen::MatrixXd values_by_modes(const Eigen::MatrixX3d& points) const;
   /// d/dxi_k of every function, k = 0, 1, 2; each (npoints, size). Unused directions are 0.
   std::array<Eigen::MatrixXd, 3> gradients(const Eigen::MatrixX3d& points) const;
 
