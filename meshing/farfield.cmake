@@ -16,6 +16,6 @@ add_library(semimesh_farfield
 add_library(semimesh::farfield ALIAS semimesh_farfield)
 target_include_directories(semimesh_farfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include
                                              PRIVATE ${TETGEN_INCLUDE_DIR})
-target_link_libraries(semimesh_farfield PUBLIC semimesh_mesh semimesh_cadapi
+target_link_libraries(semimesh_farfield PUBLIC semimesh_nearfield semimesh_mesh semimesh_cadapi
                                         PRIVATE semimesh_surface_mesh CGAL::CGAL ${TET_LIBRARY} semimesh_warnings)
 set_target_properties(semimesh_farfield PROPERTIES POSITION_INDEPENDENT_CODE ON)
