@@ -8,22 +8,51 @@
 
 namespace semimesh::pipeline {
 
+using Paths = std::vector<std::string>;
+using io::MshEncoding, io::MshVersion;
+
 const std::vector<OutputFormat>& output_formats() {
   static const std::vector<OutputFormat> formats = {
-      {"msh41", ".msh", "", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V41); }},
-      {"msh41-binary", ".msh", ".bin.msh",
-       [](const mesh::Mesh& m, const std::string& p) {
-         io::write_msh(m, p, io::MshVersion::V41, io::MshEncoding::Binary);
+      {"msh41", ".msh", "",
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_msh(m, p, MshVersion::V41);
+         return Paths{p};
        }},
-      {"msh22", ".msh", ".v22.msh", [](const mesh::Mesh& m, const std::string& p) { io::write_msh(m, p, io::MshVersion::V22); }},
+      {"msh41-binary", ".msh", ".bin.msh",
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_msh(m, p, MshVersion::V41, MshEncoding::Binary);
+         return Paths{p};
+       }},
+      {"msh22", ".msh", ".v22.msh",
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_msh(m, p, MshVersion::V22);
+         return Paths{p};
+       }},
       {"vtu", ".vtu", "",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::CompressedBinary); }},
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback& progress) {
+         io::write_vtu(m, p, io::VtuEncoding::CompressedBinary, progress);
+         return Paths{p};
+       }},
       {"vtu-ascii", ".vtu", ".ascii.vtu",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_vtu(m, p, io::VtuEncoding::Ascii); }},
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_vtu(m, p, io::VtuEncoding::Ascii);
+         return Paths{p};
+       }},
+      {"vtm", ".vtm", "",
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback& progress) {
+         io::write_vtm(m, p, progress);
+         return Paths{p, io::vtm_piece_folder(p)};
+       }},
       {"nektar", ".xml", "",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Compressed); }},
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_nektar_xml(m, p, io::NektarEncoding::Compressed);
+         return Paths{p};
+       }},
       {"nektar-xml", ".xml", ".plain.xml",
-       [](const mesh::Mesh& m, const std::string& p) { io::write_nektar_xml(m, p, io::NektarEncoding::Plain); }},
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
+         io::write_nektar_xml(m, p, io::NektarEncoding::Plain);
+         return Paths{p};
+       }},
   };
   return formats;
 }

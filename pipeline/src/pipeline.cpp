@@ -44,10 +44,28 @@ constexpr double kCurvedBodyVolumeFraction = 0.02;
 // the pre-cut skin compute the same points up to round-off.
 constexpr double kWeldTolerance = 1e-9;
 
-// Runs one stage: reports its start and end, and turns its exceptions into RunError.
+// The stage's progress callback: forwards to `progress`, never letting the fraction go back (the
+// parts of a stage report at their own start; a part may end below where the next starts).
+ProgressCallback stage_progress(Progress& progress) {
+  auto last = std::make_shared<double>(0.0);
+  return [&progress, last](double fraction, const std::string& step) {
+    *last = std::max(*last, std::clamp(fraction, 0.0, 1.0));
+    progress.stage_progress(*last, step);
+  };
+}
+
+// Runs one stage: reports its start and end, and turns its exceptions into RunError. A body that
+// takes a ProgressCallback reports its progress through it.
 template <typename Stage>
 auto stage(const std::string& name, Progress& progress, RunResult& result, Stage&& body) {
   progress.stage_started(name);
+  const ProgressCallback report = stage_progress(progress);
+  auto call = [&] {
+    if constexpr (std::is_invocable_v<Stage&, const ProgressCallback&>)
+      return body(report);
+    else
+      return body();
+  };
   const auto start = std::chrono::steady_clock::now();
   auto finish = [&] {
     const StageTiming timing{name, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
@@ -60,11 +78,11 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     return RunError(cause, name, what.rfind(prefix, 0) == 0 ? what : prefix + what);
   };
   try {
-    if constexpr (std::is_void_v<decltype(body())>) {
-      body();
+    if constexpr (std::is_void_v<decltype(call())>) {
+      call();
       finish();
     } else {
-      auto value = body();
+      auto value = call();
       finish();
       return value;
     }
@@ -268,8 +286,8 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     }
     return surface::SizeField(model, params);
   });
-  surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
-    return surface::mesh_model_surfaces(model, size, mesh_options(model, config));
+  surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config), report);
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -335,9 +353,9 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   for (const nearfield::Warning& w : near.warnings)
     result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
                                           w.where.y(), w.where.z()));
-  farfield::FarField far = stage("far field", progress, result, [&] {
+  farfield::FarField far = stage("far field", progress, result, [&](const ProgressCallback& report) {
     return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall,
-                                     junction ? config.wall_layer.thickness : 0.0);
+                                     junction ? config.wall_layer.thickness : 0.0, report);
   });
   result.far_field = far.stats;
   return {std::move(far.mesh), std::move(far.stacks), std::move(wake)};
@@ -347,17 +365,18 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
 // what curving folded. What cannot be repaired stays invalid and is reported by the checks (exit 2).
 mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear, Progress& progress,
                        RunResult& result) {
-  mesh::Mesh curved = stage("curve", progress, result, [&] {
-    return ho::curve_mesh(linear, model, config.highorder, &result.curving);
+  mesh::Mesh curved = stage("curve", progress, result, [&](const ProgressCallback& report) {
+    return ho::curve_mesh(linear, model, config.highorder, &result.curving, report);
   });
   result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
   if (result.curving.optimisation_fallbacks > 0)
     result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
                                           "within {} iterations; they keep their parameter-space positions",
                                           result.curving.optimisation_fallbacks, config.highorder.spring_iterations));
-  return stage("repair", progress, result, [&] {
+  return stage("repair", progress, result, [&](const ProgressCallback& report) {
     const double floor = config.checks.min_scaled_jacobian;
-    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor);
+    // Certifying every element is the bulk of the stage; repairing the few invalid ones the rest.
+    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor, progress_part(report, 0.0, 0.9));
     if (validity.all_valid()) return std::move(curved);
     ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
     const ho::RepairStats& stats = repaired.stats;
@@ -388,9 +407,9 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     result.wake.ratio_first = ratio;
     result.wake.ratio_last = config.wake.ratio_end;
   }
-  StackSplit split = stage("split", progress, result, [&] {
+  StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
-                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}});
+                                   {ho::LayerDistribution{wall_layers, wall_ratio}, {}}, report);
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
@@ -432,8 +451,11 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
 
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            Progress& progress, RunResult& result) {
-  stage("checks", progress, result, [&] {
+  stage("checks", progress, result, [&](const ProgressCallback& report) {
+    // Rough shares of the stage's time: the certification of every element is most of it.
+    if (report) report(0.0, "conformity");
     result.conformity = checks::check_conformity(result.mesh);
+    if (report) report(0.05, "volume");
     std::vector<const surface::SurfaceMesh*> body, box;
     for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
     for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
@@ -443,7 +465,9 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     if (result.mesh.order() > 1)
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
-    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian);
+    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
+                                             progress_part(report, 0.1, 0.9));
+    if (report) report(0.9, "geometric error");
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
@@ -458,14 +482,24 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 }  // namespace
 
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
-  stage("write", progress, result, [&] {
+  stage("write", progress, result, [&](const ProgressCallback& report) {
     const std::vector<std::string> paths = output_paths(config.output);
+    // Progress: an equal part per mesh file, and one for the pictures and the report.
+    const double parts = static_cast<double>(config.output.formats.size() + 1);
     try {
       std::filesystem::create_directories(config.output.directory);
       for (std::size_t i = 0; i < config.output.formats.size(); ++i) {
-        output_format(config.output.formats[i]).write(result.mesh, paths[i]);
-        result.written_files.push_back(paths[i]);
+        const std::string file = std::filesystem::path(paths[i]).filename().string();
+        const ProgressCallback part = progress_part(report, i / parts, (i + 1) / parts);
+        if (part) part(0.0, file);
+        for (const std::string& written :
+             output_format(config.output.formats[i])
+                 .write(result.mesh, paths[i],
+                        part ? [&](double f, const std::string& step) { part(f, step.empty() ? file : file + ": " + step); }
+                             : ProgressCallback{}))
+          result.written_files.push_back(written);
       }
+      if (report) report((parts - 1) / parts, config.output.pictures ? "pictures" : "report.json");
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =
@@ -484,7 +518,7 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
     } catch (...) {
       // Leave no partial output: remove what this run wrote (older files of other runs stay).
       std::error_code ignored;
-      for (const std::string& p : result.written_files) std::filesystem::remove(p, ignored);
+      for (const std::string& p : result.written_files) std::filesystem::remove_all(p, ignored);
       result.written_files.clear();
       throw;
     }

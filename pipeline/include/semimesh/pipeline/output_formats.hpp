@@ -3,6 +3,7 @@
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <string>
 #include <vector>
@@ -13,7 +14,9 @@ struct OutputFormat {
   std::string name;       ///< as in output.formats
   std::string extension;  ///< of BASENAME.EXT
   std::string extension_when_shared;  ///< used instead when another requested format has the same extension
-  void (*write)(const mesh::Mesh& mesh, const std::string& path);
+  /// Writes the file at `path` atomically (progress: per part of the file, where the writer has
+  /// parts); returns what it wrote: the file, and for vtm also its folder of pieces.
+  std::vector<std::string> (*write)(const mesh::Mesh& mesh, const std::string& path, const ProgressCallback& progress);
 };
 
 /// Every format, in the order docs/config.md lists them.
