@@ -14,18 +14,18 @@ using io::MshEncoding, io::MshVersion;
 const std::vector<OutputFormat>& output_formats() {
   static const std::vector<OutputFormat> formats = {
       {"msh41", ".msh", "",
-       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
-         io::write_msh(m, p, MshVersion::V41);
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback& progress) {
+         io::write_msh(m, p, MshVersion::V41, MshEncoding::Ascii, progress);
          return Paths{p};
        }},
       {"msh41-binary", ".msh", ".bin.msh",
-       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
-         io::write_msh(m, p, MshVersion::V41, MshEncoding::Binary);
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback& progress) {
+         io::write_msh(m, p, MshVersion::V41, MshEncoding::Binary, progress);
          return Paths{p};
        }},
       {"msh22", ".msh", ".v22.msh",
-       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback&) {
-         io::write_msh(m, p, MshVersion::V22);
+       [](const mesh::Mesh& m, const std::string& p, const ProgressCallback& progress) {
+         io::write_msh(m, p, MshVersion::V22, MshEncoding::Ascii, progress);
          return Paths{p};
        }},
       {"vtu", ".vtu", "",
