@@ -1,12 +1,14 @@
 #include "cad_info.hpp"
 
 #include "semimesh/cad/trimmed_area.hpp"
+#include "semimesh/surface/cad_roles.hpp"
 
 #include "semimesh/io/json.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 namespace semimesh::app {
 namespace {
@@ -32,26 +34,63 @@ std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
   return rows;
 }
 
+// The roles the pipeline's "auto" would find, or why there are none.
+struct DetectedRoles {
+  std::optional<surface::CadRoles> roles;
+  std::string why_not;
+};
+
+DetectedRoles detect_roles(const cad::Model& model) {
+  try {
+    return {surface::detect_cad_roles(model), {}};
+  } catch (const surface::CadRoleError& e) {
+    return {std::nullopt, e.what()};
+  }
+}
+
+std::string ids_json(const std::vector<int>& ids) {
+  std::string text;
+  for (int id : ids) text += (text.empty() ? "" : ",") + std::to_string(id);
+  return "[" + text + "]";
+}
+
+std::string roles_json(const DetectedRoles& d) {
+  if (!d.roles) return "{\"found\":false,\"why_not\":" + json_string(d.why_not) + "}";
+  const surface::CadRoles& r = *d.roles;
+  return fmt::format("{{\"found\":true,\"wall\":{},\"body\":{},\"farfield\":{},\"te_base\":{},\"tip\":{},\"span\":{},"
+                     "\"chord\":{}}}",
+                     r.wall, ids_json(r.body), ids_json(r.farfield), r.te_base ? std::to_string(*r.te_base) : "null",
+                     ids_json(r.tip), json_number(r.span), json_number(r.chord));
+}
+
+std::string roles_table(const cad::Model& model, const DetectedRoles& d) {
+  if (!d.roles) return "roles     not found: " + d.why_not + "\n";
+  std::string text = "roles (found from the model, as geometry.body/wall/farfield = \"auto\" would)\n";
+  text += surface::describe_cad_roles(model, *d.roles);
+  return text;
+}
+
 std::string bbox_json(const cad::BBox& b) {
   if (b.empty()) return "null";
   return fmt::format("[{},{},{},{},{},{}]", json_number(b.lo.x()), json_number(b.lo.y()), json_number(b.lo.z()),
                      json_number(b.hi.x()), json_number(b.hi.y()), json_number(b.hi.z()));
 }
 
-std::string report_json(const std::string& backend, const cad::Model& model, const std::vector<SurfaceRow>& rows) {
+std::string report_json(const std::string& backend, const cad::Model& model, const std::vector<SurfaceRow>& rows,
+                        const DetectedRoles& roles) {
   std::string list;
   for (const SurfaceRow& r : rows)
     list += fmt::format("{}{{\"id\":{},\"name\":{},\"kind\":{},\"area\":{}}}", list.empty() ? "" : ",", r.id,
                         json_string(r.name), json_string(r.kind), json_number(r.area.area));
   return fmt::format(
       "{{\"backend\":{},\"vertices\":{},\"curves\":{},\"surfaces\":{},\"bbox\":{},\"closed\":{},\"units\":{},"
-      "\"surface_list\":[{}]}}\n",
+      "\"surface_list\":[{}],\"roles\":{}}}\n",
       json_string(backend), model.num_vertices(), model.num_curves(), model.num_surfaces(), bbox_json(model.bbox()),
-      model.is_closed() ? "true" : "false", json_string(model.units()), list);
+      model.is_closed() ? "true" : "false", json_string(model.units()), list, roles_json(roles));
 }
 
 std::string report_table(const std::string& backend, const std::string& source, const cad::Model& model,
-                         const std::vector<SurfaceRow>& rows) {
+                         const std::vector<SurfaceRow>& rows, const DetectedRoles& roles) {
   std::string out;
   out += fmt::format("source    {}\n", source.empty() ? "(generated)" : source);
   out += fmt::format("backend   {}\n", backend);
@@ -64,6 +103,7 @@ std::string report_table(const std::string& backend, const std::string& source, 
                        b.hi.x(), b.hi.y(), b.hi.z());
   out += fmt::format("counts    {} vertices, {} curves, {} surfaces\n\n", model.num_vertices(), model.num_curves(),
                      model.num_surfaces());
+  out += roles_table(model, roles) + "\n";
 
   out += fmt::format("{:>4}  {:<16} {:<10} {:>14} {:>10} {:>5}\n", "id", "surface", "kind", "area", "+/-", "loops");
   for (const SurfaceRow& r : rows)
@@ -106,7 +146,9 @@ void run_cad_info(const cad::Registry& registry, const CadInfoOptions& options, 
   cad::Source source{options.source, parse_params(options.params)};
   std::unique_ptr<cad::Model> model = registry.load(backend, source);
   std::vector<SurfaceRow> rows = surface_rows(*model);
-  out << (options.json ? report_json(backend, *model, rows) : report_table(backend, options.source, *model, rows));
+  const DetectedRoles roles = detect_roles(*model);
+  out << (options.json ? report_json(backend, *model, rows, roles)
+                       : report_table(backend, options.source, *model, rows, roles));
 }
 
 }  // namespace semimesh::app

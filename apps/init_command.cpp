@@ -1,6 +1,8 @@
 #include "init_command.hpp"
 
 #include "exit_codes.hpp"
+#include "init_from_cad.hpp"
+#include "semimesh/backends/builtin.hpp"
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/pipeline/config.hpp"
 
@@ -15,19 +17,22 @@ CLI::App* add_init_subcommand(CLI::App& app, InitOptions& options) {
   CLI::App* cmd = app.add_subcommand("init", "Write a commented configuration with every key at its default");
   cmd->add_option("-o,--output", options.output, "File to write (default: standard output)");
   cmd->add_flag("--force", options.force, "Overwrite the file if it exists");
+  cmd->add_option("--cad", options.cad,
+                  "CAD file to configure for: its roles found and written by name, lengths scaled by its chord");
   return cmd;
 }
 
-std::string default_config_text() {
-  const pipeline::Config defaults;
-  std::string text =
-      "# semimesh run configuration: every key at its default (the paper's NACA 0012 wing case).\n"
-      "# Each key: its meaning and range as a comment; docs/config.md explains them in full.\n";
+std::string config_text(const pipeline::Config& values, const std::string& header) {
+  std::string text;
+  std::size_t start = 0;
+  for (std::size_t end; (end = header.find('\n', start)) != std::string::npos; start = end + 1)
+    text += "# " + header.substr(start, end - start) + "\n";
+  text += "# Each key: its meaning and range as a comment; docs/config.md explains them in full.\n";
   for (const pipeline::ConfigSection& section : pipeline::config_sections()) {
     text += "\n[" + section.name + "]\n";
     for (const params::Key<pipeline::Config>& key : section.keys) {
       text += "# " + key.doc + (key.range.empty() ? "" : " (range: " + key.range + ")") + "\n";
-      const params::Value value = key.get(defaults);
+      const params::Value value = key.get(values);
       if (std::holds_alternative<std::monostate>(value))
         text += "# " + key.name + " = (unset)\n";
       else
@@ -37,8 +42,37 @@ std::string default_config_text() {
   return text;
 }
 
+std::string default_config_text() {
+  return config_text(pipeline::Config{},
+                     "semimesh run configuration: every key at its default (the paper's NACA 0012 wing case).\n");
+}
+
+namespace {
+
+// geometry.source as the config must say it: relative to the config file's folder, absolute when
+// the text goes to standard output.
+std::string source_for(const std::string& cad, const std::string& output) {
+  const std::filesystem::path file = std::filesystem::absolute(cad);
+  if (output.empty()) return file.lexically_normal().string();
+  return file.lexically_relative(std::filesystem::absolute(output).parent_path()).string();
+}
+
+std::string init_text(const InitOptions& options) {
+  if (options.cad.empty()) return default_config_text();
+  const CadConfig c = config_for_cad(backends::default_registry(), options.cad, source_for(options.cad, options.output));
+  return config_text(c.config, c.summary);
+}
+
+}  // namespace
+
 int run_init_command(const InitOptions& options, std::ostream& out, std::ostream& err) {
-  const std::string text = default_config_text();
+  std::string text;
+  try {
+    text = init_text(options);
+  } catch (const Error& e) {
+    fmt::print(err, "semimesh init: {}\n", e.what());
+    return exit_code(e.cause());
+  }
   if (options.output.empty()) {
     out << text;
     return kExitOk;

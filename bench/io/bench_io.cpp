@@ -1,20 +1,28 @@
-// Writer bytes and seconds per format, on a structured block of nx*ny*nz hexes, each split into two
-// order-4 prisms (default 50 x 50 x 20 -> 100000 prisms), gently bent, or on a mesh read from an
-// ASCII MSH file (e.g. the paper case written by `semimesh run examples/naca0012_wing.toml`).
-// Prints MB, seconds and MB/s per format, the ASCII trio (msh41 + vtu-ascii + nektar-xml) against
-// the compact trio (msh41-binary + vtu + nektar), and the peak memory.
+// Writer bytes, seconds and memory per format, on a structured block of nx*ny*nz hexes, each split
+// into two order-4 prisms (default 50 x 50 x 20 -> 100000 prisms), gently bent; on a mesh read
+// from an ASCII MSH file (equispaced nodes); or on the mesh `semimesh run CASE.toml` writes (the
+// paper case: examples/naca0012_wing.toml, GLL nodes, so the writers resample).
+// Prints MB, seconds, MB/s and the writer's peak memory above what the process held before it
+// (the kernel's peak is reset before each writer: /proc/self/clear_refs) per format, the ASCII
+// trio (msh41 + vtu-ascii + nektar-xml) against the compact trio (msh41-binary + vtu + nektar),
+// and with --config the compact trio written as `semimesh run` writes it (its write stage).
 // usage: bench_io [nx ny nz] [output-directory (default /tmp)]
-//        bench_io --msh FILE.msh [output-directory [format...]]   (default: every format)
+//        bench_io --msh FILE.msh [output-directory [format...]]      (default: every format)
+//        bench_io --config CASE.toml [output-directory [format...]]
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtu.hpp"
+#include "semimesh/pipeline/config.hpp"
+#include "semimesh/pipeline/pipeline.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
+#include <malloc.h>
 #include <string>
 #include <vector>
 #include <sys/resource.h>
@@ -31,6 +39,36 @@ double peak_memory_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;
+}
+
+/// A /proc/self/status field in MB ("VmRSS", "VmHWM").
+double status_mb(const std::string& field) {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(field + ":", 0) == 0) return std::atof(line.c_str() + field.size() + 1) / 1024.0;
+  return 0.0;
+}
+
+/// Gives freed memory back, then restarts the kernel's peak-RSS record from the current RSS;
+/// returns that RSS in MB.
+double reset_peak() {
+  malloc_trim(0);
+  std::ofstream("/proc/self/clear_refs") << "5";
+  return status_mb("VmRSS");
+}
+
+namespace pl = semimesh::pipeline;
+
+pl::RunResult run_case(const std::string& config_path, const std::string& dir) {
+  pl::Config config = pl::load_config(config_path);
+  config.output.formats.clear();  // the mesh only (report.json is still written)
+  config.output.pictures = false;
+  config.output.directory = dir + "/bench_io_" + std::to_string(::getpid());
+  pl::Progress quiet;
+  pl::RunResult result = pl::run(config, quiet);
+  std::remove((config.output.directory + "/report.json").c_str());
+  ::rmdir(config.output.directory.c_str());
+  return result;
 }
 
 semimesh::mesh::Mesh prism_block(int nx, int ny, int nz, int p) {
@@ -66,7 +104,9 @@ semimesh::mesh::Mesh prism_block(int nx, int ny, int nz, int p) {
 
 int main(int argc, char** argv) {
   using namespace semimesh::io;
-  const bool from_file = argc >= 3 && std::string(argv[1]) == "--msh";
+  const std::string mode = argc >= 3 ? argv[1] : "";
+  const bool from_case = mode == "--config";
+  const bool from_file = mode == "--msh" || from_case;
   int nx = 50, ny = 50, nz = 20;
   if (!from_file && argc >= 4) nx = std::atoi(argv[1]), ny = std::atoi(argv[2]), nz = std::atoi(argv[3]);
   std::string dir = "/tmp";
@@ -76,10 +116,14 @@ int main(int argc, char** argv) {
   if (!from_file && (argc == 5 || argc == 2)) dir = argv[argc - 1];
 
   const auto t0 = Clock::now();
-  const auto mesh = from_file ? read_msh(argv[2]) : prism_block(nx, ny, nz, 4);
+  pl::RunResult result;
+  if (from_case) result = run_case(argv[2], dir);
+  auto mesh = from_case ? std::move(result.mesh) : from_file ? read_msh(argv[2]) : prism_block(nx, ny, nz, 4);
   const double build = seconds_since(t0);
-  std::printf("mesh: %zu order-%d elements, %zu nodes, %s in %.2f s, %.0f bytes/element, %.0f MB in memory\n",
-              mesh.elements().size(), mesh.order(), mesh.num_nodes(), from_file ? "read" : "built", build,
+  std::printf("mesh: %zu order-%d elements, %zu nodes (%s), %s in %.2f s, %.0f bytes/element, %.0f MB in memory\n",
+              mesh.elements().size(), mesh.order(), mesh.num_nodes(),
+              mesh.node_set() == semimesh::ho::NodeSet::GLL ? "GLL" : "equispaced",
+              from_case ? "meshed" : from_file ? "read" : "built", build,
               double(mesh.memory_bytes()) / mesh.elements().size(), mesh.memory_bytes() / 1e6);
   const double memory_before = peak_memory_mb();
 
@@ -96,6 +140,7 @@ int main(int argc, char** argv) {
   for (const auto& [name, write] : writers) {
     if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     const std::string path = dir + "/bench_io_" + std::to_string(::getpid()) + "." + name;
+    const double rss = reset_peak();
     const auto t = Clock::now();
     try {
       write(path);
@@ -107,7 +152,8 @@ int main(int argc, char** argv) {
     struct stat st {};
     ::stat(path.c_str(), &st);
     const double mb = st.st_size / 1e6;
-    std::printf("%-13s %9.1f MB in %6.2f s: %7.1f MB/s\n", name, mb, s, mb / s);
+    std::printf("%-13s %9.1f MB in %6.2f s: %7.1f MB/s, peak memory +%.0f MB\n", name, mb, s, mb / s,
+                status_mb("VmHWM") - rss);
     const std::string n = name;
     if (n == "msh41" || n == "vtu-ascii" || n == "nektar-xml") ascii_mb += mb, ascii_s += s;
     if (n == "msh41-binary" || n == "vtu" || n == "nektar") compact_mb += mb, compact_s += s;
@@ -116,6 +162,29 @@ int main(int argc, char** argv) {
   if (ascii_mb > 0) std::printf("ASCII   (msh41 + vtu-ascii + nektar-xml):  %9.1f MB in %6.2f s\n", ascii_mb, ascii_s);
   if (compact_mb > 0) std::printf("compact (msh41-binary + vtu + nektar):     %9.1f MB in %6.2f s\n", compact_mb, compact_s);
   if (ascii_mb > 0 && compact_mb > 0) std::printf("compact / ASCII bytes: %.3f\n", compact_mb / ascii_mb);
+  if (from_case && only.empty()) {  // the compact trio as `semimesh run` writes it: its write stage
+    pl::Config config = pl::load_config(argv[2]);
+    config.output.formats = {"msh41-binary", "vtu", "nektar"};
+    config.output.pictures = false;
+    config.output.directory = dir + "/bench_io_" + std::to_string(::getpid());
+    config.output.basename = "trio";
+    result.mesh = std::move(mesh);
+    const double rss = reset_peak();
+    const auto t = Clock::now();
+    pl::Progress quiet;
+    pl::write_outputs(config, quiet, result);
+    const double s = seconds_since(t);
+    double mb = 0;
+    for (const std::string& path : result.written_files) {
+      struct stat st {};
+      ::stat(path.c_str(), &st);
+      if (path.find("report.json") == std::string::npos) mb += st.st_size / 1e6;
+      std::remove(path.c_str());
+    }
+    ::rmdir(config.output.directory.c_str());
+    std::printf("write stage (msh41-binary + vtu + nektar): %9.1f MB in %6.2f s, peak memory +%.0f MB\n", mb, s,
+                status_mb("VmHWM") - rss);
+  }
   std::printf("peak memory: %.0f MB after %s the mesh, %.0f MB after writing\n", memory_before,
               from_file ? "reading" : "building", peak_memory_mb());
   return 0;

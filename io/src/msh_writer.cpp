@@ -8,7 +8,6 @@
 #include <array>
 #include <cctype>
 #include <limits>
-#include <optional>
 #include <stdexcept>
 
 namespace semimesh::io {
@@ -114,7 +113,7 @@ void write_element(MshOut& out, std::size_t tag, const std::vector<mesh::NodeId>
 const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron};
 const ho::Shape kFaceShapes[] = {ho::Shape::Triangle, ho::Shape::Quadrilateral};
 
-void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary, ProgressCounter& counter) {
+void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, bool binary, ProgressCounter& counter) {
   const Tags t = make_tags(m);
   MshOut out(file, binary);
   file.print("$MeshFormat\n4.1 {} 8\n", binary ? 1 : 0);
@@ -128,9 +127,9 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary, ProgressCount
   const std::size_t num_groups = t.groups;
   std::vector<Box> group_box(num_groups, empty_box());
   for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
-    for (mesh::NodeId id : m.boundary_face_nodes(b)) grow(group_box[m.boundary_faces()[b].group], m.node(id));
+    for (mesh::NodeId id : m.boundary_face_nodes(b)) grow(group_box[m.boundary_faces()[b].group], x[id]);
   Box all = empty_box();
-  for (const auto& x : m.nodes()) grow(all, x);
+  for (const auto& point : x.all()) grow(all, point);
   if (m.nodes().empty()) all = {0, 0, 0, 0, 0, 0};
   file.print("$Entities\n");
   for (std::size_t count : {std::size_t{0}, std::size_t{0}, num_groups, std::size_t(t.num_volumes)}) out.size(count);
@@ -154,8 +153,8 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary, ProgressCount
     out.size(n);
     out.end_record();
     for (std::size_t i = 1; i <= n; ++i) out.size(i), out.end_record();
-    for (const auto& x : m.nodes()) {
-      out.real(x[0]), out.real(x[1]), out.real(x[2]), out.end_record();
+    for (const auto& p : x.all()) {
+      out.real(p[0]), out.real(p[1]), out.real(p[2]), out.end_record();
       counter.add();
       counter.report_if_due();
     }
@@ -216,14 +215,14 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, bool binary, ProgressCount
   out.end_section("Elements");
 }
 
-void write_v22(AtomicFile& out, const mesh::Mesh& m, ProgressCounter& counter) {
+void write_v22(AtomicFile& out, const mesh::Mesh& m, const EquispacedNodes& x, ProgressCounter& counter) {
   const Tags t = make_tags(m);
   out.print("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
   write_physical_names(out, m, t);
   out.print("$Nodes\n{}\n", m.num_nodes());
   std::size_t id = 0;
-  for (const auto& x : m.nodes()) {
-    out.print("{} {} {} {}\n", ++id, x[0], x[1], x[2]);
+  for (const auto& p : x.all()) {
+    out.print("{} {} {} {}\n", ++id, p[0], p[1], p[2]);
     counter.add();
     counter.report_if_due();
   }
@@ -255,19 +254,21 @@ void write_v22(AtomicFile& out, const mesh::Mesh& m, ProgressCounter& counter) {
 
 void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version, MshEncoding encoding,
                const ProgressCallback& progress) {
-  gmsh_element_type(ho::Shape::Tetrahedron, mesh.order());  // rejects unsupported orders early
+  write_msh(mesh, EquispacedNodes(mesh), path, version, encoding, progress);
+}
+
+void write_msh(const mesh::Mesh& m, const EquispacedNodes& nodes, const std::string& path, MshVersion version,
+               MshEncoding encoding, const ProgressCallback& progress) {
+  gmsh_element_type(ho::Shape::Tetrahedron, m.order());  // rejects unsupported orders early
   if (version == MshVersion::V22 && encoding == MshEncoding::Binary)
     throw std::invalid_argument("MSH 2.2 is written as ASCII only (use MSH 4.1 for binary): " + path);
-  std::optional<mesh::Mesh> resampled;
-  if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
-  const mesh::Mesh& m = resampled ? *resampled : mesh;
   AtomicFile out(path);
   // Progress: one item per node and per element or boundary face written.
   ProgressCounter counter(progress, m.num_nodes() + m.elements().size() + m.boundary_faces().size());
   if (version == MshVersion::V41)
-    write_v41(out, m, encoding == MshEncoding::Binary, counter);
+    write_v41(out, m, nodes, encoding == MshEncoding::Binary, counter);
   else
-    write_v22(out, m, counter);
+    write_v22(out, m, nodes, counter);
   out.commit();
   counter.finish();
 }

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <stdexcept>
 
 namespace semimesh::io {
@@ -86,6 +85,7 @@ std::vector<int> quad_order(int p) {
 /// Everything the sections need, computed once.
 struct Geometry {
   const mesh::Mesh& m;
+  const EquispacedNodes& node;  // positions written
   NektarNumbering numbering;
   std::array<std::vector<int>, 3> tri_point_order;
   std::vector<int> quad_point_order;
@@ -93,7 +93,7 @@ struct Geometry {
   // geometry without it, and the straight-sided far field is most of a mesh.
   std::vector<char> edge_curved, face_curved;
 
-  explicit Geometry(const mesh::Mesh& mesh) : m(mesh), numbering(number_for_nektar(mesh)) {
+  Geometry(const mesh::Mesh& mesh, const EquispacedNodes& nodes) : m(mesh), node(nodes), numbering(number_for_nektar(mesh)) {
     if (m.order() < 2) return;
     tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
     edge_curved.resize(m.edges().size());
@@ -116,7 +116,7 @@ struct Geometry {
     const Eigen::MatrixX3d& ref = reference(shape);
     const int nv = shape == ho::Shape::Segment ? 2 : ho::num_vertices(shape);
     Eigen::Vector3d x[4];
-    for (int k = 0; k < nv; ++k) x[k] = m.node(shape == ho::Shape::Segment ? ids[k ? ids.size() - 1 : 0] : ids[k]);
+    for (int k = 0; k < nv; ++k) x[k] = node[shape == ho::Shape::Segment ? ids[k ? ids.size() - 1 : 0] : ids[k]];
     const double tolerance = 1e-12 * std::max(1.0, (x[1] - x[0]).cwiseAbs().maxCoeff() + (x[nv - 1] - x[0]).cwiseAbs().maxCoeff());
     for (std::size_t i = 0; i < ids.size(); ++i) {
       Eigen::Vector3d want;
@@ -129,7 +129,7 @@ struct Geometry {
         const double s = (ref(i, 0) + 1) / 2, t = (ref(i, 1) + 1) / 2;
         want = (1 - s) * (1 - t) * x[0] + s * (1 - t) * x[1] + s * t * x[2] + (1 - s) * t * x[3];
       }
-      if ((m.node(ids[i]) - want).cwiseAbs().maxCoeff() > tolerance) return false;
+      if ((node[ids[i]] - want).cwiseAbs().maxCoeff() > tolerance) return false;
     }
     return true;
   }
@@ -201,7 +201,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
   const auto& vid = g.numbering.vertex_id;
   out.print("    <VERTEX>\n");
   for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) {
-    const auto& x = m.node(g.numbering.vertex_node[i]);
+    const auto& x = g.node[g.numbering.vertex_node[i]];
     out.print("      <V ID=\"{}\">{} {} {}</V>\n", i, x[0], x[1], x[2]);
   }
   out.print("    </VERTEX>\n    <EDGE>\n");
@@ -233,7 +233,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
   for (std::size_t e = 0; e < m.edges().size(); ++e) {
     if (!g.edge_is_curved(e)) continue;
     out.print("      <E ID=\"{}\" EDGEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"PolyEvenlySpaced\">", curve++, e, m.order() + 1);
-    for (mesh::NodeId id : m.edge_nodes(e)) point(m.node(id));
+    for (mesh::NodeId id : m.edge_nodes(e)) point(g.node[id]);
     out.print(" </E>\n");
   }
   for (std::size_t f = 0; f < m.faces().size(); ++f) {
@@ -242,7 +242,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
     out.print("      <F ID=\"{}\" FACEID=\"{}\" NUMPOINTS=\"{}\" TYPE=\"{}\">", curve++, f,
               tri ? g.tri_point_order[0].size() : g.quad_point_order.size(),
               tri ? "NodalTriEvenlySpaced" : "PolyEvenlySpaced");
-    g.face_nodes_written(f, [&](mesh::NodeId id) { point(m.node(id)); });
+    g.face_nodes_written(f, [&](mesh::NodeId id) { point(g.node[id]); });
     out.print(" </F>\n");
   }
   out.print("    </CURVED>\n");
@@ -269,7 +269,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   };
   out.print("    ");
   compressed_block(out, "", "VERTEX", [&](ZlibStream& z) {
-    for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) put_point(z, I(i), m.node(g.numbering.vertex_node[i]));
+    for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) put_point(z, I(i), g.node[g.numbering.vertex_node[i]]);
   }, true, Content::Doubles);
   out.print("    ");
   compressed_block(out, "", "EDGE", [&](ZlibStream& z) {
@@ -351,7 +351,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
       if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
-    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), m.node(point_node[k]));
+    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), g.node[point_node[k]]);
   }, false, Content::Doubles);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
 }
@@ -399,9 +399,12 @@ void write_composites(AtomicFile& out, const mesh::Mesh& m) {
 }  // namespace
 
 void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path, NektarEncoding encoding) {
-  std::optional<mesh::Mesh> resampled;
-  if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
-  const Geometry geometry(resampled ? *resampled : mesh);
+  write_nektar_xml(mesh, EquispacedNodes(mesh), path, encoding);
+}
+
+void write_nektar_xml(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+                      NektarEncoding encoding) {
+  const Geometry geometry(mesh, nodes);
   AtomicFile out(path);
   out.print("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<NEKTAR>\n  <GEOMETRY DIM=\"3\" SPACE=\"3\">\n");
   if (encoding == NektarEncoding::Plain)

@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <cstdint>
 #include <functional>
-#include <optional>
 
 namespace semimesh::io {
 namespace {
@@ -98,6 +97,7 @@ Piece group_piece(const mesh::Mesh& m, int group) {
 /// The arrays of the file, each produced value by value by a generator that takes an emitter.
 struct Arrays {
   const mesh::Mesh& m;
+  const EquispacedNodes& x;
   const Piece& piece;
 
   std::size_t num_points() const { return piece.points.empty() ? m.num_nodes() : piece.points.size(); }
@@ -123,10 +123,10 @@ struct Arrays {
 
   void points(const std::function<void(double)>& emit) const {
     if (piece.points.empty())
-      for (const auto& x : m.nodes()) emit(x[0]), emit(x[1]), emit(x[2]);
+      for (const auto& p : x.all()) emit(p[0]), emit(p[1]), emit(p[2]);
     for (mesh::NodeId n : piece.points) {
-      const auto& x = m.node(n);
-      emit(x[0]), emit(x[1]), emit(x[2]);
+      const auto& p = x[n];
+      emit(p[0]), emit(p[1]), emit(p[2]);
     }
   }
   void connectivity(const std::function<void(std::int64_t)>& emit, bool line_per_cell,
@@ -259,12 +259,6 @@ void write_compressed(AtomicFile& out, const Arrays& a, const ProgressCallback& 
   out.print("\n</AppendedData>\n</VTKFile>\n");
 }
 
-// The mesh with equispaced nodes (VTK Lagrange cells), resampled only when it has others.
-const mesh::Mesh& equispaced(const mesh::Mesh& mesh, std::optional<mesh::Mesh>& resampled) {
-  if (mesh.node_set() != ho::NodeSet::Equispaced) resampled = to_equispaced(mesh);
-  return resampled ? *resampled : mesh;
-}
-
 // A file name made of the group's name: characters other than letters, digits, '-' and '_' become '_'.
 std::string file_name_part(const std::string& name) {
   std::string s = name;
@@ -277,9 +271,13 @@ std::string file_name_part(const std::string& name) {
 
 void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding,
                const ProgressCallback& progress) {
-  std::optional<mesh::Mesh> resampled;
+  write_vtu(mesh, EquispacedNodes(mesh), path, encoding, progress);
+}
+
+void write_vtu(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path, VtuEncoding encoding,
+               const ProgressCallback& progress) {
   const Piece everything;  // volume elements, every boundary face, every node
-  const Arrays arrays{equispaced(mesh, resampled), everything};
+  const Arrays arrays{mesh, nodes, everything};
   AtomicFile out(path);
   if (encoding == VtuEncoding::Ascii)
     write_ascii(out, arrays);
@@ -294,8 +292,11 @@ std::string vtm_piece_folder(const std::string& path) {
 }
 
 void write_vtm(const mesh::Mesh& mesh, const std::string& path, const ProgressCallback& progress) {
-  std::optional<mesh::Mesh> resampled;
-  const mesh::Mesh& m = equispaced(mesh, resampled);
+  write_vtm(mesh, EquispacedNodes(mesh), path, progress);
+}
+
+void write_vtm(const mesh::Mesh& m, const EquispacedNodes& nodes, const std::string& path,
+               const ProgressCallback& progress) {
   const std::string folder_path = vtm_piece_folder(path);
   const std::string folder_name = std::filesystem::path(folder_path).filename().string();
   struct Block {
@@ -317,7 +318,7 @@ void write_vtm(const mesh::Mesh& mesh, const std::string& path, const ProgressCa
     const double to = b == 0 ? 0.5 : 0.5 + 0.5 * b / double(blocks.size() - 1);
     AtomicFile piece(folder.file(blocks[b].file));
     const ProgressCallback part = progress_part(progress, from, to);
-    write_compressed(piece, Arrays{m, blocks[b].piece},
+    write_compressed(piece, Arrays{m, nodes, blocks[b].piece},
                      part ? [&](double f, const std::string& step) {
                        part(f, step.empty() ? blocks[b].name : blocks[b].name + ": " + step);
                      } : ProgressCallback{});

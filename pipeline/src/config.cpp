@@ -158,6 +158,7 @@ params::Value value_of(const Origin& origin, const std::string& key, const toml:
       if (n.is_string()) return n.as_string()->get();
       break;
     case params::Type::Strings:
+      if (n.is_string()) return std::vector<std::string>{n.as_string()->get()};  // a list of one, e.g. body = "auto"
       if (const toml::array* a = n.as_array(); a && !a->empty() && a->is_homogeneous(toml::node_type::string)) {
         std::vector<std::string> out;
         for (const toml::node& e : *a) out.push_back(e.as_string()->get());
@@ -204,9 +205,12 @@ params::Table<Config> geometry_keys() {
                      "CAD file, relative to the config file's folder; empty: the generated wing"),
       params::string("units", &GeometryConfig::units, "non-empty", "label of the model's unit"),
       params::real("scale", &GeometryConfig::scale, "> 0", "factor applied to a CAD file's coordinates at load"),
-      params::strings("body", &GeometryConfig::body, "non-empty", "surfaces wrapped by the near-field shell"),
-      params::string("wall", &GeometryConfig::wall, "non-empty", "the planar wall the body stands on"),
-      params::strings("farfield", &GeometryConfig::farfield, "non-empty", "the outer boundary's surfaces"),
+      params::strings("body", &GeometryConfig::body, "non-empty",
+                      "surfaces wrapped by the near-field shell: names, ids (\"#7\") or \"auto\" (found from the model)"),
+      params::string("wall", &GeometryConfig::wall, "non-empty",
+                     "the planar wall the body stands on: a name, an id or \"auto\" (the face holding the root loop)"),
+      params::strings("farfield", &GeometryConfig::farfield, "non-empty",
+                      "the outer boundary's surfaces: names, ids or \"auto\" (every face neither body nor wall)"),
   };
   params::Table<Config> table;
   append(table, &Config::geometry, g);
@@ -325,14 +329,11 @@ params::Table<Config> stage_keys(P Config::*member, const params::Table<P>& keys
   return table;
 }
 
-// What the rows cannot say: conditions between keys, and the sharp TE's default body.
+// What the rows cannot say: conditions between keys.
 void check_across_keys(Config& c, const std::map<std::string, Section*>& sections, const std::string& base_directory) {
-  Section& g = *sections.at("geometry");
   GeometryConfig& geo = c.geometry;
   if (!geo.source.empty() && !base_directory.empty() && std::filesystem::path(geo.source).is_relative())
     geo.source = (std::filesystem::path(base_directory) / geo.source).lexically_normal().string();
-  if (geo.naca.te == "sharp" && !g.has("body"))
-    geo.body.erase(std::remove(geo.body.begin(), geo.body.end(), "te_base"), geo.body.end());
   const auto& box = geo.naca.box;
   sections.at("geometry.naca")
       ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",

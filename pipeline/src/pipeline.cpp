@@ -1,6 +1,7 @@
 #include "semimesh/pipeline/pipeline.hpp"
 
 #include "semimesh/backends/builtin.hpp"
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -15,6 +16,7 @@
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/report.hpp"
+#include "semimesh/pipeline/roles.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/pipeline/weld_nodes.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
@@ -124,33 +126,26 @@ cad::Source cad_source(const GeometryConfig& g) {
   return source;
 }
 
-int surface_id(const cad::Model& model, const std::string& key, const std::string& name) {
-  if (auto id = model.find_surface(name)) return *id;
-  std::string names;
-  for (int s = 0; s < model.num_surfaces(); ++s) names += (s ? ", " : "") + model.surface(s).name();
-  throw ConfigError("config error: " + key + ": the CAD model has no surface named '" + name + "' (its surfaces: " + names + ")");
-}
-
-struct Roles {
-  std::vector<int> body, farfield;
-  int wall = -1;
-};
-
-Roles resolve_roles(const cad::Model& model, const GeometryConfig& g) {
-  Roles roles;
-  for (const std::string& name : g.body) roles.body.push_back(surface_id(model, "geometry.body", name));
-  for (const std::string& name : g.farfield) roles.farfield.push_back(surface_id(model, "geometry.farfield", name));
-  roles.wall = surface_id(model, "geometry.wall", g.wall);
-  return roles;
+// The wake's keys with te_base naming the resolved base (the near field finds it by name); left
+// as written when none was found (a sharp trailing edge), for the near field's own message.
+nearfield::WakeParams wake_with_base(const cad::Model& model, nearfield::WakeParams wake, const Roles& roles) {
+  if (!roles.te_base) return wake;
+  const std::string& name = model.surface(*roles.te_base).name();
+  if (model.find_surface(name) != roles.te_base)
+    throw ConfigError(fmt::format("config error: wake.te_base: the trailing-edge base {} shares its name with {}: give "
+                                  "the CAD faces distinct names",
+                                  cad::surface_label(model, *roles.te_base),
+                                  cad::surface_label(model, *model.find_surface(name))));
+  wake.te_base = name;
+  return wake;
 }
 
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
-surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config) {
+surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config, const Roles& roles) {
   const SizingConfig& s = config.sizing;
   surface::ModelMeshOptions options;
   // H-type: the trailing-edge base as structured quads, swept into the wake block.
-  if (config.nearfield.topology == "H")
-    if (auto te = model.find_surface(config.wake.te_base)) options.structured_surfaces.insert(*te);
+  if (roles.te_base) options.structured_surfaces.insert(*roles.te_base);
   auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
     if (segments == 0) return;
     int found = 0;
@@ -271,7 +266,7 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
   g.model = stage("load CAD", progress, result, [&] {
     return registry.load(config.geometry.backend, cad_source(config.geometry));
   });
-  g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config.geometry); });
+  g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
 }
 
@@ -287,7 +282,7 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     return surface::SizeField(model, params);
   });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
-    return surface::mesh_model_surfaces(model, size, mesh_options(model, config), report);
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles), report);
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -336,7 +331,8 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
     const nearfield::BodyRoles roles{g.roles.body, g.roles.wall};
     if (junction && config.nearfield.topology == "H")
       return nearfield::build_h_shell(*g.model, surfaces, roles, config.nearfield.shell, config.nearfield.junction,
-                                      config.wall_layer.thickness, config.wake, g.model->bbox(),
+                                      config.wall_layer.thickness, wake_with_base(*g.model, config.wake, g.roles),
+                                      g.model->bbox(),
                                       layer_fractions(config, chord));
     return junction ? nearfield::build_c_shell(*g.model, surfaces, roles, config.nearfield.shell,
                                                config.nearfield.junction, config.wall_layer.thickness)

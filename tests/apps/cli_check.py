@@ -95,6 +95,14 @@ def default_wing(doc, backend):
     te = 10 * 0.12 * (0.2969 - 0.1260 - 0.3516 + 0.2843 - 0.1015) * 3
     expect(math.isclose(area["te_base"], te, rel_tol=1e-4), "te_base area %r, expected %r" % (area["te_base"], te))
     expect(math.isclose(area["upper"], area["lower"], rel_tol=1e-6), "a symmetric wing has equal skins")
+    # The roles found without names are the model's own names for them.
+    roles = doc["roles"]
+    expect(roles["found"] is True, "roles not found: %r" % roles)
+    named = lambda ids: sorted(NACA_SURFACES[i] for i in ids)
+    expect(NACA_SURFACES[roles["wall"]] == "wall", "wall %r" % roles["wall"])
+    expect(named(roles["body"]) == sorted(["upper", "lower", "te_base", "tip"]), "body %r" % named(roles["body"]))
+    expect(named(roles["farfield"]) == sorted(n for n in NACA_SURFACES if n.startswith("box_")), "far field %r" % roles)
+    expect(NACA_SURFACES[roles["te_base"]] == "te_base" and named(roles["tip"]) == ["tip"], "te_base, tip %r" % roles)
 
 
 def step_file(doc, faces):

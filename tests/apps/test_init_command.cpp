@@ -1,10 +1,15 @@
 // `semimesh init`: the text it writes is read back by the config reader as the defaults, key by key.
 #include "init_command.hpp"
 
+#include "init_from_cad.hpp"
+#include "semimesh/backends/builtin.hpp"
 #include "semimesh/pipeline/config.hpp"
+#include "semimesh/pipeline/roles.hpp"
+#include "semimesh/surface/cad_roles.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -29,15 +34,68 @@ TEST(InitCommand, KeepsAnExistingFileUnlessForced) {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "semimesh_test_init.toml";
   std::filesystem::remove(path);
   std::ostringstream out, err;
-  ASSERT_EQ(run_init_command({path.string(), false}, out, err), 0) << err.str();
+  ASSERT_EQ(run_init_command({path.string(), false, {}}, out, err), 0) << err.str();
   ASSERT_TRUE(std::filesystem::exists(path));
   std::filesystem::resize_file(path, 10);
-  EXPECT_EQ(run_init_command({path.string(), false}, out, err), 1);
+  EXPECT_EQ(run_init_command({path.string(), false, {}}, out, err), 1);
   EXPECT_NE(err.str().find("exists"), std::string::npos) << err.str();
   EXPECT_EQ(std::filesystem::file_size(path), 10u);  // untouched
-  EXPECT_EQ(run_init_command({path.string(), true}, out, err), 0);
+  EXPECT_EQ(run_init_command({path.string(), true, {}}, out, err), 0);
   EXPECT_EQ(std::filesystem::file_size(path), default_config_text().size());
   std::filesystem::remove(path);
+}
+
+std::string nekmesh_wing() { return std::string(SEMIMESH_TESTDATA_DIR) + "/cad/nektar_3d_bl_wing_naca0012.stp"; }
+
+// init --cad on the NekMesh STEP wing: the file reads back with the roles the detection finds
+// (resolved through the run's own role resolution), the file's unit and source, and every length
+// of the defaults times the root chord.
+TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
+  if (!std::filesystem::exists(nekmesh_wing())) GTEST_SKIP() << nekmesh_wing() << " not found (see shared/testdata/cad/README.md)";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semimesh_test_init_cad";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "wing.toml").string();
+  std::ostringstream out, err;
+  ASSERT_EQ(run_init_command({path, false, nekmesh_wing()}, out, err), 0) << err.str();
+  const pipeline::Config c = pipeline::load_config(path);
+  EXPECT_EQ(c.geometry.backend, "occ");
+  EXPECT_TRUE(std::filesystem::equivalent(c.geometry.source, nekmesh_wing()));
+  EXPECT_EQ(c.geometry.units, "mm");
+
+  const auto model = backends::default_registry().load("occ", cad::Source{nekmesh_wing(), {}});
+  const surface::CadRoles found = surface::detect_cad_roles(*model);
+  pipeline::Config h = c;
+  h.nearfield.topology = "H";
+  const pipeline::Roles roles = pipeline::resolve_roles(*model, h);
+  EXPECT_EQ(roles.wall, found.wall);
+  EXPECT_EQ(roles.body, found.body);
+  EXPECT_EQ(roles.farfield, found.farfield);
+  EXPECT_EQ(roles.te_base, found.te_base);
+
+  const pipeline::Config defaults;
+  for (const pipeline::ConfigSection& section : pipeline::config_sections())
+    for (const params::Key<pipeline::Config>& key : section.keys)
+      if (std::count(length_keys().begin(), length_keys().end(), section.name + "." + key.name)) {
+        const double scaled = std::get<double>(key.get(defaults)) * found.chord;
+        EXPECT_NEAR(std::get<double>(key.get(c)), scaled, 1e-3 * scaled) << section.name << "." << key.name;
+      }
+  EXPECT_GT(c.nearfield.shell.thickness, 100.0);  // a tenth of a chord of about 1.2 m, in mm
+  std::filesystem::remove_all(dir);
+}
+
+TEST(InitCommand, AFileWithoutAWallIsRefusedAndNothingWritten) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "semimesh_test_init_missing.toml";
+  std::filesystem::remove(path);
+  std::ostringstream out, err;
+  EXPECT_EQ(run_init_command({path.string(), false, "/no/such/wing.step"}, out, err), 1);
+  EXPECT_NE(err.str().find("/no/such/wing.step"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(path));
+  const std::string m6 = std::string(SEMIMESH_TESTDATA_DIR) + "/cad/onera_m6_sharp_te.stp";
+  if (!std::filesystem::exists(m6)) GTEST_SKIP() << m6 << " not found (see shared/testdata/cad/README.md)";
+  EXPECT_EQ(run_init_command({path.string(), false, m6}, out, err), 1);
+  EXPECT_NE(err.str().find("no wall the body stands on"), std::string::npos) << err.str();
+  EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 }  // namespace

@@ -328,4 +328,35 @@ TEST(Equispaced, GllMeshIsResampledOntoTheSameMap) {
   }
 }
 
+
+// The streaming resampling (each node once, by the edge, face or element that owns it) against the
+// reference that resamples every element whole on a copy of the mesh.
+void expect_same_as_reference(const Mesh& gll, const std::string& what) {
+  const semimesh::io::EquispacedNodes nodes(gll);
+  const Mesh reference = semimesh::io::to_equispaced(gll);
+  ASSERT_EQ(nodes.all().size(), reference.num_nodes()) << what;
+  for (NodeId i = 0; i < reference.num_nodes(); ++i)
+    ASSERT_LT((nodes[i] - reference.node(i)).norm(), 1e-12) << what << " node " << i;
+}
+
+TEST(Equispaced, EachNodeResampledByItsOwnerMatchesWholeElementResampling) {
+  for (int p = 2; p <= 6; ++p) {
+    expect_same_as_reference(two_prisms(p, NodeSet::GLL), "two prisms, order " + std::to_string(p));
+    for (Shape shape : {Shape::Tetrahedron, Shape::Pyramid, Shape::Prism, Shape::Hexahedron}) {
+      Mesh one(p, NodeSet::GLL);
+      const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(shape, p, NodeSet::GLL);
+      std::vector<NodeId> ids;
+      for (int i = 0; i < ref.rows(); ++i) ids.push_back(one.add_node(quadratic_map(ref.row(i).transpose())));
+      one.add_element(shape, ids);
+      expect_same_as_reference(one, "one element, shape " + std::to_string(int(shape)) + ", order " + std::to_string(p));
+    }
+  }
+}
+
+TEST(Equispaced, AnEquispacedMeshIsNotCopied) {
+  const Mesh eq = two_prisms(3);
+  const semimesh::io::EquispacedNodes nodes(eq);
+  EXPECT_EQ(&nodes.all(), &eq.nodes());
+}
+
 }  // namespace

@@ -12,6 +12,10 @@ three hexahedra of the same order P that tile it exactly:
     ratio from the prism's (the bilinear determinant varies), so only its sign is compared.
 Hexes are half the cost of the other exact split (three tets of order 2P) in Gmsh.
 
+Pyramids of order >= 4: Gmsh 4.8's plugin bounds them wrongly (an affine order-5 pyramid gets 0,
+valid order-4 pyramids get negative values): they are certified by pyramid_bounds.py instead, which
+evaluates them through Gmsh's own basis functions and bounds det J exactly (see its docstring).
+
 The prism is evaluated independently of semimesh's element library: Gmsh's prism node layout comes
 from PyFR's published Gmsh node maps (PyFR/PyFR, pyfr/readers/nodemaps.py,
 GmshNodeMaps.to_pyfr['pri', n], a fact table copied as data in tests/io/verify_msh.py, orders 3..6),
@@ -27,6 +31,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
 from verify_msh import PYFR_PRI, pyfr_prism_reference  # noqa: E402
+import pyramid_bounds  # noqa: E402
 
 # Gmsh element types of prisms of order 3..6 (gmsh.model.mesh.getElementType("Prism", P)).
 HIGH_ORDER_PRISM_TYPES = {90: 3, 91: 4, 106: 5, 107: 6}
@@ -38,6 +43,8 @@ TRIANGLE_QUADS = (((0, 0), (0.5, 0), _C, (0, 0.5)),
                   ((1, 0), (0.5, 0.5), _C, (0.5, 0)),
                   ((0, 1), (0, 0.5), _C, (0.5, 0.5)))
 CHUNK = 2000  # prisms per Gmsh model and task
+# Pyramids from this order on go to pyramid_bounds.py (Gmsh 4.8's plugin is wrong for them).
+FIRST_WRONG_PYRAMID_ORDER = 4
 
 
 def prism_monomials(order, points):
@@ -127,7 +134,8 @@ def gmsh_counts(path):
 def certified_ratios(path, processes=2, progress=None):
     """Gmsh's certified min J / max J for the volume elements of the .msh file `path`:
     {'counts': {'tetrahedron': n, 'prism': n, ...}, 'direct': [one per element Gmsh certifies
-    itself], 'prisms': [min over the three hex pieces of each prism of order >= 3]}.
+    itself], 'prisms': [min over the three hex pieces of each prism of order >= 3],
+    'pyramids': [pyramid_bounds' certified ratio of each pyramid of order >= 4]}.
     Opens its own Gmsh sessions (gmsh must not be initialised by the caller)."""
     gmsh.initialize()
     try:
@@ -139,21 +147,30 @@ def certified_ratios(path, processes=2, progress=None):
         if beyond:
             raise RuntimeError("%s: prisms of Gmsh type %s (order > 6): no node table to certify them with" % (path, beyond))
         high_order = [(t, np.asarray(nd)) for t, nd in zip(types, nodes) if t in HIGH_ORDER_PRISM_TYPES]
+        wrong_pyramids = {gmsh.model.mesh.getElementType("Pyramid", p): p
+                          for p in range(FIRST_WRONG_PYRAMID_ORDER, 10)}
+        pyramid_blocks = [(t, np.asarray(nd)) for t, nd in zip(types, nodes) if t in wrong_pyramids]
         node_tags, coords, _ = gmsh.model.mesh.getNodes()
+        position = np.empty((int(np.max(node_tags)) + 1, 3))
+        position[np.asarray(node_tags, dtype=np.int64)] = np.asarray(coords).reshape(-1, 3)
         direct = []
-        if len(high_order) < len(types):
-            if high_order:  # the plugin stops at the first prism it cannot build: the others alone
+        if len(high_order) + len(pyramid_blocks) < len(types):
+            if high_order or pyramid_blocks:  # the plugin stops at the first prism it cannot build: the others alone
                 gmsh.model.add("direct")
                 volume = gmsh.model.addDiscreteEntity(3)
                 gmsh.model.mesh.addNodes(3, volume, np.asarray(node_tags).tolist(), np.asarray(coords).tolist())
                 for t, tg, nd in zip(types, tags, nodes):
-                    if t not in HIGH_ORDER_PRISM_TYPES:
+                    if t not in HIGH_ORDER_PRISM_TYPES and t not in wrong_pyramids:
                         gmsh.model.mesh.addElementsByType(volume, t, np.asarray(tg).tolist(), np.asarray(nd).tolist())
             direct = [v[1] for v in analyse().values()]
+        pyramids = []
+        for element_type, element_nodes in pyramid_blocks:
+            order = wrong_pyramids[element_type]
+            connectivity = element_nodes.reshape(-1, (order + 1) * (order + 2) * (2 * order + 3) // 6).astype(np.int64)
+            for ratio, proven in pyramid_bounds.certify(element_type, order, position[connectivity]):
+                pyramids.append(ratio if proven else min(ratio, 0.0))  # unproven counts as invalid
         tasks = []
         if high_order:
-            position = np.empty((int(np.max(node_tags)) + 1, 3))
-            position[np.asarray(node_tags, dtype=np.int64)] = np.asarray(coords).reshape(-1, 3)
             for element_type, element_nodes in high_order:
                 order = HIGH_ORDER_PRISM_TYPES[element_type]
                 hex_type = gmsh.model.mesh.getElementType("Hexahedron", order)
@@ -172,4 +189,4 @@ def certified_ratios(path, processes=2, progress=None):
                 prisms.extend(result)
                 if progress:
                     progress(done, len(tasks))
-    return {"counts": counts, "direct": direct, "prisms": prisms}
+    return {"counts": counts, "direct": direct, "prisms": prisms, "pyramids": pyramids}

@@ -27,9 +27,10 @@ TEST(Config, DefaultsAreThePapersCase) {
   EXPECT_EQ(c.geometry.naca.code, "0012");
   EXPECT_EQ(c.geometry.naca.chord, 1.0);
   EXPECT_EQ(c.geometry.naca.te, "blunt");
-  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"upper", "lower", "te_base", "tip"}));
-  EXPECT_EQ(c.geometry.wall, "wall");
-  EXPECT_EQ(c.geometry.farfield.size(), 5u);
+  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"auto"}));
+  EXPECT_EQ(c.geometry.wall, "auto");
+  EXPECT_EQ(c.geometry.farfield, (std::vector<std::string>{"auto"}));
+  EXPECT_EQ(c.wake.te_base, "auto");
   EXPECT_EQ(c.nearfield.topology, "O");
   EXPECT_EQ(c.boundary_layer.split.layers, 5);
   EXPECT_EQ(c.boundary_layer.split.ratio, 2.0);
@@ -139,9 +140,10 @@ allow_invalid = true
   EXPECT_TRUE(c.output.allow_invalid);
 }
 
-TEST(Config, SharpTrailingEdgeDropsTheBaseFromTheDefaultBody) {
-  const Config c = parse_config("[geometry.naca]\nte = \"sharp\"\n", "case.toml");
-  EXPECT_EQ(c.geometry.body, (std::vector<std::string>{"upper", "lower", "tip"}));
+TEST(Config, ABareStringIsAListOfOne) {
+  EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
+  EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,
+            (std::vector<std::string>{"upper", "#3"}));
 }
 
 TEST(Config, UnknownKeyIsNamedWithItsLine) {
@@ -194,7 +196,7 @@ TEST(Config, ChecksFloorHasAPositiveDefaultAndARange) {
 TEST(Config, WrongTypeIsAnError) {
   EXPECT_NE(error_of("[boundary_layer]\nlayers = 2.5\n").find("boundary_layer.layers = 2.5: expected an integer"),
             std::string::npos);
-  EXPECT_NE(error_of("[geometry]\nbody = \"upper\"\n").find("expected a non-empty array of strings"), std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbody = 3\n").find("expected a non-empty array of strings"), std::string::npos);
   EXPECT_NE(error_of("[geometry.naca]\nbox = [1, 2, 3]\n").find("expected an array of 6 numbers"), std::string::npos);
 }
 

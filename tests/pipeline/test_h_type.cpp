@@ -214,7 +214,7 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[-1.0, 0.0, 0.0]"}, {"wake.direction = [-1, 0, 0]", "upstream"}},
       {{"wake.direction=[1.0, 0.0, -0.5]"}, {"wake.direction = [1, 0, -0.5]", "into the wall"}},
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
-      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"te_base\"", "sharp"}},
+      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"auto\"", "sharp"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

@@ -108,6 +108,9 @@ struct JunctionNode {
 
 using Frame = detail::WallFrame;
 
+// Smallest ratio of a lifted triangle's area to its own before the lift (projected on its normal).
+constexpr double kFlattest = 1e-6;
+
 // Outward direction in the wall plane of a root segment a -> b whose wing triangle has normal n.
 Vec3 segment_outward(const Vec3& a, const Vec3& b, const Vec3& n_tri, const Vec3& n_wall) {
   Vec3 m = (b - a).cross(n_wall).normalized();
@@ -159,7 +162,11 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
   const cad::Surface& wall_face = model.surface(roles.wall_surface);
-  const auto foot = wall_face.project(j.halo - delta_wall * wall.normal);
+  // Where the wing leans over the fluid, the halo's feet come close to the root: the hex would be a
+  // sliver there, folded by the curved root. Its wall strip keeps the width delta_wing (the wall
+  // layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
+  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
+  const auto foot = wall_face.project(j.root + std::max(out, delta_wing) * outward);
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
   const CadAttachment& at = body.cad[r];
@@ -181,6 +188,8 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
   }
+  if (wall.height(j.strip_top) < delta_wall)
+    j.strip_top = detail::move_to_height(model, wall, j.strip_top, j.strip_top_cad, delta_wall);
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
@@ -209,10 +218,12 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
   for (const auto& t : body.triangles) {
     const Vec3 before = (unlifted[t[1]] - unlifted[t[0]]).cross(unlifted[t[2]] - unlifted[t[0]]);
     const Vec3 after = (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]);
-    if (!(before.dot(after) > 0.0))
+    // Relative: a triangle flattened onto a line (e.g. all three nodes on a CAD edge) keeps a
+    // round-off area of either sign.
+    if (!(before.dot(after) > kFlattest * before.squaredNorm()))
       throw NearFieldError(
           "near field: lifting the wing mesh onto the root strip (height " + number_label(strip) +
-          ") folds a triangle at " + point_label(body.points[t[0]]) + " on " +
+          ") folds or flattens a triangle at " + point_label(body.points[t[0]]) + " on " +
           surface_label(model, body.node_surface[t[0]]) +
           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
@@ -368,23 +379,41 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   return shell;
 }
 
+Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, CadAttachment& cad, double target) {
+  // Newton on the height along its gradient in the entity's parameters: on a lofted wing the
+  // chordwise parameter stays (the height grows with the spanwise one), so a node near a swept
+  // leading edge keeps its place along the section. A move in space projected back (vertical or
+  // steepest ascent on the surface) drifts to the closest point, onto the edge itself.
+  Vec3 p = x;
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    const double missing = target - wall.height(p);
+    if (cad.kind == CadAttachment::Surface) {
+      const cad::Surface& face = model.surface(cad.entity);
+      const cad::SurfaceDerivatives d = face.derivatives(cad::Vec2(cad.u, cad.v));
+      const cad::Vec2 gradient(d.du.dot(wall.normal), d.dv.dot(wall.normal));
+      if (!(gradient.squaredNorm() > 0.0)) break;
+      const auto bounds = face.bounds();
+      const cad::Vec2 uv(std::clamp(cad.u + missing * gradient.x() / gradient.squaredNorm(), bounds[0].lo, bounds[0].hi),
+                         std::clamp(cad.v + missing * gradient.y() / gradient.squaredNorm(), bounds[1].lo, bounds[1].hi));
+      cad.u = uv.x(), cad.v = uv.y();
+      p = face.point(uv);
+    } else {
+      const cad::Curve& curve = model.curve(cad.entity);
+      const double slope = curve.derivatives(cad.u).d1.dot(wall.normal);
+      if (slope == 0.0) break;
+      const auto bounds = curve.bounds();
+      cad.u = std::clamp(cad.u + missing / slope, bounds.lo, bounds.hi);
+      p = curve.derivatives(cad.u).p;
+    }
+  }
+  return p;
+}
+
 Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
                CadAttachment& cad) {
   const double d = wall.height(x);
   if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
-  const double target = strip + d * (1.0 - strip / tip);
-  Vec3 p = x;
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const Vec3 aim = p + (target - wall.height(p)) * wall.normal;
-    if (cad.kind == CadAttachment::Surface) {
-      const auto proj = model.surface(cad.entity).project(aim, cad::Vec2(cad.u, cad.v));
-      p = proj.point, cad.u = proj.uv.x(), cad.v = proj.uv.y();
-    } else {
-      const auto proj = model.curve(cad.entity).project(aim, cad.u);
-      p = proj.point, cad.u = proj.t;
-    }
-  }
-  return p;
+  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / tip));
 }
 
 }  // namespace detail

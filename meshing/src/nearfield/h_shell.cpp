@@ -123,7 +123,7 @@ const params::Table<WakeParams>& wake_keys() {
       params::real("gap", &WakeParams::gap, "> 0", "H: height of the wake block's root above the wall layer's top"),
       params::real("ratio_end", &WakeParams::ratio_end, ">= 1",
                    "H: the layer ratio at the wake's far end (r at the trailing edge, linear in between)"),
-      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface"),
+      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end"),
   };
   return table;
 }

@@ -38,6 +38,11 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
                                    int bare_surface);
 
+/// x moved along its CAD entity (a surface or curve) to `target` height above the wall, along the
+/// entity's steepest ascent; updates the attachment.
+Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, mesh::CadAttachment& cad,
+                    double target);
+
 /// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / tip),
 /// updating its attachment; nodes at the tip and CAD vertices stay.
 Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,

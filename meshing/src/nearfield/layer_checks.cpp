@@ -30,6 +30,9 @@ std::unordered_set<int> nodes_within(const BodyMesh& body, const std::vector<std
   return done;
 }
 
+// Smallest det at a body vertex relative to the product of its three edges (sine-like).
+constexpr double kFlattest = 1e-9;
+
 }  // namespace
 
 bool prism_is_sound(const std::array<Vec3, 6>& x, double min_outer_ratio) {
@@ -38,7 +41,9 @@ bool prism_is_sound(const std::array<Vec3, 6>& x, double min_outer_ratio) {
     const Vec3 up = x[i + 3] - x[i];
     const double body_det = (x[j] - x[i]).cross(x[k] - x[i]).dot(up);
     const double outer_det = (x[j + 3] - x[i + 3]).cross(x[k + 3] - x[i + 3]).dot(up);
-    if (!(body_det > 0.0) || outer_det < min_outer_ratio * body_det) return false;
+    // Relative to the edges: a flat body triangle (collinear nodes) has a round-off det of either sign.
+    const double scale = (x[j] - x[i]).norm() * (x[k] - x[i]).norm() * up.norm();
+    if (!(body_det > kFlattest * scale) || outer_det < min_outer_ratio * body_det) return false;
   }
   Eigen::MatrixX3d nodes(6, 3);
   for (int i = 0; i < 6; ++i) nodes.row(i) = x[i].transpose();

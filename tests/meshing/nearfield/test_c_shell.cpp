@@ -283,3 +283,50 @@ TEST(CShellBadInput, WallLayerThickerThanTheWingShellCanMeetNamesCurveAndThickne
 
 }  // namespace
 }  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// Where the wing leans over the fluid (the swept leading edge, up to 120 degrees), the halo's feet
+// come close to the root: the junction hex keeps a wall strip of width delta_wing (R-L) and a wing
+// strip of height delta_wall (W above the wall), so it is no sliver that the curved root folds
+// (robustness sweep, C-type seed 2 run 11: a junction hex at scaled Jacobian -0.048 at order 5).
+TEST(CShell, JunctionHexesKeepBothStripsWhereTheWingLeans) {
+  const double delta_wing = 0.05, delta_wall = 0.1;  // near the 0.05 / -cos(116 degrees) = 0.114 bound
+  const Built b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
+  const mesh::Mesh& m = b.f.mesh;
+  int leaning = 0;
+  for (const auto& el : m.elements()) {
+    if (el.shape != ho::Shape::Hexahedron) continue;
+    for (int k : {0, 1}) {
+      const Vec3 root = m.node(el.vertices[k]), strip_top = m.node(el.vertices[3 - k]);
+      const Vec3 foot = m.node(el.vertices[4 + k]), halo = m.node(el.vertices[7 - k]);
+      EXPECT_GE((foot - root).norm(), delta_wing * (1.0 - 1e-9)) << root.transpose();
+      EXPECT_GE(strip_top.z(), delta_wall * (1.0 - 1e-9)) << root.transpose();
+      EXPECT_NEAR(halo.z(), delta_wall, 1e-12);
+      // The halo's own foot on the wall is nearer the root than delta_wing where the wing leans.
+      leaning += (Vec3(halo.x(), halo.y(), 0.0) - root).norm() < 0.5 * delta_wing;
+    }
+  }
+  EXPECT_GT(leaning, 0);  // the case exercises the leaning root
+  expect_valid_linear_elements(b.f);
+}
+
+// The wing's mesh lifted onto the strip keeps every triangle's shape: a node near the swept leading
+// edge moves along its section's parameter, not onto the edge (robustness sweep, C-type seed 2
+// run 10: a lower-surface node projected onto the leading edge made a flat triangle, a prism with
+// scaled Jacobian -3e-13 after curving).
+TEST(CShell, LiftedWingTrianglesStayOpenNearASweptLeadingEdge) {
+  const Built b = build(naca("4412", false, 0.97, 22.6), 0.178, 0.1);
+  const mesh::Mesh& m = b.f.mesh;
+  double flattest = 1.0;
+  for (const auto& el : m.elements()) {
+    if (el.shape != ho::Shape::Prism) continue;
+    const Vec3 a = m.node(el.vertices[0]), p = m.node(el.vertices[1]), q = m.node(el.vertices[2]);
+    flattest = std::min(flattest, (p - a).cross(q - a).norm() / ((p - a).norm() * (q - a).norm()));
+  }
+  EXPECT_GT(flattest, 1e-2);
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield

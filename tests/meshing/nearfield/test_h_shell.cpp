@@ -51,6 +51,7 @@ Built build(const WakeParams& wake) {
 
 WakeParams short_wake() {
   WakeParams w;
+  w.te_base = "te_base";  // the config resolves "auto" to a name; the near field takes the name
   w.length = 1.0;
   w.layers = 6;
   return w;

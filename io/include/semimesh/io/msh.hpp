@@ -11,9 +11,10 @@
 // types, size_t for counts and node/element tags): about half the bytes, several times faster;
 // Gmsh reads it, PyFR does not (ASCII only).
 // Node order inside an element is the canonical Gmsh order, so it is written as stored.
-// Orders 1..9 (kMaxMshOrder). A GLL mesh is resampled to equispaced nodes first (io::to_equispaced).
+// Orders 1..9 (kMaxMshOrder). A GLL mesh is written at its equispaced nodes (io::EquispacedNodes).
 #pragma once
 
+#include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/progress.hpp"
 
@@ -29,6 +30,10 @@ enum class MshEncoding { Ascii, Binary };
 /// the fraction of nodes and elements written, throttled.
 void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version = MshVersion::V41,
                MshEncoding encoding = MshEncoding::Ascii, const ProgressCallback& progress = {});
+/// The same with the equispaced node positions given (computed once for several formats).
+void write_msh(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+               MshVersion version = MshVersion::V41, MshEncoding encoding = MshEncoding::Ascii,
+               const ProgressCallback& progress = {});
 
 /// Reads an ASCII MSH 4.1 or 2.2 file: 3D elements become mesh elements, triangles and quads
 /// become boundary faces in the group named by their physical group ("surface_<tag>" when the

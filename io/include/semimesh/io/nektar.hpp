@@ -20,6 +20,7 @@
 // base64 encoded, COMPRESSED="B64Z-LittleEndian" BITSIZE="64" (MeshGraphIOXmlCompressed.cpp).
 #pragma once
 
+#include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
 #include <string>
@@ -31,6 +32,9 @@ enum class NektarEncoding { Compressed, Plain };
 /// Writes atomically; GLL meshes are resampled to equispaced points. Throws std::runtime_error
 /// naming the element if Nektar++'s rules cannot be met (see nektar_numbering.hpp), or on I/O errors.
 void write_nektar_xml(const mesh::Mesh& mesh, const std::string& path,
+                      NektarEncoding encoding = NektarEncoding::Compressed);
+/// The same with the equispaced node positions given (computed once for several formats).
+void write_nektar_xml(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
                       NektarEncoding encoding = NektarEncoding::Compressed);
 
 }  // namespace semimesh::io

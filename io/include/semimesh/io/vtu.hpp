@@ -10,6 +10,7 @@
 // Lagrange pyramid): their curvature is not shown.
 #pragma once
 
+#include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/progress.hpp"
 
@@ -23,6 +24,9 @@ enum class VtuEncoding { CompressedBinary, Ascii };
 /// (compressed encoding only).
 void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding = VtuEncoding::CompressedBinary,
                const ProgressCallback& progress = {});
+/// The same with the equispaced node positions given (computed once for several formats).
+void write_vtu(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+               VtuEncoding encoding = VtuEncoding::CompressedBinary, const ProgressCallback& progress = {});
 
 /// A ParaView multiblock data set (.vtm, VTK's XML vtkMultiBlockDataSet) for opening and slicing
 /// without a threshold: block "volume" (the volume elements with every node, cell data "region")
@@ -33,6 +37,9 @@ void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding enco
 /// are written in a temporary folder that replaces an older NAME/ only when all are written, and the
 /// .vtm is committed last; on failure the older pair stays. `progress`: per block and array.
 void write_vtm(const mesh::Mesh& mesh, const std::string& path, const ProgressCallback& progress = {});
+/// The same with the equispaced node positions given.
+void write_vtm(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+               const ProgressCallback& progress = {});
 
 /// The folder of write_vtm's pieces: `path` without its extension.
 std::string vtm_piece_folder(const std::string& path);

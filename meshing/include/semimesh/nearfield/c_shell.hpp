@@ -7,12 +7,19 @@
 //    delta_wall (the wall layer's thickness) from the planar wall, in the direction e_i of the
 //    wall plane that bisects the outward normals of the two root segments at R_i (medial_halo);
 //  - W_i, the top of the root strip: the foot of H_i on R_i's own wing surface (on the spanwise
-//    curve leaving R_i when R_i is a CAD vertex), so H_i - W_i is the wing's normal at W_i;
-//  - L_i = H_i - delta_wall n_wall, on the wall: the wing layer's footprint.
+//    curve leaving R_i when R_i is a CAD vertex), so H_i - W_i is the wing's normal at W_i; where
+//    the wing leans over the fluid (angle > 90 degrees) that foot sinks below delta_wall, and W_i is
+//    raised along the wing to the height delta_wall;
+//  - L_i = H_i - delta_wall n_wall, on the wall: the wing layer's footprint; where the wing leans
+//    over the fluid that foot comes nearer than delta_wing to the root, and L_i is moved out along
+//    e_i to delta_wing from R_i (the wall layer's prisms there lean to meet the halo).
+// So the hex R-W-H-L keeps both strips (a sliver would be folded by the curved root at high order).
+// At 90 degrees and below, W_i and L_i are the halo's feet.
 // The wing's surface mesh is lifted along the wing so that its root row lands on the W line (every
-// node at height d above the wall moves to s + d (1 - s / D) along its CAD entity: s the strip
-// height, D the tip's height), and the O-type layer is built on it with the offsets of the W nodes
-// pinned at H. One hex per root segment fills R-W-H-L (vertex order: near_field.hpp). The wall's
+// node at height d above the wall moves to s + d (1 - s / D) along its CAD entity, by Newton in the
+// entity's parameters: s the strip height, D the tip's height), and the O-type layer is built on it
+// with the offsets of the W nodes pinned at H. One hex per root segment fills R-W-H-L (vertex
+// order: near_field.hpp). The wall's
 // own layer (prisms between the L loop and the box) is built by the far field on its wall mesh, its
 // top nodes over the L loop being the halo points (NearField::footprint_top).
 //

@@ -46,7 +46,7 @@ struct WakeParams {
   double widening_deg = 0.0;
   double gap = 0.1;
   double ratio_end = 1.0;
-  std::string te_base = "te_base";
+  std::string te_base = "auto";  ///< the pipeline resolves "auto" (cad_roles) to the detected base's name
 };
 
 /// One row per key of WakeParams (semimesh/params/table.hpp).

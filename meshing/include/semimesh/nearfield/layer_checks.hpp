@@ -11,7 +11,8 @@ namespace semimesh::nearfield {
 /// A prism (vertices 0,1,2 on the body, 3,4,5 their offsets) is sound when its Jacobian is
 /// certified positive over the whole element (ho::certify_jacobian) and, at every vertex pair i,
 /// i+3, the Jacobian at the offset vertex is at least `min_outer_ratio` of the one at the body
-/// vertex: a concave fan whose offsets converge (about to cross) fails the second test before the
+/// vertex, which must be at least 1e-9 of the product of its edges there (a flat body triangle is
+/// no prism, whatever the sign of its round-off): a concave fan whose offsets converge (about to cross) fails the second test before the
 /// first. Both tests pass for any thin enough layer when the node normals see their triangles.
 bool prism_is_sound(const std::array<Vec3, 6>& vertices, double min_outer_ratio = 0.1);
 

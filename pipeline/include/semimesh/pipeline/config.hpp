@@ -51,9 +51,10 @@ struct GeometryConfig {
   std::string units = "chord";   ///< label of the model's unit
   double scale = 1.0;            ///< factor applied to a CAD file's coordinates at load
   NacaConfig naca;
-  std::vector<std::string> body = {"upper", "lower", "te_base", "tip"};  ///< te_base dropped by default for a sharp TE
-  std::string wall = "wall";
-  std::vector<std::string> farfield = {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmax"};
+  /// Surface names or ids ("#7"), or "auto": found from the model (pipeline/roles.hpp).
+  std::vector<std::string> body = {"auto"};
+  std::string wall = "auto";
+  std::vector<std::string> farfield = {"auto"};
 };
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.

@@ -1,0 +1,65 @@
+#include "init_from_cad.hpp"
+
+#include "semimesh/surface/cad_roles.hpp"
+
+#include <fmt/format.h>
+
+#include <string>
+
+namespace semimesh::app {
+namespace {
+
+// A role entry: the surface's name, or "#id" when another surface has the same name.
+std::string surface_entry(const cad::Model& model, int s) {
+  const std::string& name = model.surface(s).name();
+  return !name.empty() && name != "auto" && model.find_surface(name) == s ? name : fmt::format("#{}", s);
+}
+
+std::vector<std::string> surface_entries(const cad::Model& model, const std::vector<int>& surfaces) {
+  std::vector<std::string> entries;
+  for (int s : surfaces) entries.push_back(surface_entry(model, s));
+  return entries;
+}
+
+// Four significant digits: what a user would write, and plenty for a size.
+double round_to_4_digits(double x) { return std::stod(fmt::format("{:.4g}", x)); }
+
+void scale_lengths(pipeline::Config& config, double factor) {
+  for (const pipeline::ConfigSection& section : pipeline::config_sections())
+    for (const params::Key<pipeline::Config>& key : section.keys)
+      for (const std::string& length : length_keys())
+        if (section.name + "." + key.name == length)
+          key.set(config, round_to_4_digits(std::get<double>(key.get(config)) * factor));
+}
+
+}  // namespace
+
+const std::vector<std::string>& length_keys() {
+  static const std::vector<std::string> keys = {
+      "nearfield.thickness", "wall_layer.thickness", "wake.length",       "wake.gap",           "sizing.max_size",
+      "sizing.min_size",     "sizing.le_size",       "sizing.te_size",    "farfield.box_size",  "farfield.wall_size"};
+  return keys;
+}
+
+CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_path, const std::string& source_text) {
+  const std::string backend = registry.backend_for_path(cad_path);
+  const std::unique_ptr<cad::Model> model = registry.load(backend, cad::Source{cad_path, {}});
+  const surface::CadRoles roles = surface::detect_cad_roles(*model);
+  CadConfig out;
+  pipeline::Config& c = out.config;
+  c.geometry.backend = backend;
+  c.geometry.source = source_text;
+  c.geometry.units = model->units();
+  c.geometry.body = surface_entries(*model, roles.body);
+  c.geometry.wall = surface_entry(*model, roles.wall);
+  c.geometry.farfield = surface_entries(*model, roles.farfield);
+  if (roles.te_base) c.wake.te_base = surface_entry(*model, *roles.te_base);
+  scale_lengths(c, roles.chord);
+  out.summary = fmt::format("Written by `semimesh init --cad {}`: the roles found in the file, and the lengths of the\n"
+                            "paper's case (chord 1) times the body's root chord {:.6g} {}.\n",
+                            cad_path, roles.chord, model->units());
+  out.summary += surface::describe_cad_roles(*model, roles);
+  return out;
+}
+
+}  // namespace semimesh::app

@@ -1,0 +1,239 @@
+#include "semimesh/surface/cad_roles.hpp"
+
+#include "semimesh/cad/labels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+namespace semimesh::surface {
+namespace {
+
+using cad::Vec2;
+using cad::Vec3;
+
+constexpr int kCurveSamples = 12;
+constexpr int kFaceGrid = 9;
+// A base is narrow when its root curves are shorter than this fraction of the root chord, and lies
+// at the downstream end when its root points average within this fraction of the chord from it.
+constexpr double kNarrowFraction = 0.1;
+constexpr double kDownstreamFraction = 0.1;
+// A tip is flat across the span: its extent along the span below this fraction of its chord.
+constexpr double kFlatTipFraction = 0.25;
+
+[[noreturn]] void fail(const std::string& message) { throw CadRoleError("CAD roles: " + message); }
+
+std::vector<Vec3> curve_samples(const cad::Curve& curve) {
+  const cad::Interval b = curve.bounds();
+  std::vector<Vec3> points;
+  for (int i = 0; i <= kCurveSamples; ++i) points.push_back(curve.point(b.lo + b.length() * i / kCurveSamples));
+  return points;
+}
+
+// Points of a face: its boundary curves and the inside points of a grid over its parameter box.
+std::vector<Vec3> face_samples(const cad::Model& model, int s) {
+  std::vector<Vec3> points;
+  for (const cad::Loop& loop : model.loops(s))
+    for (const cad::CurveUse& use : loop.uses) {
+      const auto c = curve_samples(model.curve(use.curve));
+      points.insert(points.end(), c.begin(), c.end());
+    }
+  const cad::Surface& face = model.surface(s);
+  const auto box = face.bounds();
+  for (int i = 0; i <= kFaceGrid; ++i)
+    for (int j = 0; j <= kFaceGrid; ++j) {
+      const Vec2 uv(box[0].lo + box[0].length() * i / kFaceGrid, box[1].lo + box[1].length() * j / kFaceGrid);
+      if (face.contains(uv)) points.push_back(face.point(uv));
+    }
+  return points;
+}
+
+// Curves of the face's inner loops that some other face also uses: where a body stands on it.
+std::set<int> root_curves(const cad::Model& model, int wall) {
+  std::set<int> curves;
+  const auto& loops = model.loops(wall);
+  for (std::size_t l = 1; l < loops.size(); ++l)
+    for (const cad::CurveUse& use : loops[l].uses)
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(use.curve))
+        if (u.surface != wall) curves.insert(use.curve);
+  return curves;
+}
+
+// Faces reached from the root curves across shared curves, never crossing the wall.
+std::vector<int> faces_behind(const cad::Model& model, int wall, const std::set<int>& root) {
+  std::vector<char> seen(model.num_surfaces(), 0);
+  std::vector<int> stack;
+  auto reach = [&](int curve) {
+    for (const cad::SurfaceUse& u : model.surfaces_of_curve(curve))
+      if (u.surface != wall && !seen[u.surface]) {
+        seen[u.surface] = 1;
+        stack.push_back(u.surface);
+      }
+  };
+  for (int c : root) reach(c);
+  while (!stack.empty()) {
+    const int s = stack.back();
+    stack.pop_back();
+    for (const cad::Loop& loop : model.loops(s))
+      for (const cad::CurveUse& use : loop.uses) reach(use.curve);
+  }
+  std::vector<int> faces;
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    if (seen[s]) faces.push_back(s);
+  return faces;
+}
+
+bool uses_any(const cad::Model& model, int s, const std::set<int>& curves) {
+  for (const cad::Loop& loop : model.loops(s))
+    for (const cad::CurveUse& use : loop.uses)
+      if (curves.count(use.curve)) return true;
+  return false;
+}
+
+// A planar face can be the wall when faces stand on its inner loops and none of them also reaches
+// its outer loop (which would make the "hole" a passage to the outer shell, not a body's root).
+bool holds_a_body(const cad::Model& model, int wall) {
+  if (!model.surface(wall).is_planar()) return false;
+  const std::set<int> root = root_curves(model, wall);
+  if (root.empty()) return false;
+  std::set<int> outer;
+  for (const cad::CurveUse& use : model.loops(wall).front().uses) outer.insert(use.curve);
+  for (int s : faces_behind(model, wall, root))
+    if (uses_any(model, s, outer)) return false;
+  return true;
+}
+
+std::string labels(const cad::Model& model, const std::vector<int>& surfaces) {
+  std::string text;
+  for (int s : surfaces) text += (text.empty() ? "" : ", ") + cad::surface_label(model, s);
+  return text.empty() ? "none" : text;
+}
+
+int find_wall(const cad::Model& model) {
+  std::vector<int> walls;
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    if (holds_a_body(model, s)) walls.push_back(s);
+  if (walls.empty())
+    fail("no planar face holds a body's root loop as an inner loop: the model has no wall the body stands on "
+         "(name the wall with geometry.wall, or check that the body is sewn to it: cad-info lists each curve's faces)");
+  if (walls.size() > 1)
+    fail("several planar faces hold a body's root loop (" + labels(model, walls) + "): name the wall with geometry.wall");
+  return walls.front();
+}
+
+// The wall's normal into the fluid and a point on it.
+std::pair<Vec3, Vec3> wall_plane(const cad::Model& model, int wall) {
+  const cad::Curve& curve = model.curve(model.loops(wall).front().uses.front().curve);
+  const Vec3 p0 = curve.point(curve.bounds().lo);
+  return {model.surface(wall).normal(model.surface(wall).project(p0).uv), p0};
+}
+
+struct Extent {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double x) { lo = std::min(lo, x); hi = std::max(hi, x); }
+  double length() const { return hi - lo; }
+};
+
+Extent extent(const std::vector<Vec3>& points, const Vec3& direction, const Vec3& origin) {
+  Extent e;
+  for (const Vec3& p : points) e.add((p - origin).dot(direction));
+  return e;
+}
+
+}  // namespace
+
+CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
+  CadRoles roles;
+  if (wall) {
+    if (*wall < 0 || *wall >= model.num_surfaces()) fail(fmt::format("no surface {}", *wall));
+    if (!model.surface(*wall).is_planar()) fail("the wall " + cad::surface_label(model, *wall) + " is not planar");
+  }
+  roles.wall = wall ? *wall : find_wall(model);
+  const std::set<int> root = root_curves(model, roles.wall);
+  if (root.empty())
+    fail("the wall " + cad::surface_label(model, roles.wall) +
+         " has no inner loop another face shares: no body stands on it (name the body with geometry.body)");
+  roles.body = faces_behind(model, roles.wall, root);
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    if (s != roles.wall && !std::binary_search(roles.body.begin(), roles.body.end(), s)) roles.farfield.push_back(s);
+  if (roles.farfield.empty())
+    fail("every face other than the wall " + cad::surface_label(model, roles.wall) +
+         " belongs to the body: the model has no far field (an outer shell)");
+
+  const auto [normal, origin] = wall_plane(model, roles.wall);
+  roles.span_direction = normal;
+  const Vec3 x_axis = Vec3::UnitX();
+  const Vec3 streamwise_raw = x_axis - x_axis.dot(normal) * normal;
+  if (streamwise_raw.norm() < 1e-6)
+    fail("the wall " + cad::surface_label(model, roles.wall) + " is normal to x: the streamwise direction (x) lies along the span");
+  const Vec3 streamwise = streamwise_raw.normalized();
+
+  const double tolerance = 1e-6 * std::max(1.0, model.bbox().diagonal());
+  Extent span;
+  std::vector<std::vector<Vec3>> samples(model.num_surfaces());
+  for (int s : roles.body) {
+    samples[s] = face_samples(model, s);
+    const Extent e = extent(samples[s], normal, origin);
+    if (e.lo < -std::max(tolerance, 1e-6 * e.length()))
+      fail("the body " + cad::surface_label(model, s) + " reaches " + fmt::format("{:.6g}", -e.lo) +
+           " below the plane of the wall " + cad::surface_label(model, roles.wall));
+    span.add(e.hi);
+  }
+  roles.span = span.hi;
+
+  std::vector<Vec3> root_points;
+  for (int c : root) {
+    const auto points = curve_samples(model.curve(c));
+    root_points.insert(root_points.end(), points.begin(), points.end());
+  }
+  const Extent chord = extent(root_points, streamwise, origin);
+  roles.chord = chord.length();
+
+  // The base: narrow on the root, at its downstream end; the most downstream one if several.
+  double best = -std::numeric_limits<double>::infinity();
+  for (int s : roles.body) {
+    double length = 0.0;
+    Extent along;
+    for (int c : root) {
+      bool used = false;
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c)) used = used || u.surface == s;
+      if (!used) continue;
+      length += model.curve(c).length();
+      const Extent e = extent(curve_samples(model.curve(c)), streamwise, origin);
+      along.add(e.lo);
+      along.add(e.hi);
+    }
+    const double middle = 0.5 * (along.lo + along.hi);
+    if (length > 0.0 && length < kNarrowFraction * roles.chord && middle > chord.hi - kDownstreamFraction * roles.chord &&
+        middle > best) {
+      best = middle;
+      roles.te_base = s;
+    }
+  }
+
+  for (int s : roles.body) {
+    if (s == roles.te_base || uses_any(model, s, root)) continue;
+    const Extent across = extent(samples[s], normal, origin);
+    const Extent along = extent(samples[s], streamwise, origin);
+    if (across.hi >= roles.span - 1e-3 * roles.span && across.length() < kFlatTipFraction * along.length())
+      roles.tip.push_back(s);
+  }
+  return roles;
+}
+
+std::string describe_cad_roles(const cad::Model& model, const CadRoles& roles) {
+  const Vec3& n = roles.span_direction;
+  std::string text;
+  text += "wall      " + cad::surface_label(model, roles.wall) + "\n";
+  text += "body      " + labels(model, roles.body) + "\n";
+  text += "te_base   " + (roles.te_base ? cad::surface_label(model, *roles.te_base) : std::string("none (a closed trailing edge)")) + "\n";
+  text += "tip       " + labels(model, roles.tip) + "\n";
+  text += "far field " + labels(model, roles.farfield) + "\n";
+  text += fmt::format("span      {:.6g} along ({:.4g}, {:.4g}, {:.4g}) (the wall's normal); root chord {:.6g}\n", roles.span,
+                      n.x(), n.y(), n.z(), roles.chord);
+  return text;
+}
+
+}  // namespace semimesh::surface
