@@ -11,6 +11,7 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <memory>
@@ -39,8 +40,16 @@ class StageLines : public pipeline::Progress {
   std::ostream& out_;
 };
 
-// On a terminal: one line that shows the running stage and its elapsed time, rewritten in place
-// four times a second, and left as "name ..... 1.234 s" when the stage ends.
+// "12 s", "3 min 05 s": a remaining time.
+std::string duration_text(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  return s < 60 ? fmt::format("{} s", s) : fmt::format("{} min {:02} s", s / 60, s % 60);
+}
+
+// On a terminal: one line that shows the running stage, its % done and the time left (the elapsed
+// time over the fraction done) or, before any progress, its elapsed time; rewritten in place on
+// progress (at most ten times a second) and four times a second, and left as
+// "name ..... 1.234 s" when the stage ends.
 class TerminalLine : public pipeline::Progress {
  public:
   explicit TerminalLine(std::ostream& out) : out_(out), ticker_([this] { tick(); }) {}
@@ -56,7 +65,16 @@ class TerminalLine : public pipeline::Progress {
     std::lock_guard<std::mutex> lock(mutex_);
     stage_ = name;
     start_ = std::chrono::steady_clock::now();
+    fraction_ = -1.0;
+    step_.clear();
     draw();
+  }
+  void stage_progress(double fraction, const std::string& step) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool first = fraction_ < 0.0;
+    fraction_ = fraction;
+    step_ = step;
+    if (first || std::chrono::steady_clock::now() - drawn_ >= std::chrono::milliseconds(100)) draw();
   }
   void stage_finished(const pipeline::StageTiming& timing) override {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -68,8 +86,16 @@ class TerminalLine : public pipeline::Progress {
  private:
   void draw() {
     if (stage_.empty()) return;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    fmt::print(out_, "\r\033[K{:.<24} running, {:.0f} s", stage_ + " ", seconds);
+    drawn_ = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(drawn_ - start_).count();
+    if (fraction_ < 0.0) {
+      fmt::print(out_, "\r\033[K{:.<24} running, {:.0f} s", stage_ + " ", seconds);
+    } else {
+      const std::string eta =
+          fraction_ > 0.0 ? duration_text(seconds * (1.0 - fraction_) / fraction_) : std::string("--");
+      fmt::print(out_, "\r\033[K{:.<24} {:3.0f}%  ETA {}{}", stage_ + " ", 100.0 * fraction_, eta,
+                 step_.empty() ? std::string() : "  (" + step_ + ")");
+    }
     out_.flush();
   }
   void tick() {
@@ -81,17 +107,30 @@ class TerminalLine : public pipeline::Progress {
   std::mutex mutex_;
   std::condition_variable wake_;
   bool done_ = false;
-  std::string stage_;
-  std::chrono::steady_clock::time_point start_;
+  std::string stage_, step_;
+  double fraction_ = -1.0;  ///< of the running stage; < 0 before its first progress report
+  std::chrono::steady_clock::time_point start_, drawn_;
   std::thread ticker_;
 };
 
-// --log-json: {"event": "stage_started" | "stage_finished", ...} per line.
+// --log-json: {"event": "stage_started" | "progress" | "stage_finished", ...} per line. Progress
+// events are throttled: one each time the fraction has grown by kJsonProgressStep since the last.
 class JsonEvents : public pipeline::Progress {
  public:
+  static constexpr double kJsonProgressStep = 0.05;
+
   explicit JsonEvents(std::ostream& out) : out_(out) {}
   void stage_started(const std::string& name) override {
     fmt::print(out_, "{{\"event\": \"stage_started\", \"stage\": {}}}\n", io::json_string(name));
+    out_.flush();
+    stage_ = name;
+    last_ = -1.0;
+  }
+  void stage_progress(double fraction, const std::string& step) override {
+    if (last_ >= 0.0 && fraction < last_ + kJsonProgressStep && !(fraction >= 1.0 && last_ < 1.0)) return;
+    last_ = fraction;
+    fmt::print(out_, "{{\"event\": \"progress\", \"stage\": {}, \"fraction\": {}, \"step\": {}}}\n",
+               io::json_string(stage_), io::json_number(fraction), io::json_string(step));
     out_.flush();
   }
   void stage_finished(const pipeline::StageTiming& timing) override {
@@ -102,6 +141,8 @@ class JsonEvents : public pipeline::Progress {
 
  private:
   std::ostream& out_;
+  std::string stage_;
+  double last_ = -1.0;  ///< fraction of the last progress event of the stage; < 0 before the first
 };
 
 std::unique_ptr<pipeline::Progress> progress_for(const RunOptions& options, std::ostream& out) {
@@ -170,7 +211,7 @@ CLI::App* add_run_subcommand(CLI::App& app, RunOptions& options) {
   cmd->add_flag("-q,--quiet", options.quiet, "Print errors only");
   cmd->add_flag("-v,--verbose", options.verbose, "Also print the configuration as read, key by key");
   cmd->add_flag("--log-json", options.log_json,
-                "Print one JSON object per event (stage started/finished, warning, result) instead of text");
+                "Print one JSON object per event (stage started/progress/finished, warning, result) instead of text");
   return cmd;
 }
 

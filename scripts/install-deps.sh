@@ -12,6 +12,7 @@ packages=(
   zlib1g-dev                                    # compressed VTU / Nektar++ output
   libtet1.5-dev libcgal-dev libgmp-dev libmpfr-dev
   python3 python3-numpy python3-gmsh python3-vtk9 python3-meshio
+  librsvg2-bin                                  # scripts/readme-pictures.sh: large SVG pictures to PNG
 )
 
 missing=()

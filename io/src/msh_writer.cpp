@@ -113,7 +113,7 @@ void write_element(MshOut& out, std::size_t tag, const std::vector<mesh::NodeId>
 const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron};
 const ho::Shape kFaceShapes[] = {ho::Shape::Triangle, ho::Shape::Quadrilateral};
 
-void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, bool binary) {
+void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, bool binary, ProgressCounter& counter) {
   const Tags t = make_tags(m);
   MshOut out(file, binary);
   file.print("$MeshFormat\n4.1 {} 8\n", binary ? 1 : 0);
@@ -153,7 +153,11 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, 
     out.size(n);
     out.end_record();
     for (std::size_t i = 1; i <= n; ++i) out.size(i), out.end_record();
-    for (const auto& p : x.all()) out.real(p[0]), out.real(p[1]), out.real(p[2]), out.end_record();
+    for (const auto& p : x.all()) {
+      out.real(p[0]), out.real(p[1]), out.real(p[2]), out.end_record();
+      counter.add();
+      counter.report_if_due();
+    }
   }
   out.end_section("Nodes");
 
@@ -194,24 +198,34 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, 
         if (m.elements()[e].shape == b.shape && int(m.elements()[e].region) == b.region_or_group) {
           m.element_nodes(e, ids);
           write_element(out, ++tag, ids);
+          counter.add();
+          counter.report_if_due();
         }
     } else {
       for (std::size_t f = 0; f < m.boundary_faces().size(); ++f) {
         const auto& bf = m.boundary_faces()[f];
-        if (bf.shape == b.shape && bf.group == b.region_or_group) write_element(out, ++tag, m.boundary_face_nodes(f));
+        if (bf.shape == b.shape && bf.group == b.region_or_group) {
+          write_element(out, ++tag, m.boundary_face_nodes(f));
+          counter.add();
+          counter.report_if_due();
+        }
       }
     }
   }
   out.end_section("Elements");
 }
 
-void write_v22(AtomicFile& out, const mesh::Mesh& m, const EquispacedNodes& x) {
+void write_v22(AtomicFile& out, const mesh::Mesh& m, const EquispacedNodes& x, ProgressCounter& counter) {
   const Tags t = make_tags(m);
   out.print("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n");
   write_physical_names(out, m, t);
   out.print("$Nodes\n{}\n", m.num_nodes());
   std::size_t id = 0;
-  for (const auto& p : x.all()) out.print("{} {} {} {}\n", ++id, p[0], p[1], p[2]);
+  for (const auto& p : x.all()) {
+    out.print("{} {} {} {}\n", ++id, p[0], p[1], p[2]);
+    counter.add();
+    counter.report_if_due();
+  }
   out.print("$EndNodes\n$Elements\n{}\n", m.elements().size() + m.boundary_faces().size());
   std::size_t tag = 0;
   std::vector<mesh::NodeId> ids;
@@ -222,33 +236,41 @@ void write_v22(AtomicFile& out, const mesh::Mesh& m, const EquispacedNodes& x) {
               t.volume_tag[region]);
     for (mesh::NodeId n : ids) out.print(" {}", n + 1);
     out.print("\n");
+    counter.add();
+    counter.report_if_due();
   }
   for (std::size_t b = 0; b < m.boundary_faces().size(); ++b) {
     const auto& bf = m.boundary_faces()[b];
     out.print("{} {} 2 {} {}", ++tag, gmsh_element_type(bf.shape, m.order()), bf.group + 1, bf.group + 1);
     for (mesh::NodeId n : m.boundary_face_nodes(b)) out.print(" {}", n + 1);
     out.print("\n");
+    counter.add();
+    counter.report_if_due();
   }
   out.print("$EndElements\n");
 }
 
 }  // namespace
 
-void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version, MshEncoding encoding) {
-  write_msh(mesh, EquispacedNodes(mesh), path, version, encoding);
+void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version, MshEncoding encoding,
+               const ProgressCallback& progress) {
+  write_msh(mesh, EquispacedNodes(mesh), path, version, encoding, progress);
 }
 
 void write_msh(const mesh::Mesh& m, const EquispacedNodes& nodes, const std::string& path, MshVersion version,
-               MshEncoding encoding) {
+               MshEncoding encoding, const ProgressCallback& progress) {
   gmsh_element_type(ho::Shape::Tetrahedron, m.order());  // rejects unsupported orders early
   if (version == MshVersion::V22 && encoding == MshEncoding::Binary)
     throw std::invalid_argument("MSH 2.2 is written as ASCII only (use MSH 4.1 for binary): " + path);
   AtomicFile out(path);
+  // Progress: one item per node and per element or boundary face written.
+  ProgressCounter counter(progress, m.num_nodes() + m.elements().size() + m.boundary_faces().size());
   if (version == MshVersion::V41)
-    write_v41(out, m, nodes, encoding == MshEncoding::Binary);
+    write_v41(out, m, nodes, encoding == MshEncoding::Binary, counter);
   else
-    write_v22(out, m, nodes);
+    write_v22(out, m, nodes, counter);
   out.commit();
+  counter.finish();
 }
 
 }  // namespace semimesh::io

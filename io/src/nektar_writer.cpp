@@ -1,4 +1,5 @@
 #include "nektar_numbering.hpp"
+#include "xml_escape.hpp"
 #include "zlib_stream.hpp"
 
 #include "semimesh/io/atomic_file.hpp"
@@ -23,18 +24,6 @@ const char* const kCompressed = "COMPRESSED=\"B64Z-LittleEndian\" BITSIZE=\"64\"
 
 const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism,
                                    ho::Shape::Hexahedron};
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 /// "0-3,7,9-10": Nektar++'s range syntax inside X[...].
 std::string id_ranges(const std::vector<std::size_t>& ids) {

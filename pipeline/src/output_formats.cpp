@@ -8,27 +8,55 @@
 
 namespace semimesh::pipeline {
 
+using Paths = std::vector<std::string>;
+using io::MshEncoding, io::MshVersion;
+
 const std::vector<OutputFormat>& output_formats() {
   using Mesh = mesh::Mesh;
   using Nodes = io::EquispacedNodes;
   using S = std::string;
+  using Report = ProgressCallback;
   static const std::vector<OutputFormat> formats = {
       {"msh41", ".msh", "",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_msh(m, x, p, io::MshVersion::V41); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_msh(m, x, p, MshVersion::V41, MshEncoding::Ascii, progress);
+         return Paths{p};
+       }},
       {"msh41-binary", ".msh", ".bin.msh",
-       [](const Mesh& m, const Nodes& x, const S& p) {
-         io::write_msh(m, x, p, io::MshVersion::V41, io::MshEncoding::Binary);
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_msh(m, x, p, MshVersion::V41, MshEncoding::Binary, progress);
+         return Paths{p};
        }},
       {"msh22", ".msh", ".v22.msh",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_msh(m, x, p, io::MshVersion::V22); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_msh(m, x, p, MshVersion::V22, MshEncoding::Ascii, progress);
+         return Paths{p};
+       }},
       {"vtu", ".vtu", "",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_vtu(m, x, p, io::VtuEncoding::CompressedBinary); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_vtu(m, x, p, io::VtuEncoding::CompressedBinary, progress);
+         return Paths{p};
+       }},
       {"vtu-ascii", ".vtu", ".ascii.vtu",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_vtu(m, x, p, io::VtuEncoding::Ascii); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report&) {
+         io::write_vtu(m, x, p, io::VtuEncoding::Ascii);
+         return Paths{p};
+       }},
+      {"vtm", ".vtm", "",
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_vtm(m, x, p, progress);
+         return Paths{p, io::vtm_piece_folder(p)};
+       }},
       {"nektar", ".xml", "",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_nektar_xml(m, x, p, io::NektarEncoding::Compressed); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report&) {
+         io::write_nektar_xml(m, x, p, io::NektarEncoding::Compressed);
+         return Paths{p};
+       }},
       {"nektar-xml", ".xml", ".plain.xml",
-       [](const Mesh& m, const Nodes& x, const S& p) { io::write_nektar_xml(m, x, p, io::NektarEncoding::Plain); }},
+       [](const Mesh& m, const Nodes& x, const S& p, const Report&) {
+         io::write_nektar_xml(m, x, p, io::NektarEncoding::Plain);
+         return Paths{p};
+       }},
   };
   return formats;
 }

@@ -34,6 +34,7 @@
 #include <future>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <type_traits>
 
 namespace semimesh::pipeline {
@@ -48,10 +49,28 @@ constexpr double kCurvedBodyVolumeFraction = 0.02;
 // the pre-cut skin compute the same points up to round-off.
 constexpr double kWeldTolerance = 1e-9;
 
-// Runs one stage: reports its start and end, and turns its exceptions into RunError.
+// The stage's progress callback: forwards to `progress`, never letting the fraction go back (the
+// parts of a stage report at their own start; a part may end below where the next starts).
+ProgressCallback stage_progress(Progress& progress) {
+  auto last = std::make_shared<double>(0.0);
+  return [&progress, last](double fraction, const std::string& step) {
+    *last = std::max(*last, std::clamp(fraction, 0.0, 1.0));
+    progress.stage_progress(*last, step);
+  };
+}
+
+// Runs one stage: reports its start and end, and turns its exceptions into RunError. A body that
+// takes a ProgressCallback reports its progress through it.
 template <typename Stage>
 auto stage(const std::string& name, Progress& progress, RunResult& result, Stage&& body) {
   progress.stage_started(name);
+  const ProgressCallback report = stage_progress(progress);
+  auto call = [&] {
+    if constexpr (std::is_invocable_v<Stage&, const ProgressCallback&>)
+      return body(report);
+    else
+      return body();
+  };
   const auto start = std::chrono::steady_clock::now();
   auto finish = [&] {
     const StageTiming timing{name, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
@@ -64,11 +83,11 @@ auto stage(const std::string& name, Progress& progress, RunResult& result, Stage
     return RunError(cause, name, what.rfind(prefix, 0) == 0 ? what : prefix + what);
   };
   try {
-    if constexpr (std::is_void_v<decltype(body())>) {
-      body();
+    if constexpr (std::is_void_v<decltype(call())>) {
+      call();
       finish();
     } else {
-      auto value = body();
+      auto value = call();
       finish();
       return value;
     }
@@ -270,8 +289,8 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     }
     return surface::SizeField(model, params);
   });
-  surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&] {
-    return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles));
+  surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
+    return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles), report);
   });
   result.surface_triangles = surfaces.num_triangles();
   result.surface_quads = surfaces.num_quads();
@@ -338,9 +357,9 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   for (const nearfield::Warning& w : near.warnings)
     result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
                                           w.where.y(), w.where.z()));
-  farfield::FarField far = stage("far field", progress, result, [&] {
+  farfield::FarField far = stage("far field", progress, result, [&](const ProgressCallback& report) {
     return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall,
-                                     junction ? config.wall_layer.thickness : 0.0);
+                                     junction ? config.wall_layer.thickness : 0.0, report);
   });
   result.far_field = far.stats;
   return {std::move(far.mesh), std::move(far.stacks), std::move(wake)};
@@ -350,17 +369,18 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
 // what curving folded. What cannot be repaired stays invalid and is reported by the checks (exit 2).
 mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear, Progress& progress,
                        RunResult& result) {
-  mesh::Mesh curved = stage("curve", progress, result, [&] {
-    return ho::curve_mesh(linear, model, config.highorder, &result.curving);
+  mesh::Mesh curved = stage("curve", progress, result, [&](const ProgressCallback& report) {
+    return ho::curve_mesh(linear, model, config.highorder, &result.curving, report);
   });
   result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
   if (result.curving.optimisation_fallbacks > 0)
     result.warnings.push_back(fmt::format("curve: the spring optimisation did not converge on {} edge(s)/face(s) "
                                           "within {} iterations; they keep their parameter-space positions",
                                           result.curving.optimisation_fallbacks, config.highorder.spring_iterations));
-  return stage("repair", progress, result, [&] {
+  return stage("repair", progress, result, [&](const ProgressCallback& report) {
     const double floor = config.checks.min_scaled_jacobian;
-    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor);
+    // Certifying every element is the bulk of the stage; repairing the few invalid ones the rest.
+    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor, progress_part(report, 0.0, 0.9));
     if (validity.all_valid()) return std::move(curved);
     ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
     const ho::RepairStats& stats = repaired.stats;
@@ -391,10 +411,11 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     result.wake.ratio_first = ratio;
     result.wake.ratio_last = config.wake.ratio_end;
   }
-  StackSplit split = stage("split", progress, result, [&] {
+  StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
-                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)});
+                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
+                                   report);
     // The coarse elements' inner nodes are no longer used by any element: drop them.
     fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
@@ -437,8 +458,11 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
 
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            Progress& progress, RunResult& result) {
-  stage("checks", progress, result, [&] {
+  stage("checks", progress, result, [&](const ProgressCallback& report) {
+    // Rough shares of the stage's time: the certification of every element is most of it.
+    if (report) report(0.0, "conformity");
     result.conformity = checks::check_conformity(result.mesh);
+    if (report) report(0.05, "volume");
     std::vector<const surface::SurfaceMesh*> body, box;
     for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
     for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
@@ -448,7 +472,9 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     if (result.mesh.order() > 1)
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
-    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian);
+    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
+                                             progress_part(report, 0.1, 0.9));
+    if (report) report(0.9, "geometric error");
     const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
@@ -465,20 +491,35 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 namespace {
 
 /// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
-/// positions are computed once for all. Files written are added to `written` in config order, also
-/// when another format failed (its first error, in config order, is rethrown).
+/// positions are computed once for all. What each writer wrote is added to `written` in config
+/// order, also when another format failed (its first error, in config order, is rethrown).
+/// Progress: the mean of the files' own fractions, reported under a lock (one call at a time).
 void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
-                      const std::vector<std::string>& paths, std::vector<std::string>& written) {
+                      const std::vector<std::string>& paths, const ProgressCallback& report,
+                      std::vector<std::string>& written) {
   if (formats.empty()) return;
   const io::EquispacedNodes nodes(mesh);
-  std::vector<std::future<void>> writers;
+  std::mutex lock;
+  std::vector<double> done(formats.size(), 0.0);
+  auto file_progress = [&](std::size_t i) -> ProgressCallback {
+    if (!report) return {};
+    return [&, i, file = std::filesystem::path(paths[i]).filename().string()](double f, const std::string& step) {
+      const std::lock_guard<std::mutex> guard(lock);
+      done[i] = std::max(done[i], f);
+      double sum = 0;
+      for (double d : done) sum += d;
+      report(sum / static_cast<double>(done.size()), step.empty() ? file : file + ": " + step);
+    };
+  };
+  std::vector<std::future<std::vector<std::string>>> writers;
   for (std::size_t i = 0; i < formats.size(); ++i)
-    writers.push_back(std::async(std::launch::async, [&, i] { output_format(formats[i]).write(mesh, nodes, paths[i]); }));
+    writers.push_back(std::async(std::launch::async, [&, i] {
+      return output_format(formats[i]).write(mesh, nodes, paths[i], file_progress(i));
+    }));
   std::exception_ptr first_error;
-  for (std::size_t i = 0; i < writers.size(); ++i) {
+  for (auto& writer : writers) {
     try {
-      writers[i].get();
-      written.push_back(paths[i]);
+      for (const std::string& path : writer.get()) written.push_back(path);
     } catch (...) {
       if (!first_error) first_error = std::current_exception();
     }
@@ -489,11 +530,15 @@ void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& fo
 }  // namespace
 
 void write_outputs(const Config& config, Progress& progress, RunResult& result) {
-  stage("write", progress, result, [&] {
+  stage("write", progress, result, [&](const ProgressCallback& report) {
     const std::vector<std::string> paths = output_paths(config.output);
+    // Progress: an equal part per mesh file, and one for the pictures and the report.
+    const double parts = static_cast<double>(config.output.formats.size() + 1);
     try {
       std::filesystem::create_directories(config.output.directory);
-      write_mesh_files(result.mesh, config.output.formats, paths, result.written_files);
+      write_mesh_files(result.mesh, config.output.formats, paths,
+                       progress_part(report, 0.0, (parts - 1) / parts), result.written_files);
+      if (report) report((parts - 1) / parts, config.output.pictures ? "pictures" : "report.json");
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
           const std::string path =
@@ -512,7 +557,7 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
     } catch (...) {
       // Leave no partial output: remove what this run wrote (older files of other runs stay).
       std::error_code ignored;
-      for (const std::string& p : result.written_files) std::filesystem::remove(p, ignored);
+      for (const std::string& p : result.written_files) std::filesystem::remove_all(p, ignored);
       result.written_files.clear();
       throw;
     }

@@ -3,7 +3,7 @@
 namespace semimesh::pipeline {
 
 StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
-                        const FamilySplit& wing, const FamilySplit& wall) {
+                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress) {
   // Family 0 the wing's layers, 1 the wall's; a family of one layer leaves its directions unsplit.
   const std::vector<ho::SplitFamily> families = {{wing.distribution, wing.ratio}, {wall.distribution, wall.ratio}};
   std::vector<ho::LayerSplit> split;
@@ -22,7 +22,7 @@ StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::Lay
   StackSplit result;
   std::vector<ho::SplitStats> stats;
   std::vector<std::size_t> first;
-  result.mesh = ho::split_layers(mesh, split, families, &stats, &first);
+  result.mesh = ho::split_layers(mesh, split, families, &stats, &first, progress);
   result.wing = stats[0];
   result.wall = stats[1];
   for (const nearfield::LayerStack& s : stacks) result.first_layer.push_back(first[s.element]);

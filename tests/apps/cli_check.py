@@ -4,13 +4,16 @@ Used by CTest (tests/apps/CMakeLists.txt) with Debian's /usr/bin/python3; standa
 
   cli_check.py --exe PATH [--exit N] [--stderr-has TEXT]... [--stderr-is TEXT]
                [--stdout-has TEXT]... [--stdout-is TEXT] [--no-stdout] [--json CHECK] [--json-lines]
-               [--pty] [--write NAME:PATH] -- ARGS...
+               [--progress-events STAGE]... [--no-carriage-returns] [--pty] [--write NAME:PATH] -- ARGS...
 
 --write NAME:PATH writes the fixture file NAME (see FIXTURES) to PATH before running.
 --json CHECK parses stdout as one JSON object and runs the named check of JSON_CHECKS.
 --json-lines parses every stdout line as a JSON object; the last must be the "result" event with
-the run's exit code. --rewrites-lines expects a line rewritten in place. --pty runs the command on a pseudo-terminal (script(1)), stdout and stderr
-then arrive together as stdout.
+the run's exit code; with --progress-events, every "progress" event must lie inside its stage (after
+its stage_started, before its stage_finished), with fractions in [0, 1] that never decrease within
+the stage, and each STAGE named must have at least two. --rewrites-lines expects a line rewritten in
+place. --no-carriage-returns expects no '\r' byte on stdout (plain output for logs). --pty runs
+the command on a pseudo-terminal (script(1)), stdout and stderr then arrive together as stdout.
 """
 import argparse
 import json
@@ -117,6 +120,26 @@ JSON_CHECKS = {
 }
 
 
+def check_progress_events(events, stages):
+    running, last, count = None, {}, {}
+    for e in events:
+        if e["event"] == "stage_started":
+            running = e["stage"]
+        elif e["event"] == "stage_finished":
+            running = None
+        elif e["event"] == "progress":
+            stage, fraction = e["stage"], e["fraction"]
+            expect(stage == running, "progress event outside its stage: %r (running: %r)" % (e, running))
+            expect(isinstance(fraction, (int, float)) and 0 <= fraction <= 1, "fraction outside [0, 1]: %r" % e)
+            expect(isinstance(e.get("step"), str), "a progress event names its step: %r" % e)
+            expect(fraction >= last.get(stage, 0), "fraction went back in %s: %r after %r" % (stage, fraction, last.get(stage, 0)))
+            last[stage] = fraction
+            count[stage] = count.get(stage, 0) + 1
+    for stage in stages:
+        expect(count.get(stage, 0) >= 2, "stage %r has %d progress event(s), expected at least 2 (all: %r)"
+               % (stage, count.get(stage, 0), count))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--exe", required=True)
@@ -129,6 +152,8 @@ def main():
     parser.add_argument("--json-lines", action="store_true")
     parser.add_argument("--pty", action="store_true")
     parser.add_argument("--rewrites-lines", action="store_true")
+    parser.add_argument("--no-carriage-returns", action="store_true")
+    parser.add_argument("--progress-events", action="append", default=[])
     parser.add_argument("--json", choices=sorted(JSON_CHECKS))
     parser.add_argument("--write", action="append", default=[])
     parser.add_argument("args", nargs=argparse.REMAINDER)
@@ -143,7 +168,11 @@ def main():
     command = [opts.exe] + args
     if opts.pty:
         command = ["script", "-qec", " ".join(shlex.quote(c) for c in command), "/dev/null"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    run = subprocess.run(command, capture_output=True, timeout=300)
+    raw_stdout = run.stdout
+    # Text as text mode would give it: '\r\n' and '\r' become '\n'.
+    run.stdout = raw_stdout.decode().replace("\r\n", "\n").replace("\r", "\n")
+    run.stderr = run.stderr.decode().replace("\r\n", "\n").replace("\r", "\n")
     print("$ semimesh " + " ".join(args))
     print("exit %d\n--- stdout\n%s--- stderr\n%s" % (run.returncode, run.stdout[:4000], run.stderr))
     expect(run.returncode == opts.exit, "exit code %d, expected %d" % (run.returncode, opts.exit))
@@ -162,6 +191,8 @@ def main():
     if opts.rewrites_lines:
         # (text mode turns the carriage return into a newline; the erase-line sequence stays)
         expect("\x1b[K" in run.stdout, "no line is rewritten in place (erase to end of line)")
+    if opts.no_carriage_returns:
+        expect(b"\r" not in raw_stdout, "stdout holds a carriage return: %r" % raw_stdout[:300])
     if opts.no_stdout:
         expect(run.stdout == "", "stdout must be empty, it is %r" % run.stdout[:200])
     if opts.stdout_is is not None:
@@ -179,6 +210,8 @@ def main():
         started = [e["stage"] for e in events if e["event"] == "stage_started"]
         finished = [e["stage"] for e in events if e["event"] == "stage_finished"]
         expect(started and started == finished, "every stage that starts must finish: %r vs %r" % (started, finished))
+        if opts.progress_events:
+            check_progress_events(events, opts.progress_events)
     if opts.json:
         try:
             doc = json.loads(run.stdout)

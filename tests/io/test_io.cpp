@@ -1,10 +1,11 @@
-// Writers and readers: atomic output, MSH round trips, reader error locations, VTK permutations,
-// GLL -> equispaced resampling.
+// Writers and readers: atomic output (files, and the .vtm's folder of pieces), MSH round trips,
+// reader error locations, VTK permutations, GLL -> equispaced resampling, writers' progress.
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
 #include "semimesh/io/vtk_order.hpp"
+#include "semimesh/io/vtu.hpp"
 
 #include <gtest/gtest.h>
 
@@ -150,6 +151,52 @@ TEST(Msh, WriteFailureKeepsExistingFile) {
   EXPECT_THROW(semimesh::io::write_msh(too_high, path), std::invalid_argument);
   EXPECT_EQ(read_text(path), "keep\n");
   EXPECT_EQ(list_dir(dir), std::vector<std::string>{"m.msh"});
+}
+
+TEST(Vtm, ReplacesAnOlderFolderWholeWithTheUsualPermissions) {
+  const std::string dir = temp_dir();
+  const std::string path = dir + "/m.vtm";
+  semimesh::io::write_vtm(two_prisms(2), path);
+  const std::vector<std::string> pieces = {"boundary0_wall.vtu", "boundary1_side.vtu", "volume.vtu"};
+  EXPECT_EQ(list_dir(dir + "/m"), pieces);
+  { std::ofstream(dir + "/m/stale.vtu") << "from an older run\n"; }
+  const mode_t mask = ::umask(022);
+  semimesh::io::write_vtm(two_prisms(3), path);
+  ::umask(mask);
+  EXPECT_EQ(list_dir(dir), (std::vector<std::string>{"m", "m.vtm"}));
+  EXPECT_EQ(list_dir(dir + "/m"), pieces) << "the older folder is replaced, not merged";
+  EXPECT_NE(read_text(path).find("name=\"volume\" file=\"m/volume.vtu\""), std::string::npos) << read_text(path);
+  struct stat info {};
+  ASSERT_EQ(::stat((dir + "/m").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0755u);
+}
+
+TEST(Vtm, FailureHalfWayLeavesTheOlderPairAndNoTemporary) {
+  const std::string dir = temp_dir();
+  const std::string path = dir + "/m.vtm";
+  semimesh::io::write_vtm(two_prisms(2), path);
+  const std::string index = read_text(path), volume = read_text(dir + "/m/volume.vtu");
+  // A progress callback that throws stands for any failure after some pieces are written.
+  int calls = 0;
+  const semimesh::ProgressCallback fail_late = [&](double, const std::string&) {
+    if (++calls == 10) throw std::runtime_error("disk full");
+  };
+  EXPECT_THROW(semimesh::io::write_vtm(two_prisms(3), path, fail_late), std::runtime_error);
+  EXPECT_EQ(list_dir(dir), (std::vector<std::string>{"m", "m.vtm"}));
+  EXPECT_EQ(read_text(path), index);
+  EXPECT_EQ(read_text(dir + "/m/volume.vtu"), volume);
+  EXPECT_GE(calls, 10) << "the failure must come after a piece was written";
+}
+
+TEST(Msh, ProgressRisesToOneFromTheWritingThread) {
+  std::vector<double> fractions;
+  const semimesh::ProgressCallback record = [&](double f, const std::string&) { fractions.push_back(f); };
+  semimesh::io::write_msh(two_prisms(3), temp_dir() + "/m.msh", semimesh::io::MshVersion::V41,
+                          semimesh::io::MshEncoding::Ascii, record);
+  ASSERT_GE(fractions.size(), 3u);
+  EXPECT_EQ(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
 }
 
 class MshRoundTrip : public ::testing::TestWithParam<std::tuple<int, semimesh::io::MshVersion>> {};

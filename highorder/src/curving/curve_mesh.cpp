@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace semimesh::ho {
 namespace {
@@ -20,8 +21,8 @@ using mesh::NodeId;
 
 class Curver {
  public:
-  Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params)
-      : in_(linear), model_(model), params_(params), out_(params.order, params.node_set) {}
+  Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params, ProgressCallback progress)
+      : in_(linear), model_(model), params_(params), out_(params.order, params.node_set), progress_(std::move(progress)) {}
   mesh::Mesh run(CurvingStats* stats);
 
  private:
@@ -58,6 +59,9 @@ class Curver {
   CurvingParams params_;
   mesh::Mesh out_;
   CurvingStats stats_;
+  ProgressCallback progress_;
+  // The parts of progress_ for the edges, faces and volumes, in proportion to their counts.
+  ProgressCallback edge_progress_, face_progress_, volume_progress_;
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
@@ -154,8 +158,9 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
 
   // Positions in parallel, then the nodes in edge order (ids independent of the thread count).
   std::vector<EdgeNodes> placed(in_.edges().size());
-  detail::parallel_for(placed.size(), model_.thread_safe(),
-                       [&](std::size_t e) { placed[e] = place_edge(e, fraction, on_boundary[e] != 0); });
+  detail::parallel_for(
+      placed.size(), model_.thread_safe(),
+      [&](std::size_t e) { placed[e] = place_edge(e, fraction, on_boundary[e] != 0); }, edge_progress_, "edges");
   edge_interior_.resize(in_.edges().size());
   for (std::size_t e = 0; e < placed.size(); ++e) {
     note(placed[e]);
@@ -225,8 +230,9 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
 void Curver::curve_faces(const std::vector<char>& on_boundary) {
   const int P = params_.order;
   std::vector<FaceNodes> placed(in_.faces().size());
-  detail::parallel_for(placed.size(), model_.thread_safe(),
-                       [&](std::size_t f) { placed[f] = place_face(f, on_boundary[f] != 0); });
+  detail::parallel_for(
+      placed.size(), model_.thread_safe(),
+      [&](std::size_t f) { placed[f] = place_face(f, on_boundary[f] != 0); }, face_progress_, "faces");
   face_interior_.resize(in_.faces().size());
   for (std::size_t f = 0; f < placed.size(); ++f) {
     const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
@@ -276,6 +282,11 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     face_on_boundary[bf.face] = 1;
     for (int k = 0; k < num_vertices(bf.shape); ++k) edge_on_boundary[bf.edges[k]] = 1;
   }
+  const double edges = static_cast<double>(in_.edges().size()), faces = static_cast<double>(in_.faces().size());
+  const double all = std::max(1.0, edges + faces + static_cast<double>(in_.elements().size()));
+  edge_progress_ = progress_part(progress_, 0.0, edges / all);
+  face_progress_ = progress_part(progress_, edges / all, (edges + faces) / all);
+  volume_progress_ = progress_part(progress_, (edges + faces) / all, 1.0);
   curve_edges(edge_on_boundary);
   curve_faces(face_on_boundary);
 
@@ -292,7 +303,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     for (int j : ext.boundary) X.row(j) = out_.node(element_ids[e][j]).transpose();
     extend_harmonically(ext, X);
     interior[e] = std::move(X);
-  });
+  }, volume_progress_, "volumes");
   for (std::size_t e = 0; e < num_elements; ++e) {
     const Shape shape = in_.elements()[e].shape;
     for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
@@ -326,8 +337,8 @@ const params::Table<CurvingParams>& curving_keys() {
 }
 
 mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
-                      CurvingStats* stats) {
-  return Curver(linear, model, params).run(stats);
+                      CurvingStats* stats, const ProgressCallback& progress) {
+  return Curver(linear, model, params, progress).run(stats);
 }
 
 }  // namespace semimesh::ho

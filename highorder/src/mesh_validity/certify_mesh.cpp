@@ -9,7 +9,8 @@
 
 namespace semimesh::ho {
 
-MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian) {
+MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
+                          const ProgressCallback& progress) {
   if (max_depth < 0)
     throw std::invalid_argument("certify_mesh: max_depth = " + std::to_string(max_depth) + " must be >= 0");
   const std::size_t n = mesh.elements().size();
@@ -23,7 +24,7 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
   detail::parallel_for(n, true, [&](std::size_t e) {
     out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(),
                                      mesh.element_coordinates(e), max_depth, min_scaled_jacobian);
-  });
+  }, progress, "elements");
 
   std::vector<double> scaled(n);
   for (std::size_t e = 0; e < n; ++e) {

@@ -91,7 +91,7 @@ class Splitter {
         stats_(families_.size()) {}
 
   mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
-                 std::vector<std::size_t>* first_piece);
+                 std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {});
 
  private:
   ShapeData& shape_data(Shape shape);
@@ -442,7 +442,7 @@ void Splitter::check_side_faces(const std::vector<LayerSplit>& split) {
 }
 
 mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
-                         std::vector<std::size_t>* first_piece) {
+                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress) {
   if (families_.empty()) throw std::invalid_argument(caller_ + ": no layer distribution given");
   for (std::size_t f = 0; f < families_.size(); ++f) {
     const LayerDistribution& d = families_[f].distribution;
@@ -505,6 +505,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
       out_.add_element(in_.elements()[next].shape, in_.element_nodes(next), in_.elements()[next].region);
     }
   };
+  ProgressCounter counter(progress, ascending.size(), "elements");  // reported per block, from this thread
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
     std::vector<VertexInterfaces> interfaces(count);
@@ -521,7 +522,10 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
         out_.add_element(in_.elements()[e].shape, nodes, in_.elements()[e].region);
       next = e + 1;
     }
+    counter.add(count);
+    counter.report_if_due();
   }
+  counter.finish();
   copy_until(in_.elements().size());
 
   // Boundary faces: split with the element whose face they are when its split cuts them (each
@@ -587,8 +591,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
-                        std::vector<std::size_t>* first_piece) {
-  return Splitter(mesh, families, "split_layers").run(split, stats, first_piece);
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress) {
+  return Splitter(mesh, families, "split_layers").run(split, stats, first_piece, progress);
 }
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,

@@ -6,8 +6,9 @@
 
 namespace semimesh::checks {
 
-ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed, double min_scaled_jacobian) {
-  const ho::MeshValidity certified = ho::certify_mesh(mesh, 8, min_scaled_jacobian);
+ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed, double min_scaled_jacobian,
+                              const ProgressCallback& progress) {
+  const ho::MeshValidity certified = ho::certify_mesh(mesh, 8, min_scaled_jacobian, progress);
   ValidityResult result;
   result.elements = mesh.elements().size();
   result.floor = min_scaled_jacobian;

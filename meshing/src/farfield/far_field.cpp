@@ -211,7 +211,13 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
 }  // namespace
 
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
-                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness) {
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness,
+                         const ProgressCallback& progress) {
+  // Progress at the start of each sub-step, at rough shares of the time: TetGen, one call in a
+  // child process that cannot report, takes most of it.
+  const auto report = [&](double fraction, const char* step) {
+    if (progress) progress(fraction, step);
+  };
   const nearfield::NearField& nf = near;
   check_params(model, nf, params, box_surfaces, wall_surface);
   if (!(wall_layer_thickness >= 0) || !std::isfinite(wall_layer_thickness))
@@ -219,6 +225,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
                         std::to_string(wall_layer_thickness));
   mesh::Mesh& mesh = near.mesh;
   FarFieldStats stats;
+  report(0.0, "box and wall");
 
   // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
   surface::SizeParams size_params;
@@ -239,6 +246,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   std::vector<Triangle> wall_side = wall;
   std::vector<nearfield::LayerStack> stacks = nf.stacks;
   if (wall_layer_thickness > 0) {
+    report(0.1, "wall layer");
     const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, wall_layer_thickness, wall, nf, box, mesh);
     wall_side = layer.tops;
     stats.wall_layer_prisms = static_cast<int>(layer.stacks.size());
@@ -265,7 +273,9 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
       }
       input.triangles.push_back(local);
     }
+  report(0.15, "TetGen");
   const TetgenOutput output = run_tetgen(input);
+  report(0.9, "elements");
   stats.seconds_tetgen = output.seconds;
   for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));
   mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
@@ -278,6 +288,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
+  report(1.0, "");
   return {std::move(mesh), stats, std::move(stacks)};
 }
 

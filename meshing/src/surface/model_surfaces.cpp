@@ -47,17 +47,24 @@ int SurfaceMeshes::num_quads() const {
   return n;
 }
 
-SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options) {
+SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options,
+                                  const ProgressCallback& progress) {
   for (int s : options.structured_surfaces)
     if (s < 0 || s >= model.num_surfaces())
       throw SurfaceMeshError("structured surface id " + std::to_string(s) + " is out of range: the model has " +
                              std::to_string(model.num_surfaces()) + " surfaces");
   SurfaceMeshes out;
+  // Progress: the curves count as one item, each surface as one.
+  const double items = 1.0 + model.num_surfaces();
+  if (progress) progress(0.0, "curves");
   out.curves = discretise_all_curves(model, size, options.curve_counts, options.min_segments);
-  for (int s = 0; s < model.num_surfaces(); ++s)
+  for (int s = 0; s < model.num_surfaces(); ++s) {
+    if (progress) progress((1.0 + s) / items, model.surface(s).name());
     out.surfaces.push_back(options.structured_surfaces.count(s)
                                ? mesh_surface_structured(model, s, out.curves, options.split_structured)
                                : mesh_surface(model, s, out.curves, size, options.surface));
+  }
+  if (progress) progress(1.0, "");
   return out;
 }
 

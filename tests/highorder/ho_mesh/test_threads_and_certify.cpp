@@ -1,5 +1,7 @@
 // Threads: curving, splitting and certification of the NACA O-shell give byte-identical results with
-// 1 and 2 threads; certify_mesh agrees with a serial loop of certify_jacobian.
+// 1 and 2 threads, and with or without a progress callback (which is called from the calling thread
+// only, a bounded number of times, with fractions that never decrease and end at 1); certify_mesh
+// agrees with a serial loop of certify_jacobian.
 #include "o_shell_fixture.hpp"
 
 #include "semimesh/ho/curving/curve_mesh.hpp"
@@ -11,6 +13,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
 
 namespace semimesh::ho {
 namespace {
@@ -67,6 +72,51 @@ TEST(HoMeshThreads, OneAndTwoThreadsGiveByteIdenticalMeshes) {
   }
   EXPECT_EQ(one.validity.min_scaled_jacobian, two.validity.min_scaled_jacobian);
   EXPECT_EQ(one.validity.median_scaled_jacobian, two.validity.median_scaled_jacobian);
+}
+
+// Records what a progress callback receives and from which thread.
+struct ProgressLog {
+  std::vector<double> fractions;
+  std::vector<std::string> steps;
+  bool other_thread = false;
+  ProgressCallback callback() {
+    const std::thread::id caller = std::this_thread::get_id();
+    return [this, caller](double fraction, const std::string& step) {
+      other_thread = other_thread || std::this_thread::get_id() != caller;
+      fractions.push_back(fraction);
+      steps.push_back(step);
+    };
+  }
+  void expect_sound(const char* what, std::size_t loops) const {
+    ASSERT_FALSE(fractions.empty()) << what;
+    EXPECT_FALSE(other_thread) << what << ": called from a thread other than the caller's";
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end())) << what;
+    EXPECT_GE(fractions.front(), 0.0) << what;
+    EXPECT_EQ(fractions.back(), 1.0) << what;
+    EXPECT_LE(fractions.size(), loops * (ProgressCounter::kMarks + 2)) << what << ": not throttled";
+  }
+};
+
+TEST(HoMeshThreads, ProgressIsReportedFromTheCallerAndDoesNotChangeTheResult) {
+  omp_set_num_threads(2);
+  ProgressLog curving, splitting, certifying;
+  const mesh::Mesh curved =
+      curve_mesh(shell().field.mesh, *shell().model, {3, NodeSet::GLL, 50, 1e-10}, nullptr, curving.callback());
+  std::vector<LayerSplit> all;
+  for (std::size_t e : testing::all_elements(curved)) all.push_back({e, {2, -1}, {0, 0}});
+  const mesh::Mesh split = split_layers(curved, all, {{{5, 2.0}, {}}}, nullptr, nullptr, splitting.callback());
+  const MeshValidity validity = certify_mesh(split, 8, 0.0, certifying.callback());
+  omp_set_num_threads(omp_get_num_procs());
+  curving.expect_sound("curve_mesh", 3);
+  splitting.expect_sound("split_layers", 1);
+  certifying.expect_sound("certify_mesh", 1);
+  EXPECT_NE(std::find(curving.steps.begin(), curving.steps.end(), "faces"), curving.steps.end());
+  EXPECT_GT(certifying.fractions.size(), 10u) << "certification reports along the way, not only at the end";
+
+  const ThreadedRun quiet = run_with_threads(2);
+  expect_identical(quiet.curved, curved, "curved with progress");
+  expect_identical(quiet.split, split, "split with progress");
+  EXPECT_EQ(quiet.validity.min_scaled_jacobian, validity.min_scaled_jacobian);
 }
 
 TEST(CertifyMesh, AgreesWithASerialLoopAndLocatesInvalidElements) {

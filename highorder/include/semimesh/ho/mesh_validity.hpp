@@ -4,6 +4,7 @@
 
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <Eigen/Core>
 
@@ -26,7 +27,9 @@ struct MeshValidity {
 
 /// Certifies every 3D element of `mesh` (its order and node set) with certify_jacobian(..., max_depth,
 /// min_scaled_jacobian); an element below that floor counts as invalid (see acceptable()).
-/// Throws std::invalid_argument when the mesh holds a 2D element or max_depth < 0.
-MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_scaled_jacobian = 0.0);
+/// Throws std::invalid_argument when the mesh holds a 2D element or max_depth < 0. `progress`
+/// receives the fraction of elements certified (step "elements"), from one thread, throttled.
+MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_scaled_jacobian = 0.0,
+                          const ProgressCallback& progress = {});
 
 }  // namespace semimesh::ho

@@ -16,6 +16,7 @@
 
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <string>
 
@@ -25,12 +26,14 @@ enum class MshVersion { V41, V22 };
 enum class MshEncoding { Ascii, Binary };
 
 /// Writes atomically (see atomic_file.hpp). Throws std::invalid_argument for an unsupported order
-/// or for binary MSH 2.2, std::runtime_error for I/O failures (message names the file).
+/// or for binary MSH 2.2, std::runtime_error for I/O failures (message names the file). `progress`:
+/// the fraction of nodes and elements written, throttled.
 void write_msh(const mesh::Mesh& mesh, const std::string& path, MshVersion version = MshVersion::V41,
-               MshEncoding encoding = MshEncoding::Ascii);
+               MshEncoding encoding = MshEncoding::Ascii, const ProgressCallback& progress = {});
 /// The same with the equispaced node positions given (computed once for several formats).
 void write_msh(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
-               MshVersion version = MshVersion::V41, MshEncoding encoding = MshEncoding::Ascii);
+               MshVersion version = MshVersion::V41, MshEncoding encoding = MshEncoding::Ascii,
+               const ProgressCallback& progress = {});
 
 /// Reads an ASCII MSH 4.1 or 2.2 file: 3D elements become mesh elements, triangles and quads
 /// become boundary faces in the group named by their physical group ("surface_<tag>" when the

@@ -13,6 +13,7 @@
 
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <string>
 
@@ -20,10 +21,28 @@ namespace semimesh::io {
 
 enum class VtuEncoding { CompressedBinary, Ascii };
 
-/// Writes atomically; throws std::runtime_error for I/O failures.
-void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding = VtuEncoding::CompressedBinary);
+/// Writes atomically; throws std::runtime_error for I/O failures. `progress`: per data array
+/// (compressed encoding only).
+void write_vtu(const mesh::Mesh& mesh, const std::string& path, VtuEncoding encoding = VtuEncoding::CompressedBinary,
+               const ProgressCallback& progress = {});
 /// The same with the equispaced node positions given (computed once for several formats).
 void write_vtu(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
-               VtuEncoding encoding = VtuEncoding::CompressedBinary);
+               VtuEncoding encoding = VtuEncoding::CompressedBinary, const ProgressCallback& progress = {});
+
+/// A ParaView multiblock data set (.vtm, VTK's XML vtkMultiBlockDataSet) for opening and slicing
+/// without a threshold: block "volume" (the volume elements with every node, cell data "region")
+/// and one block per boundary group, named after it and in group order (its faces with only the
+/// nodes they use, cell data "boundary_group"). Each block is a compressed .vtu as above, in the
+/// folder beside `path` named like it without the extension (ParaView's own layout):
+/// `NAME.vtm`, `NAME/volume.vtu`, `NAME/boundary<i>_<group>.vtu`. Atomic for the pair: the pieces
+/// are written in a temporary folder that replaces an older NAME/ only when all are written, and the
+/// .vtm is committed last; on failure the older pair stays. `progress`: per block and array.
+void write_vtm(const mesh::Mesh& mesh, const std::string& path, const ProgressCallback& progress = {});
+/// The same with the equispaced node positions given.
+void write_vtm(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::string& path,
+               const ProgressCallback& progress = {});
+
+/// The folder of write_vtm's pieces: `path` without its extension.
+std::string vtm_piece_folder(const std::string& path);
 
 }  // namespace semimesh::io

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <Eigen/Core>
 
@@ -36,7 +37,9 @@ struct ValidityResult {
 
 /// Certifies every element (ho::certify_mesh: OpenMP threads, the verdict independent of their
 /// count); min and median scaled Jacobian as certify_mesh defines them. An element counts as invalid
-/// unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable).
-ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100, double min_scaled_jacobian = 0.0);
+/// unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable). `progress` as
+/// certify_mesh's.
+ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100, double min_scaled_jacobian = 0.0,
+                              const ProgressCallback& progress = {});
 
 }  // namespace semimesh::checks

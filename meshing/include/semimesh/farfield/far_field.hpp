@@ -11,6 +11,7 @@
 #include "semimesh/cad/model.hpp"
 #include "semimesh/nearfield/near_field.hpp"
 #include "semimesh/params/table.hpp"
+#include "semimesh/progress.hpp"
 
 #include <stdexcept>
 #include <vector>
@@ -66,8 +67,10 @@ struct FarField {
 /// "wall_layer", wall_layer.hpp): their tops bound the tetrahedra, the box faces start on the
 /// layer's top.
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
-/// translated: self-intersecting boundary, too close facets).
+/// translated: self-intersecting boundary, too close facets). `progress` is told the start of each
+/// sub-step (steps "box and wall", "wall layer", "TetGen", "elements") and the end.
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
-                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0);
+                         const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0,
+                         const ProgressCallback& progress = {});
 
 }  // namespace semimesh::farfield

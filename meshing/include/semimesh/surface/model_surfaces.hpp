@@ -1,6 +1,7 @@
 // All curves and surfaces of a model meshed together, and the conformity check between them.
 #pragma once
 
+#include "semimesh/progress.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 
 #include <map>
@@ -25,8 +26,10 @@ struct SurfaceMeshes {
   int num_quads() const;
 };
 
-/// Meshes every curve, then every surface. Errors name the surface that failed.
-SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options = {});
+/// Meshes every curve, then every surface. Errors name the surface that failed. `progress` is told
+/// before the curves (step "curves") and before each surface (step: its name), and at the end.
+SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options = {},
+                                  const ProgressCallback& progress = {});
 
 /// Boundary edges (used by one element of their surface mesh) must each be a segment of a curve
 /// mesh, and every curve segment must be a boundary edge of exactly as many surface meshes as the

@@ -4,6 +4,7 @@
 
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <string>
 #include <vector>
@@ -14,8 +15,11 @@ struct OutputFormat {
   std::string name;       ///< as in output.formats
   std::string extension;  ///< of BASENAME.EXT
   std::string extension_when_shared;  ///< used instead when another requested format has the same extension
-  /// Writes the mesh at its equispaced node positions (computed once for every format).
-  void (*write)(const mesh::Mesh& mesh, const io::EquispacedNodes& nodes, const std::string& path);
+  /// Writes the file at `path` atomically from the mesh's equispaced node positions (computed once
+  /// for every format); progress: per part of the file, where the writer has parts. Returns what it
+  /// wrote: the file, and for vtm also its folder of pieces.
+  std::vector<std::string> (*write)(const mesh::Mesh& mesh, const io::EquispacedNodes& nodes, const std::string& path,
+                                    const ProgressCallback& progress);
 };
 
 /// Every format, in the order docs/config.md lists them.

@@ -36,11 +36,15 @@ struct StageTiming {
   double seconds = 0.0;
 };
 
-/// Receives the start and end of every stage (the CLI prints a line per stage).
+/// Receives the start and end of every stage (the CLI prints a line per stage) and, inside the long
+/// ones (surface mesh, far field, curve, repair, split, checks, write), the fraction done: from one
+/// thread at a time, throttled (a few hundred calls per stage at most), non-decreasing within a stage
+/// from 0 to 1; `step` names the part running (see semimesh/progress.hpp).
 class Progress {
  public:
   virtual ~Progress() = default;
   virtual void stage_started(const std::string& /*name*/) {}
+  virtual void stage_progress(double /*fraction*/, const std::string& /*step*/) {}
   virtual void stage_finished(const StageTiming& /*timing*/) {}
 };
 

@@ -27,7 +27,8 @@ struct StackSplit {
 
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
 /// differently, naming both elements.
+/// `progress` as split_layers'.
 StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
-                        const FamilySplit& wing, const FamilySplit& wall);
+                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {});
 
 }  // namespace semimesh::pipeline

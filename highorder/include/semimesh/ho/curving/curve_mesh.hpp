@@ -32,6 +32,7 @@
 #include "semimesh/params/table.hpp"
 #include "semimesh/cad/model.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 namespace semimesh::ho {
 
@@ -62,7 +63,9 @@ struct CurvingStats {
 /// elements and boundary faces keep their indices and groups. New nodes on CAD carry their curve or
 /// surface attachment. Throws std::invalid_argument when `linear` is not order 1 or a parameter is
 /// out of range, and cad::CadError when an attachment names an entity the model does not have.
+/// `progress` receives the fraction of edges, faces and volumes placed (steps "edges", "faces",
+/// "volumes"), from one thread, throttled; it does not change the result.
 mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
-                      CurvingStats* stats = nullptr);
+                      CurvingStats* stats = nullptr, const ProgressCallback& progress = {});
 
 }  // namespace semimesh::ho

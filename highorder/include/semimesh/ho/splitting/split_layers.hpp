@@ -11,6 +11,7 @@
 
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/params/table.hpp"
+#include "semimesh/progress.hpp"
 
 #include <Eigen/Core>
 
@@ -90,9 +91,11 @@ struct LayerSplit {
 /// another family or with other body-side vertices) is refused (std::invalid_argument naming both
 /// elements). `stats` gets one SplitStats per family (first-cell heights along its directions);
 /// (*first_piece)[e] is the output index of input element e's first piece (its copy when not split).
+/// `progress` receives the fraction of split elements done (step "elements"), per block of elements,
+/// from the calling thread.
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
-                        std::vector<std::size_t>* first_piece);
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {});
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a
