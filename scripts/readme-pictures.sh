@@ -5,11 +5,11 @@
 # turned into a PNG at most 1000 x 800 pixels with rsvg-convert (Debian librsvg2-bin), so the repository
 # stays small. Commit docs/pictures/ afterwards.
 #
-#   scripts/readme-pictures.sh [CONFIG]     (default: examples/naca0012_wing_h.toml)
+#   scripts/readme-pictures.sh [CONFIG]     (default: examples/naca0012_wing.toml)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-config=${1:-examples/naca0012_wing_h.toml}
+config=${1:-examples/naca0012_wing.toml}
 work=out/readme_pictures
 # picture suffix written by `semimesh run --pictures` -> name in docs/pictures/ (without extension)
 pictures=(
