@@ -170,22 +170,29 @@ TopoDS_Shape run(Operation& op, const TopoDS_Shape& object, const TopoDS_Shape& 
   return op.Shape();
 }
 
-// Names of the result's faces: the body's as carried through the cut, "wall" on the plane, the rest
-// far field.
-FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const FaceNames& body_names,
-                       const WallPlane& wall, double tolerance) {
-  FaceNames carried;
-  for (const auto& [face, name] : body_names) {
-    const TopTools_ListOfShape& modified = cut.Modified(face);
-    if (modified.IsEmpty() && !cut.IsDeleted(face)) carried.emplace_back(face, name);
-    for (const TopoDS_Shape& image : modified) carried.emplace_back(image, name);
+// The faces of the result that come from `face` through the cut (itself when left as it was).
+TopTools_ListOfShape images(BRepAlgoAPI_Cut& cut, const TopoDS_Shape& face) {
+  TopTools_ListOfShape out = cut.Modified(face);
+  if (out.IsEmpty() && !cut.IsDeleted(face)) out.Append(face);
+  return out;
+}
+
+// Names of the result's faces: the body's as carried through the cut (unnamed body faces stay
+// unnamed), "wall" on the plane, the rest far field.
+FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const TopoDS_Shape& body,
+                       const FaceNames& body_names, const WallPlane& wall, double tolerance) {
+  FaceNames names;
+  for (const auto& [face, name] : body_names)
+    for (const TopoDS_Shape& image : images(cut, face)) names.emplace_back(image, name);
+  TopTools_ListOfShape from_body;
+  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next()) {
+    TopTools_ListOfShape of_face = images(cut, f.Current());
+    from_body.Append(of_face);
   }
-  FaceNames names = carried;
   int walls = 0, outer = 0;
   for (TopExp_Explorer f(domain, TopAbs_FACE); f.More(); f.Next()) {
     const TopoDS_Face& face = TopoDS::Face(f.Current());
-    const bool named = std::any_of(carried.begin(), carried.end(), [&](const auto& n) { return n.first.IsSame(face); });
-    if (named) continue;
+    if (std::any_of(from_body.begin(), from_body.end(), [&](const TopoDS_Shape& b) { return b.IsSame(face); })) continue;
     if (lies_in_plane(face, wall, tolerance))
       names.emplace_back(face, walls++ ? "wall_" + std::to_string(walls) : std::string("wall"));
     else
@@ -212,7 +219,7 @@ TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const
   const TopoDS_Shape fluid = solid.Current();
   solid.Next();
   if (solid.More()) refuse(wall.label + ": the fluid domain falls apart into several pieces");
-  names = domain_names(fluid, cut, names, wall, tolerance);
+  names = domain_names(fluid, cut, solids, names, wall, tolerance);
   return fluid;
 }
 
