@@ -110,14 +110,17 @@ Bnd_Box global_box(const TopoDS_Shape& shape) {
 }
 
 // The far field as a solid.
-TopoDS_Shape far_solid(const FarFieldShape& far, const TopoDS_Shape& body, const std::vector<TopoDS_Face>& roots) {
+TopoDS_Shape far_solid(const FarFieldShape& far, const gp_Dir& normal, const TopoDS_Shape& body,
+                       const std::vector<TopoDS_Face>& roots) {
   if (far.box) {
     const auto& b = *far.box;
     return BRepPrimAPI_MakeBox(gp_Pnt(b[0], b[1], b[2]), gp_Pnt(b[3], b[4], b[5])).Solid();
   }
   if (far.sphere) {
+    // Its axis along the wall's normal: a wall through the centre cuts it along its equator (an
+    // iso-parameter line), the pole at the top.
     const auto& s = *far.sphere;
-    return BRepPrimAPI_MakeSphere(gp_Pnt(s[0], s[1], s[2]), s[3]).Solid();
+    return BRepPrimAPI_MakeSphere(gp_Ax2(gp_Pnt(s[0], s[1], s[2]), normal), s[3]).Solid();
   }
   // The root chord: the largest extent of the root's bounding box.
   Bnd_Box root;
@@ -207,7 +210,7 @@ TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const
                           FaceNames& names) {
   const TopoDS_Shape solids = body_solids(body);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
-  const TopoDS_Shape outer = far_solid(far, solids, roots);
+  const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);
 
   BRepAlgoAPI_Common common;
