@@ -9,6 +9,7 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
+#include "semimesh/io/output_set.hpp"
 #include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
@@ -536,29 +537,37 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
     const double parts = static_cast<double>(config.output.formats.size() + 1);
     try {
       std::filesystem::create_directories(config.output.directory);
-      write_mesh_files(result.mesh, config.output.formats, paths,
-                       progress_part(report, 0.0, (parts - 1) / parts), result.written_files);
+      // Every file goes to a staging folder first and all replace an earlier run's files together
+      // at the end: when one fails, the output folder is left exactly as it was.
+      io::OutputSet outputs(config.output.directory);
+      const auto staged = [&](const std::string& path) {
+        return outputs.staged(std::filesystem::path(path).filename().string());
+      };
+      std::vector<std::string> staged_paths;
+      for (const std::string& path : paths) staged_paths.push_back(staged(path));
+      std::vector<std::string> staged_files;
+      write_mesh_files(result.mesh, config.output.formats, staged_paths,
+                       progress_part(report, 0.0, (parts - 1) / parts), staged_files);
+      for (const std::string& file : staged_files) result.written_files.push_back(outputs.final_path(file));
       if (report) report((parts - 1) / parts, config.output.pictures ? "pictures" : "report.json");
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
-          const std::string path =
-              (std::filesystem::path(config.output.directory) / (config.output.basename + picture.suffix)).string();
-          io::AtomicFile file(path);
+          const std::string name = config.output.basename + picture.suffix;
+          io::AtomicFile file(outputs.staged(name));
           file.write(picture.svg);
           file.commit();
-          result.written_files.push_back(path);
-          result.pictures.push_back(path);
+          result.written_files.push_back(outputs.final_path(name));
+          result.pictures.push_back(outputs.final_path(name));
         }
       result.peak_memory_mb = peak_memory_mb();
-      io::AtomicFile report(paths.back());
-      report.write(report_json(result, config));
-      report.commit();
+      io::AtomicFile report_file(staged_paths.back());
+      report_file.write(report_json(result, config));
+      report_file.commit();
+      outputs.commit();
       result.written_files.push_back(paths.back());
     } catch (...) {
-      // Leave no partial output: remove what this run wrote (older files of other runs stay).
-      std::error_code ignored;
-      for (const std::string& p : result.written_files) std::filesystem::remove_all(p, ignored);
       result.written_files.clear();
+      result.pictures.clear();
       throw;
     }
   });
