@@ -281,14 +281,19 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
 
 surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Progress& progress, RunResult& result) {
   const cad::Model& model = *g.model;
-  const surface::SizeField size = stage("size field", progress, result, [&] {
+  const surface::SizeField size = stage("size field", progress, result, [&](const ProgressCallback& report) {
     surface::SizeParams params = config.sizing.size;
     // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    // Progress: the shell limits (most of the time when they run), then the curvature sampling.
     if (config.highorder.order > 1) {
-      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params);
+      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params,
+                                                      progress_part(report, 0.0, 0.9));
       params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
     }
-    return surface::SizeField(model, params);
+    if (report) report(config.highorder.order > 1 ? 0.9 : 0.0, "curvature");
+    surface::SizeField field(model, params);
+    if (report) report(1.0, "curvature");
+    return field;
   });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
     return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles), report);
