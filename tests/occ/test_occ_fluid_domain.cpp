@@ -3,23 +3,21 @@
 #include "occ_test_support.hpp"
 #include "semimesh/cad/error.hpp"
 #include "semimesh/occ/occ_backend.hpp"
+#include "temp_path.hpp"
 
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <set>
-#include <unistd.h>
 
 namespace semimesh::occ {
 namespace {
 
 // A 1 x 1 x 2 block standing on z = 0 (the body), written as a BREP file; its volume is 2.
 std::string block_file() {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("semimesh_block_" + std::to_string(getpid()) + ".brep")).string();
+  const std::string path = semimesh::test::temp_path("block.brep").string();
   EXPECT_TRUE(BRepTools::Write(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(1, 1, 2)).Shape(), path.c_str()));
   return path;
 }
@@ -85,7 +83,7 @@ TEST(OccFluidDomain, ABodyOffThePlaneIsRefusedNamingThePlane) {
   EXPECT_NE(e.find("geometry.wall_plane = {point = [0, 0, -0.5], normal = [0, 0, 1]}"), std::string::npos) << e;
   EXPECT_NE(e.find("does not touch the plane"), std::string::npos) << e;
   EXPECT_NE(e.find("0.5 above it"), std::string::npos) << e;
-  EXPECT_NE(e.find("semimesh_block_"), std::string::npos) << "names the file: " << e;
+  EXPECT_NE(e.find("block.brep"), std::string::npos) << "names the file: " << e;
 }
 
 TEST(OccFluidDomain, APlaneThroughTheBodyIsRefused) {

@@ -3,6 +3,7 @@
 // the whole pipeline: the y-span mesh is the z-span mesh turned, node for node, element for element.
 #include "semimesh/occ/occ_backend.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
+#include "temp_path.hpp"
 
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepTools.hxx>
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 
 namespace semimesh::pipeline {
 namespace {
@@ -87,7 +87,7 @@ std::vector<std::array<long long, 3>> region_nodes(const mesh::Mesh& m, const st
 }
 
 TEST(SpanAxis, AWingAlongYMeshesAsTheWingAlongZTurned) {
-  const fs::path dir = fs::temp_directory_path() / ("semimesh_span_" + std::to_string(getpid()));
+  const fs::path dir = semimesh::test::temp_path("span_axis");
   fs::create_directories(dir);
   const RunResult along_z = mesh_of(wing_file(dir, "z.brep", false), dir / "z");
   const RunResult along_y = mesh_of(wing_file(dir, "y.brep", true), dir / "y");
