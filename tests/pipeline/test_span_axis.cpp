@@ -1,6 +1,7 @@
 // Spans in any axis: the OCC-built NACA wing on its wall in its box, once as built (span along z)
 // and once turned by an exact quarter turn about x (span along y, the ONERA M6's frame), meshed by
-// the whole pipeline: the y-span mesh is the z-span mesh turned, node for node, element for element.
+// the whole pipeline with the C-type near field (wing layer, root junction, wall layer): the y-span
+// near field is the z-span one turned, node for node.
 #include "semimesh/occ/occ_backend.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "temp_path.hpp"
@@ -46,7 +47,11 @@ RunResult mesh_of(const std::string& source, const fs::path& dir) {
 backend = "occ"
 source = "wing.brep"
 [nearfield]
+topology = "C"
 thickness = 0.06
+[wall_layer]
+thickness = 0.04
+layers = 2
 [boundary_layer]
 layers = 2
 [sizing]
@@ -96,19 +101,24 @@ TEST(SpanAxis, AWingAlongYMeshesAsTheWingAlongZTurned) {
     EXPECT_EQ(r->validity.invalid, 0u);
     EXPECT_GT(r->elements_by_type.at("prism"), 0u);
   }
-  // The near field (surface meshes, shell, curving, split) is the same mesh turned, node for node
-  // (every node of every layer element, to 1e-9 chord).
-  EXPECT_EQ(along_y.elements_by_type.at("prism"), along_z.elements_by_type.at("prism"));
+  // The near field (surface meshes, shell, root junction, curving, split) is the same mesh turned,
+  // node for node (every node of every wing-layer and junction element, to 1e-9 chord).
+  for (const char* region : {"wing_layer", "junction"})
+    EXPECT_EQ(along_y.elements_by_region.at(region), along_z.elements_by_region.at(region)) << region;
   EXPECT_EQ(along_y.boundary_faces_by_group.at("wing"), along_z.boundary_faces_by_group.at("wing"));
   EXPECT_EQ(along_y.boundary_faces_by_group.at("farfield"), along_z.boundary_faces_by_group.at("farfield"));
-  const auto z_layer = region_nodes(along_z.mesh, "wing_layer", true, 1e-9);
+  for (const char* region : {"wing_layer", "junction"}) {
+    const auto z_nodes = region_nodes(along_z.mesh, region, true, 1e-9);
+    const auto y_nodes = region_nodes(along_y.mesh, region, false, 1e-9);
+    ASSERT_EQ(y_nodes.size(), z_nodes.size()) << region;
+    EXPECT_GT(z_nodes.size(), 0u) << region;
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < z_nodes.size(); ++i) differ += z_nodes[i] != y_nodes[i];
+    EXPECT_EQ(differ, 0u) << "of " << z_nodes.size() << " " << region << " element nodes";
+    EXPECT_NEAR(along_y.validity.min_scaled_jacobian_by_region.at(region),
+                along_z.validity.min_scaled_jacobian_by_region.at(region), 1e-9);
+  }
   const auto y_layer = region_nodes(along_y.mesh, "wing_layer", false, 1e-9);
-  ASSERT_EQ(y_layer.size(), z_layer.size());
-  std::size_t differ = 0;
-  for (std::size_t i = 0; i < z_layer.size(); ++i) differ += z_layer[i] != y_layer[i];
-  EXPECT_EQ(differ, 0u) << "of " << z_layer.size() << " layer element nodes";
-  EXPECT_NEAR(along_y.validity.min_scaled_jacobian_by_region.at("wing_layer"),
-              along_z.validity.min_scaled_jacobian_by_region.at("wing_layer"), 1e-9);
   // The far field is TetGen's in both, not the same tets: its point order follows the axes (and the
   // wall's annulus is triangulated in a frame built from x or y), so only its measure is the same.
   EXPECT_NEAR(along_y.volume.expected_volume(), along_z.volume.expected_volume(), 1e-9 * along_z.volume.expected_volume());
