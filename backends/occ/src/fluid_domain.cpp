@@ -90,7 +90,11 @@ bool lies_in_plane(const TopoDS_Face& face, const WallPlane& wall, double tolera
 
 // The body's faces in the plane (its root); refuses a body that does not stand on the plane.
 std::vector<TopoDS_Face> root_faces(const TopoDS_Shape& body, const WallPlane& wall, double tolerance) {
-  const double lowest = height_min(box_in_wall_frame(body, wall));
+  const Bnd_Box extent = box_in_wall_frame(body, wall);
+  const double lowest = height_min(extent);
+  if (height_max(extent) <= tolerance)
+    refuse(wall.label + ": the body lies on the side the normal points away from: the normal must point into "
+           "the fluid, to the body's side");
   if (lowest < -tolerance)
     refuse(wall.label + ": the plane cuts through the body: the body reaches " + length_text(-lowest) +
            " below it (the root must lie in the plane, the body on the side its normal points to)");
