@@ -17,6 +17,7 @@
 #include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
+#include "semimesh/pipeline/pyfr_limits.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/roles.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
@@ -657,6 +658,10 @@ RunResult run(const Config& config, Progress& progress) {
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, result.mesh, linear, chord, progress, result);
   check(config, geometry, surfaces, chord, progress, result);
+  // A user writing MSH for PyFR hears now what its importer would refuse.
+  if (std::any_of(config.output.formats.begin(), config.output.formats.end(),
+                  [](const std::string& f) { return f == "msh41" || f == "msh22"; }))
+    for (const std::string& refusal : pyfr_refusals(result.mesh)) result.warnings.push_back("output: " + refusal);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

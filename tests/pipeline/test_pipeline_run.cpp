@@ -17,29 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Coarse: a unit-span wing in a 7 x 6 x 3 chord box, 0.05 chord shell.
-const char* const kCoarseCase = R"(
-[geometry.naca]
-span = 1.0
-box = [-3.0, -3.0, 0.0, 4.0, 3.0, 3.0]
-[nearfield]
-thickness = 0.05
-[sizing]
-max_size = 1.0
-min_size = 0.02
-curvature_segments = 2
-le_size = 0.06
-te_size = 0.03
-[farfield]
-box_size = 1.0
-wall_size = 0.6
-[highorder]
-order = 1
-[output]
-formats = ["msh41", "vtu", "nektar"]
-basename = "coarse"
-)";
-
 class CountingProgress : public Progress {
  public:
   void stage_started(const std::string& name) override { started.push_back(name); }
@@ -47,8 +24,12 @@ class CountingProgress : public Progress {
   std::vector<std::string> started, finished;
 };
 
+// The CLI tests' coarse case (tests/pipeline/coarse_wing.toml: unit span, 7 x 6 x 3 chord box,
+// 0.05 chord shell), writing the three solver formats unless `overrides` say otherwise.
 Config coarse_config(const fs::path& directory, const std::vector<std::string>& overrides = {}) {
-  Config c = parse_config(kCoarseCase, "coarse.toml", {}, overrides);
+  std::vector<std::string> all = {"output.formats=[\"msh41\", \"vtu\", \"nektar\"]"};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/tests/pipeline/coarse_wing.toml", all);
   c.output.directory = directory.string();
   return c;
 }
