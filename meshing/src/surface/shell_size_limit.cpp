@@ -139,6 +139,22 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
   return limits;
 }
 
+namespace {
+
+/// The target size of the point source at one limit.
+double source_size(const ShellSizeLimit& l, const ShellSizing& shell) {
+  return std::min(l.size / kEdgeOvershoot, std::max(kThinShell * shell.thickness, l.radius));
+}
+
+}  // namespace
+
+double smallest_shell_size(const cad::Model& model, const ShellSizing& shell, double max_size) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const ShellSizeLimit& l : shell_size_limits(model, shell, max_size * kEdgeOvershoot, max_size * kEdgeOvershoot))
+    smallest = std::min(smallest, source_size(l, shell));
+  return smallest;
+}
+
 std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing) {
   const std::vector<ShellSizeLimit> limits =
       shell_size_limits(model, shell, sizing.max_size * kEdgeOvershoot, sizing.min_size * kEdgeOvershoot);
@@ -146,7 +162,7 @@ std::vector<PointSource> shell_size_sources(const cad::Model& model, const Shell
   std::vector<std::pair<double, const ShellSizeLimit*>> forbidden;  // (size, place) below min_size
   double thickest = 0.0;
   for (const ShellSizeLimit& l : limits) {
-    const double size = std::min(l.size / kEdgeOvershoot, std::max(kThinShell * shell.thickness, l.radius));
+    const double size = source_size(l, shell);
     sources.push_back({l.point, size});
     if (size >= sizing.min_size) continue;
     forbidden.push_back({size, &l});
