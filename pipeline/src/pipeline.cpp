@@ -280,11 +280,13 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
 
 surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Progress& progress, RunResult& result) {
   const cad::Model& model = *g.model;
-  const surface::SizeField size = stage("size field", progress, result, [&] {
+  const surface::SizeField size = stage("size field", progress, result, [&](const ProgressCallback& report) {
     surface::SizeParams params = config.sizing.size;
     // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    // Its limits are most of the stage; the field's own sampling is the rest (not reported).
     if (config.highorder.order > 1) {
-      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params);
+      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params,
+                                                      progress_part(report, 0.0, 0.9));
       params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
     }
     return surface::SizeField(model, params);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -43,7 +44,9 @@ class CountingProgress : public Progress {
  public:
   void stage_started(const std::string& name) override { started.push_back(name); }
   void stage_finished(const StageTiming& timing) override { finished.push_back(timing.name); }
+  void stage_progress(double fraction, const std::string&) override { fractions[started.back()].push_back(fraction); }
   std::vector<std::string> started, finished;
+  std::map<std::string, std::vector<double>> fractions;  ///< stage -> its progress reports
 };
 
 Config coarse_config(const fs::path& directory, const std::vector<std::string>& overrides = {}) {
@@ -123,6 +126,12 @@ TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "curve"), progress.finished.end());
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "repair"), progress.finished.end());
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "split"), progress.finished.end());
+  // At order 2 the size field computes the shell's limits on the curved body faces, the bulk of
+  // that stage: it reports its progress, non-decreasing, up to 0.9 at least.
+  const std::vector<double>& size_field = progress.fractions["size field"];
+  ASSERT_GE(size_field.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(size_field.begin(), size_field.end()));
+  EXPECT_GE(size_field.back(), 0.9);
   EXPECT_EQ(r.mesh.order(), 2);
   EXPECT_EQ(r.validity.invalid, 0u);
   EXPECT_GT(r.validity.min_scaled_jacobian, 0.0);
