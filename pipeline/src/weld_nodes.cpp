@@ -1,5 +1,7 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
+#include "semimesh/mesh/compact.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -101,12 +103,16 @@ void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to)
 
 }  // namespace
 
-Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance) {
+Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress) {
+  const auto report = [&](double fraction, const char* step) {
+    if (progress) progress(fraction, step);
+  };
   const std::size_t n = mesh.num_nodes();
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
   Welded out{mesh::Mesh(mesh.order(), mesh.node_set()), 0};
 
+  report(0.0, "vertices");
   // Coincident vertices first (few nodes); then all nodes of the elements touching one of them.
   std::vector<char> seen(n, 0), merged_vertex(n, 0);
   PointIndex vertices(mesh, tolerance);
@@ -118,6 +124,7 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance) {
       const mesh::NodeId w = vertices.find_or_add(v);
       if (w != v) merged_vertex[v] = merged_vertex[w] = 1;
     }
+  report(0.05, "nodes");
   PointIndex nodes(mesh, tolerance);
   std::vector<mesh::NodeId> list;
   std::fill(seen.begin(), seen.end(), 0);
@@ -135,21 +142,11 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance) {
       }
   }
 
+  report(0.15, "edges and faces");
   snap_welded_entities(mesh, to);
+  report(0.2, "mesh");
 
-  out.mesh.copy_regions_from(mesh);
-  for (std::size_t v = 0; v < n; ++v)
-    out.mesh.add_node(mesh.node(static_cast<mesh::NodeId>(v)), mesh.cad_attachment(static_cast<mesh::NodeId>(v)));
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
-    mesh.element_nodes(e, list);
-    for (mesh::NodeId& v : list) v = to[v];
-    out.mesh.add_element(mesh.elements()[e].shape, list, mesh.elements()[e].region);
-  }
-  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
-    std::vector<mesh::NodeId> face = mesh.boundary_face_nodes(b);
-    for (mesh::NodeId& v : face) v = to[v];
-    out.mesh.add_boundary_face(mesh.group_names()[mesh.boundary_faces()[b].group], mesh.boundary_faces()[b].shape, face);
-  }
+  out.mesh = mesh::with_nodes_replaced(mesh, to, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
   return out;
 }
 

@@ -125,15 +125,16 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
   if (!(shell.thickness > 0.0)) throw SurfaceMeshError("shell size limit: the thickness must be > 0");
   const double delta = shell.thickness, q = shell.min_gap_fraction;
   const int n = shell.samples;
-  std::size_t curved = 0;
-  for (int id : shell.body_surfaces) curved += model.surface(id).is_planar() ? 0 : 1;
-  ProgressCounter counter(progress, curved * (n + 1), "shell limits");  // one item per row of samples
+  ProgressCounter rows(progress, shell.body_surfaces.size() * static_cast<std::size_t>(n + 1), "shell limits");
   std::vector<ShellSizeLimit> limits;
   for (int id : shell.body_surfaces) {
     const cad::Surface& s = model.surface(id);
-    if (s.is_planar()) continue;
+    if (s.is_planar()) {
+      rows.add(static_cast<std::size_t>(n + 1));
+      continue;
+    }
     const auto box = s.bounds();
-    for (int i = 0; i <= n; ++i, counter.add(), counter.report_if_due())
+    for (int i = 0; i <= n; ++i) {
       for (int j = 0; j <= n; ++j) {
         const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
         if (!s.contains(uv)) continue;
@@ -152,8 +153,11 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
         }
         limits.push_back({s.point(uv), id, radius, lo, thickness_needed(s, uv, k.dir_max, probe_size, q)});
       }
+      rows.add();
+      rows.report_if_due();
+    }
   }
-  counter.finish();
+  rows.finish();
   return limits;
 }
 
@@ -176,7 +180,7 @@ double smallest_shell_size(const cad::Model& model, const ShellSizing& shell, do
 }
 
 std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing,
-                                           const ProgressCallback& progress) {
+                                            const ProgressCallback& progress) {
   const std::vector<ShellSizeLimit> limits =
       shell_size_limits(model, shell, sizing.max_size * kEdgeOvershoot, sizing.min_size * kEdgeOvershoot, progress);
   std::vector<PointSource> sources;

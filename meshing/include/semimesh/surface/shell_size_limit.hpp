@@ -45,15 +45,16 @@ struct ShellSizeLimit {
 
 /// The places on the body where the shell allows less than `max_size`, with the thickness each needs
 /// for edges of `probe_size` (e.g. sizing.min_size). Only convex curvature limits the size.
-/// `progress`: the fraction of the body's samples done (step "shell limits").
+/// `progress`: the fraction of sample rows done (step "shell limits"), from the calling thread.
 std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
                                               double probe_size, const ProgressCallback& progress = {});
 
 /// Throws SurfaceMeshError naming the worst place, its radius, the size it needs and the values that
 /// would work (min_size, or a thickness) when some limit is below `min_size`; otherwise returns the
 /// limits as point sources for SizeParams::point_sources.
+/// `progress` as shell_size_limits'.
 std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing,
-                                           const ProgressCallback& progress = {});
+                                            const ProgressCallback& progress = {});
 
 /// The largest sizing.min_size that shell_size_sources accepts with this shell and max_size: the
 /// smallest size it asks for anywhere on the body (infinity where the shell limits nothing).
