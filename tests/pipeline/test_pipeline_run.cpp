@@ -18,29 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Coarse: a unit-span wing in a 7 x 6 x 3 chord box, 0.05 chord shell.
-const char* const kCoarseCase = R"(
-[geometry.naca]
-span = 1.0
-box = [-3.0, -3.0, 0.0, 4.0, 3.0, 3.0]
-[nearfield]
-thickness = 0.05
-[sizing]
-max_size = 1.0
-min_size = 0.02
-curvature_segments = 2
-le_size = 0.06
-te_size = 0.03
-[farfield]
-box_size = 1.0
-wall_size = 0.6
-[highorder]
-order = 1
-[output]
-formats = ["msh41", "vtu", "nektar"]
-basename = "coarse"
-)";
-
 class CountingProgress : public Progress {
  public:
   void stage_started(const std::string& name) override { started.push_back(name); }
@@ -50,8 +27,12 @@ class CountingProgress : public Progress {
   std::map<std::string, std::vector<double>> fractions;  ///< stage -> its progress reports
 };
 
+// The CLI tests' coarse case (tests/pipeline/coarse_wing.toml: unit span, 7 x 6 x 3 chord box,
+// 0.05 chord shell), writing the three solver formats unless `overrides` say otherwise.
 Config coarse_config(const fs::path& directory, const std::vector<std::string>& overrides = {}) {
-  Config c = parse_config(kCoarseCase, "coarse.toml", {}, overrides);
+  std::vector<std::string> all = {"output.formats=[\"msh41\", \"vtu\", \"nektar\"]"};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/tests/pipeline/coarse_wing.toml", all);
   c.output.directory = directory.string();
   return c;
 }
@@ -422,6 +403,38 @@ TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
     }
     EXPECT_FALSE(fs::exists(dir)) << overrides.front();
   }
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline
+
+namespace semimesh::pipeline {
+namespace {
+
+// The generated wing through geometry.wall_plane and geometry.farfield = {box}: the wall z = 0 and
+// the box cut at it are the wing's own wall and box, so the mesh is the one of naca.box.
+TEST(PipelineRun, AGeneratedWingTakesTheWallPlaneAndFarFieldBox) {
+  const fs::path dir = fresh_directory("wall_plane");
+  Progress quiet;
+  const RunResult own = run(coarse_config(dir / "own", {"output.formats=[\"msh41\"]"}), quiet);
+  const RunResult from_keys = run(coarse_config(dir / "keys", {"output.formats=[\"msh41\"]",
+                                                               "geometry.wall_plane.point=[0, 0, 0]",
+                                                               "geometry.wall_plane.normal=[0, 0, 1]",
+                                                               "geometry.farfield.box=[-3, -3, -1, 4, 3, 3]"}),
+                                  quiet);
+  EXPECT_TRUE(from_keys.checks_passed());
+  EXPECT_EQ(from_keys.elements_by_type, own.elements_by_type);
+  EXPECT_EQ(from_keys.volume.expected_volume(), own.volume.expected_volume());
+  // box_chords: 1 chord around the wing's box [0, 1] x [-0.5, 0.5] x [0, 1] (the section's
+  // half-chord bound on y): [-1, 2] x [-1.5, 1.5] x [0, 2], volume 18 minus the wing's.
+  const RunResult chords = run(coarse_config(dir / "chords", {"output.formats=[\"msh41\"]",
+                                                              "geometry.wall_plane.point=[0, 0, 0]",
+                                                              "geometry.wall_plane.normal=[0, 0, 1]",
+                                                              "geometry.farfield.box_chords=1"}),
+                               quiet);
+  EXPECT_TRUE(chords.checks_passed());
+  EXPECT_NEAR(chords.volume.box_volume, 18.0, 1e-9);
+  fs::remove_all(dir);
 }
 
 }  // namespace
