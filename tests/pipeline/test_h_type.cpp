@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -186,10 +187,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{"widening_5_degrees", {"wake.widening=5"}}),
     [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
 
-TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
-  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
-  const RunResult analytic = run_h("analytic", {"boundary_layer.layers=3"});
-  const RunResult occ = run_h("occ", {"geometry.backend=occ", "boundary_layer.layers=3"});
+void expect_same_mesh(const RunResult& analytic, const RunResult& occ) {
   expect_valid_conforming(occ, "occ");
   for (const char* region : {"wing_layer", "junction", "wake"})
     EXPECT_EQ(occ.elements_by_region.at(region), analytic.elements_by_region.at(region)) << region;
@@ -206,6 +204,71 @@ TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
   EXPECT_LT(worst, 1e-5);
 }
 
+TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  expect_same_mesh(run_h("analytic", {"boundary_layer.layers=3"}),
+                   run_h("occ", {"geometry.backend=occ", "boundary_layer.layers=3"}));
+}
+
+// Wake hexes standing on the sheet: faces with their four vertices in the plane through the
+// straight trailing edge (x = 1, y = 0, along z) and the wake direction d (in the xy plane). Each
+// sheet face with the side (sign of the hex's mean distance to the plane) of each hex using it;
+// every wake hex counted in `hexes`.
+std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet_faces(const mesh::Mesh& m, const Eigen::Vector3d& d,
+                                                                      int& hexes) {
+  const auto region = std::find(m.region_names().begin(), m.region_names().end(), "wake") - m.region_names().begin();
+  const Eigen::Vector3d normal = Eigen::Vector3d(-d.y(), d.x(), 0.0).normalized();
+  auto across = [&](const Eigen::Vector3d& x) { return (x - Eigen::Vector3d(1, 0, 0)).dot(normal); };
+  std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet;
+  hexes = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != region) continue;
+    ++hexes;
+    double side = 0.0;
+    for (int k = 0; k < 8; ++k) side += across(m.node(e.vertices[k])) / 8.0;
+    for (const std::vector<int>& f : ho::faces(ho::Shape::Hexahedron)) {
+      std::vector<mesh::NodeId> v;
+      for (int k : f)
+        if (std::abs(across(m.node(e.vertices[k]))) < 1e-9) v.push_back(e.vertices[k]);
+      if (v.size() != 4) continue;
+      std::sort(v.begin(), v.end());
+      sheet[v].push_back(side);
+    }
+  }
+  return sheet;
+}
+
+// Sharp trailing edge (no base): the upper and lower wing layers end on the trailing edge with
+// their own normals, their rear interfaces swept into wake hexes on either side of the sheet
+// (the trailing edge swept), which both sides share face for face. Curved (order 2), at incidence
+// too; the OCC-built sharp wing gives the same mesh.
+TEST(HTypeEndToEnd, SharpTrailingEdgeWakeSheetSharedByBothSides) {
+  for (const auto& [name, d] : std::vector<std::pair<std::string, Eigen::Vector3d>>{
+           {"sharp", Eigen::Vector3d(1, 0, 0)}, {"sharp_incidence", Eigen::Vector3d(0.9848, 0.1736, 0.0)}}) {
+    const RunResult r =
+        run_h(name, {"geometry.naca.te=sharp", "highorder.order=2",
+                     "wake.direction=[" + std::to_string(d.x()) + ", " + std::to_string(d.y()) + ", 0.0]"});
+    expect_valid_conforming(r, name);
+    int hexes = 0;
+    const auto sheet = sheet_faces(r.mesh, d.normalized(), hexes);
+    EXPECT_EQ(hexes, r.wake.hexes) << name;
+    EXPECT_EQ(hexes % 12, 0) << name;
+    EXPECT_EQ(2 * sheet.size(), static_cast<std::size_t>(hexes)) << name;  // every hex stands on the sheet
+    for (const auto& [face, sides] : sheet) {
+      ASSERT_EQ(sides.size(), 2u) << name;
+      EXPECT_LT(std::min(sides[0], sides[1]), 0.0) << name;
+      EXPECT_GT(std::max(sides[0], sides[1]), 0.0) << name;
+    }
+    double lowest = 1e300;
+    for (const Eigen::Vector3d& x : region_vertices(r.mesh, "wake")) lowest = std::min(lowest, x.z());
+    EXPECT_GE(lowest, 0.04 + 0.1 - 1e-9) << name;
+    EXPECT_NEAR(r.wake.gap, lowest - 0.04, 1e-12) << name;
+  }
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  expect_same_mesh(run_h("sharp_analytic", {"geometry.naca.te=sharp"}),
+                   run_h("sharp_occ", {"geometry.naca.te=sharp", "geometry.backend=occ"}));
+}
+
 // Bad H-type input: a BadInput RunError naming the key and value, and no file written.
 TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
@@ -216,7 +279,7 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
       // Widening at incidence twists the block's outer faces at the tip beyond what a pyramid stands on.
       {{"wake.widening=30", "wake.direction=[1.0, 0.6, 0.0]"}, {"wake.widening = 30", "the wake block folds"}},
-      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"auto\"", "sharp"}},
+      {{"geometry.naca.te=sharp", "boundary_layer.layers=3"}, {"sharp trailing edge", "boundary_layer.layers = 1"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

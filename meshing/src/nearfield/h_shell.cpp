@@ -87,6 +87,29 @@ std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>> lay
   return edges;
 }
 
+// A sharp trailing edge: of the curves between two body surfaces that leave the wall (a vertex on
+// a body-wall curve), the one whose wall vertex lies farthest downstream along `d` (the leading
+// edge is the other one of a wing's section); -1 when there is none.
+int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const Vec3& d) {
+  auto is_body = [&](int s) { return std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), s) > 0; };
+  auto on_wall = [&](int vertex) {
+    for (int c : model.curves_of_vertex(vertex))
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c))
+        if (u.surface == roles.wall_surface) return true;
+    return false;
+  };
+  int best = -1;
+  double farthest = -1e300;
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (uses.size() != 2 || !is_body(uses[0].surface) || !is_body(uses[1].surface) || uses[0].surface == uses[1].surface)
+      continue;
+    for (int v : model.curve_vertices(c))
+      if (on_wall(v) && model.vertex(v).point.dot(d) > farthest) farthest = model.vertex(v).point.dot(d), best = c;
+  }
+  return best;
+}
+
 }  // namespace
 
 double wake_fraction(const WakeBlock& wake, const Eigen::Vector3d& x) {
@@ -124,7 +147,7 @@ const params::Table<WakeParams>& wake_keys() {
       params::real("gap", &WakeParams::gap, "> 0", "H: height of the wake block's root above the wall layer's top"),
       params::real("ratio_end", &WakeParams::ratio_end, ">= 1",
                    "H: the layer ratio at the wake's far end (r at the trailing edge, linear in between)"),
-      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end"),
+      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end, or a sharp trailing edge"),
   };
   return table;
 }
@@ -137,18 +160,35 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   if (!(d0.norm() > 0.0)) fail("wake.direction = " + direction_label(wake) + ": expected a non-zero vector");
   const Vec3 d = d0.normalized();
   if (!(d.x() > 0.0)) fail("wake.direction = " + direction_label(wake) + " points upstream (x <= 0)");
+  // The trailing edge: squared-off (its base surface, meshed with structured quads) or, with
+  // te_base "auto" and no base found, sharp (a curve between two body surfaces).
   const auto te_found = model.find_surface(wake.te_base);
-  if (!te_found || !std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *te_found))
+  const bool blunt = te_found && std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *te_found) > 0;
+  const int te = blunt ? *te_found : -1;
+  const int crack = !blunt && wake.te_base == "auto" ? sharp_trailing_edge(model, roles, d) : -1;
+  if (!blunt && crack < 0)
     fail("wake.te_base = \"" + wake.te_base +
-         "\": no such trailing-edge base among the body surfaces; the H-type near field sweeps the wake from a "
-         "squared-off trailing edge (a sharp trailing edge is not supported yet: use topology \"C\")");
-  const int te = *te_found;
-  const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
-  if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
-    fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
+         "\": no such trailing-edge base among the body surfaces" +
+         (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
+                                 : "") +
+         "; the H-type near field sweeps the wake from the trailing edge");
+  // At the sharp edge's root the junction has one halo: the triangles there stay bare (see
+  // build_junction_shell) and the junction hexes' tops beside them face the far field, folded
+  // along the trailing edge (the halo leans downstream): a pyramid stands on the whole face, not on
+  // the thin first layer a split cuts from it. Splitting needs two halos there and a junction
+  // element fanning between them (not built yet).
+  if (crack >= 0 && fractions)
+    fail("a sharp trailing edge (" + curve_label(model, crack) +
+         ") takes an unsplit wing layer in the H-type near field (boundary_layer.layers = 1): the junction at its root "
+         "cannot be split into layers yet; use boundary_layer.layers = 1, topology \"C\" or a squared-off trailing edge");
+  if (blunt) {
+    const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
+    if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
+      fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
+  }
 
-  detail::JunctionShell js =
-      detail::build_junction_shell(model, base_as_triangles(meshes, te), roles, params, junction, wall_thickness, te);
+  detail::JunctionShell js = detail::build_junction_shell(model, blunt ? base_as_triangles(meshes, te) : meshes, roles,
+                                                          params, junction, wall_thickness, te, crack);
   if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
   mesh::Mesh& m = field.mesh;
@@ -157,18 +197,14 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     field.footprint_top.push_back(static_cast<NodeId>(js.chain[i]) + js.offset);
   }
 
-  // The base's quads (body node ids, lifted) and the layer's open edges off the root (its rear interfaces).
+  // The base's quads (body node ids, lifted); the trailing-edge nodes (the base's, or the sharp
+  // trailing edge's inner ones).
   std::vector<std::array<NodeId, 4>> base;
-  BodyMesh layer = js.body;
-  layer.triangles.clear();
-  layer.triangle_surface.clear();
   std::vector<std::array<int, 3>> pair;
   for (std::size_t t = 0; t < js.body.triangles.size(); ++t) {
+    if (js.body.triangle_surface[t] != te) continue;
     const auto& v = js.body.triangles[t];
-    if (js.body.triangle_surface[t] != te) {
-      layer.triangles.push_back(v);
-      layer.triangle_surface.push_back(js.body.triangle_surface[t]);
-    } else if (pair.empty()) {
+    if (pair.empty()) {
       pair.push_back(v);
     } else {
       base.push_back({static_cast<NodeId>(pair[0][0]), static_cast<NodeId>(pair[0][1]), static_cast<NodeId>(pair[0][2]),
@@ -176,16 +212,19 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
       pair.clear();
     }
   }
+  std::vector<NodeId> te_nodes;
+  for (const auto& q : base) te_nodes.insert(te_nodes.end(), q.begin(), q.end());
+  for (int v = 0; v < js.body.num_nodes(); ++v)
+    if (js.crack[v]) te_nodes.push_back(static_cast<NodeId>(v));
 
   // The cut row: the lowest trailing-edge row at least `gap` above the wall layer's top.
   const double tolerance = 1e-6 * std::max(1.0, js.tip);
   const double wanted = wall_thickness + wake.gap;
   double cut = 1e300;
-  for (const auto& q : base)
-    for (NodeId v : q) {
-      const double h = js.wall.height(m.node(v));
-      if (h >= wanted - tolerance && h > js.strip + tolerance) cut = std::min(cut, h);
-    }
+  for (NodeId v : te_nodes) {
+    const double h = js.wall.height(m.node(v));
+    if (h >= wanted - tolerance && h > js.strip + tolerance) cut = std::min(cut, h);
+  }
   if (!(cut < js.tip - tolerance))
     fail("wake.gap = " + number_label(wake.gap) + ": the wake block's root would stand at " + number_label(wanted) +
          " above the wall, leaving no trailing-edge row below the wing's tip (" + number_label(js.tip) +
@@ -199,10 +238,12 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     else exposed_base.push_back(q);
   }
   const std::set<int> chain(js.chain.begin(), js.chain.end());
-  for (const auto& [a, b] : open_edges(layer)) {
-    if (chain.count(a) && chain.count(b)) continue;  // the root row over the junction
-    const NodeId na = static_cast<NodeId>(a), nb = static_cast<NodeId>(b);
-    if (above_cut(na) && above_cut(nb)) section.push_back({{na, nb, nb + js.offset, na + js.offset}, true});
+  for (const auto& [a, b] : open_edges(js.layer)) {
+    const NodeId na = js.layer_body[a], nb = js.layer_body[b];
+    if (chain.count(static_cast<int>(na)) && chain.count(static_cast<int>(nb))) continue;  // the root row over the junction
+    if (crack >= 0 && !(js.crack[na] && js.crack[nb])) continue;  // sharp: the rims of the bare triangles
+    if (above_cut(na) && above_cut(nb))
+      section.push_back({{na, nb, static_cast<NodeId>(b) + js.offset, static_cast<NodeId>(a) + js.offset}, true});
   }
   if (section.empty()) fail("no trailing edge found: the wing layer has no rear interface above the cut");
 
@@ -251,11 +292,14 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
              " would be inverted (the block folds); use a smaller widening or a direction closer to the chord");
       m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), wake_region);
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
-      field.element_surface.push_back(te);
+      field.element_surface.push_back(te);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
     }
   }
   for (const auto& q : exposed_base) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {q[0], q[3], q[2], q[1]});
+  for (const auto& t : js.bare)
+    m.add_boundary_face("wing", ho::Shape::Triangle,
+                        {static_cast<NodeId>(t[0]), static_cast<NodeId>(t[2]), static_cast<NodeId>(t[1])});
 
   WakeBlock& w = field.wake;
   w.direction = d;
@@ -300,6 +344,8 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }))
       skin.push_back(use.second);
   for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
+  for (const auto& t : js.bare)
+    skin.push_back({{static_cast<NodeId>(t[0]), static_cast<NodeId>(t[1]), static_cast<NodeId>(t[2]), mesh::kNoNode}, 3});
 
   // Skin quads the split will cut, cut already at its interfaces (nodes shared by neighbours).
   const auto edges = layer_edges(field);
