@@ -184,7 +184,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Variant{"cambered_4412", {"geometry.naca.code=\"4412\""}},
                       Variant{"swept_tapered", {"geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
                       Variant{"incidence_10_degrees", {"wake.direction=[0.9848, 0.1736, 0.0]"}},
-                      Variant{"widening_5_degrees", {"wake.widening=5"}}),
+                      Variant{"widening_5_degrees", {"wake.widening=5"}},
+                      Variant{"incidence_10_widening_10", {"wake.direction=[0.9848, 0.1736, 0.0]", "wake.widening=10"}}),
     [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
 
 void expect_same_mesh(const RunResult& analytic, const RunResult& occ) {
@@ -269,6 +270,30 @@ TEST(HTypeEndToEnd, SharpTrailingEdgeWakeSheetSharedByBothSides) {
                    run_h("sharp_occ", {"geometry.naca.te=sharp", "geometry.backend=occ"}));
 }
 
+// Widening at incidence: mid-span, the block's cross-flow thickness (across the sheet, the plane
+// through the trailing edge and the wake direction) grows by 2 length tan(widening) from the
+// trailing edge to the far end (measured on the mesh's wake vertices of one trailing-edge row).
+TEST(HTypeEndToEnd, WideningAtIncidenceGrowsTheCrossFlowThickness) {
+  const Eigen::Vector3d d = Eigen::Vector3d(0.9848, 0.1736, 0.0).normalized();
+  const RunResult r = run_h("widening", {"wake.direction=[0.9848, 0.1736, 0.0]", "wake.widening=10"});
+  expect_valid_conforming(r, "widening");
+  const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
+  double row = 1e300;
+  for (const Eigen::Vector3d& x : wake)
+    if (std::abs(x.x() - 1.0) < 1e-9 && std::abs(x.z() - 0.5) < std::abs(row - 0.5)) row = x.z();
+  const Eigen::Vector3d te(1.0, 0.0, row), normal(-d.y(), d.x(), 0.0);
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};  // across the sheet: [0] at the trailing edge, [1] at the far end
+  for (const Eigen::Vector3d& x : wake) {
+    if (std::abs(x.z() - row) > 1e-4) continue;  // the row's offsets (their normals lean a little spanwise)
+    const double along = (x - te).dot(d), across = (x - te).dot(normal);
+    const int end = along < 0.03 ? 0 : along > 1.5 - 0.15 ? 1 : -1;
+    if (end < 0) continue;
+    lo[end] = std::min(lo[end], across), hi[end] = std::max(hi[end], across);
+  }
+  ASSERT_LT(lo[1], hi[1]) << row;
+  EXPECT_NEAR((hi[1] - lo[1]) - (hi[0] - lo[0]), 2.0 * 1.5 * std::tan(10.0 * 3.14159265358979323846 / 180.0), 1e-6);
+}
+
 // Bad H-type input: a BadInput RunError naming the key and value, and no file written.
 TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
@@ -277,8 +302,8 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[-1.0, 0.0, 0.0]"}, {"wake.direction = [-1, 0, 0]", "upstream"}},
       {{"wake.direction=[1.0, 0.0, -0.5]"}, {"wake.direction = [1, 0, -0.5]", "into the wall"}},
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
-      // Widening at incidence twists the block's outer faces at the tip beyond what a pyramid stands on.
-      {{"wake.widening=30", "wake.direction=[1.0, 0.6, 0.0]"}, {"wake.widening = 30", "the wake block folds"}},
+      // Steeply inclined and widened by 44 degrees, the first wake hexes turn inside out.
+      {{"wake.widening=44", "wake.direction=[0.5, 1.0, 0.0]", "wake.length=0.8"}, {"wake.widening = 44", "the block folds"}},
       {{"geometry.naca.te=sharp", "boundary_layer.layers=3"}, {"sharp trailing edge", "boundary_layer.layers = 1"}},
   };
   for (const auto& [overrides, expected] : cases) {

@@ -247,15 +247,20 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   }
   if (section.empty()) fail("no trailing edge found: the wing layer has no rear interface above the cut");
 
-  // The sweep: node p at station k is p + s_k d, the layer offsets also moved away from the sheet.
+  // The sweep: node p at station k is p + s_k d, the layer offsets also moved away from the sheet
+  // by tan(widening) per unit length across d, within the trailing edge's cross-section (across
+  // the streamwise axis x, as the base and the rear interfaces): moved across d instead, at
+  // incidence the two sides' offsets (and the tip corners') would leave that plane by opposite
+  // amounts, warping the block's outflow and tip faces until they fold.
   const std::vector<double> s = stations(wake);
   const double spread = std::tan(wake.widening_deg * kPi / 180.0);
-  std::map<NodeId, Vec3> away;  // offset node -> unit direction away from the sheet, across d
+  std::map<NodeId, Vec3> away;  // offset node -> direction in the cross-section, of unit part across d
   for (const Section& c : section)
     if (c.layer)
       for (int k : {0, 1}) {
-        const Vec3 across = m.node(c.q[3 - k]) - m.node(c.q[k]);
-        away[c.q[3 - k]] = (across - across.dot(d) * d).normalized();
+        Vec3 across = m.node(c.q[3 - k]) - m.node(c.q[k]);
+        across = (across - across.x() * Vec3::UnitX()).normalized();
+        away[c.q[3 - k]] = across / (across - across.dot(d) * d).norm();
       }
   const Vec3 inner = box.lo + 1e-3 * (box.hi - box.lo), outer = box.hi - 1e-3 * (box.hi - box.lo);
   std::map<NodeId, std::vector<NodeId>> swept;
