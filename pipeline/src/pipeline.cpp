@@ -411,19 +411,21 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     result.wake.ratio_first = ratio;
     result.wake.ratio_last = config.wake.ratio_end;
   }
+  // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
+  const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report);
-    // The coarse elements' inner nodes are no longer used by any element: drop them.
-    fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
+    // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
+    // does when one follows: each copy of the mesh rebuilds its edges and faces).
+    if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
   });
-  // H-type: the far field stands on skin quads cut like the split; make their nodes the split's.
-  if (linear.wake.hexes > 0 && layers > 1)
-    split.mesh = stage("weld", progress, result, [&] {
-      return mesh::without_unreferenced_nodes(weld_coincident_nodes(split.mesh, kWeldTolerance * chord).mesh);
+  if (weld)
+    split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
+      return weld_coincident_nodes(split.mesh, kWeldTolerance * chord, report).mesh;
     });
   if (layers > 1) {
     result.layers.requested_ratio = ratio;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/progress.hpp"
 
 #include <cstddef>
 
@@ -15,12 +16,14 @@ struct Welded {
 };
 
 /// A copy of `mesh` in which every node that lies within `tolerance` of a node seen before it is
-/// replaced by that node (ids and CAD attachments kept; the replaced ones stay unreferenced). Only
+/// replaced by that node, keeping only the nodes its elements and boundary faces then use, in their
+/// old order with their CAD attachments (as mesh::without_unreferenced_nodes would). Only
 /// elements with a vertex coinciding with another element's vertex are searched for their other
 /// nodes (a weld starts at the vertices). An edge or face whose vertices were all welded onto
 /// those of another then takes that one's inner nodes, each the nearest (the split's interfaces,
 /// interpolated between the vertices', are not where a straight skin quad has its nodes). Throws std::invalid_argument (from Mesh::add_element)
-/// when two elements would then give one edge or face different nodes.
-Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance);
+/// when two elements would then give one edge or face different nodes. `progress` receives the
+/// fraction done: the search over the elements (step "search"), then the copy (step "elements").
+Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress = {});
 
 }  // namespace semimesh::pipeline
