@@ -1,15 +1,12 @@
 // Throughput of the high-order stages on the NACA 0012 O-shell: curving, splitting (N = 5, r = 2)
 // and certification at P = 2, 4, 6 (GLL), with all OpenMP threads, and the share of the curving
 // time spent in CAD queries (curving run again on one thread through a timing copy of the model).
+#include "naca_o_shell.hpp"
 #include "timed_model.hpp"
 
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
-#include "semimesh/mock_cad/naca.hpp"
-#include "semimesh/nearfield/o_shell.hpp"
-#include "semimesh/surface/model_surfaces.hpp"
-#include "semimesh/surface/size_field.hpp"
 
 #include <omp.h>
 
@@ -28,23 +25,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int main() {
-  mock_cad::NacaWingParams wing;
-  wing.span = 1.5;
-  wing.sharp_te = true;
-  const std::unique_ptr<cad::Model> model = mock_cad::make_naca_wing(wing);
-  surface::SizeParams size;
-  size.max_size = 0.6;
-  size.min_size = 0.01;
-  size.curvature_segments = 2.0;
-  size.gradation = 1.5;
-  size.le_size = 0.03;
-  size.te_size = 0.1;
-  const surface::SurfaceMeshes meshes = surface::mesh_model_surfaces(*model, surface::SizeField(*model, size));
-  nearfield::BodyRoles roles;
-  for (const char* name : {"upper", "lower", "tip"}) roles.body_surfaces.push_back(*model->find_surface(name));
-  roles.wall_surface = *model->find_surface("wall");
-  const nearfield::NearField shell = nearfield::build_o_shell(*model, meshes, roles, {});
-  const mesh::Mesh& linear = shell.mesh;
+  const bench::NacaOShell shell = bench::naca_o_shell();
+  const cad::Model* model = shell.model.get();
+  const mesh::Mesh& linear = shell.linear;
   std::vector<std::size_t> all(linear.elements().size());
   std::iota(all.begin(), all.end(), std::size_t{0});
 

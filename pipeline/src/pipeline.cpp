@@ -9,6 +9,7 @@
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 #include "semimesh/io/atomic_file.hpp"
+#include "semimesh/io/output_set.hpp"
 #include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
@@ -280,14 +281,19 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
 
 surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Progress& progress, RunResult& result) {
   const cad::Model& model = *g.model;
-  const surface::SizeField size = stage("size field", progress, result, [&] {
+  const surface::SizeField size = stage("size field", progress, result, [&](const ProgressCallback& report) {
     surface::SizeParams params = config.sizing.size;
     // Curved body faces under a straight outer face: the shell's thickness bounds the body's edges.
+    // Progress: the shell limits (most of the time when they run), then the curvature sampling.
     if (config.highorder.order > 1) {
-      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params);
+      const auto limits = surface::shell_size_sources(model, {config.nearfield.shell.thickness, g.roles.body}, params,
+                                                      progress_part(report, 0.0, 0.9));
       params.point_sources.insert(params.point_sources.end(), limits.begin(), limits.end());
     }
-    return surface::SizeField(model, params);
+    if (report) report(config.highorder.order > 1 ? 0.9 : 0.0, "curvature");
+    surface::SizeField field(model, params);
+    if (report) report(1.0, "curvature");
+    return field;
   });
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
     return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles), report);
@@ -419,7 +425,7 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report);
     // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
-    // does when one follows: each copy of the mesh rebuilds its edges and faces).
+    // does it in its own rebuild of the mesh).
     if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
   });
@@ -538,29 +544,37 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
     const double parts = static_cast<double>(config.output.formats.size() + 1);
     try {
       std::filesystem::create_directories(config.output.directory);
-      write_mesh_files(result.mesh, config.output.formats, paths,
-                       progress_part(report, 0.0, (parts - 1) / parts), result.written_files);
+      // Every file goes to a staging folder first and all replace an earlier run's files together
+      // at the end: when one fails, the output folder is left exactly as it was.
+      io::OutputSet outputs(config.output.directory);
+      const auto staged = [&](const std::string& path) {
+        return outputs.staged(std::filesystem::path(path).filename().string());
+      };
+      std::vector<std::string> staged_paths;
+      for (const std::string& path : paths) staged_paths.push_back(staged(path));
+      std::vector<std::string> staged_files;
+      write_mesh_files(result.mesh, config.output.formats, staged_paths,
+                       progress_part(report, 0.0, (parts - 1) / parts), staged_files);
+      for (const std::string& file : staged_files) result.written_files.push_back(outputs.final_path(file));
       if (report) report((parts - 1) / parts, config.output.pictures ? "pictures" : "report.json");
       if (config.output.pictures)
         for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
-          const std::string path =
-              (std::filesystem::path(config.output.directory) / (config.output.basename + picture.suffix)).string();
-          io::AtomicFile file(path);
+          const std::string name = config.output.basename + picture.suffix;
+          io::AtomicFile file(outputs.staged(name));
           file.write(picture.svg);
           file.commit();
-          result.written_files.push_back(path);
-          result.pictures.push_back(path);
+          result.written_files.push_back(outputs.final_path(name));
+          result.pictures.push_back(outputs.final_path(name));
         }
       result.peak_memory_mb = peak_memory_mb();
-      io::AtomicFile report(paths.back());
-      report.write(report_json(result, config));
-      report.commit();
+      io::AtomicFile report_file(staged_paths.back());
+      report_file.write(report_json(result, config));
+      report_file.commit();
+      outputs.commit();
       result.written_files.push_back(paths.back());
     } catch (...) {
-      // Leave no partial output: remove what this run wrote (older files of other runs stay).
-      std::error_code ignored;
-      for (const std::string& p : result.written_files) std::filesystem::remove_all(p, ignored);
       result.written_files.clear();
+      result.pictures.clear();
       throw;
     }
   });

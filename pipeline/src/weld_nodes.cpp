@@ -1,5 +1,7 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
+#include "semimesh/mesh/compact.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -101,24 +103,20 @@ void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to)
 
 }  // namespace
 
-// Shares of the weld's time (measured on an order-4 H-type case: the search over the elements about
-// a quarter, the copy, whose add_element rebuilds the edge and face entities, the rest).
-constexpr double kSearchShare = 0.25;
-
 Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress) {
+  const auto report = [&](double fraction, const char* step) {
+    if (progress) progress(fraction, step);
+  };
   const std::size_t n = mesh.num_nodes();
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
   Welded out{mesh::Mesh(mesh.order(), mesh.node_set()), 0};
 
+  report(0.0, "vertices");
   // Coincident vertices first (few nodes); then all nodes of the elements touching one of them.
-  const std::size_t count = mesh.elements().size();
-  ProgressCounter search(progress_part(progress, 0.0, kSearchShare), 2 * count, "search");
   std::vector<char> seen(n, 0), merged_vertex(n, 0);
   PointIndex vertices(mesh, tolerance);
-  for (const mesh::Element& e : mesh.elements()) {
-    search.add();
-    search.report_if_due();
+  for (const mesh::Element& e : mesh.elements())
     for (int k = 0; k < ho::num_vertices(e.shape); ++k) {
       const mesh::NodeId v = e.vertices[k];
       if (seen[v]) continue;
@@ -126,13 +124,11 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const Pro
       const mesh::NodeId w = vertices.find_or_add(v);
       if (w != v) merged_vertex[v] = merged_vertex[w] = 1;
     }
-  }
+  report(0.05, "nodes");
   PointIndex nodes(mesh, tolerance);
   std::vector<mesh::NodeId> list;
   std::fill(seen.begin(), seen.end(), 0);
   for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
-    search.add();
-    search.report_if_due();
     const mesh::Element& el = mesh.elements()[e];
     bool touches = false;
     for (int k = 0; k < ho::num_vertices(el.shape); ++k) touches = touches || merged_vertex[el.vertices[k]];
@@ -146,40 +142,11 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const Pro
       }
   }
 
+  report(0.15, "edges and faces");
   snap_welded_entities(mesh, to);
-  search.finish();
+  report(0.2, "mesh");
 
-  // Only the nodes the welded elements and boundary faces use, in their old order (what
-  // mesh::without_unreferenced_nodes keeps, without a second copy of the mesh).
-  std::vector<char> used(n, 0);
-  for (std::size_t e = 0; e < count; ++e) {
-    mesh.element_nodes(e, list);
-    for (mesh::NodeId v : list) used[to[v]] = 1;
-  }
-  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b)
-    for (mesh::NodeId v : mesh.boundary_face_nodes(b)) used[to[v]] = 1;
-  std::vector<mesh::NodeId> new_id(n, mesh::kNoNode);
-  for (std::size_t v = 0; v < n; ++v)
-    if (used[v])
-      new_id[v] = out.mesh.add_node(mesh.node(static_cast<mesh::NodeId>(v)), mesh.cad_attachment(static_cast<mesh::NodeId>(v)));
-  for (mesh::NodeId& v : to) v = used[v] ? new_id[v] : mesh::kNoNode;
-  for (const std::string& g : mesh.group_names()) out.mesh.group_index(g);
-  out.mesh.copy_regions_from(mesh);
-  if (count > 0) out.mesh.reserve(mesh.elements().front().shape, count);
-  ProgressCounter copy(progress_part(progress, kSearchShare, 1.0), count, "elements");
-  for (std::size_t e = 0; e < count; ++e) {
-    mesh.element_nodes(e, list);
-    for (mesh::NodeId& v : list) v = to[v];
-    out.mesh.add_element(mesh.elements()[e].shape, list, mesh.elements()[e].region);
-    copy.add();
-    copy.report_if_due();
-  }
-  copy.finish();
-  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
-    std::vector<mesh::NodeId> face = mesh.boundary_face_nodes(b);
-    for (mesh::NodeId& v : face) v = to[v];
-    out.mesh.add_boundary_face(mesh.group_names()[mesh.boundary_faces()[b].group], mesh.boundary_faces()[b].shape, face);
-  }
+  out.mesh = mesh::with_nodes_replaced(mesh, to, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <regex>
 #include <sstream>
+#include "temp_path.hpp"
 
 namespace semimesh::app {
 namespace {
@@ -30,7 +31,7 @@ mesh::Mesh prisms(const std::vector<std::array<double, 3>>& heights) {
 }
 
 std::string scratch(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semimesh_test_check_command";
+  const std::filesystem::path dir = semimesh::test::temp_path("check_command");
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }

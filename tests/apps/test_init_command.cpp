@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include "temp_path.hpp"
 
 namespace semimesh::app {
 namespace {
@@ -31,7 +32,7 @@ TEST(InitCommand, TheDefaultConfigReadsBackAsTheDefaults) {
 }
 
 TEST(InitCommand, KeepsAnExistingFileUnlessForced) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "semimesh_test_init.toml";
+  const std::filesystem::path path = semimesh::test::temp_path("init.toml");
   std::filesystem::remove(path);
   std::ostringstream out, err;
   ASSERT_EQ(run_init_command({path.string(), false, {}}, out, err), 0) << err.str();
@@ -52,7 +53,7 @@ std::string nekmesh_wing() { return std::string(SEMIMESH_TESTDATA_DIR) + "/cad/n
 // of the defaults times the root chord.
 TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
   if (!std::filesystem::exists(nekmesh_wing())) GTEST_SKIP() << nekmesh_wing() << " not found (see shared/testdata/cad/README.md)";
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "semimesh_test_init_cad";
+  const std::filesystem::path dir = semimesh::test::temp_path("init_cad");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "wing.toml").string();
@@ -85,7 +86,7 @@ TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
 }
 
 TEST(InitCommand, AFileWithoutAWallIsRefusedAndNothingWritten) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "semimesh_test_init_missing.toml";
+  const std::filesystem::path path = semimesh::test::temp_path("init_missing.toml");
   std::filesystem::remove(path);
   std::ostringstream out, err;
   EXPECT_EQ(run_init_command({path.string(), false, "/no/such/wing.step"}, out, err), 1);

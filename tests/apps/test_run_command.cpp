@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "temp_path.hpp"
 
 namespace semimesh::app {
 namespace {
@@ -26,7 +27,7 @@ RunOptions failing_run(const fs::path& directory) {
 }
 
 fs::path folder_with_a_file(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
+  const fs::path dir = semimesh::test::temp_path(name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "keep.txt") << "an earlier result\n";

@@ -4,6 +4,7 @@
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/msh.hpp"
 #include "semimesh/io/nektar.hpp"
+#include "semimesh/io/output_set.hpp"
 #include "semimesh/io/vtk_order.hpp"
 #include "semimesh/io/vtu.hpp"
 
@@ -151,6 +152,64 @@ TEST(Msh, WriteFailureKeepsExistingFile) {
   EXPECT_THROW(semimesh::io::write_msh(too_high, path), std::invalid_argument);
   EXPECT_EQ(read_text(path), "keep\n");
   EXPECT_EQ(list_dir(dir), std::vector<std::string>{"m.msh"});
+}
+
+// Every entry of a folder, hidden ones too (a staging folder left behind would show here).
+std::vector<std::string> all_entries(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(OutputSet, CommitReplacesOlderFilesAndFoldersTogether) {
+  const std::string dir = temp_dir();
+  { std::ofstream(dir + "/a.msh") << "older a\n"; }
+  std::filesystem::create_directories(dir + "/pieces/stale");
+  { std::ofstream(dir + "/other.txt") << "not ours\n"; }
+  {
+    semimesh::io::OutputSet set(dir);
+    { std::ofstream(set.staged("a.msh")) << "new a\n"; }
+    { std::ofstream(set.staged("b.json")) << "new b\n"; }
+    std::filesystem::create_directories(set.staged("pieces") + "/fresh");
+    EXPECT_EQ(read_text(dir + "/a.msh"), "older a\n") << "nothing moves before commit";
+    EXPECT_EQ(set.final_path(set.staged("b.json")), dir + "/b.json");
+    set.commit();
+  }
+  EXPECT_EQ(all_entries(dir), (std::vector<std::string>{"a.msh", "b.json", "other.txt", "pieces"}));
+  EXPECT_EQ(read_text(dir + "/a.msh"), "new a\n");
+  EXPECT_EQ(all_entries(dir + "/pieces"), std::vector<std::string>{"fresh"}) << "replaced, not merged";
+}
+
+TEST(OutputSet, WithoutCommitTheFolderStaysAsItWas) {
+  const std::string dir = temp_dir();
+  { std::ofstream(dir + "/a.msh") << "older a\n"; }
+  {
+    semimesh::io::OutputSet set(dir);
+    { std::ofstream(set.staged("a.msh")) << "new a\n"; }
+    { std::ofstream(set.staged("b.json")) << "new b\n"; }
+  }
+  EXPECT_EQ(all_entries(dir), std::vector<std::string>{"a.msh"});
+  EXPECT_EQ(read_text(dir + "/a.msh"), "older a\n");
+}
+
+TEST(OutputSet, AFolderInTheWayOfAFileIsRefusedBeforeAnythingMoves) {
+  const std::string dir = temp_dir();
+  { std::ofstream(dir + "/a.msh") << "older a\n"; }
+  std::filesystem::create_directories(dir + "/b.vtu/inside");
+  semimesh::io::OutputSet set(dir);
+  { std::ofstream(set.staged("a.msh")) << "new a\n"; }
+  { std::ofstream(set.staged("b.vtu")) << "new b\n"; }
+  try {
+    set.commit();
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(dir + "/b.vtu"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("folder"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_text(dir + "/a.msh"), "older a\n");
+  EXPECT_TRUE(std::filesystem::exists(dir + "/b.vtu/inside"));
+  EXPECT_THROW(set.staged("sub/a.msh"), std::invalid_argument);
 }
 
 TEST(Vtm, ReplacesAnOlderFolderWholeWithTheUsualPermissions) {

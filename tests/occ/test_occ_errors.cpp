@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
+#include "temp_path.hpp"
 
 namespace semimesh::occ {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 using cad::CadError;
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("semimesh_occ_" + std::to_string(::getpid()) + "_" + name)).string();
+  return semimesh::test::temp_path("occ_" + name).string();
 }
 
 /// Runs load_occ and returns the error it throws (fails the test when it throws nothing).

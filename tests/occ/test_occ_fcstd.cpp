@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include "temp_path.hpp"
 
 namespace semimesh::occ::test {
 namespace {
@@ -59,7 +60,7 @@ std::string document_xml(const std::vector<std::tuple<std::string, std::string, 
 }
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("semimesh_occ_" + std::to_string(::getpid()) + "_" + name)).string();
+  return semimesh::test::temp_path("occ_" + name).string();
 }
 
 // A visible box created first, a hidden sphere after it: the rule picks the last VISIBLE solid.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include "temp_path.hpp"
 
 namespace semimesh::pipeline {
 namespace {
@@ -330,7 +331,7 @@ TEST(Config, FirstCellHeightGivesTheRatio) {
 }
 
 TEST(Config, LoadResolvesTheSourceAgainstTheConfigFolder) {
-  const auto dir = std::filesystem::temp_directory_path() / "semimesh_config_test";
+  const auto dir = semimesh::test::temp_path("config_test");
   std::filesystem::create_directories(dir);
   const auto path = dir / "case.toml";
   std::ofstream(path) << "[geometry]\nbackend = \"occ\"\nsource = \"wing.step\"\n";

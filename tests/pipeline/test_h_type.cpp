@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 #include <vector>
+#include "temp_path.hpp"
 
 namespace semimesh::pipeline {
 namespace {
@@ -60,7 +61,7 @@ class Silent : public Progress {
 };
 
 fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("semimesh_h_type_" + name);
+  const fs::path dir = semimesh::test::temp_path("h_type_" + name);
   fs::remove_all(dir);
   return dir;
 }

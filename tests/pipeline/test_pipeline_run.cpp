@@ -10,6 +10,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include "temp_path.hpp"
 
 namespace semimesh::pipeline {
 namespace {
@@ -68,7 +69,7 @@ double json_number(const std::string& json, const std::string& key) {
 }
 
 fs::path fresh_directory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("semimesh_pipeline_" + name);
+  const fs::path dir = semimesh::test::temp_path("pipeline_" + name);
   fs::remove_all(dir);
   return dir;
 }
@@ -254,15 +255,27 @@ TEST(PipelineRun, BadInputIsReportedAsSuch) {
   EXPECT_FALSE(fs::exists(dir));  // nothing written
 }
 
-TEST(PipelineRun, AFailedWriteRemovesWhatThisRunWrote) {
+// Every file of a run replaces an earlier run's together or not at all: the .msh is written
+// before the .vtu fails, yet the older .msh stays byte for byte and no staging folder is left.
+TEST(PipelineRun, AFailedWriteLeavesTheFolderAsItWas) {
   const fs::path dir = fresh_directory("failed_write");
-  fs::create_directories(dir / "coarse.vtu");  // a folder where the .vtu should go: its writer fails
+  fs::create_directories(dir / "coarse.vtu" / "inside");  // a folder where the .vtu should go
   std::ofstream(dir / "older.txt") << "from another run\n";
+  std::ofstream(dir / "coarse.msh") << "an older mesh\n";
   CountingProgress progress;
-  EXPECT_THROW(run(coarse_config(dir, {"output.formats=[\"msh41\", \"vtu\"]"}), progress), RunError);
-  EXPECT_FALSE(fs::exists(dir / "coarse.msh"));  // written first, then removed
-  EXPECT_FALSE(fs::exists(dir / "report.json"));
-  EXPECT_TRUE(fs::exists(dir / "older.txt"));
+  try {
+    run(coarse_config(dir, {"output.formats=[\"msh41\", \"vtu\"]"}), progress);
+    ADD_FAILURE() << "no RunError";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("coarse.vtu"), std::string::npos) << e.what();
+  }
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"coarse.msh", "coarse.vtu", "older.txt"}));
+  std::ifstream msh(dir / "coarse.msh");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(msh), {}), "an older mesh\n");
+  EXPECT_TRUE(fs::exists(dir / "coarse.vtu" / "inside"));
   fs::remove_all(dir);
 }
 

@@ -1,6 +1,6 @@
 // The weld (pipeline/weld_nodes.hpp): two hexes given their shared face twice (as the far field's
 // pre-cut skin and the split give one point two ids) become one conforming pair; only the nodes
-// still used are kept, in order; the progress it reports rises to 1 through its two steps.
+// still used are kept, in order; the progress it reports rises to 1 through its steps.
 #include "semimesh/pipeline/weld_nodes.hpp"
 
 #include <gtest/gtest.h>
@@ -44,8 +44,8 @@ TEST(WeldNodes, DoubledFaceBecomesOneKeepingOnlyUsedNodesAndReportsProgress) {
   ASSERT_FALSE(seen.empty());
   for (std::size_t k = 1; k < seen.size(); ++k) EXPECT_GE(seen[k].first, seen[k - 1].first);
   EXPECT_EQ(seen.back().first, 1.0);
-  EXPECT_EQ(seen.front().second, "search");
-  EXPECT_EQ(seen.back().second, "elements");
+  EXPECT_EQ(seen.front().second, "vertices");
+  EXPECT_EQ(seen.back().second, "mesh");
 }
 
 }  // namespace

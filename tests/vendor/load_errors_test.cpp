@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
+#include "temp_path.hpp"
 
 namespace semimesh::vendor {
 namespace {
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 class TempFile {
  public:
   TempFile(const std::string& name, const std::string& content)
-      : path_(fs::temp_directory_path() / ("semimesh_vendor_" + std::to_string(getpid())) / name) {
+      : path_(semimesh::test::temp_path("vendor") / name) {
     fs::create_directories(path_.parent_path());
     std::ofstream(path_) << content;
   }
@@ -48,7 +49,7 @@ void expect_contains(const std::string& text, const std::string& part) {
 }
 
 TEST(VendorLoad, MissingFileIsFileNotFoundNamingTheCallAndPath) {
-  const std::string path = (fs::temp_directory_path() / "semimesh_vendor_no_such_file.vcad").string();
+  const std::string path = semimesh::test::temp_path("vendor_no_such_file.vcad").string();
   cad::CadError e = load_error({path, {}});
   EXPECT_EQ(e.kind(), Kind::FileNotFound);
   expect_contains(e.what(), "vc_model_load");

@@ -107,16 +107,20 @@ std::string nearby_curve(const cad::Model& model, int surface, const Vec3& p, do
 }  // namespace
 
 std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
-                                              double probe_size) {
+                                              double probe_size, const ProgressCallback& progress) {
   if (!(shell.thickness > 0.0)) throw SurfaceMeshError("shell size limit: the thickness must be > 0");
   const double delta = shell.thickness, q = shell.min_gap_fraction;
+  const int n = shell.samples;
+  ProgressCounter rows(progress, shell.body_surfaces.size() * static_cast<std::size_t>(n + 1), "shell limits");
   std::vector<ShellSizeLimit> limits;
   for (int id : shell.body_surfaces) {
     const cad::Surface& s = model.surface(id);
-    if (s.is_planar()) continue;
+    if (s.is_planar()) {
+      rows.add(static_cast<std::size_t>(n + 1));
+      continue;
+    }
     const auto box = s.bounds();
-    const int n = shell.samples;
-    for (int i = 0; i <= n; ++i)
+    for (int i = 0; i <= n; ++i) {
       for (int j = 0; j <= n; ++j) {
         const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
         if (!s.contains(uv)) continue;
@@ -135,13 +139,18 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
         }
         limits.push_back({s.point(uv), id, radius, lo, thickness_needed(s, uv, k.dir_max, probe_size, q)});
       }
+      rows.add();
+      rows.report_if_due();
+    }
   }
+  rows.finish();
   return limits;
 }
 
-std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing) {
+std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing,
+                                            const ProgressCallback& progress) {
   const std::vector<ShellSizeLimit> limits =
-      shell_size_limits(model, shell, sizing.max_size * kEdgeOvershoot, sizing.min_size * kEdgeOvershoot);
+      shell_size_limits(model, shell, sizing.max_size * kEdgeOvershoot, sizing.min_size * kEdgeOvershoot, progress);
   std::vector<PointSource> sources;
   std::vector<std::pair<double, const ShellSizeLimit*>> forbidden;  // (size, place) below min_size
   double thickest = 0.0;

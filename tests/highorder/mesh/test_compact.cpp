@@ -1,10 +1,13 @@
 // mesh::without_unreferenced_nodes: orphan nodes dropped, everything else kept (compared with the
-// source mesh through node positions, not through the function's own bookkeeping).
+// source mesh through node positions, not through the function's own bookkeeping); and
+// with_nodes_replaced, which a weld uses to join two elements given equal nodes under two ids.
 #include "semimesh/mesh/compact.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
+#include <stdexcept>
 
 namespace {
 
@@ -79,6 +82,32 @@ TEST(Compact, MeshWithoutOrphansKeepsItsNodeOrder) {
   const Mesh once = semimesh::mesh::without_unreferenced_nodes(source);
   const Mesh twice = semimesh::mesh::without_unreferenced_nodes(once);
   EXPECT_EQ(twice.nodes(), once.nodes());
+}
+
+// Two order-1 tets on either side of the triangle (1,0,0) (0,1,0) (0,0,1), each with its own three
+// ids for it: mapping the second tet's copies onto the first's joins them through one face.
+TEST(Compact, ReplacingDuplicateNodesJoinsTheElements) {
+  Mesh m(1);
+  auto node = [&](double x, double y, double z) { return m.add_node(Eigen::Vector3d(x, y, z)); };
+  const NodeId a = node(1, 0, 0), b = node(0, 1, 0), c = node(0, 0, 1), below = node(0, 0, 0);
+  m.add_element(Shape::Tetrahedron, {below, a, b, c});
+  const NodeId a2 = node(1, 0, 0), b2 = node(0, 1, 0), c2 = node(0, 0, 1), above = node(1, 1, 1);
+  m.add_element(Shape::Tetrahedron, {above, a2, c2, b2});
+  ASSERT_EQ(m.faces().size(), 8u);  // not joined: 4 + 4 faces
+  std::vector<NodeId> to(m.num_nodes());
+  for (NodeId v = 0; v < m.num_nodes(); ++v) to[v] = v;
+  to[a2] = a, to[b2] = b, to[c2] = c;
+  std::vector<double> fractions;
+  const Mesh joined = semimesh::mesh::with_nodes_replaced(m, to, [&](double f) { fractions.push_back(f); });
+  EXPECT_EQ(joined.num_nodes(), 5u);
+  EXPECT_EQ(joined.faces().size(), 7u) << "the two tets share their middle face";
+  EXPECT_EQ(element_points(joined), element_points(m));
+  EXPECT_EQ(semimesh::mesh::count_unreferenced_nodes(joined), 0u);
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+  to.pop_back();
+  EXPECT_THROW(semimesh::mesh::with_nodes_replaced(m, to), std::invalid_argument);
 }
 
 }  // namespace

@@ -125,7 +125,9 @@ TEST(CShell, HaloPointsLieAtBothThicknessesOnASweptTaperedWing) {
   for (std::size_t i = 0; i < b.f.footprint_top.size(); ++i) {
     const Vec3 h = b.f.mesh.node(b.f.footprint_top[i]);
     EXPECT_NEAR(h.z(), delta_wall, 1e-12);
-    if (i % 4 == 0) EXPECT_NEAR(sampled_wing_distance(b.c, h), delta_wing, 1e-9) << "halo node " << i;
+    if (i % 4 == 0) {
+      EXPECT_NEAR(sampled_wing_distance(b.c, h), delta_wing, 1e-9) << "halo node " << i;
+    }
   }
   const mesh::Mesh& m = b.f.mesh;
   int feet = 0, tops = 0;

@@ -1,5 +1,6 @@
 // Roles found without names on the analytic wing: the expected roles are the analytic model's own
 // face names (which the detection never reads), its span and chord its parameters.
+#include "naca_wing_roles.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
 #include "semimesh/mock_cad/naca.hpp"
@@ -13,12 +14,6 @@
 namespace semimesh::surface {
 namespace {
 
-std::set<std::string> names(const cad::Model& model, const std::vector<int>& surfaces) {
-  std::set<std::string> out;
-  for (int s : surfaces) out.insert(model.surface(s).name());
-  return out;
-}
-
 using Names = std::set<std::string>;
 
 TEST(CadRoles, AnalyticBluntWing) {
@@ -26,16 +21,7 @@ TEST(CadRoles, AnalyticBluntWing) {
   p.span = 2.5;
   p.chord = 1.5;
   const auto model = mock_cad::make_naca_wing(p);
-  const CadRoles roles = detect_cad_roles(*model);
-  EXPECT_EQ(model->surface(roles.wall).name(), "wall");
-  EXPECT_EQ(names(*model, roles.body), (Names{"upper", "lower", "te_base", "tip"}));
-  EXPECT_EQ(names(*model, roles.farfield), (Names{"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmax"}));
-  ASSERT_TRUE(roles.te_base.has_value());
-  EXPECT_EQ(model->surface(*roles.te_base).name(), "te_base");
-  EXPECT_EQ(names(*model, roles.tip), (Names{"tip"}));
-  EXPECT_NEAR((roles.span_direction - cad::Vec3::UnitZ()).norm(), 0.0, 1e-9);
-  EXPECT_NEAR(roles.span, 2.5, 1e-6);
-  EXPECT_NEAR(roles.chord, 1.5, 1e-3);
+  expect_blunt_naca_wing_roles(*model, detect_cad_roles(*model), 2.5, 1.5);
 }
 
 TEST(CadRoles, AnalyticSharpSweptTaperedWingHasNoBase) {
@@ -46,9 +32,9 @@ TEST(CadRoles, AnalyticSharpSweptTaperedWingHasNoBase) {
   p.code = "2412";
   const auto model = mock_cad::make_naca_wing(p);
   const CadRoles roles = detect_cad_roles(*model);
-  EXPECT_EQ(names(*model, roles.body), (Names{"upper", "lower", "tip"}));
+  EXPECT_EQ(surface_names(*model, roles.body), (Names{"upper", "lower", "tip"}));
   EXPECT_FALSE(roles.te_base.has_value());
-  EXPECT_EQ(names(*model, roles.tip), (Names{"tip"}));
+  EXPECT_EQ(surface_names(*model, roles.tip), (Names{"tip"}));
   EXPECT_NE(describe_cad_roles(*model, roles).find("none (a closed trailing edge)"), std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 // expected roles come from the file itself: its box faces are named L1, L2, L4 by the CATIA export
 // and the body's Join.13, the wall is the one face with two loops (ADVANCED_FACE #736, #741), the
 // wing stands 10 degrees off x, the units are mm.
+#include "naca_wing_roles.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
 #include "semimesh/occ/occ_backend.hpp"
@@ -10,31 +11,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <set>
 #include <string>
 
 namespace semimesh::surface {
 namespace {
 
-std::set<std::string> names(const cad::Model& model, const std::vector<int>& surfaces) {
-  std::set<std::string> out;
-  for (int s : surfaces) out.insert(model.surface(s).name());
-  return out;
-}
-
-using Names = std::set<std::string>;
-
 TEST(CadRolesOcc, OccBuiltWing) {
   const auto model = occ::load_occ(cad::Source{"", {{"naca.span", "2"}}});
-  const CadRoles roles = detect_cad_roles(*model);
-  EXPECT_EQ(model->surface(roles.wall).name(), "wall");
-  EXPECT_EQ(names(*model, roles.body), (Names{"upper", "lower", "te_base", "tip"}));
-  EXPECT_EQ(names(*model, roles.farfield), (Names{"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmax"}));
-  ASSERT_TRUE(roles.te_base.has_value());
-  EXPECT_EQ(model->surface(*roles.te_base).name(), "te_base");
-  EXPECT_EQ(names(*model, roles.tip), (Names{"tip"}));
-  EXPECT_NEAR(roles.span, 2.0, 1e-6);
-  EXPECT_NEAR(roles.chord, 1.0, 1e-3);
+  expect_blunt_naca_wing_roles(*model, detect_cad_roles(*model), 2.0, 1.0);
 }
 
 TEST(CadRolesOcc, NekMeshStepWing) {

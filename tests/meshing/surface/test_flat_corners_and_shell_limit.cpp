@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <map>
 #include <regex>
 #include <string>
@@ -99,6 +101,22 @@ TEST(ShellSizeLimit, OnlyTheCurvedNoseLimitsAndAThickerShellAllowsMore) {
   double nose_radius = 1.0;
   for (const ShellSizeLimit& l : limits) nose_radius = std::min(nose_radius, l.radius);
   EXPECT_NEAR(nose_radius, 1.1019 * 0.12 * 0.12, 2e-4);
+}
+
+TEST(ShellSizeLimit, ProgressRisesToOneAndDoesNotChangeTheLimits) {
+  const auto model = naca_model();
+  const ShellSizing thin{0.02, body_of(*model), 0.5, 16};
+  std::vector<double> fractions;
+  const auto reported = shell_size_limits(*model, thin, 0.2, 0.03, [&](double f, const std::string& step) {
+    EXPECT_EQ(step, "shell limits");
+    fractions.push_back(f);
+  });
+  const auto silent = shell_size_limits(*model, thin, 0.2, 0.03);
+  ASSERT_EQ(reported.size(), silent.size());
+  for (std::size_t i = 0; i < silent.size(); ++i) EXPECT_EQ(reported[i].size, silent[i].size);
+  ASSERT_GE(fractions.size(), 10u) << "one report per few sample rows, over 4 surfaces";
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
 }
 
 TEST(ShellSizeLimit, RefusalNamesThePlaceAndEachRemedyItOffersWorks) {

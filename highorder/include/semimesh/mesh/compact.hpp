@@ -4,6 +4,9 @@
 
 #include "semimesh/mesh/mesh.hpp"
 
+#include <functional>
+#include <vector>
+
 namespace semimesh::mesh {
 
 /// Number of nodes that no element or boundary face references.
@@ -13,5 +16,13 @@ std::size_t count_unreferenced_nodes(const Mesh& mesh);
 /// renumbering), boundary faces, groups and regions, whose nodes are only the referenced ones, kept in their
 /// old relative order with their CAD attachments. Edge and face entities are rebuilt in element order.
 Mesh without_unreferenced_nodes(const Mesh& mesh);
+
+/// The same with every node id v of an element or boundary face replaced by `to[v]` first
+/// ([mesh.num_nodes()]; a weld's map onto equal nodes): one rebuild for both. Node v's point and
+/// CAD attachment are kept for each id that remains referenced. without_unreferenced_nodes(m) is
+/// with_nodes_replaced(m, identity). `done` (optional) receives the fraction of elements rebuilt,
+/// about a hundred times.
+Mesh with_nodes_replaced(const Mesh& mesh, const std::vector<NodeId>& to,
+                         const std::function<void(double)>& done = {});
 
 }  // namespace semimesh::mesh

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "semimesh/cad/model.hpp"
+#include "semimesh/progress.hpp"
 #include "semimesh/surface/size_field.hpp"
 
 #include <vector>
@@ -44,12 +45,15 @@ struct ShellSizeLimit {
 
 /// The places on the body where the shell allows less than `max_size`, with the thickness each needs
 /// for edges of `probe_size` (e.g. sizing.min_size). Only convex curvature limits the size.
+/// `progress`: the fraction of sample rows done (step "shell limits"), from the calling thread.
 std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
-                                              double probe_size);
+                                              double probe_size, const ProgressCallback& progress = {});
 
 /// Throws SurfaceMeshError naming the worst place, its radius, the size it needs and the values that
 /// would work (min_size, or a thickness) when some limit is below `min_size`; otherwise returns the
 /// limits as point sources for SizeParams::point_sources.
-std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing);
+/// `progress` as shell_size_limits'.
+std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing,
+                                            const ProgressCallback& progress = {});
 
 }  // namespace semimesh::surface
