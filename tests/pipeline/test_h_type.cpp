@@ -242,33 +242,54 @@ std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet_faces(const mesh:
 
 // Sharp trailing edge (no base): the upper and lower wing layers end on the trailing edge with
 // their own normals, their rear interfaces swept into wake hexes on either side of the sheet
-// (the trailing edge swept), which both sides share face for face. Curved (order 2), at incidence
-// too; the OCC-built sharp wing gives the same mesh.
+// (the trailing edge swept), which both sides share face for face. Curved (order 2) and split
+// (the junction's wedge between the root's two halos cut at the split's interfaces and welded), at
+// incidence too; the wake ratios r at the trailing edge and ratio_end at the far end measured on
+// the upper layer's edge at mid-span; the OCC-built sharp wing gives the same mesh.
 TEST(HTypeEndToEnd, SharpTrailingEdgeWakeSheetSharedByBothSides) {
   for (const auto& [name, d] : std::vector<std::pair<std::string, Eigen::Vector3d>>{
            {"sharp", Eigen::Vector3d(1, 0, 0)}, {"sharp_incidence", Eigen::Vector3d(0.9848, 0.1736, 0.0)}}) {
-    const RunResult r =
-        run_h(name, {"geometry.naca.te=sharp", "highorder.order=2",
-                     "wake.direction=[" + std::to_string(d.x()) + ", " + std::to_string(d.y()) + ", 0.0]"});
+    const RunResult r = run_h(name, {"geometry.naca.te=sharp", "highorder.order=2", "boundary_layer.layers=4",
+                                     "boundary_layer.ratio=2", "wake.ratio_end=1.3",
+                                     "wake.direction=[" + std::to_string(d.x()) + ", " + std::to_string(d.y()) + ", 0.0]"});
     expect_valid_conforming(r, name);
     int hexes = 0;
     const auto sheet = sheet_faces(r.mesh, d.normalized(), hexes);
-    EXPECT_EQ(hexes, r.wake.hexes) << name;
-    EXPECT_EQ(hexes % 12, 0) << name;
-    EXPECT_EQ(2 * sheet.size(), static_cast<std::size_t>(hexes)) << name;  // every hex stands on the sheet
+    EXPECT_EQ(hexes, 4 * r.wake.hexes) << name;  // split into the wing's 4 layers
+    EXPECT_EQ(r.wake.hexes % 12, 0) << name;
+    EXPECT_EQ(2 * sheet.size(), static_cast<std::size_t>(r.wake.hexes)) << name;  // each stands on the sheet
     for (const auto& [face, sides] : sheet) {
       ASSERT_EQ(sides.size(), 2u) << name;
       EXPECT_LT(std::min(sides[0], sides[1]), 0.0) << name;
       EXPECT_GT(std::max(sides[0], sides[1]), 0.0) << name;
     }
+    const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
     double lowest = 1e300;
-    for (const Eigen::Vector3d& x : region_vertices(r.mesh, "wake")) lowest = std::min(lowest, x.z());
+    for (const Eigen::Vector3d& x : wake) lowest = std::min(lowest, x.z());
     EXPECT_GE(lowest, 0.04 + 0.1 - 1e-9) << name;
     EXPECT_NEAR(r.wake.gap, lowest - 0.04, 1e-12) << name;
+    if (d.y() != 0.0) continue;
+    // The trailing-edge node nearest mid-span, its upper offset (the farthest wake vertex above it
+    // in the layer's first cell row), the split's interfaces between them and 1.5 downstream.
+    double row = 1e300;
+    for (const Eigen::Vector3d& x : wake)
+      if (std::abs(x.x() - 1.0) < 1e-9 && std::abs(x.y()) < 1e-9 && std::abs(x.z() - 0.5) < std::abs(row - 0.5)) row = x.z();
+    const Eigen::Vector3d a(1.0, 0.0, row);
+    Eigen::Vector3d top = a;
+    for (const Eigen::Vector3d& x : wake)
+      if (std::abs(x.z() - row) < 1e-4 && x.x() < 1.0 + 0.04 && x.y() > top.y()) top = x;
+    EXPECT_NEAR((top - a).norm(), 0.05, 1e-6) << name;
+    const std::vector<double> at_te = gaps_on_segment(wake, a, top);
+    ASSERT_EQ(at_te.size(), 4u) << name;
+    for (std::size_t k = 1; k < at_te.size(); ++k) EXPECT_NEAR(at_te[k] / at_te[k - 1], 2.0, 1e-6) << k;
+    const Eigen::Vector3d far(1.5, 0.0, 0.0);
+    const std::vector<double> at_end = gaps_on_segment(wake, a + far, top + far);
+    ASSERT_EQ(at_end.size(), 4u) << name;
+    for (std::size_t k = 1; k < at_end.size(); ++k) EXPECT_NEAR(at_end[k] / at_end[k - 1], 1.3, 1e-6) << k;
   }
   if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
-  expect_same_mesh(run_h("sharp_analytic", {"geometry.naca.te=sharp"}),
-                   run_h("sharp_occ", {"geometry.naca.te=sharp", "geometry.backend=occ"}));
+  expect_same_mesh(run_h("sharp_analytic", {"geometry.naca.te=sharp", "boundary_layer.layers=3"}),
+                   run_h("sharp_occ", {"geometry.naca.te=sharp", "geometry.backend=occ", "boundary_layer.layers=3"}));
 }
 
 // Widening at incidence: mid-span, the block's cross-flow thickness (across the sheet, the plane
@@ -305,7 +326,6 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
       // Steeply inclined and widened by 44 degrees, the first wake hexes turn inside out.
       {{"wake.widening=44", "wake.direction=[0.5, 1.0, 0.0]", "wake.length=0.8"}, {"wake.widening = 44", "the block folds"}},
-      {{"geometry.naca.te=sharp", "boundary_layer.layers=3"}, {"sharp trailing edge", "boundary_layer.layers = 1"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

@@ -153,8 +153,8 @@ BodyMesh without_bare(const BodyMesh& body, const std::vector<char>& bare) {
   return layer;
 }
 
-// A sharp trailing edge `curve`: its inner nodes (on the curve, off the root loop) and its two end
-// nodes (the strip top on the root loop, the tip vertex).
+// A sharp trailing edge `curve`: its inner nodes (on the curve, the strip top on the root loop
+// included: the junction gives it one halo per side) and its end node (the tip vertex).
 struct CrackNodes {
   std::vector<char> inner, end;  // [body nodes]
 };
@@ -167,15 +167,15 @@ CrackNodes crack_nodes(const cad::Model& model, const BodyMesh& body, int curve,
   const std::array<int, 2> ends = model.curve_vertices(curve);
   for (int v = 0; v < body.num_nodes(); ++v) {
     const CadAttachment& a = body.cad[v];
-    if (a.kind == CadAttachment::Curve && a.entity == curve) (on_loop[v] ? c.end : c.inner)[v] = 1;
-    if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1])) c.end[v] = 1;
+    if (a.kind == CadAttachment::Curve && a.entity == curve) c.inner[v] = 1;
+    if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1]) && !on_loop[v]) c.end[v] = 1;
   }
   return c;
 }
 
-// The triangles touching a crack end stay bare: around an end node with one offset the two sides'
-// rear interfaces would close to a zero-angle wedge (they share the end's edge and its offset: no
-// element fills that, no pyramid stands in it), so the crack ends where the layer does.
+// The triangles touching the crack's tip end stay bare: around an end node with one offset the two
+// sides' rear interfaces would close to a zero-angle wedge (they share the end's edge and its
+// offset: no element fills that, no pyramid stands in it), so the crack ends where the layer does.
 std::vector<char> bare_triangles(const BodyMesh& body, int bare_surface, const CrackNodes& crack) {
   std::vector<char> bare(body.triangles.size(), 0);
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
@@ -398,11 +398,33 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
         (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
     return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
   };
+  // The crack's root node (a sharp trailing edge's): one halo per side, each over its own root
+  // segment's outward direction (side 0: the segment into it, side 1: the one out of it).
+  int fan = -1;
+  if (crack_curve >= 0) {
+    const std::array<int, 2> ends = model.curve_vertices(crack_curve);
+    for (int i = 0; i < n; ++i) {
+      const CadAttachment& a = body.cad[loop[i]];
+      if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1])) fan = i;
+    }
+  }
   std::vector<JunctionNode> nodes(n);
+  JunctionNode fan_side1;
   for (int i = 0; i < n; ++i) {
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
+    if (i == fan) {
+      nodes[i] = place_junction_node(model, roles, root_surface, body, r, outward(prev, r), wall, delta_wing, delta_wall);
+      fan_side1 = place_junction_node(model, roles, root_surface, body, r, outward(r, next), wall, delta_wing, delta_wall);
+      continue;
+    }
     nodes[i] = place_junction_node(model, roles, root_surface, body, r,
                                    (outward(prev, r) + outward(r, next)).normalized(), wall, delta_wing, delta_wall);
+  }
+  // [sides] the surface of the fan node's root segment on each side
+  std::array<int, 2> fan_surface{-1, -1};
+  if (fan >= 0) {
+    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({loop[(fan + n - 1) % n], loop[fan]})];
+    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({loop[fan], loop[(fan + 1) % n]})];
   }
   std::vector<CadAttachment> root_cad(n);
   for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
@@ -433,6 +455,23 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     constraints.pinned[loop[i]] = 1;
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
+  }
+  // The fan node's layer node on each side: itself, or its copy on the side the crack gave copies.
+  std::array<int, 2> fan_layer{-1, -1};
+  if (fan >= 0) {
+    const int copy = static_cast<int>(std::find(cracked.copy_of.begin(), cracked.copy_of.end(), loop[fan]) -
+                                      cracked.copy_of.begin());
+    if (copy == static_cast<int>(cracked.copy_of.size()) || fan_surface[0] == fan_surface[1])
+      throw NearFieldError("near field: the sharp trailing edge's root at " + point_label(body.points[loop[fan]]) +
+                           " does not part two body surfaces");
+    const int copied_surface = layer.node_surface[count + copy];
+    for (int side : {0, 1}) {
+      fan_layer[side] = fan_surface[side] == copied_surface ? count + copy : loop[fan];
+      const JunctionNode& j = side == 0 ? nodes[fan] : fan_side1;
+      constraints.pinned[fan_layer[side]] = 1;
+      constraints.pinned_outer[fan_layer[side]] = j.halo;
+      normals[fan_layer[side]] = (j.halo - nodes[fan].strip_top).normalized();
+    }
   }
   const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
                                                                 loop, root_cad, roles.wall_surface, delta_wall);
@@ -469,9 +508,14 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     root_id[i] = m.add_node(nodes[i].root, root_cad[i]);
     foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
   }
+  // The fan node's foot and halo on the side of the segment to `other`.
+  const NodeId fan_foot1 = fan >= 0 ? m.add_node(fan_side1.wall_foot, fan_side1.wall_foot_cad) : mesh::kNoNode;
+  auto side_of = [&](int other) { return other == (fan + n - 1) % n ? 0 : 1; };
+  auto foot = [&](int i, int other) { return i == fan && side_of(other) == 1 ? fan_foot1 : foot_id[i]; };
+  auto top = [&](int i, int other) { return id(i == fan ? fan_layer[side_of(other)] : loop[i]) + offset; };
   auto hex_of = [&](int a, int b) {
-    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]),          id(loop[a]),
-                                 foot_id[a], foot_id[b], id(loop[b]) + offset, id(loop[a]) + offset};
+    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]), id(loop[a]),
+                                 foot(a, b),  foot(b, a),  top(b, a),   top(a, b)};
   };
   auto corners = [&](const std::array<NodeId, 8>& h) {
     std::array<Vec3, 8> x;
@@ -510,6 +554,11 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   shell.chain = loop;
   shell.root_id = root_id;
   shell.foot_id = foot_id;
+  if (fan >= 0) {
+    shell.fan.index = fan;
+    shell.fan.foot = {foot_id[fan], fan_foot1};
+    shell.fan.top = {id(fan_layer[0]) + offset, id(fan_layer[1]) + offset};
+  }
   shell.wall = wall;
   shell.strip = strip;
   shell.tip = tip;

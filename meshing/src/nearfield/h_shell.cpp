@@ -172,15 +172,6 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
          (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
                                  : "") +
          "; the H-type near field sweeps the wake from the trailing edge");
-  // At the sharp edge's root the junction has one halo: the triangles there stay bare (see
-  // build_junction_shell) and the junction hexes' tops beside them face the far field, folded
-  // along the trailing edge (the halo leans downstream): a pyramid stands on the whole face, not on
-  // the thin first layer a split cuts from it. Splitting needs two halos there and a junction
-  // element fanning between them (not built yet).
-  if (crack >= 0 && fractions)
-    fail("a sharp trailing edge (" + curve_label(model, crack) +
-         ") takes an unsplit wing layer in the H-type near field (boundary_layer.layers = 1): the junction at its root "
-         "cannot be split into layers yet; use boundary_layer.layers = 1, topology \"C\" or a squared-off trailing edge");
   if (blunt) {
     const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
     if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
@@ -193,8 +184,10 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   NearField& field = js.field;
   mesh::Mesh& m = field.mesh;
   for (std::size_t i = 0; i < js.chain.size(); ++i) {
+    const bool fan = static_cast<int>(i) == js.fan.index;  // a sharp trailing edge's root: two feet
     field.footprint.push_back(js.foot_id[i]);
-    field.footprint_top.push_back(static_cast<NodeId>(js.chain[i]) + js.offset);
+    field.footprint_top.push_back(fan ? js.fan.top[0] : static_cast<NodeId>(js.chain[i]) + js.offset);
+    if (fan) field.footprint.push_back(js.fan.foot[1]), field.footprint_top.push_back(js.fan.top[1]);
   }
 
   // The base's quads (body node ids, lifted); the trailing-edge nodes (the base's, or the sharp
@@ -321,8 +314,67 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   std::sort(w.origins.begin(), w.origins.end(),
             [&](const Vec3& p, const Vec3& q) { return p.dot(w.span_axis) < q.dot(w.span_axis); });
 
+  // A sharp trailing edge's root: the wedge between its two halos (root R, strip top W, feet L_0
+  // L_1, halos H_0 H_1) is a prism R L_0 L_1 / W H_0 H_1 standing on the wall, split by the wall
+  // layer's split along R-W (a stack of the wall family). Across, the junction hexes beside it
+  // split their faces R-W-H-L at the wing layer's interfaces, a fan from R the split cannot make:
+  // the prism is given here already cut there (an inner prism and bands of prisms around it, at
+  // the interfaces the split will use: `fractions`), and the weld after the split joins their
+  // nodes to the hexes' (as the far field's pre-cut skin quads).
+  // The skin's and the fan's nodes at the split's interfaces on layer edges: (bottom vertex, top
+  // vertex, k) -> node (a sharp trailing edge's nodes have two layer edges, one per side).
+  std::map<std::tuple<NodeId, NodeId, int>, NodeId> interface_node;
+  std::vector<std::set<NodeId>> fan_planes;  // nodes on each face R-W-H-L the fan shares with a hex
+  if (js.fan.index >= 0) {
+    const NodeId r = js.root_id[js.fan.index], top = static_cast<NodeId>(js.chain[js.fan.index]);
+    std::vector<double> at_root{0.0, 1.0}, at_top{0.0, 1.0};
+    if (fractions) at_root = fractions(m.node(r), field.wake), at_top = fractions(m.node(top), field.wake);
+    std::array<std::vector<NodeId>, 2> low, high;  // per side: the wall and the top rows from R, W
+    for (int side : {0, 1}) {
+      const NodeId foot = js.fan.foot[side], halo = js.fan.top[side];
+      low[side] = {r}, high[side] = {top};
+      for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
+        low[side].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
+        high[side].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
+        interface_node[{r, foot, static_cast<int>(k)}] = low[side].back();
+        interface_node[{top, halo, static_cast<int>(k)}] = high[side].back();
+      }
+      low[side].push_back(foot), high[side].push_back(halo);
+      fan_planes.emplace_back(low[side].begin(), low[side].end());
+      fan_planes.back().insert(high[side].begin(), high[side].end());
+    }
+    const int junction_region = m.region_index("junction");
+    auto add_piece = [&](ho::Shape shape, std::vector<NodeId> v) {
+      const int half = static_cast<int>(v.size()) / 2;
+      Eigen::MatrixX3d x(v.size(), 3);
+      for (std::size_t k = 0; k < v.size(); ++k) x.row(k) = m.node(v[k]).transpose();
+      if (!ho::certify_jacobian(shape, 1, ho::NodeSet::Equispaced, x).valid) {  // the other way round
+        std::reverse(v.begin() + 1, v.begin() + half);
+        std::reverse(v.begin() + half + 1, v.end());
+        for (std::size_t k = 0; k < v.size(); ++k) x.row(k) = m.node(v[k]).transpose();
+        if (!ho::certify_jacobian(shape, 1, ho::NodeSet::Equispaced, x).valid)
+          fail("the junction's wedge at the sharp trailing edge's root " + point_label(m.node(r)) +
+               " would be inverted");
+      }
+      field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wall}}});
+      field.element_surface.push_back(roles.wall_surface);
+      m.add_element(shape, v, junction_region);
+      if (shape == ho::Shape::Prism) m.add_boundary_face("wall", ho::Shape::Triangle, {v[0], v[2], v[1]});
+      else m.add_boundary_face("wall", ho::Shape::Quadrilateral, {v[0], v[3], v[2], v[1]});
+    };
+    // Each band between two interfaces as two prisms (its diagonal from side 0's inner corner):
+    // the fan opens by nearly 180 degrees, so a band is a sliver whose top, a quad, would carry a
+    // pyramid leaning over the rear interfaces beside it; triangles take tetrahedra.
+    add_piece(ho::Shape::Prism, {r, low[0][1], low[1][1], top, high[0][1], high[1][1]});
+    for (std::size_t k = 1; k + 1 < low[0].size(); ++k) {
+      add_piece(ho::Shape::Prism, {low[0][k], low[0][k + 1], low[1][k + 1], high[0][k], high[0][k + 1], high[1][k + 1]});
+      add_piece(ho::Shape::Prism, {low[0][k], low[1][k + 1], low[1][k], high[0][k], high[1][k + 1], high[1][k]});
+    }
+  }
+
   // The skin: faces used by one element that are not body or wall faces and do not stand on the
-  // footprint (those the wall layer's prisms share), plus the exposed base.
+  // footprint (those the wall layer's prisms share) or on a face the fan shares with a junction
+  // hex, plus the exposed base.
   std::set<NodeId> on_footprint(field.footprint.begin(), field.footprint.end());
   on_footprint.insert(field.footprint_top.begin(), field.footprint_top.end());
   std::map<std::vector<NodeId>, std::pair<int, SkinFace>> uses;
@@ -346,7 +398,10 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   }
   std::vector<SkinFace> skin;
   for (const auto& [k, use] : uses)
-    if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }))
+    if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }) &&
+        std::none_of(fan_planes.begin(), fan_planes.end(), [&](const std::set<NodeId>& plane) {
+          return std::all_of(k.begin(), k.end(), [&](NodeId v) { return plane.count(v) > 0; });
+        }))
       skin.push_back(use.second);
   for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
   for (const auto& t : js.bare)
@@ -354,7 +409,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
 
   // Skin quads the split will cut, cut already at its interfaces (nodes shared by neighbours).
   const auto edges = layer_edges(field);
-  std::map<std::pair<NodeId, int>, NodeId> interface_node;  // (bottom vertex, k) -> node
+
   auto along = [&](NodeId from, NodeId to) {  // the nodes from -> to on a layer edge
     const auto& [bottom, top, family] = edges.at({std::min(from, to), std::max(from, to)});
     if (family != LayerFamily::Wing)
@@ -364,7 +419,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     for (std::size_t k = 0; k < f.size(); ++k) {
       NodeId id = k == 0 ? bottom : k + 1 == f.size() ? top : mesh::kNoNode;
       if (id == mesh::kNoNode) {
-        auto [it, fresh] = interface_node.emplace(std::make_pair(bottom, static_cast<int>(k)), mesh::kNoNode);
+        auto [it, fresh] = interface_node.emplace(std::make_tuple(bottom, top, static_cast<int>(k)), mesh::kNoNode);
         if (fresh) it->second = m.add_node(m.node(bottom) + f[k] * (m.node(top) - m.node(bottom)));
         id = it->second;
       }

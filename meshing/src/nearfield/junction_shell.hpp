@@ -32,6 +32,13 @@ struct JunctionShell {
   std::vector<int> chain;            ///< body nodes of the root row (strip tops W), in loop order
   std::vector<mesh::NodeId> root_id; ///< [chain] the root node R on the wall below each
   std::vector<mesh::NodeId> foot_id; ///< [chain] the wall foot L of each halo
+  /// A sharp trailing edge's root (chain[index], -1: none): one wall foot and halo per side, side 0
+  /// that of the root segment into it along the chain, side 1 the one out of it; the junction
+  /// leaves the wedge between them open (see h_shell.cpp's fan).
+  struct Fan {
+    int index = -1;
+    std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};
+  } fan;
   WallFrame wall;
   double strip = 0.0, tip = 0.0;     ///< the lift's strip and tip heights (lift_node)
 };
@@ -41,8 +48,9 @@ struct JunctionShell {
 /// not count in the thickness figures. Along `crack_curve` (-1: none; a sharp trailing edge) the
 /// layer is cracked open: the curve's inner nodes get one offset per side, each along its own
 /// side's normal, so the layer ends there with two rear interfaces; the triangles touching the
-/// curve's two ends (the root's strip top, the tip vertex) stay bare (JunctionShell::bare), so the
-/// crack ends on the layer's edge instead of closing to a zero-angle wedge. Throws NearFieldError.
+/// curve's tip end stay bare (JunctionShell::bare), so the crack ends on the layer's edge instead of
+/// closing to a zero-angle wedge; at its root the junction gets two halos (JunctionShell::fan).
+/// Throws NearFieldError.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
                                    int bare_surface, int crack_curve);

@@ -14,9 +14,12 @@
 //    offset along that side's own normal, so the upper and lower rear interfaces meet on the curve
 //    and their sweeps share the wake sheet (the curve swept). A crack cannot close inside the layer
 //    (the two interfaces would meet at a zero angle along one edge: no element fills that, no
-//    pyramid stands in it), so the triangles touching the curve's two ends (the root's strip top,
-//    the tip vertex) stay bare, faced by the far field; the block stops one trailing-edge cell
-//    below the tip. The wing layer must then be unsplit (see build_h_shell);
+//    pyramid stands in it), so it ends on the layer's edge: at the tip the triangles touching the
+//    tip vertex stay bare, faced by the far field (the block stops one trailing-edge cell below the
+//    tip); at the root the junction gives the strip top one halo per side and fills the wedge
+//    between them with prisms standing on the wall, cut in advance at the wing layer's split
+//    interfaces (the split cannot fan a prism from its root) and welded to the junction hexes'
+//    split nodes;
 //  - the wake block: the base quads and the rear interfaces above the cut row (the lowest
 //    trailing-edge row at least `gap` above the wall layer's top) are swept along `direction` in
 //    `layers` streamwise cells growing by `growth` up to `length`, the layer offsets moving away
@@ -69,7 +72,7 @@ using LayerFractions = std::function<std::vector<double>(const Eigen::Vector3d& 
 /// rest with triangles) -> wing prisms, junction hexes and wake hexes (order 1). `box` bounds the
 /// domain (the far field's box); `fractions` the wing layer's split (see LayerFractions). Throws NearFieldError naming the key and value, or the surface,
 /// when: no trailing-edge base is found among the body surfaces (nor, for te_base "auto", a sharp
-/// trailing edge), a sharp one comes with a split layer (`fractions`), the direction points upstream
+/// trailing edge), the direction points upstream
 /// (x <= 0) or into the wall, the gap leaves no trailing-edge row below the tip, the wake leaves
 /// the box, a wake hex would be inverted (widening or direction), or the C-type junction fails.
 NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
