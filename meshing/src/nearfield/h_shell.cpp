@@ -309,6 +309,15 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   w.gap = lowest - wall_thickness;
   for (const Section& c : section)  // the trailing-edge nodes: rear interfaces' body side, base quads
     for (int k = 0; k < (c.layer ? 2 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
+  // A sharp edge's nodes below the cut and its root R too: the ratio there is the trailing edge's
+  // own (r), at R and W alike. The junction hexes beside the fan interpolate their layer
+  // interfaces between R's and W's along R-W, the fan's pieces (cut in advance, straight from R's
+  // cut to W's) only match that when both are the same.
+  if (js.fan.index >= 0) {
+    w.origins.push_back(m.node(js.root_id[js.fan.index]));
+    for (int v = 0; v < js.body.num_nodes(); ++v)
+      if (js.crack[v]) w.origins.push_back(m.node(static_cast<NodeId>(v)));
+  }
   const Vec3 span = js.wall.normal - js.wall.normal.dot(d) * d;
   w.span_axis = span.norm() > 1e-6 ? Vec3(span.normalized()) : d.unitOrthogonal();
   std::sort(w.origins.begin(), w.origins.end(),
