@@ -329,6 +329,10 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
       // Steeply inclined and widened by 44 degrees, the first wake hexes turn inside out.
       {{"wake.widening=44", "wake.direction=[0.5, 1.0, 0.0]", "wake.length=0.8"}, {"wake.widening = 44", "the block folds"}},
+      // A spanwise ratio line gives the sharp edge's root and strip top two ratios: the wedge takes one.
+      {{"geometry.naca.te=sharp", "boundary_layer.layers=3", "boundary_layer.ratio_line=[0, 0, 0, 0, 0, 3]",
+        "boundary_layer.ratio_end=1.0"},
+       {"ratio differs", "ratio_line"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

@@ -338,6 +338,11 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     const NodeId r = js.root_id[js.fan.index], top = static_cast<NodeId>(js.chain[js.fan.index]);
     std::vector<double> at_root{0.0, 1.0}, at_top{0.0, 1.0};
     if (fractions) at_root = fractions(m.node(r), field.wake), at_top = fractions(m.node(top), field.wake);
+    for (std::size_t k = 0; k < at_root.size(); ++k)
+      if (std::abs(at_root[k] - at_top[k]) > 1e-12)
+        fail("the wing layer's ratio differs between the sharp trailing edge's root " + point_label(m.node(r)) +
+             " and the top of its root strip " + point_label(m.node(top)) +
+             " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
     std::array<std::vector<NodeId>, 2> low, high;  // per side: the wall and the top rows from R, W
     for (int side : {0, 1}) {
       const NodeId foot = js.fan.foot[side], halo = js.fan.top[side];
