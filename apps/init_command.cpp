@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace semimesh::app {
@@ -22,6 +23,27 @@ CLI::App* add_init_subcommand(CLI::App& app, InitOptions& options) {
   return cmd;
 }
 
+namespace {
+
+// A section that stands for a key of its parent (geometry.farfield: a table instead of surface
+// names), or a section inside one: that section, else null.
+const pipeline::ConfigSection* table_or_value_owner(const pipeline::ConfigSection& section) {
+  for (const pipeline::ConfigSection& s : pipeline::config_sections())
+    if (s.or_value && (section.name == s.name || section.name.rfind(s.name + ".", 0) == 0)) return &s;
+  return nullptr;
+}
+
+// Whether any key of the section `owner` or of the sections inside it is set.
+bool table_given(const pipeline::ConfigSection& owner, const pipeline::Config& values) {
+  for (const pipeline::ConfigSection& s : pipeline::config_sections())
+    if (table_or_value_owner(s) == &owner)
+      for (const params::Key<pipeline::Config>& key : s.keys)
+        if (!std::holds_alternative<std::monostate>(key.get(values))) return true;
+  return false;
+}
+
+}  // namespace
+
 std::string config_text(const pipeline::Config& values, const std::string& header) {
   std::string text;
   std::size_t start = 0;
@@ -29,8 +51,19 @@ std::string config_text(const pipeline::Config& values, const std::string& heade
     text += "# " + header.substr(start, end - start) + "\n";
   text += "# Each key: its meaning and range as a comment; docs/config.md explains them in full.\n";
   for (const pipeline::ConfigSection& section : pipeline::config_sections()) {
-    text += "\n[" + section.name + "]\n";
+    // A table standing for a key of its parent (geometry.farfield) is written when set, and then its
+    // parent's key of the same name is not; unset, its header is a comment (TOML: a key and a table
+    // of one name cannot both be there).
+    const pipeline::ConfigSection* owner = table_or_value_owner(section);
+    const bool commented = owner && !table_given(*owner, values);
+    text += std::string(commented ? "\n# [" : "\n[") + section.name + "]\n";
     for (const params::Key<pipeline::Config>& key : section.keys) {
+      const bool replaced = std::any_of(pipeline::config_sections().begin(), pipeline::config_sections().end(),
+                                        [&](const pipeline::ConfigSection& s) {
+                                          return s.or_value && s.name == section.name + "." + key.name &&
+                                                 table_given(s, values);
+                                        });
+      if (replaced) continue;
       text += "# " + key.doc + (key.range.empty() ? "" : " (range: " + key.range + ")") + "\n";
       const params::Value value = key.get(values);
       if (std::holds_alternative<std::monostate>(value))

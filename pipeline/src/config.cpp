@@ -49,10 +49,11 @@ std::string value_text(const toml::node& node) {
 class Section {
  public:
   /// The table `parent[key]`, called `name` in messages (its dotted path).
-  Section(const Origin& origin, const toml::table& parent, const std::string& key, const std::string& name)
+  Section(const Origin& origin, const toml::table& parent, const std::string& key, const std::string& name,
+          bool or_value = false)
       : origin_(origin), name_(name) {
     const toml::node* node = parent.get(key);
-    if (node && !node->is_table()) reject(origin, name, node, "a table [" + name + "]");
+    if (node && !node->is_table() && !or_value) reject(origin, name, node, "a table [" + name + "]");
     table_ = node ? node->as_table() : nullptr;
   }
 
@@ -65,11 +66,14 @@ class Section {
   }
 
   /// A nested table [name.sub] read by its own Section.
-  Section sub(const std::string& k) {
+  Section sub(const std::string& k, bool or_value = false) {
     known_.insert(k);
     static const toml::table empty;
-    return Section(origin_, table_ ? *table_ : empty, k, key(k));
+    return Section(origin_, table_ ? *table_ : empty, k, key(k), or_value);
   }
+
+  /// Whether the key holds a table (read as a section of its own).
+  bool holds_table(const std::string& k) const { return table_ && table_->get(k) && table_->get(k)->is_table(); }
 
   /// Throws when `ok` is false, naming the key (which must have been read) and what was expected.
   void require(bool ok, const std::string& k, const std::string& expected) const {
@@ -182,8 +186,9 @@ params::Value value_of(const Origin& origin, const std::string& key, const toml:
 
 // Reads every key of a table that the section holds: type, then range (as the table writes it).
 template <class P>
-void read_keys(Section& s, const params::Table<P>& table, P& target) {
+void read_keys(Section& s, const params::Table<P>& table, P& target, const std::set<std::string>& table_or_value = {}) {
   for (const params::Key<P>& k : table) {
+    if (table_or_value.count(k.name) && s.holds_table(k.name)) continue;  // its own section reads it
     const toml::node* n = s.take(k.name);
     if (!n) continue;
     const params::Value v = value_of(s.origin(), s.key(k.name), *n, k.type, k.count);
@@ -216,8 +221,48 @@ params::Table<Config> geometry_keys() {
       params::string("wall", &GeometryConfig::wall, "non-empty",
                      "the planar wall the body stands on: a name, an id or \"auto\" (the face holding the root loop)"),
       params::strings("farfield", &GeometryConfig::farfield, "non-empty",
-                      "the outer boundary's surfaces: names, ids or \"auto\" (every face neither body nor wall)"),
+                      "the outer boundary's surfaces: names, ids or \"auto\" (every face neither body nor wall); or "
+                      "a table: the far field to build around a body-only file ([geometry.farfield])"),
   };
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
+params::Table<Config> wall_plane_keys() {
+  params::Table<WallPlaneConfig> w = {
+      params::reals("point", &WallPlaneConfig::point, "", "a point of the wall plane (model units)"),
+      params::reals("normal", &WallPlaneConfig::normal, "", "the plane's normal, pointing into the fluid"),
+  };
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::wall_plane, w);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
+params::Table<Config> farfield_shape_keys() {
+  params::Table<FarFieldShapeConfig> f = {
+      params::reals("box", &FarFieldShapeConfig::box, "", "[xmin, ymin, zmin, xmax, ymax, zmax], each min < max"),
+      params::real("box_chords", &FarFieldShapeConfig::box_chords, "> 0",
+                   "a box this many root chords around the body's bounding box"),
+  };
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::farfield_shape, f);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
+params::Table<Config> farfield_sphere_keys() {
+  params::Table<FarFieldSphereConfig> s = {
+      params::reals("centre", &FarFieldSphereConfig::centre, "", "the sphere's centre"),
+      params::real("radius", &FarFieldSphereConfig::radius, "> 0", "the sphere's radius"),
+  };
+  params::Table<FarFieldShapeConfig> f;
+  append(f, &FarFieldShapeConfig::sphere, s);
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::farfield_shape, f);
   params::Table<Config> table;
   append(table, &Config::geometry, g);
   return table;
@@ -350,6 +395,50 @@ void check_ratio_line(Section& s, const std::string& section, const std::optiona
   if (end) s.require(line.has_value(), "ratio_end", "together with " + section + ".ratio_line (where it applies)");
 }
 
+// geometry.wall_plane and geometry.farfield = {box | sphere | box_chords}: complete, together, and
+// for a generated wing (which stands on z = 0 and has a box) the plane z = 0 and a box.
+void check_generated_domain(const GeometryConfig& geo, Section& plane, Section& far, Section& sphere) {
+  const WallPlaneConfig& w = geo.wall_plane;
+  const FarFieldShapeConfig& f = geo.farfield_shape;
+  if (w.given()) {
+    plane.require(w.point.has_value(), "normal", "together with geometry.wall_plane.point");
+    plane.require(w.normal.has_value(), "point", "together with geometry.wall_plane.normal (into the fluid)");
+    const auto& n = *w.normal;
+    plane.require(n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0, "normal", "a non-zero vector (into the fluid)");
+  }
+  if (f.sphere.centre || f.sphere.radius) {
+    sphere.require(f.sphere.centre.has_value(), "radius", "together with geometry.farfield.sphere.centre");
+    sphere.require(f.sphere.radius.has_value(), "centre", "together with geometry.farfield.sphere.radius");
+  }
+  const int shapes = (f.box ? 1 : 0) + (f.sphere.centre ? 1 : 0) + (f.box_chords ? 1 : 0);
+  if (f.box) {
+    const auto& b = *f.box;
+    far.require(b[0] < b[3] && b[1] < b[4] && b[2] < b[5], "box", "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
+    far.require(shapes == 1, "box", "one of box, sphere or box_chords");
+  }
+  if (f.box_chords) far.require(shapes == 1, "box_chords", "one of box, sphere or box_chords");
+  if (!w.given() && !f.given()) return;
+  if (f.given())
+    plane.require(w.given(), "point",
+                  "geometry.wall_plane = {point, normal} together with geometry.farfield = {...}: a body-only file "
+                  "gets both its wall and its far field");
+  else
+    plane.require(false, "point",
+                  "together with geometry.farfield = {box = [...]} | {sphere = {centre, radius}} | {box_chords = k}: "
+                  "a body-only file gets both its wall and its far field");
+  if (!geo.source.empty()) return;
+  // The generated wing stands on z = 0 in a box of its own.
+  const auto& p = *w.point;
+  const auto& n = *w.normal;
+  plane.require(p[2] == 0.0 && n[0] == 0.0 && n[1] == 0.0 && n[2] > 0.0, "normal",
+                "the plane z = 0 with normal +z for a generated wing (it stands on z = 0; give a CAD file with "
+                "backend = \"occ\" for another plane)");
+  if (f.sphere.centre)
+    sphere.require(false, "centre",
+                   "a box for a generated wing (its far field is a box; a sphere needs a CAD file with backend = "
+                   "\"occ\")");
+}
+
 // What the rows cannot say: conditions between keys.
 void check_across_keys(Config& c, const std::map<std::string, Section*>& sections, const std::string& base_directory) {
   GeometryConfig& geo = c.geometry;
@@ -363,6 +452,9 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   sections.at("geometry.naca")
       ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
+
+  check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.farfield"),
+                         *sections.at("geometry.farfield.sphere"));
 
   Section& n = *sections.at("nearfield");
   n.require(c.nearfield.topology != "H" || c.wall_layer.thickness > 0.0, "topology",
@@ -413,6 +505,9 @@ const std::vector<ConfigSection>& config_sections() {
   static const std::vector<ConfigSection> sections = {
       {"geometry", geometry_keys()},
       {"geometry.naca", naca_keys()},
+      {"geometry.wall_plane", wall_plane_keys()},
+      {"geometry.farfield", farfield_shape_keys(), true},
+      {"geometry.farfield.sphere", farfield_sphere_keys()},
       {"nearfield", nearfield_keys()},
       {"boundary_layer", boundary_layer_keys()},
       {"wall_layer", wall_layer_keys()},
@@ -459,8 +554,14 @@ Config parse_config(const std::string& text, const std::string& source_name, con
     if (dot == std::string::npos)
       s = std::make_unique<Section>(origin, root, section.name, section.name);
     else
-      s = std::make_unique<Section>(sections.at(section.name.substr(0, dot))->sub(section.name.substr(dot + 1)));
-    read_keys(*s, section.keys, c);
+      s = std::make_unique<Section>(
+          sections.at(section.name.substr(0, dot))->sub(section.name.substr(dot + 1), section.or_value));
+    std::set<std::string> table_or_value;
+    for (const ConfigSection& child : config_sections())
+      if (child.or_value && child.name.rfind(section.name + ".", 0) == 0 &&
+          child.name.find('.', section.name.size() + 1) == std::string::npos)
+        table_or_value.insert(child.name.substr(section.name.size() + 1));
+    read_keys(*s, section.keys, c, table_or_value);
     sections[section.name] = std::move(s);
   }
   std::map<std::string, Section*> by_name;

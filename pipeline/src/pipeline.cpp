@@ -17,6 +17,7 @@
 #include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
+#include "semimesh/pipeline/pyfr_limits.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/roles.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
@@ -107,6 +108,42 @@ std::string box_text(const std::array<double, 6>& b) {
   return fmt::format("{},{},{},{},{},{}", b[0], b[1], b[2], b[3], b[4], b[5]);
 }
 
+std::string numbers_text(const double* x, std::size_t n) {
+  std::string text;
+  for (std::size_t i = 0; i < n; ++i) text += fmt::format("{}{}", i ? "," : "", x[i]);
+  return text;
+}
+
+// The generated wing's box for geometry.farfield = {box | box_chords} (it stands on z = 0, checked
+// by the config): the box cut at the wall, or k chords around the wing's bounding box.
+std::array<double, 6> generated_box(const GeometryConfig& g) {
+  const FarFieldShapeConfig& f = g.farfield_shape;
+  if (f.box) {
+    std::array<double, 6> box = *f.box;
+    box[2] = 0.0;
+    return box;
+  }
+  const NacaConfig& w = g.naca;
+  const double c = w.chord, shift = w.span * std::tan(w.sweep * M_PI / 180.0), margin = *f.box_chords * c;
+  const double x_lo = std::min(0.0, shift), x_hi = std::max(c, shift + w.taper * c);
+  return {x_lo - margin, -0.5 * c - margin, 0.0, x_hi + margin, 0.5 * c + margin, w.span + margin};
+}
+
+// geometry.wall_plane and geometry.farfield = {...} as the occ backend's parameters.
+void set_domain_params(const GeometryConfig& g, cad::Params& params) {
+  const FarFieldShapeConfig& f = g.farfield_shape;
+  std::array<double, 6> plane{};
+  std::copy(g.wall_plane.point->begin(), g.wall_plane.point->end(), plane.begin());
+  std::copy(g.wall_plane.normal->begin(), g.wall_plane.normal->end(), plane.begin() + 3);
+  params.set("occ.wall_plane", numbers_text(plane.data(), 6));
+  if (f.box) params.set("occ.farfield_box", numbers_text(f.box->data(), 6));
+  if (f.box_chords) params.set("occ.farfield_box_chords", fmt::format("{}", *f.box_chords));
+  if (f.sphere.centre) {
+    const std::array<double, 4> sphere{(*f.sphere.centre)[0], (*f.sphere.centre)[1], (*f.sphere.centre)[2], *f.sphere.radius};
+    params.set("occ.farfield_sphere", numbers_text(sphere.data(), 4));
+  }
+}
+
 cad::Source cad_source(const GeometryConfig& g) {
   cad::Source source;
   source.path = g.source;
@@ -118,7 +155,7 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.taper", fmt::format("{}", g.naca.taper));
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
-    source.params.set("naca.box", box_text(g.naca.box));
+    source.params.set("naca.box", box_text(g.wall_plane.given() ? generated_box(g) : g.naca.box));
     if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +
@@ -127,6 +164,10 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
     if (g.units != "auto") source.params.set("occ.units", g.units);
     if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
+    if (g.wall_plane.given()) set_domain_params(g, source.params);
+  } else if (g.wall_plane.given()) {
+    throw ConfigError("config error: geometry.wall_plane: backend '" + g.backend +
+                      "' cannot build a wall and a far field around a body-only file (backend \"occ\" can)");
   }
   return source;
 }
@@ -464,6 +505,26 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
   return reference_length(config.geometry, body);
 }
 
+// The far field's triangles as the mesh holds them, facing into the domain as the surface stage's
+// meshes do. A curved far-field surface (a sphere) stays straight-sided in the mesh, triangulated by
+// the far-field stage at its own sizes: the volume it bounds is these triangles', not the surface
+// stage's triangulation's (equal to round-off on planar faces only).
+surface::SurfaceMesh far_field_as_meshed(const mesh::Mesh& mesh) {
+  surface::SurfaceMesh out;
+  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
+    const mesh::BoundaryFace& f = mesh.boundary_faces()[b];
+    if (mesh.group_names()[f.group] != "farfield") continue;
+    const int first = out.num_nodes();
+    for (int v : {0, 2, 1}) out.points.push_back(mesh.node(f.vertices[v]));
+    out.triangles.push_back({first, first + 1, first + 2});
+    if (f.shape == ho::Shape::Quadrilateral) {
+      out.points.push_back(mesh.node(f.vertices[3]));
+      out.triangles.push_back({first, first + 3, first + 1});  // vertices 0, 3, 2 reversed
+    }
+  }
+  return out;
+}
+
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
@@ -474,6 +535,10 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     std::vector<const surface::SurfaceMesh*> body, box;
     for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
     for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
+    const bool curved_far_field = std::any_of(g.roles.farfield.begin(), g.roles.farfield.end(),
+                                              [&](int s) { return !g.model->surface(s).is_planar(); });
+    const surface::SurfaceMesh meshed_far_field = curved_far_field ? far_field_as_meshed(result.mesh) : surface::SurfaceMesh{};
+    if (curved_far_field) box = {&meshed_far_field};
     result.volume = checks::check_volume(result.mesh, body, box, surfaces.surfaces[g.roles.wall]);
     // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
     // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
@@ -593,6 +658,10 @@ RunResult run(const Config& config, Progress& progress) {
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, result.mesh, linear, chord, progress, result);
   check(config, geometry, surfaces, chord, progress, result);
+  // A user writing MSH for PyFR hears now what its importer would refuse.
+  if (std::any_of(config.output.formats.begin(), config.output.formats.end(),
+                  [](const std::string& f) { return f == "msh41" || f == "msh22"; }))
+    for (const std::string& refusal : pyfr_refusals(result.mesh)) result.warnings.push_back("output: " + refusal);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
   return result;

@@ -18,7 +18,9 @@ the command on a pseudo-terminal (script(1)), stdout and stderr then arrive toge
 import argparse
 import json
 import math
+import os
 import shlex
+import shutil
 import subprocess
 import sys
 
@@ -156,6 +158,8 @@ def main():
     parser.add_argument("--progress-events", action="append", default=[])
     parser.add_argument("--json", choices=sorted(JSON_CHECKS))
     parser.add_argument("--write", action="append", default=[])
+    parser.add_argument("--writes-nothing-in", action="append", default=[],
+                        help="a folder emptied before the run that must hold no file after it")
     parser.add_argument("args", nargs=argparse.REMAINDER)
     opts = parser.parse_args()
     args = opts.args[1:] if opts.args[:1] == ["--"] else opts.args
@@ -164,6 +168,9 @@ def main():
         name, path = item.split(":", 1)
         with open(path, "w") as f:
             f.write(FIXTURES[name])
+
+    for folder in opts.writes_nothing_in:
+        shutil.rmtree(folder, ignore_errors=True)
 
     command = [opts.exe] + args
     if opts.pty:
@@ -186,6 +193,9 @@ def main():
                "bad input must print one line starting 'semimesh: error: '")
         if args[:1] != ["run"]:  # `run` prints a progress line per stage before it stops
             expect(run.stdout == "", "nothing on stdout on error")
+    for folder in opts.writes_nothing_in:
+        left = [os.path.join(d, f) for d, _, files in os.walk(folder) for f in files]
+        expect(not left, "the run left files in %s: %r" % (folder, left))
     for text in opts.stdout_has:
         expect(text in run.stdout, "stdout lacks %r" % text)
     if opts.rewrites_lines:

@@ -31,6 +31,27 @@ TEST(InitCommand, TheDefaultConfigReadsBackAsTheDefaults) {
   EXPECT_GT(keys, 30);
 }
 
+// geometry.farfield is surface names or the table of the far field to build: the text holds one of
+// them (TOML cannot have both), and reads back either way.
+TEST(InitCommand, TheFarFieldToBuildReadsBack) {
+  pipeline::Config values;
+  values.geometry.backend = "occ";
+  values.geometry.source = "m6.stp";
+  values.geometry.wall_plane.point = {0.0, 0.0, 0.0};
+  values.geometry.wall_plane.normal = {0.0, 1.0, 0.0};
+  values.geometry.farfield_shape.box_chords = 20.0;
+  const std::string text = config_text(values, "a body-only file\n");
+  const pipeline::Config parsed = pipeline::parse_config(text, "init.toml");
+  EXPECT_EQ(parsed.geometry.farfield_shape.box_chords, 20.0);
+  EXPECT_EQ(parsed.geometry.wall_plane.normal, values.geometry.wall_plane.normal);
+  EXPECT_NE(text.find("\n[geometry.farfield]\n"), std::string::npos);
+  EXPECT_EQ(text.find("\nfarfield = "), std::string::npos) << "the surface-name key is left out";
+  // Unset, the table's header is a comment and the names key is there.
+  const std::string defaults = default_config_text();
+  EXPECT_NE(defaults.find("\n# [geometry.farfield]\n"), std::string::npos);
+  EXPECT_NE(defaults.find("\nfarfield = [\"auto\"]"), std::string::npos);
+}
+
 TEST(InitCommand, KeepsAnExistingFileUnlessForced) {
   const std::filesystem::path path = semimesh::test::temp_path("init.toml");
   std::filesystem::remove(path);

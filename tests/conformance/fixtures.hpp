@@ -165,6 +165,45 @@ struct OccStepOneraM6 {
     return e;
   }
 };
+
+/// The same body-only file on its wall plane y = 0 inside a box of 5 chords, built by OCCT's Booleans
+/// (occ.wall_plane, geometry.wall_plane in a config): an ordinary fluid-enclosing model.
+struct OccStepOneraM6OnWall {
+  static constexpr const char* kName = "occ STEP onera_m6_sharp_te on the wall y = 0 in a box";
+  static std::string skip_reason() { return missing(OccStepOneraM6::path()); }
+  static std::unique_ptr<cad::Model> load() {
+    cad::Source source{OccStepOneraM6::path(), {}};
+    source.params.set("occ.wall_plane", "0,0,0,0,1,0");
+    source.params.set("occ.farfield_box_chords", "5");
+    return semimesh::occ::load_occ(source);
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.winding_surfaces = 2;
+    e.seams = 0;
+    e.poles = 0;
+    return e;
+  }
+};
+
+/// ... and in a half sphere (its axis along the wall's normal): a seam and a pole on the far field.
+struct OccStepOneraM6InSphere {
+  static constexpr const char* kName = "occ STEP onera_m6_sharp_te on the wall y = 0 in a half sphere";
+  static std::string skip_reason() { return missing(OccStepOneraM6::path()); }
+  static std::unique_ptr<cad::Model> load() {
+    cad::Source source{OccStepOneraM6::path(), {}};
+    source.params.set("occ.wall_plane", "0,0,0,0,1,0");
+    source.params.set("occ.farfield_sphere", "400,0,0,8000");
+    return semimesh::occ::load_occ(source);
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.winding_surfaces = 2;
+    e.seams = 1;
+    e.poles = 1;
+    return e;
+  }
+};
 #endif
 
 #ifdef SEMIMESH_HAVE_VENDOR_FAKE

@@ -45,7 +45,8 @@ class Conformance : public ::testing::Test {
 using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution
 #ifdef SEMIMESH_HAVE_OCC
                                 ,
-                                OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6
+                                OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6, OccStepOneraM6OnWall,
+                                OccStepOneraM6InSphere
 #endif
 #ifdef SEMIMESH_HAVE_VENDOR_FAKE
                                 ,

@@ -358,3 +358,69 @@ TEST(Config, TheExamplesParse) {
 
 }  // namespace
 }  // namespace semimesh::pipeline
+
+namespace semimesh::pipeline {
+namespace {
+
+// A body-only file: the wall plane and the far field to build, each far-field form.
+TEST(Config, WallPlaneAndFarFieldToBuild) {
+  const char* const plane = "[geometry]\nbackend = \"occ\"\nsource = \"m6.stp\"\n"
+                            "wall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n";
+  Config c = parse_config(std::string(plane) + "farfield = { box = [-1, -2, -3, 4, 5, 6] }\n", "case.toml");
+  ASSERT_TRUE(c.geometry.wall_plane.normal.has_value());
+  EXPECT_EQ((*c.geometry.wall_plane.normal)[1], 1.0);
+  ASSERT_TRUE(c.geometry.farfield_shape.box.has_value());
+  EXPECT_EQ((*c.geometry.farfield_shape.box)[5], 6.0);
+  EXPECT_EQ(c.geometry.farfield, (std::vector<std::string>{"auto"}));  // the roles are then found
+  c = parse_config(std::string(plane) + "farfield = { sphere = { centre = [1, 2, 3], radius = 9 } }\n", "case.toml");
+  EXPECT_EQ(c.geometry.farfield_shape.sphere.radius, 9.0);
+  EXPECT_EQ((*c.geometry.farfield_shape.sphere.centre)[2], 3.0);
+  c = parse_config(std::string(plane) + "farfield = { box_chords = 20 }\n", "case.toml");
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 20.0);
+  // Surface names still work, and --set reaches the table's keys.
+  c = parse_config("[geometry]\nfarfield = [\"a\", \"b\"]\n", "case.toml");
+  EXPECT_EQ(c.geometry.farfield, (std::vector<std::string>{"a", "b"}));
+  c = parse_config(plane, "case.toml", {}, {"geometry.farfield.box_chords=5"});
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 5.0);
+}
+
+TEST(Config, WallPlaneAndFarFieldErrorsNameTheKey) {
+  const std::string file = "[geometry]\nbackend = \"occ\"\nsource = \"m6.stp\"\n";
+  const std::string plane = "wall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n";
+  std::string e = error_of(file + plane);  // no far field
+  EXPECT_NE(e.find("geometry.wall_plane"), std::string::npos) << e;
+  EXPECT_NE(e.find("geometry.farfield = {box"), std::string::npos) << e;
+  e = error_of(file + "farfield = { box_chords = 20 }\n");  // no plane
+  EXPECT_NE(e.find("geometry.wall_plane"), std::string::npos) << e;
+  e = error_of(file + "wall_plane = { point = [0, 0, 0], normal = [0, 0, 0] }\nfarfield = { box_chords = 20 }\n");
+  EXPECT_NE(e.find("geometry.wall_plane.normal = [ 0, 0, 0 ]"), std::string::npos) << e;
+  EXPECT_NE(e.find("non-zero"), std::string::npos) << e;
+  e = error_of(file + plane + "farfield = { box_chords = 20, box = [0, 0, 0, 1, 1, 1] }\n");
+  EXPECT_NE(e.find("one of box, sphere or box_chords"), std::string::npos) << e;
+  e = error_of(file + plane + "farfield = { box = [0, 0, 0, 1, -1, 1] }\n");
+  EXPECT_NE(e.find("geometry.farfield.box = [ 0, 0, 0, 1, -1, 1 ]"), std::string::npos) << e;
+  e = error_of(file + plane + "farfield = { box_chords = -2 }\n");
+  EXPECT_NE(e.find("geometry.farfield.box_chords = -2"), std::string::npos) << e;
+  e = error_of(file + plane + "farfield = { sphere = { radius = 5 } }\n");
+  EXPECT_NE(e.find("geometry.farfield.sphere.radius = 5"), std::string::npos) << e;
+  e = error_of(file + plane + "farfield = { box_chords = 5, cylinder = 5 }\n");
+  EXPECT_NE(e.find("unknown key geometry.farfield.cylinder"), std::string::npos) << e;
+}
+
+// The generated wing stands on z = 0 in a box: only that plane and a box far field apply to it.
+TEST(Config, AGeneratedWingTakesTheWallZEqualsZeroAndABox) {
+  const Config c = parse_config("[geometry]\nwall_plane = { point = [1, 2, 0], normal = [0, 0, 2] }\n"
+                                "farfield = { box_chords = 4 }\n", "case.toml");
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 4.0);
+  std::string e = error_of("[geometry]\nwall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n"
+                           "farfield = { box_chords = 4 }\n");
+  EXPECT_NE(e.find("geometry.wall_plane.normal = [ 0, 1, 0 ]"), std::string::npos) << e;
+  EXPECT_NE(e.find("z = 0"), std::string::npos) << e;
+  e = error_of("[geometry]\nwall_plane = { point = [0, 0, 0], normal = [0, 0, 1] }\n"
+               "farfield = { sphere = { centre = [0, 0, 0], radius = 9 } }\n");
+  EXPECT_NE(e.find("geometry.farfield.sphere.centre = [ 0, 0, 0 ]"), std::string::npos) << e;
+  EXPECT_NE(e.find("needs a CAD file"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline

@@ -416,3 +416,35 @@ TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
 
 }  // namespace
 }  // namespace semimesh::pipeline
+
+namespace semimesh::pipeline {
+namespace {
+
+// The generated wing through geometry.wall_plane and geometry.farfield = {box}: the wall z = 0 and
+// the box cut at it are the wing's own wall and box, so the mesh is the one of naca.box.
+TEST(PipelineRun, AGeneratedWingTakesTheWallPlaneAndFarFieldBox) {
+  const fs::path dir = fresh_directory("wall_plane");
+  Progress quiet;
+  const RunResult own = run(coarse_config(dir / "own", {"output.formats=[\"msh41\"]"}), quiet);
+  const RunResult from_keys = run(coarse_config(dir / "keys", {"output.formats=[\"msh41\"]",
+                                                               "geometry.wall_plane.point=[0, 0, 0]",
+                                                               "geometry.wall_plane.normal=[0, 0, 1]",
+                                                               "geometry.farfield.box=[-3, -3, -1, 4, 3, 3]"}),
+                                  quiet);
+  EXPECT_TRUE(from_keys.checks_passed());
+  EXPECT_EQ(from_keys.elements_by_type, own.elements_by_type);
+  EXPECT_EQ(from_keys.volume.expected_volume(), own.volume.expected_volume());
+  // box_chords: 1 chord around the wing's box [0, 1] x [-0.5, 0.5] x [0, 1] (the section's
+  // half-chord bound on y): [-1, 2] x [-1.5, 1.5] x [0, 2], volume 18 minus the wing's.
+  const RunResult chords = run(coarse_config(dir / "chords", {"output.formats=[\"msh41\"]",
+                                                              "geometry.wall_plane.point=[0, 0, 0]",
+                                                              "geometry.wall_plane.normal=[0, 0, 1]",
+                                                              "geometry.farfield.box_chords=1"}),
+                               quiet);
+  EXPECT_TRUE(chords.checks_passed());
+  EXPECT_NEAR(chords.volume.box_volume, 18.0, 1e-9);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace semimesh::pipeline

@@ -1,4 +1,5 @@
 // The registry factory: read (or generate), scale once, sew, heal, map onto a cadapi Model.
+#include "fluid_domain.hpp"
 #include "naca_edge_names.hpp"
 #include "prepare_shape.hpp"
 #include "read_shape.hpp"
@@ -8,8 +9,12 @@
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
+#include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -60,10 +65,73 @@ std::string unit_origin(const cad::Params& params, const ReadShape& read) {
   return read.declared.empty() ? "the file declares no unit: its numbers as they are" : "declared by the file (" + read.declared + ")";
 }
 
+// A comma-separated list of `count` finite numbers, or a rejection naming the key.
+template <std::size_t N>
+std::array<double, N> numbers(const cad::Params& params, const std::string& key, const char* expected) {
+  const std::string text = params.get_string(key, "");
+  std::array<double, N> out{};
+  std::istringstream in(text);
+  for (std::size_t i = 0; i < N; ++i) {
+    std::string item;
+    std::getline(in, item, ',');
+    char* end = nullptr;
+    out[i] = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(out[i]))
+      throw CadError(CadError::Kind::BadParameter, "parameter '" + key + "' = '" + text + "': expected " + expected);
+  }
+  if (std::string rest; std::getline(in, rest))
+    throw CadError(CadError::Kind::BadParameter, "parameter '" + key + "' = '" + text + "': expected " + expected);
+  return out;
+}
+
+std::string list_text(const double* x, std::size_t n) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < n; ++i) text += (i ? ", " : "") + number_label(x[i]);
+  return text + "]";
+}
+
+// occ.wall_plane and one occ.farfield_*: the fluid domain is built around a body-only file.
+std::optional<std::pair<WallPlane, FarFieldShape>> domain_request(const cad::Params& params) {
+  const bool far = params.has("occ.farfield_box") || params.has("occ.farfield_sphere") || params.has("occ.farfield_box_chords");
+  if (!params.has("occ.wall_plane") && !far) return std::nullopt;
+  if (!params.has("occ.wall_plane") || !far)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameters 'occ.wall_plane' (geometry.wall_plane) and one of 'occ.farfield_box', "
+                   "'occ.farfield_sphere', 'occ.farfield_box_chords' (geometry.farfield = {box | sphere | box_chords}) "
+                   "go together: the wall and the far field are built around a body-only file");
+  const auto w = numbers<6>(params, "occ.wall_plane", "6 numbers: point x, y, z, normal x, y, z");
+  const gp_Vec normal(w[3], w[4], w[5]);
+  if (normal.Magnitude() == 0.0)
+    throw CadError(CadError::Kind::BadParameter, "parameter 'occ.wall_plane': the normal is zero");
+  WallPlane wall{gp_Pnt(w[0], w[1], w[2]), gp_Dir(normal),
+                 "geometry.wall_plane = {point = " + list_text(w.data(), 3) + ", normal = " + list_text(w.data() + 3, 3) + "}"};
+  FarFieldShape shape;
+  if (params.has("occ.farfield_box")) {
+    shape.box = numbers<6>(params, "occ.farfield_box", "6 numbers: xmin, ymin, zmin, xmax, ymax, zmax");
+    const auto& b = *shape.box;
+    if (!(b[0] < b[3] && b[1] < b[4] && b[2] < b[5]))
+      throw CadError(CadError::Kind::BadParameter, "parameter 'occ.farfield_box': expected each min < max");
+    shape.label = "geometry.farfield = {box = " + list_text(b.data(), 6) + "}";
+  } else if (params.has("occ.farfield_sphere")) {
+    shape.sphere = numbers<4>(params, "occ.farfield_sphere", "4 numbers: centre x, y, z, radius");
+    const auto& s = *shape.sphere;
+    if (!(s[3] > 0.0)) throw CadError(CadError::Kind::BadParameter, "parameter 'occ.farfield_sphere': expected a radius > 0");
+    shape.label = "geometry.farfield = {sphere = {centre = " + list_text(s.data(), 3) + ", radius = " + number_label(s[3]) + "}}";
+  } else {
+    shape.box_chords = params.get_double("occ.farfield_box_chords", 0.0);
+    if (!(*shape.box_chords > 0.0))
+      throw CadError(CadError::Kind::BadParameter, "parameter 'occ.farfield_box_chords': expected a number > 0");
+    shape.label = "geometry.farfield = {box_chords = " + number_label(*shape.box_chords) + "}";
+  }
+  return std::make_pair(wall, shape);
+}
+
 std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   const cad::Params& params = source.params;
-  params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside"},
+  params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside",
+                        "occ.wall_plane", "occ.farfield_box", "occ.farfield_sphere", "occ.farfield_box_chords"},
                        kBackend);
+  const auto domain = domain_request(params);
   const double scale = params.get_double("occ.scale", 1.0);
   if (!(scale > 0.0))
     throw CadError(CadError::Kind::BadParameter, "parameter 'occ.scale' = " + number_label(scale) + ": expected a positive number");
@@ -78,13 +146,20 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
                    "parameter 'occ.sew_tolerance' = " + number_label(tolerance) + ": expected a positive length");
   if (params.get_bool("occ.sew", true)) shape = sew_shape(shape, tolerance, read.face_names);
   if (params.get_bool("occ.heal", true)) shape = heal_shape(shape, tolerance, read.face_names);
+  if (domain) {
+    try {
+      shape = fluid_domain(shape, domain->first, domain->second, 10.0 * tolerance, read.face_names);
+    } catch (const CadError& error) {
+      throw CadError(error.kind(), "'" + source.path + "': " + error.what());
+    }
+  }
 
   ModelOptions options;
   options.scale_applied = scale;
   const std::string unit = file_unit(params, read);
   options.units = scale == 1.0 || params.has("occ.units") ? unit : unit + " x " + number_label(scale);
   options.units_origin = unit_origin(params, read);
-  options.fluid_side = fluid_side;
+  options.fluid_side = domain ? FluidSide::Inside : fluid_side;
   options.face_names = std::move(read.face_names);
   try {
     return model_from_shape(shape, kBackend, options);

@@ -7,6 +7,7 @@
 #include <GProp_GProps.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom2d_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <ShapeAnalysis_Edge.hxx>
 #include <Standard_Failure.hxx>
@@ -96,8 +97,8 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   // The stricter of the two parameter directions, so no point much further than the tolerance
   // from a trimming curve counts as on it.
   const double tolerance = boundary_tolerance(face_);
-  const double uv_tolerance = std::min(box_adaptor.UResolution(tolerance), box_adaptor.VResolution(tolerance));
-  tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance);
+  uv_tolerance_ = std::min(box_adaptor.UResolution(tolerance), box_adaptor.VResolution(tolerance));
+  tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance_);
   GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
   mutable_evaluator_ = type == GeomAbs_SurfaceOfRevolution || type == GeomAbs_SurfaceOfExtrusion ||
@@ -136,14 +137,59 @@ std::optional<double> OccSurface::exact_area() const {
   }
 }
 
-bool OccSurface::contains(const cad::Vec2& uv) const {
-  TopAbs_State state = classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+bool OccSurface::contains_exactly(const cad::Vec2& uv) const {
+  const TopAbs_State state = classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
+bool OccSurface::contains(const cad::Vec2& uv) const {
+  if (const TrimRaster* raster = trim_raster())
+    if (const std::optional<bool> known = raster->lookup(uv)) return *known;
+  return contains_exactly(uv);
+}
+
 bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
+  if (const TrimRaster* raster = trim_raster())
+    if (const std::optional<bool> known = raster->lookup(uv)) return *known;
   const TopAbs_State state = tolerant_classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
+}
+
+const TrimRaster* OccSurface::trim_raster() const {
+  std::call_once(raster_built_, [this] {
+    constexpr int kCells = 256;
+    // Points of every pcurve of the face's loops, refined until consecutive ones are at most half
+    // a cell apart along u and v; a loop that will not refine (or has no pcurve) leaves no raster.
+    auto raster = std::make_unique<TrimRaster>(bounds_, kCells);
+    const cad::Vec2 cell = raster->cell_size();
+    const double tolerance = std::max(uv_tolerance_, BRep_Tool::Tolerance(face_));
+    const int margin = 2 + static_cast<int>(std::ceil(tolerance / std::min(cell.x(), cell.y())));
+    if (margin > kCells / 8) return;
+    for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
+      double first, last;
+      const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face_, first, last);
+      if (pcurve.IsNull() || !std::isfinite(first) || !std::isfinite(last)) return;
+      std::vector<cad::Vec2> samples;
+      for (int count = 16;; count *= 2) {
+        if (count > (1 << 16)) return;
+        samples.clear();
+        bool fine = true;
+        for (int k = 0; k <= count; ++k) {
+          const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / count);
+          samples.emplace_back(p.X(), p.Y());
+          if (k > 0) {
+            const cad::Vec2 step = (samples[k] - samples[k - 1]).cwiseAbs();
+            fine = fine && step.x() <= 0.5 * cell.x() && step.y() <= 0.5 * cell.y();
+          }
+        }
+        if (fine) break;
+      }
+      raster->mark_loop(samples, margin);
+    }
+    raster->classify([this](const cad::Vec2& uv) { return contains_exactly(uv); });
+    raster_ = std::move(raster);
+  });
+  return raster_.get();
 }
 
 cad::SurfaceProjection OccSurface::project(const cad::Vec3& x, std::optional<cad::Vec2> guess) const {

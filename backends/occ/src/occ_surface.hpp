@@ -4,12 +4,14 @@
 
 #include "sample_grid.hpp"
 #include "semimesh/cad/surface.hpp"
+#include "trim_raster.hpp"
 
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace semimesh::occ {
@@ -39,6 +41,13 @@ class OccSurface final : public cad::Surface {
   /// True when OCC evaluates this surface through a cached adaptor (revolution, extrusion, offset).
   bool has_mutable_evaluator() const { return mutable_evaluator_; }
 
+  /// contains() without the trim raster: OCC's classifier alone (the slow reference it is tested
+  /// against).
+  bool contains_exactly(const cad::Vec2& uv) const;
+  /// The raster that answers most of contains() and of the tolerant test (built on first use);
+  /// null when the face's loops could not be sampled finely enough (then every query is exact).
+  const TrimRaster* trim_raster() const;
+
  private:
   static constexpr int kGridSeeds = 3;  // local minima of the grid polished by Newton per query
 
@@ -55,6 +64,9 @@ class OccSurface final : public cad::Surface {
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;           // face tolerance: contains()
   std::unique_ptr<BRepTopAdaptor_FClass2d> tolerant_classifier_;  // boundary tolerance: project()
   std::unique_ptr<SampleGrid> grid_;  // built once after surface_ and bounds_
+  double uv_tolerance_ = 0.0;           // of tolerant_classifier_
+  mutable std::once_flag raster_built_;
+  mutable std::unique_ptr<TrimRaster> raster_;
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
   bool mutable_evaluator_ = false;
 };

@@ -117,7 +117,9 @@ int find_wall(const cad::Model& model) {
     if (holds_a_body(model, s)) walls.push_back(s);
   if (walls.empty())
     fail("no planar face holds a body's root loop as an inner loop: the model has no wall the body stands on "
-         "(name the wall with geometry.wall, or check that the body is sewn to it: cad-info lists each curve's faces)");
+         "(name the wall with geometry.wall, or check that the body is sewn to it: cad-info lists each curve's faces; "
+         "a file holding the body only gets its wall and far field from geometry.wall_plane and geometry.farfield "
+         "= {box | sphere | box_chords})");
   if (walls.size() > 1)
     fail("several planar faces hold a body's root loop (" + labels(model, walls) + "): name the wall with geometry.wall");
   return walls.front();

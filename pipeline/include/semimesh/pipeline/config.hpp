@@ -44,6 +44,29 @@ struct NacaConfig {
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin, ymin, zmin, xmax, ymax, zmax
 };
 
+/// [geometry.wall_plane]: the plane a body-only CAD file's body stands on (its root lies in it);
+/// `normal` points into the fluid. Both keys or neither.
+struct WallPlaneConfig {
+  std::optional<std::array<double, 3>> point;
+  std::optional<std::array<double, 3>> normal;
+  bool given() const { return point || normal; }
+};
+
+/// [geometry.farfield.sphere]
+struct FarFieldSphereConfig {
+  std::optional<std::array<double, 3>> centre;
+  std::optional<double> radius;
+};
+
+/// geometry.farfield written as a table: the far field built around a body-only CAD file, one of a
+/// box, a sphere, or a box `box_chords` root chords around the body.
+struct FarFieldShapeConfig {
+  std::optional<std::array<double, 6>> box;
+  FarFieldSphereConfig sphere;
+  std::optional<double> box_chords;
+  bool given() const { return box || sphere.centre || sphere.radius || box_chords; }
+};
+
 /// [geometry]: where the CAD model comes from and which surfaces play which role.
 struct GeometryConfig {
   std::string backend = "naca";  ///< registry name: "naca", "occ", "vendor"
@@ -56,6 +79,9 @@ struct GeometryConfig {
   std::vector<std::string> body = {"auto"};
   std::string wall = "auto";
   std::vector<std::string> farfield = {"auto"};
+  /// A body-only file: the wall and the far field built by the backend (both or neither).
+  WallPlaneConfig wall_plane;
+  FarFieldShapeConfig farfield_shape;
 };
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.
@@ -135,6 +161,9 @@ struct Config {
 struct ConfigSection {
   std::string name;
   params::Table<Config> keys;
+  /// The section's key in its parent may hold a value instead, read by the parent's row of the same
+  /// name (geometry.farfield: surface names, or the table of the far field to build).
+  bool or_value = false;
 };
 
 /// Every section and key, in file order (the source of reading, checking and the docs test).

@@ -9,6 +9,11 @@
 //   occ.heal           bool, default true: ShapeFix_Shape + ShapeFix_Wireframe (small edges)
 //   occ.fluid_inside   "auto" (default), "true" or "false": which side of the faces is fluid (see
 //                      FluidSide)
+//   occ.wall_plane     "px,py,pz,nx,ny,nz": a body-only file stands on this plane (normal into the
+//                      fluid); with one of the three below, the fluid domain is built around it by
+//                      Boolean operations (fluid_domain.hpp) and the fluid is inside it
+//   occ.farfield_box   "xmin,ymin,zmin,xmax,ymax,zmax"; occ.farfield_sphere "cx,cy,cz,r";
+//   occ.farfield_box_chords  k: a box k root chords around the body
 //   naca.*             without a file: the analytic backend's wing keys (mock_cad::naca_params_from)
 //
 // Thread safety: queries build their OCC algorithm objects per call and share only immutable

@@ -1,0 +1,233 @@
+#include "fluid_domain.hpp"
+
+#include "semimesh/cad/error.hpp"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Common.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepLib.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Solid.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Trsf.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace semimesh::occ {
+namespace {
+
+using cad::CadError;
+
+[[noreturn]] void refuse(const std::string& what) { throw CadError(CadError::Kind::BadParameter, what); }
+
+std::string length_text(double x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << x;
+  return out.str();
+}
+
+// The body as solids with their normals pointing out of them: its solids, else its closed shells
+// made solid.
+TopoDS_Shape body_solids(const TopoDS_Shape& body) {
+  TopoDS_Compound solids;
+  BRep_Builder builder;
+  builder.MakeCompound(solids);
+  int count = 0;
+  for (TopExp_Explorer s(body, TopAbs_SOLID); s.More(); s.Next(), ++count) builder.Add(solids, s.Current());
+  for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next(), ++count) {
+    BRepBuilderAPI_MakeSolid make(TopoDS::Shell(s.Current()));
+    if (!make.IsDone()) refuse("geometry.wall_plane: the body's shell cannot be made a solid (is it closed?)");
+    TopoDS_Solid solid = make.Solid();
+    BRepLib::OrientClosedSolid(solid);
+    builder.Add(solids, solid);
+  }
+  if (count == 0) refuse("geometry.wall_plane: the CAD file holds no closed body (no solid, no shell) to stand on the plane");
+  return solids;
+}
+
+// Bounding box of `shape` in the wall's frame (the plane is z = 0, z along the fluid normal).
+Bnd_Box box_in_wall_frame(const TopoDS_Shape& shape, const WallPlane& wall) {
+  gp_Trsf to_wall;
+  to_wall.SetTransformation(gp_Ax3(wall.point, wall.normal));
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(BRepBuilderAPI_Transform(shape, to_wall, /*copy=*/true).Shape(), box, false, false);
+  return box;
+}
+
+double height_min(const Bnd_Box& b) {
+  double x0, y0, z0, x1, y1, z1;
+  b.Get(x0, y0, z0, x1, y1, z1);
+  return z0;
+}
+
+double height_max(const Bnd_Box& b) {
+  double x0, y0, z0, x1, y1, z1;
+  b.Get(x0, y0, z0, x1, y1, z1);
+  return z1;
+}
+
+bool lies_in_plane(const TopoDS_Face& face, const WallPlane& wall, double tolerance) {
+  if (BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane) return false;
+  const Bnd_Box b = box_in_wall_frame(face, wall);
+  return std::abs(height_min(b)) <= tolerance && std::abs(height_max(b)) <= tolerance;
+}
+
+// The body's faces in the plane (its root); refuses a body that does not stand on the plane.
+std::vector<TopoDS_Face> root_faces(const TopoDS_Shape& body, const WallPlane& wall, double tolerance) {
+  const Bnd_Box extent = box_in_wall_frame(body, wall);
+  const double lowest = height_min(extent);
+  if (height_max(extent) <= tolerance)
+    refuse(wall.label + ": the body lies on the side the normal points away from: the normal must point into "
+           "the fluid, to the body's side");
+  if (lowest < -tolerance)
+    refuse(wall.label + ": the plane cuts through the body: the body reaches " + length_text(-lowest) +
+           " below it (the root must lie in the plane, the body on the side its normal points to)");
+  std::vector<TopoDS_Face> faces;
+  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next())
+    if (lies_in_plane(TopoDS::Face(f.Current()), wall, tolerance)) faces.push_back(TopoDS::Face(f.Current()));
+  if (faces.empty())
+    refuse(wall.label + ": the body does not touch the plane: no face of it lies in the plane (its nearest point is " +
+           length_text(lowest) + " above it)");
+  return faces;
+}
+
+Bnd_Box global_box(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, false, false);
+  return box;
+}
+
+// The far field as a solid.
+TopoDS_Shape far_solid(const FarFieldShape& far, const gp_Dir& normal, const TopoDS_Shape& body,
+                       const std::vector<TopoDS_Face>& roots) {
+  if (far.box) {
+    const auto& b = *far.box;
+    return BRepPrimAPI_MakeBox(gp_Pnt(b[0], b[1], b[2]), gp_Pnt(b[3], b[4], b[5])).Solid();
+  }
+  if (far.sphere) {
+    // Its axis along the wall's normal: a wall through the centre cuts it along its equator (an
+    // iso-parameter line), the pole at the top.
+    const auto& s = *far.sphere;
+    return BRepPrimAPI_MakeSphere(gp_Ax2(gp_Pnt(s[0], s[1], s[2]), normal), s[3]).Solid();
+  }
+  // The root chord: the largest extent of the root's bounding box.
+  Bnd_Box root;
+  for (const TopoDS_Face& f : roots) BRepBndLib::AddOptimal(f, root, false, false);
+  double r0, r1, r2, r3, r4, r5;
+  root.Get(r0, r1, r2, r3, r4, r5);
+  const double margin = *far.box_chords * std::max({r3 - r0, r4 - r1, r5 - r2});
+  double b0, b1, b2, b3, b4, b5;
+  global_box(body).Get(b0, b1, b2, b3, b4, b5);
+  return BRepPrimAPI_MakeBox(gp_Pnt(b0 - margin, b1 - margin, b2 - margin), gp_Pnt(b3 + margin, b4 + margin, b5 + margin))
+      .Solid();
+}
+
+void require_inside(const TopoDS_Shape& body, const TopoDS_Shape& far_field, const FarFieldShape& far, double tolerance) {
+  TopExp_Explorer shell(far_field, TopAbs_SHELL);
+  BRepExtrema_DistShapeShape distance(body, shell.Current());
+  if (!distance.IsDone()) refuse(far.label + ": the distance from the body to the far field cannot be computed");
+  if (distance.Value() <= tolerance) {
+    const gp_Pnt p = distance.PointOnShape1(1);
+    refuse(far.label + ": the far field does not contain the body: its boundary crosses or touches the body at (" +
+           length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+  }
+  TopExp_Explorer vertex(body, TopAbs_VERTEX);
+  BRepClass3d_SolidClassifier inside(far_field, BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())), tolerance);
+  if (inside.State() != TopAbs_IN) refuse(far.label + ": the far field does not contain the body: the body lies outside it");
+}
+
+// A box standing on the wall plane on its fluid side, larger than everything else: the half space.
+TopoDS_Shape fluid_half_space(const WallPlane& wall, const TopoDS_Shape& far_field) {
+  const Bnd_Box b = global_box(far_field);
+  const double size = 4.0 * (std::sqrt(b.SquareExtent()) + gp_Pnt(0, 0, 0).Distance(wall.point) + 1.0);
+  const gp_Ax3 frame(wall.point, wall.normal);
+  const gp_Pnt corner = wall.point.Translated(-size * gp_Vec(frame.XDirection()) - size * gp_Vec(frame.YDirection()));
+  return BRepPrimAPI_MakeBox(gp_Ax2(corner, wall.normal, frame.XDirection()), 2 * size, 2 * size, size).Solid();
+}
+
+template <class Operation>
+TopoDS_Shape run(Operation& op, const TopoDS_Shape& object, const TopoDS_Shape& tool, const std::string& what) {
+  TopTools_ListOfShape objects, tools;
+  objects.Append(object);
+  tools.Append(tool);
+  op.SetArguments(objects);
+  op.SetTools(tools);
+  op.Build();
+  if (!op.IsDone() || op.HasErrors()) {
+    std::ostringstream report;
+    op.DumpErrors(report);
+    refuse("geometry.wall_plane / geometry.farfield: OCCT's Boolean operation (" + what + ") failed: " + report.str());
+  }
+  return op.Shape();
+}
+
+// The faces of the result that come from `face` through the cut (itself when left as it was).
+TopTools_ListOfShape images(BRepAlgoAPI_Cut& cut, const TopoDS_Shape& face) {
+  TopTools_ListOfShape out = cut.Modified(face);
+  if (out.IsEmpty() && !cut.IsDeleted(face)) out.Append(face);
+  return out;
+}
+
+// Names of the result's faces: the body's as carried through the cut (unnamed body faces stay
+// unnamed), "wall" on the plane, the rest far field.
+FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const TopoDS_Shape& body,
+                       const FaceNames& body_names, const WallPlane& wall, double tolerance) {
+  FaceNames names;
+  for (const auto& [face, name] : body_names)
+    for (const TopoDS_Shape& image : images(cut, face)) names.emplace_back(image, name);
+  TopTools_ListOfShape from_body;
+  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next()) {
+    TopTools_ListOfShape of_face = images(cut, f.Current());
+    from_body.Append(of_face);
+  }
+  int walls = 0, outer = 0;
+  for (TopExp_Explorer f(domain, TopAbs_FACE); f.More(); f.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(f.Current());
+    if (std::any_of(from_body.begin(), from_body.end(), [&](const TopoDS_Shape& b) { return b.IsSame(face); })) continue;
+    if (lies_in_plane(face, wall, tolerance))
+      names.emplace_back(face, walls++ ? "wall_" + std::to_string(walls) : std::string("wall"));
+    else
+      names.emplace_back(face, "farfield_" + std::to_string(outer++));
+  }
+  return names;
+}
+
+}  // namespace
+
+TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
+                          FaceNames& names) {
+  const TopoDS_Shape solids = body_solids(body);
+  const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
+  const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
+  require_inside(solids, outer, far, tolerance);
+
+  BRepAlgoAPI_Common common;
+  const TopoDS_Shape clipped = run(common, outer, fluid_half_space(wall, outer), "far field on the wall's fluid side");
+  BRepAlgoAPI_Cut cut;
+  const TopoDS_Shape domain = run(cut, clipped, solids, "far field minus body");
+  TopExp_Explorer solid(domain, TopAbs_SOLID);
+  if (!solid.More()) refuse(wall.label + ": the Boolean operations left no fluid domain");
+  const TopoDS_Shape fluid = solid.Current();
+  solid.Next();
+  if (solid.More()) refuse(wall.label + ": the fluid domain falls apart into several pieces");
+  names = domain_names(fluid, cut, solids, names, wall, tolerance);
+  return fluid;
+}
+
+}  // namespace semimesh::occ

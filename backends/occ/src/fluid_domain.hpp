@@ -1,0 +1,44 @@
+// The fluid domain of a body-only CAD file: a wall plane and a far field given by the user, joined
+// to the body with OCCT's Boolean operations (far field ∩ the wall's fluid side, minus the body).
+// The wall face then holds the body's root loop as edges shared with the body's faces, and the
+// body's face on the wall plane is gone: the result reads as any wing-on-a-wall-in-a-box file.
+#pragma once
+
+#include "prepare_shape.hpp"
+
+#include <TopoDS_Shape.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace semimesh::occ {
+
+/// The plane the body stands on; `normal` points into the fluid.
+struct WallPlane {
+  gp_Pnt point;
+  gp_Dir normal;
+  std::string label;  ///< how the user wrote it, for messages
+};
+
+/// The outer boundary: exactly one of an axis-aligned box, a sphere, or a box `box_chords` root
+/// chords (the body's streamwise extent) around the body's bounding box.
+struct FarFieldShape {
+  std::optional<std::array<double, 6>> box;  ///< xmin, ymin, zmin, xmax, ymax, zmax
+  std::optional<std::array<double, 4>> sphere;  ///< centre x, y, z, radius
+  std::optional<double> box_chords;
+  std::string label;  ///< how the user wrote it, for messages
+};
+
+/// The body (a closed shell or solid) inside the far field, standing on the wall: the closed
+/// boundary of the fluid, as one solid whose inside is the fluid. Named faces of the body keep
+/// their names; the new faces are named "wall" and "farfield_<k>". `tolerance` is the distance
+/// under which a point counts as on the plane. Throws cad::CadError(BadParameter) naming the
+/// plane or the far field when the body does not stand on the plane (no face of it lies in the
+/// plane), the plane cuts through the body, or the far field does not contain the body.
+TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
+                          FaceNames& names);
+
+}  // namespace semimesh::occ
