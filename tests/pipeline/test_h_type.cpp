@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 #include "temp_path.hpp"
@@ -184,13 +185,14 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Variant{"cambered_4412", {"geometry.naca.code=\"4412\""}},
                       Variant{"swept_tapered", {"geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
                       Variant{"incidence_10_degrees", {"wake.direction=[0.9848, 0.1736, 0.0]"}},
-                      Variant{"widening_5_degrees", {"wake.widening=5"}}),
+                      Variant{"widening_5_degrees", {"wake.widening=5"}},
+                      Variant{"incidence_10_widening_10", {"wake.direction=[0.9848, 0.1736, 0.0]", "wake.widening=10"}},
+                      // the swept edge's root leaves the wake's origins behind: the ratio must still be r there
+                      Variant{"sharp_swept_tapered", {"geometry.naca.te=sharp", "geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
+                      Variant{"sharp_cambered_4412", {"geometry.naca.te=sharp", "geometry.naca.code=\"4412\""}}),
     [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
 
-TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
-  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
-  const RunResult analytic = run_h("analytic", {"boundary_layer.layers=3"});
-  const RunResult occ = run_h("occ", {"geometry.backend=occ", "boundary_layer.layers=3"});
+void expect_same_mesh(const RunResult& analytic, const RunResult& occ) {
   expect_valid_conforming(occ, "occ");
   for (const char* region : {"wing_layer", "junction", "wake"})
     EXPECT_EQ(occ.elements_by_region.at(region), analytic.elements_by_region.at(region)) << region;
@@ -207,6 +209,116 @@ TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
   EXPECT_LT(worst, 1e-5);
 }
 
+TEST(HTypeEndToEnd, OccWingGivesTheAnalyticWingsMesh) {
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  expect_same_mesh(run_h("analytic", {"boundary_layer.layers=3"}),
+                   run_h("occ", {"geometry.backend=occ", "boundary_layer.layers=3"}));
+}
+
+// Wake hexes standing on the sheet: faces with their four vertices in the plane through the
+// straight trailing edge (x = 1, y = 0, along z) and the wake direction d (in the xy plane). Each
+// sheet face with the side (sign of the hex's mean distance to the plane) of each hex using it;
+// every wake hex counted in `hexes`.
+std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet_faces(const mesh::Mesh& m, const Eigen::Vector3d& d,
+                                                                      int& hexes) {
+  const auto region = std::find(m.region_names().begin(), m.region_names().end(), "wake") - m.region_names().begin();
+  const Eigen::Vector3d normal = Eigen::Vector3d(-d.y(), d.x(), 0.0).normalized();
+  auto across = [&](const Eigen::Vector3d& x) { return (x - Eigen::Vector3d(1, 0, 0)).dot(normal); };
+  std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet;
+  hexes = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != region) continue;
+    ++hexes;
+    double side = 0.0;
+    for (int k = 0; k < 8; ++k) side += across(m.node(e.vertices[k])) / 8.0;
+    for (const std::vector<int>& f : ho::faces(ho::Shape::Hexahedron)) {
+      std::vector<mesh::NodeId> v;
+      for (int k : f)
+        if (std::abs(across(m.node(e.vertices[k]))) < 1e-9) v.push_back(e.vertices[k]);
+      if (v.size() != 4) continue;
+      std::sort(v.begin(), v.end());
+      sheet[v].push_back(side);
+    }
+  }
+  return sheet;
+}
+
+// Sharp trailing edge (no base): the upper and lower wing layers end on the trailing edge with
+// their own normals, their rear interfaces swept into wake hexes on either side of the sheet
+// (the trailing edge swept), which both sides share face for face. Curved (order 2) and split
+// (the junction's wedge between the root's two halos cut at the split's interfaces and welded), at
+// incidence too; the wake ratios r at the trailing edge and ratio_end at the far end measured on
+// the upper layer's edge at mid-span; the OCC-built sharp wing gives the same mesh.
+TEST(HTypeEndToEnd, SharpTrailingEdgeWakeSheetSharedByBothSides) {
+  for (const auto& [name, d] : std::vector<std::pair<std::string, Eigen::Vector3d>>{
+           {"sharp", Eigen::Vector3d(1, 0, 0)}, {"sharp_incidence", Eigen::Vector3d(0.9848, 0.1736, 0.0)}}) {
+    const RunResult r = run_h(name, {"geometry.naca.te=sharp", "highorder.order=2", "boundary_layer.layers=4",
+                                     "boundary_layer.ratio=2", "wake.ratio_end=1.3",
+                                     "wake.direction=[" + std::to_string(d.x()) + ", " + std::to_string(d.y()) + ", 0.0]"});
+    expect_valid_conforming(r, name);
+    int hexes = 0;
+    const auto sheet = sheet_faces(r.mesh, d.normalized(), hexes);
+    EXPECT_EQ(hexes, 4 * r.wake.hexes) << name;  // split into the wing's 4 layers
+    EXPECT_EQ(r.wake.hexes % 12, 0) << name;
+    EXPECT_EQ(2 * sheet.size(), static_cast<std::size_t>(r.wake.hexes)) << name;  // each stands on the sheet
+    for (const auto& [face, sides] : sheet) {
+      ASSERT_EQ(sides.size(), 2u) << name;
+      EXPECT_LT(std::min(sides[0], sides[1]), 0.0) << name;
+      EXPECT_GT(std::max(sides[0], sides[1]), 0.0) << name;
+    }
+    const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
+    double lowest = 1e300;
+    for (const Eigen::Vector3d& x : wake) lowest = std::min(lowest, x.z());
+    EXPECT_GE(lowest, 0.04 + 0.1 - 1e-9) << name;
+    EXPECT_NEAR(r.wake.gap, lowest - 0.04, 1e-12) << name;
+    if (d.y() != 0.0) continue;
+    // The trailing-edge node nearest mid-span, its upper offset (the farthest wake vertex above it
+    // in the layer's first cell row), the split's interfaces between them and 1.5 downstream.
+    double row = 1e300;
+    for (const Eigen::Vector3d& x : wake)
+      if (std::abs(x.x() - 1.0) < 1e-9 && std::abs(x.y()) < 1e-9 && std::abs(x.z() - 0.5) < std::abs(row - 0.5)) row = x.z();
+    const Eigen::Vector3d a(1.0, 0.0, row);
+    Eigen::Vector3d top = a;
+    for (const Eigen::Vector3d& x : wake)
+      if (std::abs(x.z() - row) < 1e-4 && x.x() < 1.0 + 0.04 && x.y() > top.y()) top = x;
+    EXPECT_NEAR((top - a).norm(), 0.05, 1e-6) << name;
+    const std::vector<double> at_te = gaps_on_segment(wake, a, top);
+    ASSERT_EQ(at_te.size(), 4u) << name;
+    for (std::size_t k = 1; k < at_te.size(); ++k) EXPECT_NEAR(at_te[k] / at_te[k - 1], 2.0, 1e-6) << k;
+    const Eigen::Vector3d far(1.5, 0.0, 0.0);
+    const std::vector<double> at_end = gaps_on_segment(wake, a + far, top + far);
+    ASSERT_EQ(at_end.size(), 4u) << name;
+    for (std::size_t k = 1; k < at_end.size(); ++k) EXPECT_NEAR(at_end[k] / at_end[k - 1], 1.3, 1e-6) << k;
+  }
+  if (!backends::default_registry().available("occ")) GTEST_SKIP() << "no OCC backend in this build";
+  expect_same_mesh(run_h("sharp_analytic", {"geometry.naca.te=sharp", "boundary_layer.layers=3"}),
+                   run_h("sharp_occ", {"geometry.naca.te=sharp", "geometry.backend=occ", "boundary_layer.layers=3"}));
+}
+
+// Widening at incidence: mid-span, the block's cross-flow thickness (across the sheet, the plane
+// through the trailing edge and the wake direction) grows by 2 length tan(widening) from the
+// trailing edge to the far end (measured on the mesh's wake vertices of one trailing-edge row).
+TEST(HTypeEndToEnd, WideningAtIncidenceGrowsTheCrossFlowThickness) {
+  const Eigen::Vector3d d = Eigen::Vector3d(0.9848, 0.1736, 0.0).normalized();
+  const RunResult r = run_h("widening", {"wake.direction=[0.9848, 0.1736, 0.0]", "wake.widening=10"});
+  expect_valid_conforming(r, "widening");
+  const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
+  double row = 1e300;
+  for (const Eigen::Vector3d& x : wake)
+    if (std::abs(x.x() - 1.0) < 1e-9 && std::abs(x.z() - 0.5) < std::abs(row - 0.5)) row = x.z();
+  const Eigen::Vector3d te(1.0, 0.0, row), normal(-d.y(), d.x(), 0.0);
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};  // across the sheet: [0] at the trailing edge, [1] at the far end
+  for (const Eigen::Vector3d& x : wake) {
+    if (std::abs(x.z() - row) > 1e-4) continue;  // the row's offsets (their normals lean a little spanwise)
+    const double along = (x - te).dot(d), across = (x - te).dot(normal);
+    const int end = along < 0.03 ? 0 : along > 1.5 - 0.15 ? 1 : -1;
+    if (end < 0) continue;
+    lo[end] = std::min(lo[end], across), hi[end] = std::max(hi[end], across);
+  }
+  ASSERT_LT(lo[1], hi[1]) << row;
+  EXPECT_NEAR((hi[1] - lo[1]) - (hi[0] - lo[0]), 2.0 * 1.5 * std::tan(10.0 * 3.14159265358979323846 / 180.0), 1e-6);
+}
+
 // Bad H-type input: a BadInput RunError naming the key and value, and no file written.
 TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
@@ -215,9 +327,12 @@ TEST(HTypeEndToEnd, BadInputNamesTheKeyAndWritesNothing) {
       {{"wake.direction=[-1.0, 0.0, 0.0]"}, {"wake.direction = [-1, 0, 0]", "upstream"}},
       {{"wake.direction=[1.0, 0.0, -0.5]"}, {"wake.direction = [1, 0, -0.5]", "into the wall"}},
       {{"wake.direction=[0.02, 1.0, 0.0]"}, {"wake.direction = [0.02, 1, 0]", "inverted"}},
-      // Widening at incidence twists the block's outer faces at the tip beyond what a pyramid stands on.
-      {{"wake.widening=30", "wake.direction=[1.0, 0.6, 0.0]"}, {"wake.widening = 30", "the wake block folds"}},
-      {{"geometry.naca.te=sharp"}, {"wake.te_base = \"auto\"", "sharp"}},
+      // Steeply inclined and widened by 44 degrees, the first wake hexes turn inside out.
+      {{"wake.widening=44", "wake.direction=[0.5, 1.0, 0.0]", "wake.length=0.8"}, {"wake.widening = 44", "the block folds"}},
+      // A spanwise ratio line gives the sharp edge's root and strip top two ratios: the wedge takes one.
+      {{"geometry.naca.te=sharp", "boundary_layer.layers=3", "boundary_layer.ratio_line=[0, 0, 0, 0, 0, 3]",
+        "boundary_layer.ratio_end=1.0"},
+       {"ratio differs", "ratio_line"}},
   };
   for (const auto& [overrides, expected] : cases) {
     Config c = parse_config(kCoarseH, "h.toml", {}, overrides);

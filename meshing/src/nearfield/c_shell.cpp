@@ -140,17 +140,81 @@ std::vector<int> root_loop(const cad::Model& model, const BodyMesh& body, const 
   return loop;
 }
 
-// The body without the triangles of `bare` (same nodes): what the wing layer is built on.
-BodyMesh without_surface(const BodyMesh& body, int bare) {
+// The body without its bare triangles (same nodes): what the wing layer is built on.
+BodyMesh without_bare(const BodyMesh& body, const std::vector<char>& bare) {
   BodyMesh layer = body;
   layer.triangles.clear();
   layer.triangle_surface.clear();
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
-    if (body.triangle_surface[t] != bare) {
+    if (!bare[t]) {
       layer.triangles.push_back(body.triangles[t]);
       layer.triangle_surface.push_back(body.triangle_surface[t]);
     }
   return layer;
+}
+
+// A sharp trailing edge `curve`: its inner nodes (on the curve, the strip top on the root loop
+// included: the junction gives it one halo per side) and its end node (the tip vertex).
+struct CrackNodes {
+  std::vector<char> inner, end;  // [body nodes]
+};
+
+CrackNodes crack_nodes(const cad::Model& model, const BodyMesh& body, int curve, const std::vector<int>& loop) {
+  CrackNodes c{std::vector<char>(body.num_nodes(), 0), std::vector<char>(body.num_nodes(), 0)};
+  if (curve < 0) return c;
+  std::vector<char> on_loop(body.num_nodes(), 0);
+  for (int r : loop) on_loop[r] = 1;
+  const std::array<int, 2> ends = model.curve_vertices(curve);
+  for (int v = 0; v < body.num_nodes(); ++v) {
+    const CadAttachment& a = body.cad[v];
+    if (a.kind == CadAttachment::Curve && a.entity == curve) c.inner[v] = 1;
+    if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1]) && !on_loop[v]) c.end[v] = 1;
+  }
+  return c;
+}
+
+// The triangles touching the crack's tip end stay bare: around an end node with one offset the two
+// sides' rear interfaces would close to a zero-angle wedge (they share the end's edge and its
+// offset: no element fills that, no pyramid stands in it), so the crack ends where the layer does.
+std::vector<char> bare_triangles(const BodyMesh& body, int bare_surface, const CrackNodes& crack) {
+  std::vector<char> bare(body.triangles.size(), 0);
+  for (std::size_t t = 0; t < body.triangles.size(); ++t) {
+    bare[t] = body.triangle_surface[t] == bare_surface;
+    for (int v : body.triangles[t]) bare[t] |= crack.end[v];
+  }
+  return bare;
+}
+
+// The layer cracked open along the crack's inner nodes: each gets a copy (appended after the body's
+// nodes) used by the triangles of the larger of its two surfaces, so each side has its own normal
+// and offset there. copy_of[k]: the body node of layer node (body node count + k).
+struct CrackedLayer {
+  BodyMesh layer;
+  std::vector<int> copy_of;
+};
+
+CrackedLayer crack_open(const BodyMesh& layer, const CrackNodes& crack) {
+  CrackedLayer out{layer, {}};
+  int second = -1;
+  for (std::size_t t = 0; t < layer.triangles.size(); ++t)
+    for (int v : layer.triangles[t])
+      if (crack.inner[v]) second = std::max(second, layer.triangle_surface[t]);
+  std::map<int, int> copy;
+  for (std::size_t t = 0; t < layer.triangles.size(); ++t) {
+    if (layer.triangle_surface[t] != second) continue;
+    for (int& v : out.layer.triangles[t]) {
+      if (!crack.inner[v]) continue;
+      auto [it, fresh] = copy.emplace(v, out.layer.num_nodes());
+      if (fresh) {
+        out.layer.points.push_back(layer.points[v]);
+        out.layer.cad.push_back(layer.cad[v]);
+        out.layer.node_surface.push_back(second);
+        out.copy_of.push_back(v);
+      }
+      v = it->second;
+    }
+  }
+  return out;
 }
 
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
@@ -308,7 +372,7 @@ namespace detail {
 
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface) {
+                                   int bare_surface, int crack_curve) {
   detail::check_shell_params(model, roles, params);
   check_junction_params(model, roles, junction, wall_thickness);
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
@@ -334,33 +398,80 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
         (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
     return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
   };
+  // The crack's root node (a sharp trailing edge's): one halo per side, each over its own root
+  // segment's outward direction (side 0: the segment into it, side 1: the one out of it).
+  int fan = -1;
+  if (crack_curve >= 0) {
+    const std::array<int, 2> ends = model.curve_vertices(crack_curve);
+    for (int i = 0; i < n; ++i) {
+      const CadAttachment& a = body.cad[loop[i]];
+      if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1])) fan = i;
+    }
+  }
   std::vector<JunctionNode> nodes(n);
+  JunctionNode fan_side1;
   for (int i = 0; i < n; ++i) {
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
+    if (i == fan) {
+      nodes[i] = place_junction_node(model, roles, root_surface, body, r, outward(prev, r), wall, delta_wing, delta_wall);
+      fan_side1 = place_junction_node(model, roles, root_surface, body, r, outward(r, next), wall, delta_wing, delta_wall);
+      continue;
+    }
     nodes[i] = place_junction_node(model, roles, root_surface, body, r,
                                    (outward(prev, r) + outward(r, next)).normalized(), wall, delta_wing, delta_wall);
+  }
+  // [sides] the surface of the fan node's root segment on each side
+  std::array<int, 2> fan_surface{-1, -1};
+  if (fan >= 0) {
+    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({loop[(fan + n - 1) % n], loop[fan]})];
+    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({loop[fan], loop[(fan + 1) % n]})];
   }
   std::vector<CadAttachment> root_cad(n);
   for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
 
   const auto [strip, tip] = lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
 
-  // The wing layer on the lifted mesh (without the bare surface, whose own nodes get no offset:
-  // pinned where they are), the strip tops' offsets pinned at the halo.
-  const BodyMesh layer = bare_surface >= 0 ? without_surface(body, bare_surface) : body;
-  const auto neighbours = node_neighbours(layer);
+  // The wing layer on the lifted mesh (without the bare triangles, whose own nodes get no offset:
+  // pinned where they are; cracked along the crack curve), the strip tops' offsets pinned at the halo.
+  const CrackNodes crack = crack_nodes(model, body, crack_curve, loop);
+  const std::vector<char> bare = bare_triangles(body, bare_surface, crack);
+  const CrackedLayer cracked = crack_open(without_bare(body, bare), crack);
+  const BodyMesh& layer = cracked.layer;
+  const int layer_count = layer.num_nodes();
+  auto neighbours = node_neighbours(layer);
+  for (std::size_t k = 0; k < cracked.copy_of.size(); ++k) {  // the two sides still crowd each other
+    neighbours[count + k].push_back(cracked.copy_of[k]);
+    neighbours[cracked.copy_of[k]].push_back(count + static_cast<int>(k));
+  }
   NormalOptions normal_options;
   normal_options.smoothing_passes = params.normal_smoothing_passes;
-  std::vector<Vec3> normals = node_normals(layer, std::vector<Vec3>(count, Vec3::Zero()), normal_options);
+  std::vector<Vec3> normals = node_normals(layer, std::vector<Vec3>(layer_count, Vec3::Zero()), normal_options);
   detail::OffsetConstraints constraints;
-  constraints.pinned.assign(count, 0);
-  constraints.pinned_outer.assign(count, Vec3::Zero());
-  for (int i = 0; i < count; ++i)
-    if (neighbours[i].empty()) constraints.pinned[i] = 1, constraints.pinned_outer[i] = body.points[i], normals[i] = Vec3::UnitX();
+  constraints.pinned.assign(layer_count, 0);
+  constraints.pinned_outer.assign(layer_count, Vec3::Zero());
+  for (int i = 0; i < layer_count; ++i)
+    if (neighbours[i].empty()) constraints.pinned[i] = 1, constraints.pinned_outer[i] = layer.points[i], normals[i] = Vec3::UnitX();
   for (int i = 0; i < n; ++i) {
     constraints.pinned[loop[i]] = 1;
     constraints.pinned_outer[loop[i]] = nodes[i].halo;
     normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
+  }
+  // The fan node's layer node on each side: itself, or its copy on the side the crack gave copies.
+  std::array<int, 2> fan_layer{-1, -1};
+  if (fan >= 0) {
+    const int copy = static_cast<int>(std::find(cracked.copy_of.begin(), cracked.copy_of.end(), loop[fan]) -
+                                      cracked.copy_of.begin());
+    if (copy == static_cast<int>(cracked.copy_of.size()) || fan_surface[0] == fan_surface[1])
+      throw NearFieldError("near field: the sharp trailing edge's root at " + point_label(body.points[loop[fan]]) +
+                           " does not part two body surfaces");
+    const int copied_surface = layer.node_surface[count + copy];
+    for (int side : {0, 1}) {
+      fan_layer[side] = fan_surface[side] == copied_surface ? count + copy : loop[fan];
+      const JunctionNode& j = side == 0 ? nodes[fan] : fan_side1;
+      constraints.pinned[fan_layer[side]] = 1;
+      constraints.pinned_outer[fan_layer[side]] = j.halo;
+      normals[fan_layer[side]] = (j.halo - nodes[fan].strip_top).normalized();
+    }
   }
   const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
                                                                 loop, root_cad, roles.wall_surface, delta_wall);
@@ -373,19 +484,22 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   const int layer_region = m.region_index("wing_layer"), junction_region = m.region_index("junction");
   for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
   const auto offset = static_cast<NodeId>(count);
-  for (int i = 0; i < count; ++i) m.add_node(offsets.outer[i]);
+  for (int i = 0; i < layer_count; ++i) m.add_node(offsets.outer[i]);  // layer node i's offset: i + offset
   auto id = [](int v) { return static_cast<NodeId>(v); };
-  for (std::size_t t = 0; t < body.triangles.size(); ++t) {
-    if (body.triangle_surface[t] == bare_surface) continue;
-    const auto& v = body.triangles[t];
-    m.add_element(ho::Shape::Prism,
-                  {id(v[0]), id(v[1]), id(v[2]), id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset},
+  shell.layer_body.resize(layer_count);
+  for (int i = 0; i < layer_count; ++i) shell.layer_body[i] = id(i < count ? i : cracked.copy_of[i - count]);
+  for (std::size_t t = 0; t < layer.triangles.size(); ++t) {
+    const auto& l = layer.triangles[t];
+    const std::array<NodeId, 3> v{shell.layer_body[l[0]], shell.layer_body[l[1]], shell.layer_body[l[2]]};
+    m.add_element(ho::Shape::Prism, {v[0], v[1], v[2], id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset},
                   layer_region);
     field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
-    field.element_surface.push_back(body.triangle_surface[t]);
-    m.add_boundary_face("wing", ho::Shape::Triangle, {id(v[0]), id(v[2]), id(v[1])});
-    field.skin.push_back({{id(v[0]) + offset, id(v[1]) + offset, id(v[2]) + offset, mesh::kNoNode}, 3});
+    field.element_surface.push_back(layer.triangle_surface[t]);
+    m.add_boundary_face("wing", ho::Shape::Triangle, {v[0], v[2], v[1]});
+    field.skin.push_back({{id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset, mesh::kNoNode}, 3});
   }
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    if (bare[t] && body.triangle_surface[t] != bare_surface) shell.bare.push_back(body.triangles[t]);
 
   // Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a; a -> b along the loop or against it, whichever
   // gives a positive volume.
@@ -394,9 +508,14 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     root_id[i] = m.add_node(nodes[i].root, root_cad[i]);
     foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
   }
+  // The fan node's foot and halo on the side of the segment to `other`.
+  const NodeId fan_foot1 = fan >= 0 ? m.add_node(fan_side1.wall_foot, fan_side1.wall_foot_cad) : mesh::kNoNode;
+  auto side_of = [&](int other) { return other == (fan + n - 1) % n ? 0 : 1; };
+  auto foot = [&](int i, int other) { return i == fan && side_of(other) == 1 ? fan_foot1 : foot_id[i]; };
+  auto top = [&](int i, int other) { return id(i == fan ? fan_layer[side_of(other)] : loop[i]) + offset; };
   auto hex_of = [&](int a, int b) {
-    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]),          id(loop[a]),
-                                 foot_id[a], foot_id[b], id(loop[b]) + offset, id(loop[a]) + offset};
+    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]), id(loop[a]),
+                                 foot(a, b),  foot(b, a),  top(b, a),   top(a, b)};
   };
   auto corners = [&](const std::array<NodeId, 8>& h) {
     std::array<Vec3, 8> x;
@@ -423,16 +542,23 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   }
   field.thickness_min = params.thickness;
   field.thickness_max = 0.0;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < layer_count; ++i) {
     if (neighbours[i].empty()) continue;
     field.thickness_min = std::min(field.thickness_min, offsets.thickness[i]);
     field.thickness_max = std::max(field.thickness_max, offsets.thickness[i]);
   }
   shell.body = std::move(body);
+  shell.layer = layer;
+  shell.crack = crack.inner;
   shell.offset = offset;
   shell.chain = loop;
   shell.root_id = root_id;
   shell.foot_id = foot_id;
+  if (fan >= 0) {
+    shell.fan.index = fan;
+    shell.fan.foot = {foot_id[fan], fan_foot1};
+    shell.fan.top = {id(fan_layer[0]) + offset, id(fan_layer[1]) + offset};
+  }
   shell.wall = wall;
   shell.strip = strip;
   shell.tip = tip;
@@ -481,7 +607,8 @@ Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, dou
 NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
   detail::JunctionShell shell =
-      detail::build_junction_shell(model, meshes, roles, params, junction, wall_thickness, /*bare_surface=*/-1);
+      detail::build_junction_shell(model, meshes, roles, params, junction, wall_thickness, /*bare_surface=*/-1,
+                                   /*crack_curve=*/-1);
   NearField& field = shell.field;
   for (std::size_t i = 0; i < shell.chain.size(); ++i) {
     field.footprint.push_back(shell.foot_id[i]);

@@ -87,6 +87,29 @@ std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>> lay
   return edges;
 }
 
+// A sharp trailing edge: of the curves between two body surfaces that leave the wall (a vertex on
+// a body-wall curve), the one whose wall vertex lies farthest downstream along `d` (the leading
+// edge is the other one of a wing's section); -1 when there is none.
+int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const Vec3& d) {
+  auto is_body = [&](int s) { return std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), s) > 0; };
+  auto on_wall = [&](int vertex) {
+    for (int c : model.curves_of_vertex(vertex))
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c))
+        if (u.surface == roles.wall_surface) return true;
+    return false;
+  };
+  int best = -1;
+  double farthest = -1e300;
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (uses.size() != 2 || !is_body(uses[0].surface) || !is_body(uses[1].surface) || uses[0].surface == uses[1].surface)
+      continue;
+    for (int v : model.curve_vertices(c))
+      if (on_wall(v) && model.vertex(v).point.dot(d) > farthest) farthest = model.vertex(v).point.dot(d), best = c;
+  }
+  return best;
+}
+
 }  // namespace
 
 double wake_fraction(const WakeBlock& wake, const Eigen::Vector3d& x) {
@@ -124,7 +147,7 @@ const params::Table<WakeParams>& wake_keys() {
       params::real("gap", &WakeParams::gap, "> 0", "H: height of the wake block's root above the wall layer's top"),
       params::real("ratio_end", &WakeParams::ratio_end, ">= 1",
                    "H: the layer ratio at the wake's far end (r at the trailing edge, linear in between)"),
-      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end"),
+      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end, or a sharp trailing edge"),
   };
   return table;
 }
@@ -137,38 +160,44 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   if (!(d0.norm() > 0.0)) fail("wake.direction = " + direction_label(wake) + ": expected a non-zero vector");
   const Vec3 d = d0.normalized();
   if (!(d.x() > 0.0)) fail("wake.direction = " + direction_label(wake) + " points upstream (x <= 0)");
+  // The trailing edge: squared-off (its base surface, meshed with structured quads) or, with
+  // te_base "auto" and no base found, sharp (a curve between two body surfaces).
   const auto te_found = model.find_surface(wake.te_base);
-  if (!te_found || !std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *te_found))
+  const bool blunt = te_found && std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *te_found) > 0;
+  const int te = blunt ? *te_found : -1;
+  const int crack = !blunt && wake.te_base == "auto" ? sharp_trailing_edge(model, roles, d) : -1;
+  if (!blunt && crack < 0)
     fail("wake.te_base = \"" + wake.te_base +
-         "\": no such trailing-edge base among the body surfaces; the H-type near field sweeps the wake from a "
-         "squared-off trailing edge (a sharp trailing edge is not supported yet: use topology \"C\")");
-  const int te = *te_found;
-  const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
-  if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
-    fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
+         "\": no such trailing-edge base among the body surfaces" +
+         (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
+                                 : "") +
+         "; the H-type near field sweeps the wake from the trailing edge");
+  if (blunt) {
+    const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
+    if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
+      fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
+  }
 
-  detail::JunctionShell js =
-      detail::build_junction_shell(model, base_as_triangles(meshes, te), roles, params, junction, wall_thickness, te);
+  detail::JunctionShell js = detail::build_junction_shell(model, blunt ? base_as_triangles(meshes, te) : meshes, roles,
+                                                          params, junction, wall_thickness, te, crack);
   if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
   mesh::Mesh& m = field.mesh;
   for (std::size_t i = 0; i < js.chain.size(); ++i) {
+    const bool fan = static_cast<int>(i) == js.fan.index;  // a sharp trailing edge's root: two feet
     field.footprint.push_back(js.foot_id[i]);
-    field.footprint_top.push_back(static_cast<NodeId>(js.chain[i]) + js.offset);
+    field.footprint_top.push_back(fan ? js.fan.top[0] : static_cast<NodeId>(js.chain[i]) + js.offset);
+    if (fan) field.footprint.push_back(js.fan.foot[1]), field.footprint_top.push_back(js.fan.top[1]);
   }
 
-  // The base's quads (body node ids, lifted) and the layer's open edges off the root (its rear interfaces).
+  // The base's quads (body node ids, lifted); the trailing-edge nodes (the base's, or the sharp
+  // trailing edge's inner ones).
   std::vector<std::array<NodeId, 4>> base;
-  BodyMesh layer = js.body;
-  layer.triangles.clear();
-  layer.triangle_surface.clear();
   std::vector<std::array<int, 3>> pair;
   for (std::size_t t = 0; t < js.body.triangles.size(); ++t) {
+    if (js.body.triangle_surface[t] != te) continue;
     const auto& v = js.body.triangles[t];
-    if (js.body.triangle_surface[t] != te) {
-      layer.triangles.push_back(v);
-      layer.triangle_surface.push_back(js.body.triangle_surface[t]);
-    } else if (pair.empty()) {
+    if (pair.empty()) {
       pair.push_back(v);
     } else {
       base.push_back({static_cast<NodeId>(pair[0][0]), static_cast<NodeId>(pair[0][1]), static_cast<NodeId>(pair[0][2]),
@@ -176,16 +205,19 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
       pair.clear();
     }
   }
+  std::vector<NodeId> te_nodes;
+  for (const auto& q : base) te_nodes.insert(te_nodes.end(), q.begin(), q.end());
+  for (int v = 0; v < js.body.num_nodes(); ++v)
+    if (js.crack[v]) te_nodes.push_back(static_cast<NodeId>(v));
 
   // The cut row: the lowest trailing-edge row at least `gap` above the wall layer's top.
   const double tolerance = 1e-6 * std::max(1.0, js.tip);
   const double wanted = wall_thickness + wake.gap;
   double cut = 1e300;
-  for (const auto& q : base)
-    for (NodeId v : q) {
-      const double h = js.wall.height(m.node(v));
-      if (h >= wanted - tolerance && h > js.strip + tolerance) cut = std::min(cut, h);
-    }
+  for (NodeId v : te_nodes) {
+    const double h = js.wall.height(m.node(v));
+    if (h >= wanted - tolerance && h > js.strip + tolerance) cut = std::min(cut, h);
+  }
   if (!(cut < js.tip - tolerance))
     fail("wake.gap = " + number_label(wake.gap) + ": the wake block's root would stand at " + number_label(wanted) +
          " above the wall, leaving no trailing-edge row below the wing's tip (" + number_label(js.tip) +
@@ -199,22 +231,29 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     else exposed_base.push_back(q);
   }
   const std::set<int> chain(js.chain.begin(), js.chain.end());
-  for (const auto& [a, b] : open_edges(layer)) {
-    if (chain.count(a) && chain.count(b)) continue;  // the root row over the junction
-    const NodeId na = static_cast<NodeId>(a), nb = static_cast<NodeId>(b);
-    if (above_cut(na) && above_cut(nb)) section.push_back({{na, nb, nb + js.offset, na + js.offset}, true});
+  for (const auto& [a, b] : open_edges(js.layer)) {
+    const NodeId na = js.layer_body[a], nb = js.layer_body[b];
+    if (chain.count(static_cast<int>(na)) && chain.count(static_cast<int>(nb))) continue;  // the root row over the junction
+    if (crack >= 0 && !(js.crack[na] && js.crack[nb])) continue;  // sharp: the rims of the bare triangles
+    if (above_cut(na) && above_cut(nb))
+      section.push_back({{na, nb, static_cast<NodeId>(b) + js.offset, static_cast<NodeId>(a) + js.offset}, true});
   }
   if (section.empty()) fail("no trailing edge found: the wing layer has no rear interface above the cut");
 
-  // The sweep: node p at station k is p + s_k d, the layer offsets also moved away from the sheet.
+  // The sweep: node p at station k is p + s_k d, the layer offsets also moved away from the sheet
+  // by tan(widening) per unit length across d, within the trailing edge's cross-section (across
+  // the streamwise axis x, as the base and the rear interfaces): moved across d instead, at
+  // incidence the two sides' offsets (and the tip corners') would leave that plane by opposite
+  // amounts, warping the block's outflow and tip faces until they fold.
   const std::vector<double> s = stations(wake);
   const double spread = std::tan(wake.widening_deg * kPi / 180.0);
-  std::map<NodeId, Vec3> away;  // offset node -> unit direction away from the sheet, across d
+  std::map<NodeId, Vec3> away;  // offset node -> direction in the cross-section, of unit part across d
   for (const Section& c : section)
     if (c.layer)
       for (int k : {0, 1}) {
-        const Vec3 across = m.node(c.q[3 - k]) - m.node(c.q[k]);
-        away[c.q[3 - k]] = (across - across.dot(d) * d).normalized();
+        Vec3 across = m.node(c.q[3 - k]) - m.node(c.q[k]);
+        across = (across - across.x() * Vec3::UnitX()).normalized();
+        away[c.q[3 - k]] = across / (across - across.dot(d) * d).norm();
       }
   const Vec3 inner = box.lo + 1e-3 * (box.hi - box.lo), outer = box.hi - 1e-3 * (box.hi - box.lo);
   std::map<NodeId, std::vector<NodeId>> swept;
@@ -251,11 +290,14 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
              " would be inverted (the block folds); use a smaller widening or a direction closer to the chord");
       m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), wake_region);
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
-      field.element_surface.push_back(te);
+      field.element_surface.push_back(te);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
     }
   }
   for (const auto& q : exposed_base) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {q[0], q[3], q[2], q[1]});
+  for (const auto& t : js.bare)
+    m.add_boundary_face("wing", ho::Shape::Triangle,
+                        {static_cast<NodeId>(t[0]), static_cast<NodeId>(t[2]), static_cast<NodeId>(t[1])});
 
   WakeBlock& w = field.wake;
   w.direction = d;
@@ -267,13 +309,86 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   w.gap = lowest - wall_thickness;
   for (const Section& c : section)  // the trailing-edge nodes: rear interfaces' body side, base quads
     for (int k = 0; k < (c.layer ? 2 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
+  // A sharp edge's nodes below the cut and its root R too: the ratio there is the trailing edge's
+  // own (r), at R and W alike. The junction hexes beside the fan interpolate their layer
+  // interfaces between R's and W's along R-W, the fan's pieces (cut in advance, straight from R's
+  // cut to W's) only match that when both are the same.
+  if (js.fan.index >= 0) {
+    w.origins.push_back(m.node(js.root_id[js.fan.index]));
+    for (int v = 0; v < js.body.num_nodes(); ++v)
+      if (js.crack[v]) w.origins.push_back(m.node(static_cast<NodeId>(v)));
+  }
   const Vec3 span = js.wall.normal - js.wall.normal.dot(d) * d;
   w.span_axis = span.norm() > 1e-6 ? Vec3(span.normalized()) : d.unitOrthogonal();
   std::sort(w.origins.begin(), w.origins.end(),
             [&](const Vec3& p, const Vec3& q) { return p.dot(w.span_axis) < q.dot(w.span_axis); });
 
+  // A sharp trailing edge's root: the wedge between its two halos (root R, strip top W, feet L_0
+  // L_1, halos H_0 H_1) is a prism R L_0 L_1 / W H_0 H_1 standing on the wall, split by the wall
+  // layer's split along R-W (a stack of the wall family). Across, the junction hexes beside it
+  // split their faces R-W-H-L at the wing layer's interfaces, a fan from R the split cannot make:
+  // the prism is given here already cut there (an inner prism and bands of prisms around it, at
+  // the interfaces the split will use: `fractions`), and the weld after the split joins their
+  // nodes to the hexes' (as the far field's pre-cut skin quads).
+  // The skin's and the fan's nodes at the split's interfaces on layer edges: (bottom vertex, top
+  // vertex, k) -> node (a sharp trailing edge's nodes have two layer edges, one per side).
+  std::map<std::tuple<NodeId, NodeId, int>, NodeId> interface_node;
+  std::vector<std::set<NodeId>> fan_planes;  // nodes on each face R-W-H-L the fan shares with a hex
+  if (js.fan.index >= 0) {
+    const NodeId r = js.root_id[js.fan.index], top = static_cast<NodeId>(js.chain[js.fan.index]);
+    std::vector<double> at_root{0.0, 1.0}, at_top{0.0, 1.0};
+    if (fractions) at_root = fractions(m.node(r), field.wake), at_top = fractions(m.node(top), field.wake);
+    for (std::size_t k = 0; k < at_root.size(); ++k)
+      if (std::abs(at_root[k] - at_top[k]) > 1e-12)
+        fail("the wing layer's ratio differs between the sharp trailing edge's root " + point_label(m.node(r)) +
+             " and the top of its root strip " + point_label(m.node(top)) +
+             " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
+    std::array<std::vector<NodeId>, 2> low, high;  // per side: the wall and the top rows from R, W
+    for (int side : {0, 1}) {
+      const NodeId foot = js.fan.foot[side], halo = js.fan.top[side];
+      low[side] = {r}, high[side] = {top};
+      for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
+        low[side].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
+        high[side].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
+        interface_node[{r, foot, static_cast<int>(k)}] = low[side].back();
+        interface_node[{top, halo, static_cast<int>(k)}] = high[side].back();
+      }
+      low[side].push_back(foot), high[side].push_back(halo);
+      fan_planes.emplace_back(low[side].begin(), low[side].end());
+      fan_planes.back().insert(high[side].begin(), high[side].end());
+    }
+    const int junction_region = m.region_index("junction");
+    auto add_piece = [&](ho::Shape shape, std::vector<NodeId> v) {
+      const int half = static_cast<int>(v.size()) / 2;
+      Eigen::MatrixX3d x(v.size(), 3);
+      for (std::size_t k = 0; k < v.size(); ++k) x.row(k) = m.node(v[k]).transpose();
+      if (!ho::certify_jacobian(shape, 1, ho::NodeSet::Equispaced, x).valid) {  // the other way round
+        std::reverse(v.begin() + 1, v.begin() + half);
+        std::reverse(v.begin() + half + 1, v.end());
+        for (std::size_t k = 0; k < v.size(); ++k) x.row(k) = m.node(v[k]).transpose();
+        if (!ho::certify_jacobian(shape, 1, ho::NodeSet::Equispaced, x).valid)
+          fail("the junction's wedge at the sharp trailing edge's root " + point_label(m.node(r)) +
+               " would be inverted");
+      }
+      field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wall}}});
+      field.element_surface.push_back(roles.wall_surface);
+      m.add_element(shape, v, junction_region);
+      if (shape == ho::Shape::Prism) m.add_boundary_face("wall", ho::Shape::Triangle, {v[0], v[2], v[1]});
+      else m.add_boundary_face("wall", ho::Shape::Quadrilateral, {v[0], v[3], v[2], v[1]});
+    };
+    // Each band between two interfaces as two prisms (its diagonal from side 0's inner corner):
+    // the fan opens by nearly 180 degrees, so a band is a sliver whose top, a quad, would carry a
+    // pyramid leaning over the rear interfaces beside it; triangles take tetrahedra.
+    add_piece(ho::Shape::Prism, {r, low[0][1], low[1][1], top, high[0][1], high[1][1]});
+    for (std::size_t k = 1; k + 1 < low[0].size(); ++k) {
+      add_piece(ho::Shape::Prism, {low[0][k], low[0][k + 1], low[1][k + 1], high[0][k], high[0][k + 1], high[1][k + 1]});
+      add_piece(ho::Shape::Prism, {low[0][k], low[1][k + 1], low[1][k], high[0][k], high[1][k + 1], high[1][k]});
+    }
+  }
+
   // The skin: faces used by one element that are not body or wall faces and do not stand on the
-  // footprint (those the wall layer's prisms share), plus the exposed base.
+  // footprint (those the wall layer's prisms share) or on a face the fan shares with a junction
+  // hex, plus the exposed base.
   std::set<NodeId> on_footprint(field.footprint.begin(), field.footprint.end());
   on_footprint.insert(field.footprint_top.begin(), field.footprint_top.end());
   std::map<std::vector<NodeId>, std::pair<int, SkinFace>> uses;
@@ -297,13 +412,18 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   }
   std::vector<SkinFace> skin;
   for (const auto& [k, use] : uses)
-    if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }))
+    if (use.first == 1 && !std::all_of(k.begin(), k.end(), [&](NodeId v) { return on_footprint.count(v) > 0; }) &&
+        std::none_of(fan_planes.begin(), fan_planes.end(), [&](const std::set<NodeId>& plane) {
+          return std::all_of(k.begin(), k.end(), [&](NodeId v) { return plane.count(v) > 0; });
+        }))
       skin.push_back(use.second);
   for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
+  for (const auto& t : js.bare)
+    skin.push_back({{static_cast<NodeId>(t[0]), static_cast<NodeId>(t[1]), static_cast<NodeId>(t[2]), mesh::kNoNode}, 3});
 
   // Skin quads the split will cut, cut already at its interfaces (nodes shared by neighbours).
   const auto edges = layer_edges(field);
-  std::map<std::pair<NodeId, int>, NodeId> interface_node;  // (bottom vertex, k) -> node
+
   auto along = [&](NodeId from, NodeId to) {  // the nodes from -> to on a layer edge
     const auto& [bottom, top, family] = edges.at({std::min(from, to), std::max(from, to)});
     if (family != LayerFamily::Wing)
@@ -313,7 +433,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     for (std::size_t k = 0; k < f.size(); ++k) {
       NodeId id = k == 0 ? bottom : k + 1 == f.size() ? top : mesh::kNoNode;
       if (id == mesh::kNoNode) {
-        auto [it, fresh] = interface_node.emplace(std::make_pair(bottom, static_cast<int>(k)), mesh::kNoNode);
+        auto [it, fresh] = interface_node.emplace(std::make_tuple(bottom, top, static_cast<int>(k)), mesh::kNoNode);
         if (fresh) it->second = m.add_node(m.node(bottom) + f[k] * (m.node(top) - m.node(bottom)));
         id = it->second;
       }

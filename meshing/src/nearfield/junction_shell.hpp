@@ -9,6 +9,7 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/near_field.hpp"
 
+#include <array>
 #include <vector>
 
 namespace semimesh::nearfield::detail {
@@ -23,20 +24,36 @@ struct WallFrame {
 struct JunctionShell {
   NearField field;                   ///< wing prisms, junction hexes, their boundary faces and stacks; no footprint
   BodyMesh body;                     ///< the layer's body mesh, lifted onto the strip
-  mesh::NodeId offset = 0;           ///< body node i is mesh node i, its offset mesh node i + offset
+  BodyMesh layer;                    ///< the prisms' triangles (no bare ones), cracked along the crack curve
+  std::vector<mesh::NodeId> layer_body;  ///< [layer nodes] the body (mesh) node of each: i, or a crack copy's original
+  std::vector<char> crack;           ///< [body nodes] 1: inside the crack curve (one offset per side)
+  std::vector<std::array<int, 3>> bare;  ///< body triangles off the bare surface left without prisms (crack ends)
+  mesh::NodeId offset = 0;           ///< body node i is mesh node i; layer node i's offset is mesh node i + offset
   std::vector<int> chain;            ///< body nodes of the root row (strip tops W), in loop order
   std::vector<mesh::NodeId> root_id; ///< [chain] the root node R on the wall below each
   std::vector<mesh::NodeId> foot_id; ///< [chain] the wall foot L of each halo
+  /// A sharp trailing edge's root (chain[index], -1: none): one wall foot and halo per side, side 0
+  /// that of the root segment into it along the chain, side 1 the one out of it; the junction
+  /// leaves the wedge between them open (see h_shell.cpp's fan).
+  struct Fan {
+    int index = -1;
+    std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};
+  } fan;
   WallFrame wall;
   double strip = 0.0, tip = 0.0;     ///< the lift's strip and tip heights (lift_node)
 };
 
 /// The wing layer and junction on `roles.body_surfaces` (as build_c_shell), no prisms on the
 /// triangles of `bare_surface` (-1: none), whose nodes off the other surfaces get no offset and do
-/// not count in the thickness figures. Throws NearFieldError.
+/// not count in the thickness figures. Along `crack_curve` (-1: none; a sharp trailing edge) the
+/// layer is cracked open: the curve's inner nodes get one offset per side, each along its own
+/// side's normal, so the layer ends there with two rear interfaces; the triangles touching the
+/// curve's tip end stay bare (JunctionShell::bare), so the crack ends on the layer's edge instead of
+/// closing to a zero-angle wedge; at its root the junction gets two halos (JunctionShell::fan).
+/// Throws NearFieldError.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface);
+                                   int bare_surface, int crack_curve);
 
 /// x moved along its CAD entity (a surface or curve) to `target` height above the wall, along the
 /// entity's steepest ascent; updates the attachment.

@@ -2,6 +2,7 @@
 // own normal (measured against the CAD's), the wake block's hexes are valid, continue the layer
 // and stand the gap above the wall layer, and bad wake parameters are refused naming the key.
 #include "semimesh/cad/model.hpp"
+#include "semimesh/ho/element_type.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/nearfield/error.hpp"
@@ -11,7 +12,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 
 namespace semimesh::nearfield {
@@ -24,11 +27,12 @@ struct Built {
   NearField field;
 };
 
-Built build(const WakeParams& wake) {
+Built build(const WakeParams& wake, bool sharp = false) {
   Built b;
   mock_cad::NacaWingParams wing;
   wing.code = "0012";
   wing.span = 1.5;
+  wing.sharp_te = sharp;
   b.model = mock_cad::make_naca_wing(wing);
   surface::SizeParams size;
   size.max_size = 0.4;
@@ -37,11 +41,12 @@ Built build(const WakeParams& wake) {
   size.le_size = 0.04;
   size.te_size = 0.04;
   surface::ModelMeshOptions options;
-  options.structured_surfaces.insert(*b.model->find_surface("te_base"));
+  if (!sharp) options.structured_surfaces.insert(*b.model->find_surface("te_base"));
   const surface::SurfaceMeshes meshes =
       surface::mesh_model_surfaces(*b.model, surface::SizeField(*b.model, size), options);
   BodyRoles roles;
-  for (const std::string name : {"upper", "lower", "te_base", "tip"}) roles.body_surfaces.push_back(*b.model->find_surface(name));
+  for (const std::string name : {"upper", "lower", "te_base", "tip"})
+    if (auto s = b.model->find_surface(name)) roles.body_surfaces.push_back(*s);
   roles.wall_surface = *b.model->find_surface("wall");
   ShellParams shell;
   shell.thickness = 0.05;
@@ -116,6 +121,95 @@ TEST(HShell, WakeHexesAreValidContinueTheLayerAndStandAboveTheGap) {
     if (m.elements()[s.element].region == region) ++layer_hexes;
   EXPECT_GT(layer_hexes, 0);
   EXPECT_LT(layer_hexes, hexes);  // the base's hexes are not split
+}
+
+int curve_named(const cad::Model& model, const std::string& name) {
+  for (int c = 0; c < model.num_curves(); ++c)
+    if (model.curve(c).name() == name) return c;
+  return -1;
+}
+
+// Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own
+// normal (two offsets per curve node), the wake's upper and lower hexes share the swept curve (the
+// wake sheet): every sheet face is a face of exactly two wake hexes, one on each side.
+TEST(HShellSharp, SidesEndWithTheirOwnNormalsAndShareTheWakeSheet) {
+  WakeParams wake = short_wake();
+  wake.te_base = "auto";
+  const Built b = build(wake, /*sharp=*/true);
+  const mesh::Mesh& m = b.field.mesh;
+  const int te = curve_named(*b.model, "trailing_edge");
+  ASSERT_GE(te, 0);
+  const int upper = *b.model->find_surface("upper"), lower = *b.model->find_surface("lower");
+  std::set<mesh::NodeId> upper_tops, lower_tops;
+  int checked = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.shape != ho::Shape::Prism) continue;
+    for (int i = 0; i < 3; ++i) {
+      const mesh::CadAttachment& at = m.cad_attachment(e.vertices[i]);
+      if (at.kind != mesh::CadAttachment::Curve || at.entity != te) continue;
+      const Vec3 a = m.node(e.vertices[i]);
+      if (a.z() < 0.2 || a.z() > 1.3) continue;
+      // the prism's side: where its body triangle's centroid lies
+      const Vec3 c = (m.node(e.vertices[0]) + m.node(e.vertices[1]) + m.node(e.vertices[2])) / 3.0;
+      const int side = c.y() > 0.0 ? upper : lower;
+      const cad::Surface& s = b.model->surface(side);
+      const Vec3 n = s.normal(s.project(a).uv);
+      const Vec3 u = (m.node(e.vertices[i + 3]) - a).normalized();
+      EXPECT_GT(u.dot(n), 0.98) << "at " << a.transpose();
+      (side == upper ? upper_tops : lower_tops).insert(e.vertices[i + 3]);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+  for (mesh::NodeId v : upper_tops) EXPECT_EQ(lower_tops.count(v), 0u) << "one offset shared by both sides";
+
+  // Sheet faces: wake hex faces whose four nodes lie on the trailing edge's sweep (the plane y = 0
+  // for the symmetric wing and the wake along +x).
+  const int region = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "wake") -
+                                      m.region_names().begin());
+  std::map<std::vector<mesh::NodeId>, std::vector<double>> sheet;  // face -> side (mean y) of each hex
+  int hexes = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != region) continue;
+    ++hexes;
+    Eigen::MatrixX3d x(8, 3);
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 8; ++k) x.row(k) = m.node(e.vertices[k]).transpose(), centre += m.node(e.vertices[k]) / 8.0;
+    EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, x).valid);
+    for (const std::vector<int>& f : ho::faces(ho::Shape::Hexahedron)) {
+      std::vector<mesh::NodeId> v;
+      bool on_sheet = true;
+      for (int k : f) v.push_back(e.vertices[k]), on_sheet = on_sheet && std::abs(m.node(e.vertices[k]).y()) < 1e-9;
+      if (!on_sheet) continue;
+      std::sort(v.begin(), v.end());
+      sheet[v].push_back(centre.y());
+    }
+  }
+  EXPECT_EQ(hexes, b.field.wake.hexes);
+  ASSERT_GT(sheet.size(), 0u);
+  EXPECT_EQ(2 * sheet.size(), static_cast<std::size_t>(hexes));  // every hex stands on the sheet
+  for (const auto& [face, sides] : sheet) {
+    ASSERT_EQ(sides.size(), 2u);
+    EXPECT_LT(std::min(sides[0], sides[1]), 0.0);
+    EXPECT_GT(std::max(sides[0], sides[1]), 0.0);
+  }
+  EXPECT_GE(b.field.wake.gap, wake.gap - 1e-12);
+
+  // The root: one halo per side (the footprint one node longer than the root loop), the wedge
+  // between them one valid prism (unsplit layer) in the junction.
+  const int junction = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "junction") -
+                                        m.region_names().begin());
+  int wedges = 0;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.region != junction || e.shape != ho::Shape::Prism) continue;
+    ++wedges;
+    Eigen::MatrixX3d x(6, 3);
+    for (int k = 0; k < 6; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
+    EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Prism, 1, ho::NodeSet::Equispaced, x).valid);
+  }
+  EXPECT_EQ(wedges, 1);
+  EXPECT_EQ(b.field.footprint.size(), static_cast<std::size_t>(b.field.junction_hexes) + 1);
+  EXPECT_EQ(b.field.footprint_top.size(), b.field.footprint.size());
 }
 
 TEST(HShellBadInput, WakeKeysOutOfReachAreNamed) {

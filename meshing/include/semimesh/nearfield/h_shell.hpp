@@ -9,6 +9,17 @@
 //    their own normals (no rounding around it). Each has a rear interface, the quads (a, b, b', a')
 //    over its trailing-edge edges a-b up to its outer edge a'-b' (the tip's layer likewise over the
 //    tip's trailing-edge edge);
+//  - a sharp trailing edge (te_base "auto" and no base: the body-body curve leaving the wall
+//    farthest downstream): the layer is cracked open along the curve, each side's nodes inside it
+//    offset along that side's own normal, so the upper and lower rear interfaces meet on the curve
+//    and their sweeps share the wake sheet (the curve swept). A crack cannot close inside the layer
+//    (the two interfaces would meet at a zero angle along one edge: no element fills that, no
+//    pyramid stands in it), so it ends on the layer's edge: at the tip the triangles touching the
+//    tip vertex stay bare, faced by the far field (the block stops one trailing-edge cell below the
+//    tip); at the root the junction gives the strip top one halo per side and fills the wedge
+//    between them with prisms standing on the wall, cut in advance at the wing layer's split
+//    interfaces (the split cannot fan a prism from its root) and welded to the junction hexes'
+//    split nodes;
 //  - the wake block: the base quads and the rear interfaces above the cut row (the lowest
 //    trailing-edge row at least `gap` above the wall layer's top) are swept along `direction` in
 //    `layers` streamwise cells growing by `growth` up to `length`, the layer offsets moving away
@@ -60,7 +71,8 @@ using LayerFractions = std::function<std::vector<double>(const Eigen::Vector3d& 
 /// Body surface meshes (the trailing-edge base `wake.te_base` meshed with structured quads, the
 /// rest with triangles) -> wing prisms, junction hexes and wake hexes (order 1). `box` bounds the
 /// domain (the far field's box); `fractions` the wing layer's split (see LayerFractions). Throws NearFieldError naming the key and value, or the surface,
-/// when: no trailing-edge base is found among the body surfaces, the direction points upstream
+/// when: no trailing-edge base is found among the body surfaces (nor, for te_base "auto", a sharp
+/// trailing edge), the direction points upstream
 /// (x <= 0) or into the wall, the gap leaves no trailing-edge row below the tip, the wake leaves
 /// the box, a wake hex would be inverted (widening or direction), or the C-type junction fails.
 NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
