@@ -117,7 +117,7 @@ int degenerate_direction(const SurfaceDerivatives& d) {
 
 }  // namespace
 
-SurfaceProjection leave_pole(const Surface& s, const Vec3& x, SurfaceProjection found,
+SurfaceProjection leave_pole(const Surface& s, SurfaceProjection found,
                              const std::function<SurfaceProjection(const Vec2&)>& solve) {
   const SurfaceDerivatives d = s.derivatives(found.uv);
   const int angle = degenerate_direction(d);
@@ -155,7 +155,7 @@ SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) con
       }
   }
   SurfaceProjection out =
-      leave_pole(*this, x, newton_projection(*this, x, uv), [&](const Vec2& start) { return newton_projection(*this, x, start); });
+      leave_pole(*this, newton_projection(*this, x, uv), [&](const Vec2& start) { return newton_projection(*this, x, start); });
   out.inside = contains(out.uv);
   return out;
 }

@@ -56,7 +56,7 @@ cad::SurfaceProjection RevolutionBody::project(const cad::Vec3& x, std::optional
     p.uv.y() -= std::floor(p.uv.y() / kTwoPi) * kTwoPi;
     return p;
   };
-  cad::SurfaceProjection out = cad::leave_pole(*this, x, solve(start), solve);
+  cad::SurfaceProjection out = cad::leave_pole(*this, solve(start), solve);
   out.inside = contains(out.uv);
   return out;
 }
