@@ -1,9 +1,11 @@
 #include "init_from_cad.hpp"
 
 #include "semimesh/surface/cad_roles.hpp"
+#include "semimesh/surface/shell_size_limit.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 
 namespace semimesh::app {
@@ -58,6 +60,19 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   out.summary = fmt::format("Written by `semimesh init --cad {}`: the roles found in the file, and the lengths of the\n"
                             "paper's case (chord 1) times the body's root chord {:.6g} {}.\n",
                             cad_path, roles.chord, model->units());
+  // A curved body under the shell's straight outer face: where the body turns faster than the
+  // scaled sizes allow (a small trailing-edge or tip radius), `run` refuses min_size. Take what
+  // its shell limit asks for there, with 5% to spare (the same computation `run` makes).
+  if (c.highorder.order > 1) {
+    const double smallest = surface::smallest_shell_size(
+        *model, {c.nearfield.shell.thickness, roles.body}, c.sizing.size.max_size);
+    if (smallest < c.sizing.size.min_size) {
+      c.sizing.size.min_size = round_to_4_digits(0.95 * smallest);
+      out.summary += fmt::format("sizing.min_size = {:.4g}: what the shell of thickness {:.4g} needs where the body "
+                                 "turns fastest (the chord-scaled default would be refused).\n",
+                                 c.sizing.size.min_size, c.nearfield.shell.thickness);
+    }
+  }
   out.summary += surface::describe_cad_roles(*model, roles);
   return out;
 }

@@ -9,6 +9,7 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/layer_keys.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/pole_chart.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/curve_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/geometric_error.cpp

@@ -5,7 +5,10 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace semimesh::cad {
@@ -53,28 +56,27 @@ PrincipalCurvatures Surface::curvatures(const Vec2& uv) const {
   return out;
 }
 
-SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) const {
-  const auto box = bounds();
-  auto clamp = [&](Vec2 uv) { return Vec2(box[0].clamp(uv.x()), box[1].clamp(uv.y())); };
-  Vec2 uv;
-  if (guess) {
-    uv = clamp(*guess);
-  } else {
-    constexpr int kSamples = 24;
-    double best = std::numeric_limits<double>::max();
-    for (int i = 0; i <= kSamples; ++i)
-      for (int j = 0; j <= kSamples; ++j) {
-        Vec2 s(box[0].lo + box[0].length() * i / kSamples, box[1].lo + box[1].length() * j / kSamples);
-        double d = (point(s) - x).squaredNorm();
-        if (d < best) { best = d; uv = s; }
-      }
-  }
-  // Newton on the gradient of |S - x|^2 / 2, Gauss-Newton when the Hessian is indefinite,
-  // with a halving line search so the distance never grows.
+namespace {
+
+/// Newton on the gradient of |S - x|^2 / 2 from uv, Gauss-Newton when the Hessian is indefinite,
+/// with a halving line search so the distance never grows; uv stays in the parameter box.
+/// A parameter whose box spans a whole period wraps round instead of stopping at the box (a seam
+/// is no boundary); the result is moved back into the box.
+SurfaceProjection newton_projection(const Surface& s, const Vec3& x, Vec2 uv) {
+  const auto box = s.bounds();
+  std::array<std::optional<double>, 2> wraps;
+  for (int d = 0; d < 2; ++d)
+    if (const auto period = s.period(d); period && box[d].length() >= *period * (1.0 - 1e-9)) wraps[d] = period;
+  auto clamp = [&](Vec2 p) {
+    for (int d = 0; d < 2; ++d)
+      if (!wraps[d]) p[d] = box[d].clamp(p[d]);
+    return p;
+  };
+  uv = clamp(uv);
   bool converged = false;
   const double scale = std::max({1.0, box[0].length(), box[1].length()});
   for (int it = 0; it < 60; ++it) {
-    SurfaceDerivatives d = derivatives(uv);
+    SurfaceDerivatives d = s.derivatives(uv);
     Vec3 r = d.p - x;
     Eigen::Vector2d g(d.du.dot(r), d.dv.dot(r));
     Eigen::Matrix2d H;
@@ -91,17 +93,70 @@ SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) con
     }
     double f0 = r.squaredNorm();
     Vec2 next = clamp(uv + step);
-    for (int ls = 0; ls < 30 && (point(next) - x).squaredNorm() > f0; ++ls) next = clamp(uv + (step *= 0.5));
+    for (int ls = 0; ls < 30 && (s.point(next) - x).squaredNorm() > f0; ++ls) next = clamp(uv + (step *= 0.5));
     double moved = (next - uv).norm();
     uv = next;
     if (moved <= 1e-14 * scale) { converged = true; break; }
   }
+  for (int d = 0; d < 2; ++d)
+    if (wraps[d]) uv[d] -= std::floor((uv[d] - box[d].lo) / *wraps[d]) * *wraps[d];
   SurfaceProjection out;
   out.uv = uv;
-  out.point = point(uv);
+  out.point = s.point(uv);
   out.distance = (out.point - x).norm();
   out.converged = converged;
-  out.inside = contains(uv);
+  return out;
+}
+
+/// The parameter direction along which the surface does not move at uv (a pole), or -1.
+int degenerate_direction(const SurfaceDerivatives& d) {
+  if (d.du.norm() <= 1e-9 * d.dv.norm()) return 0;
+  if (d.dv.norm() <= 1e-9 * d.du.norm()) return 1;
+  return -1;
+}
+
+}  // namespace
+
+SurfaceProjection leave_pole(const Surface& s, const Vec3& x, SurfaceProjection found,
+                             const std::function<SurfaceProjection(const Vec2&)>& solve) {
+  const SurfaceDerivatives d = s.derivatives(found.uv);
+  const int angle = degenerate_direction(d);
+  if (angle < 0 || !(found.distance > 0.0)) return found;
+  const auto box = s.bounds();
+  const int radial = 1 - angle;
+  const Interval along = box[radial];
+  const double speed = (radial == 0 ? d.du : d.dv).norm();
+  const double offset = std::min(0.5 * along.length(), found.distance / std::max(speed, 1e-300));
+  const double inward = found.uv[radial] - along.lo <= along.hi - found.uv[radial] ? offset : -offset;
+  constexpr int kAngles = 8;
+  for (int k = 0; k < kAngles; ++k) {
+    Vec2 start = found.uv;
+    start[angle] = box[angle].lo + (k + 0.5) / kAngles * box[angle].length();
+    start[radial] += inward;
+    SurfaceProjection p = solve(start);
+    if (p.distance < found.distance) found = p;
+  }
+  return found;
+}
+
+SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) const {
+  const auto box = bounds();
+  Vec2 uv;
+  if (guess) {
+    uv = *guess;
+  } else {
+    constexpr int kSamples = 24;
+    double best = std::numeric_limits<double>::max();
+    for (int i = 0; i <= kSamples; ++i)
+      for (int j = 0; j <= kSamples; ++j) {
+        Vec2 s(box[0].lo + box[0].length() * i / kSamples, box[1].lo + box[1].length() * j / kSamples);
+        double d = (point(s) - x).squaredNorm();
+        if (d < best) { best = d; uv = s; }
+      }
+  }
+  SurfaceProjection out =
+      leave_pole(*this, x, newton_projection(*this, x, uv), [&](const Vec2& start) { return newton_projection(*this, x, start); });
+  out.inside = contains(out.uv);
   return out;
 }
 

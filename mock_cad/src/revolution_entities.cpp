@@ -45,9 +45,18 @@ cad::SurfaceProjection RevolutionBody::project(const cad::Vec3& x, std::optional
     if (w < 0.0) w += kTwoPi;
     start = Vec2(std::sqrt(std::clamp(x.x() / chord_, 0.0, 1.0)), w);
   }
-  cad::SurfaceProjection out = newton_project_surface([this](const Vec2& uv) { return derivatives(uv); },
-                                                      [this](const Vec2& uv) { return derivatives(uv).p; }, x, start,
-                                                      bounds(), tol_, chord_, kNoCrease);
+  // w wraps round (the seam is no boundary): the solver may walk a period either way, the answer
+  // comes back into [0, 2 pi).
+  auto box = bounds();
+  box[1] = {-kTwoPi, 2.0 * kTwoPi};
+  const auto solve = [&](const Vec2& from) {
+    cad::SurfaceProjection p = newton_project_surface([this](const Vec2& uv) { return derivatives(uv); },
+                                                      [this](const Vec2& uv) { return derivatives(uv).p; }, x, from,
+                                                      box, tol_, chord_, kNoCrease);
+    p.uv.y() -= std::floor(p.uv.y() / kTwoPi) * kTwoPi;
+    return p;
+  };
+  cad::SurfaceProjection out = cad::leave_pole(*this, x, solve(start), solve);
   out.inside = contains(out.uv);
   return out;
 }

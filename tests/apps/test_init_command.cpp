@@ -6,6 +6,8 @@
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/roles.hpp"
 #include "semimesh/surface/cad_roles.hpp"
+#include "semimesh/surface/error.hpp"
+#include "semimesh/surface/shell_size_limit.hpp"
 
 #include <gtest/gtest.h>
 
@@ -98,11 +100,24 @@ TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
   const pipeline::Config defaults;
   for (const pipeline::ConfigSection& section : pipeline::config_sections())
     for (const params::Key<pipeline::Config>& key : section.keys)
-      if (std::count(length_keys().begin(), length_keys().end(), section.name + "." + key.name)) {
+      if (std::count(length_keys().begin(), length_keys().end(), section.name + "." + key.name) &&
+          section.name + "." + key.name != "sizing.min_size") {
         const double scaled = std::get<double>(key.get(defaults)) * found.chord;
         EXPECT_NEAR(std::get<double>(key.get(c)), scaled, 1e-3 * scaled) << section.name << "." << key.name;
       }
   EXPECT_GT(c.nearfield.shell.thickness, 100.0);  // a tenth of a chord of about 1.2 m, in mm
+
+  // min_size: the chord-scaled default (6 mm) is more than the shell allows on the tip's 1.5 mm
+  // trailing-edge radius; init writes what `run`'s size check (the shell limit at order > 1) accepts.
+  const double scaled_min = defaults.sizing.size.min_size * found.chord;
+  EXPECT_LT(c.sizing.size.min_size, scaled_min);
+  EXPECT_GT(c.sizing.size.min_size, 0.5);  // mm: not absurdly fine
+  ASSERT_GT(c.highorder.order, 1);
+  const surface::ShellSizing shell{c.nearfield.shell.thickness, roles.body};
+  EXPECT_NO_THROW(surface::shell_size_sources(*model, shell, c.sizing.size));
+  surface::SizeParams chord_scaled = c.sizing.size;
+  chord_scaled.min_size = scaled_min;
+  EXPECT_THROW(surface::shell_size_sources(*model, shell, chord_scaled), surface::SurfaceMeshError);  // as before
   std::filesystem::remove_all(dir);
 }
 

@@ -432,6 +432,37 @@ TYPED_TEST(Conformance, PeriodicFacesSeamsAndPoles) {
   std::cout << "[ info ] " << seams << " seam curve(s), " << poles << " pole(s)\n";
 }
 
+// Near a pole, a projection started at the pole itself (the guess the curving of a pole's elements
+// hands in) or without a guess reaches the point: a local solver stopped at the pole, where the
+// surface does not move along one parameter, cannot turn towards it by itself.
+TYPED_TEST(Conformance, ProjectionLeavesAPole) {
+  const cad::Model& m = this->model();
+  const double tol = 1e-8 * this->diagonal();
+  int checked = 0;
+  for (int c = 0; c < m.num_curves(); ++c) {
+    if (!m.curve(c).is_degenerate()) continue;
+    const cad::Surface& surface = m.surface(m.surfaces_of_curve(c).front().surface);
+    const Vec2 pole = surface.project(m.vertex(m.curve_vertices(c)[0]).point).uv;
+    const auto d = surface.derivatives(pole);
+    const int angle = d.du.norm() < d.dv.norm() ? 0 : 1, radial = 1 - angle;
+    const auto box = surface.bounds();
+    const double inward = pole[radial] - box[radial].lo < box[radial].hi - pole[radial] ? 1.0 : -1.0;
+    for (double depth : {0.01, 0.03})
+      for (int k = 0; k < 3; ++k) {
+        Vec2 uv = pole;
+        uv[radial] += inward * depth * box[radial].length();
+        uv[angle] = box[angle].lo + (k + 0.4) / 3.0 * box[angle].length();
+        const Vec3 p = surface.point(uv);
+        const std::string where = "face '" + surface.name() + "' near pole '" + m.curve(c).name() + "' at (" +
+                                  std::to_string(uv.x()) + ", " + std::to_string(uv.y()) + ")";
+        EXPECT_LE(surface.project(p, pole).distance, tol) << where << ", started at the pole";
+        EXPECT_LE(surface.project(p).distance, tol) << where << ", without a guess";
+        ++checked;
+      }
+  }
+  std::cout << "[ info ] " << checked << " point(s) near poles projected\n";
+}
+
 TYPED_TEST(Conformance, BoundingBoxContainsAllSamples) {
   const cad::Model& m = this->model();
   const cad::BBox& box = m.bbox();

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -17,38 +18,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Coarse: a unit-span wing in a 7 x 6 x 3 chord box, 0.05 chord shell.
-const char* const kCoarseCase = R"(
-[geometry.naca]
-span = 1.0
-box = [-3.0, -3.0, 0.0, 4.0, 3.0, 3.0]
-[nearfield]
-thickness = 0.05
-[sizing]
-max_size = 1.0
-min_size = 0.02
-curvature_segments = 2
-le_size = 0.06
-te_size = 0.03
-[farfield]
-box_size = 1.0
-wall_size = 0.6
-[highorder]
-order = 1
-[output]
-formats = ["msh41", "vtu", "nektar"]
-basename = "coarse"
-)";
-
 class CountingProgress : public Progress {
  public:
   void stage_started(const std::string& name) override { started.push_back(name); }
   void stage_finished(const StageTiming& timing) override { finished.push_back(timing.name); }
+  void stage_progress(double fraction, const std::string&) override { fractions[started.back()].push_back(fraction); }
   std::vector<std::string> started, finished;
+  std::map<std::string, std::vector<double>> fractions;  ///< stage -> its progress reports
 };
 
+// The CLI tests' coarse case (tests/pipeline/coarse_wing.toml: unit span, 7 x 6 x 3 chord box,
+// 0.05 chord shell), writing the three solver formats unless `overrides` say otherwise.
 Config coarse_config(const fs::path& directory, const std::vector<std::string>& overrides = {}) {
-  Config c = parse_config(kCoarseCase, "coarse.toml", {}, overrides);
+  std::vector<std::string> all = {"output.formats=[\"msh41\", \"vtu\", \"nektar\"]"};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  Config c = load_config(std::string(SEMIMESH_SOURCE_DIR) + "/tests/pipeline/coarse_wing.toml", all);
   c.output.directory = directory.string();
   return c;
 }
@@ -117,6 +101,7 @@ TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
   const RunResult linear =
       run(coarse_config(linear_dir, {"boundary_layer.layers=1", "output.formats=[\"msh41\"]"}), progress);
   const fs::path dir = fresh_directory("order2");
+  progress.fractions.clear();  // the reports of this run only
   const RunResult r = run(coarse_config(dir, {"highorder.order=2", "boundary_layer.layers=3",
                                               "boundary_layer.ratio=2", "output.formats=[\"msh41\"]"}),
                           progress);
@@ -124,6 +109,12 @@ TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "curve"), progress.finished.end());
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "repair"), progress.finished.end());
   EXPECT_NE(std::find(progress.finished.begin(), progress.finished.end(), "split"), progress.finished.end());
+  // At order 2 the size field computes the shell's limits on the curved body faces, the bulk of
+  // that stage: it reports its progress, non-decreasing, up to 0.9 at least.
+  const std::vector<double>& size_field = progress.fractions["size field"];
+  ASSERT_GE(size_field.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(size_field.begin(), size_field.end()));
+  EXPECT_GE(size_field.back(), 0.9);
   EXPECT_EQ(r.mesh.order(), 2);
   EXPECT_EQ(r.validity.invalid, 0u);
   EXPECT_GT(r.validity.min_scaled_jacobian, 0.0);

@@ -2,6 +2,7 @@
 
 #include "curving/cad_classification.hpp"
 #include "curving/harmonic_extension.hpp"
+#include "curving/pole_chart.hpp"
 #include "curving/spring_optimisation.hpp"
 #include "parallel_for.hpp"
 #include "semimesh/ho/basis.hpp"
@@ -62,6 +63,7 @@ class Curver {
   ProgressCallback progress_;
   // The parts of progress_ for the edges, faces and volumes, in proportion to their counts.
   ProgressCallback edge_progress_, face_progress_, volume_progress_;
+  std::vector<std::vector<cad::Vec3>> poles_;       // [surfaces] detail::surface_poles
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
@@ -131,7 +133,9 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     pts.row(0) = xa.transpose();
     pts.row(1) = xb.transpose();
     for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
-    if (springs)
+    if (detail::near_pole(poles_[place.id], {xa, xb}))
+      for (int i = 0; i < P - 1; ++i) detail::place_by_projection(s, out.x[i], uv, pts, i + 2);
+    else if (springs)
       out.fallback = !detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts,
                                                   params_.spring_iterations, params_.tolerance * (xb - xa).norm());
     else
@@ -212,7 +216,11 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     Eigen::MatrixX3d pts = X;
     double size = 0.0;
     for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
-    if (params_.placement == NodePlacement::Springs)
+    std::vector<cad::Vec3> vertices;
+    for (int v = 0; v < face.num_vertices; ++v) vertices.push_back(X.row(v).transpose());
+    if (detail::near_pole(poles_[place.id], vertices))
+      for (int j : ext.interior) detail::place_by_projection(s, straight.row(j).transpose(), uv2, pts, j);
+    else if (params_.placement == NodePlacement::Springs)
       out.fallback = !detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
                                                   params_.tolerance * size);
     else
@@ -274,6 +282,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     throw std::invalid_argument("curve_mesh: CurvingParams::tolerance = " + std::to_string(params_.tolerance) +
                                 " must be > 0");
 
+  for (int s = 0; s < model_.num_surfaces(); ++s) poles_.push_back(detail::surface_poles(model_, s));
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);

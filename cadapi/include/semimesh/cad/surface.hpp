@@ -9,6 +9,7 @@
 #include "semimesh/cad/types.hpp"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -63,5 +64,12 @@ class Surface {
   std::string name_;
   int orientation_;
 };
+
+/// A closest-point solve that stopped at a pole (a point where the surface does not move along one
+/// parameter, `angle`) cannot turn towards x: the gradient has no component along `angle` there.
+/// When `found` is such a point, `solve` (the backend's local solver from a start) is restarted a
+/// little off the pole at 8 values of `angle` and the nearest result is returned; else `found`.
+SurfaceProjection leave_pole(const Surface& s, const Vec3& x, SurfaceProjection found,
+                             const std::function<SurfaceProjection(const Vec2&)>& solve);
 
 }  // namespace semimesh::cad

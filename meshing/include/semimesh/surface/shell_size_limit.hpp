@@ -56,4 +56,9 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
 std::vector<PointSource> shell_size_sources(const cad::Model& model, const ShellSizing& shell, const SizeParams& sizing,
                                             const ProgressCallback& progress = {});
 
+/// The largest sizing.min_size that shell_size_sources accepts with this shell and max_size: the
+/// smallest size it asks for anywhere on the body (infinity where the shell limits nothing).
+double smallest_shell_size(const cad::Model& model, const ShellSizing& shell, double max_size,
+                           const ProgressCallback& progress = {});
+
 }  // namespace semimesh::surface

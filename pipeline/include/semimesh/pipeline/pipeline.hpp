@@ -37,7 +37,7 @@ struct StageTiming {
 };
 
 /// Receives the start and end of every stage (the CLI prints a line per stage) and, inside the long
-/// ones (surface mesh, far field, curve, repair, split, checks, write), the fraction done: from one
+/// ones (size field, surface mesh, far field, curve, repair, split, checks, write), the fraction done: from one
 /// thread at a time, throttled (a few hundred calls per stage at most), non-decreasing within a stage
 /// from 0 to 1; `step` names the part running (see semimesh/progress.hpp).
 class Progress {

@@ -1,0 +1,34 @@
+// Curving next to a pole. There a surface's parameters are polar: one of them is an angle about the
+// pole. An element interpolated linearly in them is a polar patch that spans a fixed angle however
+// small the element is, so its geometric error falls like h^2 at every order P (and the pole's
+// triangles, whose two sides leave the pole along the same parameter line, are curved into folds).
+// Next to a pole the nodes are instead placed where the straight-sided element's nodes project onto
+// the surface: closest-point projection is a smooth chart where the pole has a tangent plane, so
+// the error falls like h^(P+1) again (tests/highorder/ho_mesh/test_curve_periodic.cpp measures it;
+// projecting the face's harmonic extension of its curved sides instead stalls at h^4 for P >= 4).
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace semimesh::ho::detail {
+
+/// Points of the degenerate curves (poles) in the loops of `surface` where it has a tangent plane
+/// (not a cone's apex).
+std::vector<cad::Vec3> surface_poles(const cad::Model& model, int surface);
+
+/// Whether an element with these vertices lies next to one of `poles`: a vertex within
+/// kPoleReach times the element's longest side of a pole. Beyond it an element spans an angle of
+/// about 1 / kPoleReach radians at the pole, which the polar parameters interpolate well.
+constexpr double kPoleReach = 3.0;
+bool near_pole(const std::vector<cad::Vec3>& poles, const std::vector<cad::Vec3>& vertices);
+
+/// Row `row` of (uv, pts): the closest point of `surface` to x, started from uv's row (moved into
+/// the parameter box).
+void place_by_projection(const cad::Surface& surface, const cad::Vec3& x, Eigen::Ref<Eigen::MatrixXd> uv,
+                         Eigen::Ref<Eigen::MatrixXd> pts, int row);
+
+}  // namespace semimesh::ho::detail
