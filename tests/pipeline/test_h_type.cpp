@@ -189,7 +189,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{"incidence_10_widening_10", {"wake.direction=[0.9848, 0.1736, 0.0]", "wake.widening=10"}},
                       // the swept edge's root leaves the wake's origins behind: the ratio must still be r there
                       Variant{"sharp_swept_tapered", {"geometry.naca.te=sharp", "geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
-                      Variant{"sharp_cambered_4412", {"geometry.naca.te=sharp", "geometry.naca.code=\"4412\""}}),
+                      Variant{"sharp_cambered_4412", {"geometry.naca.te=sharp", "geometry.naca.code=\"4412\""}},
+                      // swept back: the strip top's legs to the two halos open by more than 180 degrees
+                      Variant{"sharp_swept_back", {"geometry.naca.te=sharp", "geometry.naca.sweep=20"}}),
     [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
 
 void expect_same_mesh(const RunResult& analytic, const RunResult& occ) {

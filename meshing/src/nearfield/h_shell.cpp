@@ -183,11 +183,28 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
   mesh::Mesh& m = field.mesh;
+  // A sharp trailing edge's root (js.fan): a third foot and halo between the two sides', on the
+  // bisector of the feet (whose legs from the root open by less than 180 degrees, downstream): the
+  // wedge between the two halos is filled in two halves (see the fan below). Its legs from the
+  // strip top may open by more than 180 degrees where the edge sweeps back.
+  std::array<NodeId, 3> fan_foot{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode}, fan_top = fan_foot;
+  if (js.fan.index >= 0) {
+    const Vec3 r = m.node(js.root_id[js.fan.index]);
+    const Vec3 a = m.node(js.fan.foot[0]) - r, b = m.node(js.fan.foot[1]) - r;
+    const cad::Surface& wall_face = model.surface(roles.wall_surface);
+    const auto foot = wall_face.project(r + 0.5 * (a.norm() + b.norm()) * (a.normalized() + b.normalized()).normalized());
+    fan_foot = {js.fan.foot[0], m.add_node(foot.point, {mesh::CadAttachment::Surface, roles.wall_surface, foot.uv.x(),
+                                                        foot.uv.y()}),
+                js.fan.foot[1]};
+    const Vec3 rise = 0.5 * (m.node(js.fan.top[0]) - m.node(js.fan.foot[0]) + m.node(js.fan.top[1]) - m.node(js.fan.foot[1]));
+    fan_top = {js.fan.top[0], m.add_node(foot.point + rise), js.fan.top[1]};
+  }
   for (std::size_t i = 0; i < js.chain.size(); ++i) {
-    const bool fan = static_cast<int>(i) == js.fan.index;  // a sharp trailing edge's root: two feet
+    const bool fan = static_cast<int>(i) == js.fan.index;  // a sharp trailing edge's root: three feet
     field.footprint.push_back(js.foot_id[i]);
     field.footprint_top.push_back(fan ? js.fan.top[0] : static_cast<NodeId>(js.chain[i]) + js.offset);
-    if (fan) field.footprint.push_back(js.fan.foot[1]), field.footprint_top.push_back(js.fan.top[1]);
+    if (fan)
+      for (int leg : {1, 2}) field.footprint.push_back(fan_foot[leg]), field.footprint_top.push_back(fan_top[leg]);
   }
 
   // The base's quads (body node ids, lifted); the trailing-edge nodes (the base's, or the sharp
@@ -325,11 +342,11 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
 
   // A sharp trailing edge's root: the wedge between its two halos (root R, strip top W, feet L_0
   // L_1, halos H_0 H_1) is a prism R L_0 L_1 / W H_0 H_1 standing on the wall, split by the wall
-  // layer's split along R-W (a stack of the wall family). Across, the junction hexes beside it
-  // split their faces R-W-H-L at the wing layer's interfaces, a fan from R the split cannot make:
-  // the prism is given here already cut there (an inner prism and bands of prisms around it, at
-  // the interfaces the split will use: `fractions`), and the weld after the split joins their
-  // nodes to the hexes' (as the far field's pre-cut skin quads).
+  // layer's split along R-W (a stack of the wall family), in two halves about the middle leg.
+  // Across, the junction hexes beside it split their faces R-W-H-L at the wing layer's interfaces,
+  // a fan from R the split cannot make: the prisms are given here already cut there (an inner
+  // prism and bands of prisms around it, at the interfaces the split will use: `fractions`), and
+  // the weld after the split joins their nodes to the hexes' (as the far field's pre-cut skin quads).
   // The skin's and the fan's nodes at the split's interfaces on layer edges: (bottom vertex, top
   // vertex, k) -> node (a sharp trailing edge's nodes have two layer edges, one per side).
   std::map<std::tuple<NodeId, NodeId, int>, NodeId> interface_node;
@@ -343,19 +360,20 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
         fail("the wing layer's ratio differs between the sharp trailing edge's root " + point_label(m.node(r)) +
              " and the top of its root strip " + point_label(m.node(top)) +
              " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
-    std::array<std::vector<NodeId>, 2> low, high;  // per side: the wall and the top rows from R, W
-    for (int side : {0, 1}) {
-      const NodeId foot = js.fan.foot[side], halo = js.fan.top[side];
-      low[side] = {r}, high[side] = {top};
+    std::array<std::vector<NodeId>, 3> low, high;  // per leg (side 0, middle, side 1): the wall and top rows
+    for (int leg : {0, 1, 2}) {
+      const NodeId foot = fan_foot[leg], halo = fan_top[leg];
+      low[leg] = {r}, high[leg] = {top};
       for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
-        low[side].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
-        high[side].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
-        interface_node[{r, foot, static_cast<int>(k)}] = low[side].back();
-        interface_node[{top, halo, static_cast<int>(k)}] = high[side].back();
+        low[leg].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
+        high[leg].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
+        interface_node[{r, foot, static_cast<int>(k)}] = low[leg].back();
+        interface_node[{top, halo, static_cast<int>(k)}] = high[leg].back();
       }
-      low[side].push_back(foot), high[side].push_back(halo);
-      fan_planes.emplace_back(low[side].begin(), low[side].end());
-      fan_planes.back().insert(high[side].begin(), high[side].end());
+      low[leg].push_back(foot), high[leg].push_back(halo);
+      if (leg == 1) continue;  // the middle leg's plane is inside the fan
+      fan_planes.emplace_back(low[leg].begin(), low[leg].end());
+      fan_planes.back().insert(high[leg].begin(), high[leg].end());
     }
     const int junction_region = m.region_index("junction");
     auto add_piece = [&](ho::Shape shape, std::vector<NodeId> v) {
@@ -379,10 +397,12 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     // Each band between two interfaces as two prisms (its diagonal from side 0's inner corner):
     // the fan opens by nearly 180 degrees, so a band is a sliver whose top, a quad, would carry a
     // pyramid leaning over the rear interfaces beside it; triangles take tetrahedra.
-    add_piece(ho::Shape::Prism, {r, low[0][1], low[1][1], top, high[0][1], high[1][1]});
-    for (std::size_t k = 1; k + 1 < low[0].size(); ++k) {
-      add_piece(ho::Shape::Prism, {low[0][k], low[0][k + 1], low[1][k + 1], high[0][k], high[0][k + 1], high[1][k + 1]});
-      add_piece(ho::Shape::Prism, {low[0][k], low[1][k + 1], low[1][k], high[0][k], high[1][k + 1], high[1][k]});
+    for (const auto& [p, q] : {std::pair{0, 1}, std::pair{1, 2}}) {  // the two halves
+      add_piece(ho::Shape::Prism, {r, low[p][1], low[q][1], top, high[p][1], high[q][1]});
+      for (std::size_t k = 1; k + 1 < low[p].size(); ++k) {
+        add_piece(ho::Shape::Prism, {low[p][k], low[p][k + 1], low[q][k + 1], high[p][k], high[p][k + 1], high[q][k + 1]});
+        add_piece(ho::Shape::Prism, {low[p][k], low[q][k + 1], low[q][k], high[p][k], high[q][k + 1], high[q][k]});
+      }
     }
   }
 

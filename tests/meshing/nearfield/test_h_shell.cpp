@@ -195,8 +195,8 @@ TEST(HShellSharp, SidesEndWithTheirOwnNormalsAndShareTheWakeSheet) {
   }
   EXPECT_GE(b.field.wake.gap, wake.gap - 1e-12);
 
-  // The root: one halo per side (the footprint one node longer than the root loop), the wedge
-  // between them one valid prism (unsplit layer) in the junction.
+  // The root: one halo per side and one between them (the footprint two nodes longer than the
+  // root loop), the wedge between the sides' halos two valid prisms (unsplit layer) in the junction.
   const int junction = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "junction") -
                                         m.region_names().begin());
   int wedges = 0;
@@ -207,8 +207,8 @@ TEST(HShellSharp, SidesEndWithTheirOwnNormalsAndShareTheWakeSheet) {
     for (int k = 0; k < 6; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
     EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Prism, 1, ho::NodeSet::Equispaced, x).valid);
   }
-  EXPECT_EQ(wedges, 1);
-  EXPECT_EQ(b.field.footprint.size(), static_cast<std::size_t>(b.field.junction_hexes) + 1);
+  EXPECT_EQ(wedges, 2);
+  EXPECT_EQ(b.field.footprint.size(), static_cast<std::size_t>(b.field.junction_hexes) + 2);
   EXPECT_EQ(b.field.footprint_top.size(), b.field.footprint.size());
 }
 
