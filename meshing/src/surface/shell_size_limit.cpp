@@ -39,11 +39,7 @@ struct Arc {
 };
 
 // Walks `length` from uv along the surface, starting in tangent direction `dir` and keeping the
-// direction tangent (transported by projection); stops at the surface's parameter box, then at the
-// trimmed face's boundary. The trimming test (Surface::contains) is most of the cost of the size
-// field's shell limits (80%, a 2D point-in-polygon per call), so it is not asked at every step: a
-// march of about one edge length leaves the face at most once, so the steps inside are a prefix of
-// the path, found by bisection on it (4 tests for 16 steps instead of 16).
+// direction tangent (transported by projection); stops at the surface's boundary.
 Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
   const auto box = s.bounds();
   std::vector<Vec2> path{start};
@@ -55,23 +51,13 @@ Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
     const Vec2 step = (jacobian.transpose() * jacobian).ldlt().solve(jacobian.transpose() * dir * (length / kMarchSteps));
     const Vec2 next = uv + step;
     if (!std::isfinite(next.x()) || !std::isfinite(next.y()) || next.x() < box[0].lo || next.x() > box[0].hi ||
-        next.y() < box[1].lo || next.y() > box[1].hi)
+        next.y() < box[1].lo || next.y() > box[1].hi || !s.contains(next))
       break;
     uv = next;
     path.push_back(uv);
     const Vec3 n = s.normal(uv);
     dir = (dir - dir.dot(n) * n).normalized();
   }
-  std::size_t inside = path.size();  // path[0, inside) lies in the face; path[0] is the start
-  if (!s.contains(path.back())) {
-    std::size_t lo = 1, hi = path.size() - 1;  // the first step outside is in [lo, hi]
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi) / 2;
-      (s.contains(path[mid]) ? lo = mid + 1 : hi = mid);
-    }
-    inside = lo;
-  }
-  path.resize(inside);
   return {path.front(), path[path.size() / 2], path.back()};
 }
 
