@@ -20,6 +20,9 @@ constexpr int kFaceGrid = 9;
 // at the downstream end when its root points average within this fraction of the chord from it.
 constexpr double kNarrowFraction = 0.1;
 constexpr double kDownstreamFraction = 0.1;
+// A base's root runs across the stream: along it by less than this fraction of its length (the
+// thin faces closing a sharp trailing edge run along the stream: they are part of the skin).
+constexpr double kAcrossFraction = 0.5;
 // A tip is flat across the span: its extent along the span below this fraction of its chord.
 constexpr double kFlatTipFraction = 0.25;
 
@@ -208,8 +211,8 @@ CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
       along.add(e.hi);
     }
     const double middle = 0.5 * (along.lo + along.hi);
-    if (length > 0.0 && length < kNarrowFraction * roles.chord && middle > chord.hi - kDownstreamFraction * roles.chord &&
-        middle > best) {
+    if (length > 0.0 && length < kNarrowFraction * roles.chord && along.length() < kAcrossFraction * length &&
+        middle > chord.hi - kDownstreamFraction * roles.chord && middle > best) {
       best = middle;
       roles.te_base = s;
     }

@@ -6,6 +6,8 @@
 #include "naca_wing_roles.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
+#include "semimesh/cad/labels.hpp"
+
 #include "semimesh/occ/occ_backend.hpp"
 
 #include <gtest/gtest.h>
@@ -43,6 +45,23 @@ TEST(CadRolesOcc, NekMeshStepWing) {
   // base's thickness; a chord of 0.1..10 m in mm.
   EXPECT_GT(roles.chord, 100.0);
   EXPECT_LT(roles.chord, 10000.0);
+}
+
+// The ONERA M6 (a body-only file, the wall plane y = 0 and a box built at load): its sharp trailing
+// edge is closed by two thin planar faces (cad-info of the file: faces of 4327 mm2 whose root curves,
+// 4.6 mm long, run from the skins' ends to the trailing-edge point along the chord). Narrow, on the
+// root at the downstream end, but along the stream: part of the skin, not a base; before, the lower
+// one was taken for the base and the H-type swept its wake from a face nearly parallel to the stream.
+TEST(CadRolesOcc, OneraM6ThinTrailingEdgeFacesAreNoBase) {
+  const std::string path = std::string(SEMIMESH_TESTDATA_DIR) + "/cad/onera_m6_sharp_te.stp";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "test CAD file " << path << " not found (see shared/testdata/cad/README.md)";
+  const auto model = occ::load_occ(cad::Source{
+      path, {{"occ.wall_plane", "0,0,0,0,1,0"}, {"occ.farfield_box", "-8000,-8000,-8000,9000,9000,8000"}}});
+  const CadRoles roles = detect_cad_roles(*model);
+  int thin_planar = 0;
+  for (int s : roles.body) thin_planar += model->surface(s).is_planar();
+  EXPECT_EQ(thin_planar, 2) << "the two faces closing the trailing edge";
+  EXPECT_FALSE(roles.te_base.has_value()) << cad::surface_label(*model, *roles.te_base);
 }
 
 }  // namespace

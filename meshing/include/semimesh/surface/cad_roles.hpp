@@ -5,8 +5,9 @@
 //  - the body: the faces reached from that root loop across shared curves without crossing the wall;
 //  - the far field: every other face (the outer shell);
 //  - the trailing-edge base: the body face on the root loop that is narrow (its root curves
-//    shorter than a tenth of the root chord) and lies at the body's downstream end (+x, projected
-//    onto the wall plane);
+//    shorter than a tenth of the root chord), runs across the stream (its root curves reach along
+//    it by less than half their length: not one of the thin faces closing a sharp trailing edge)
+//    and lies at the body's downstream end (+x, projected onto the wall plane);
 //  - the tip: the body faces, other than the base, that do not touch the root, reach the far end
 //    of the span and are flat across it (their extent along the span below a quarter of their
 //    extent along the chord).
