@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace semimesh::nearfield {
 namespace {
@@ -269,23 +270,43 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   return j;
 }
 
-// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
-// the strip is too tall for the body or a triangle would fold.
+// Where the lift has died out: the lowest node of the body's surfaces that do not stand on the
+// wall (no triangle at the root loop: a tip cap, flat or rounded, its sliver faces), or the body's
+// top when every surface stands on the wall. A tip cap turns level: a node on it (or on its edge)
+// moved to a slightly greater height would run far across it (the height's gradient along the
+// surface vanishes), so the cap stays where it is and the lift decays to zero below it.
+double lift_top(const BodyMesh& body, const Frame& wall, const std::vector<int>& loop) {
+  const std::set<int> root(loop.begin(), loop.end());
+  std::set<int> standing;
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    for (int v : body.triangles[t])
+      if (root.count(v)) standing.insert(body.triangle_surface[t]);
+  double top = 0.0, cap = 1e300;
+  for (const Vec3& x : body.points) top = std::max(top, wall.height(x));
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    if (!standing.count(body.triangle_surface[t]))
+      for (int v : body.triangles[t]) cap = std::min(cap, wall.height(body.points[v]));
+  return std::min(top, cap);
+}
+
+// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node, decaying to
+// zero at lift_top); throws when the strip is too tall for the body or a triangle would fold.
 std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
                                           const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
   double tip = 0.0, strip = 0.0;
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
-  if (!(strip < 0.5 * tip))
+  const double top = lift_top(body, wall, loop);
+  if (!(strip < 0.5 * top))
     throw NearFieldError("near field: the root strip (height " + number_label(strip) +
                          ") for the wall layer thickness " + number_label(delta_wall) +
-                         " takes more than half of the body's height " + number_label(tip) +
-                         " above the wall; use a thinner wall layer");
+                         " takes more than half of the body's height " + number_label(top) +
+                         " above the wall below its tip; use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
   std::vector<char> on_root(body.num_nodes(), 0);
   for (int r : loop) on_root[r] = 1;
   for (int v = 0; v < body.num_nodes(); ++v)
-    if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
+    if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, top, body.points[v], body.cad[v]);
   for (std::size_t i = 0; i < loop.size(); ++i)
     body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
   for (const auto& t : body.triangles) {
@@ -595,11 +616,11 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
   return p;
 }
 
-Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double top, const Vec3& x,
                CadAttachment& cad) {
   const double d = wall.height(x);
-  if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
-  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / tip));
+  if (d >= top * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
+  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / top));
 }
 
 }  // namespace detail

@@ -40,7 +40,7 @@ struct JunctionShell {
     std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};
   } fan;
   WallFrame wall;
-  double strip = 0.0, tip = 0.0;     ///< the lift's strip and tip heights (lift_node)
+  double strip = 0.0, tip = 0.0;     ///< the lift's strip height; the body's top height
 };
 
 /// The wing layer and junction on `roles.body_surfaces` (as build_c_shell), no prisms on the
@@ -60,9 +60,10 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
 Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, mesh::CadAttachment& cad,
                     double target);
 
-/// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / tip),
-/// updating its attachment; nodes at the tip and CAD vertices stay.
-Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+/// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / top),
+/// updating its attachment; nodes at or above `top` (where the lift has died out) and CAD vertices
+/// stay.
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double top, const Vec3& x,
                mesh::CadAttachment& cad);
 
 }  // namespace semimesh::nearfield::detail

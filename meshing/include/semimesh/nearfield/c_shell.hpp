@@ -16,8 +16,10 @@
 // So the hex R-W-H-L keeps both strips (a sliver would be folded by the curved root at high order).
 // At 90 degrees and below, W_i and L_i are the halo's feet.
 // The wing's surface mesh is lifted along the wing so that its root row lands on the W line (every
-// node at height d above the wall moves to s + d (1 - s / D) along its CAD entity, by Newton in the
-// entity's parameters: s the strip height, D the tip's height), and the O-type layer is built on it
+// node at height d < D above the wall moves to s + d (1 - s / D) along its CAD entity, by Newton in
+// the entity's parameters: s the strip height, D the lowest point of the surfaces that do not stand
+// on the wall, i.e. the tip's: a rounded tip turns level, where such a move would run across it; the
+// body's top when every surface stands on the wall), and the O-type layer is built on it
 // with the offsets of the W nodes pinned at H. One hex per root segment fills R-W-H-L (vertex
 // order: near_field.hpp). The wall's
 // own layer (prisms between the L loop and the box) is built by the far field on its wall mesh, its
