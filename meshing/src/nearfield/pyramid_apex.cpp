@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <vector>
 
 namespace semimesh::nearfield {
 
@@ -30,9 +31,16 @@ std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>
   // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
   // degrees: 2 height / edge <= 0.6 for every edge.
   // Lower first (flat quads), then higher: a warped quad needs the apex above all four corner planes.
-  const double start = kHeightPerShortestEdge * shortest;
-  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) {
-    const Eigen::Vector3d apex = centroid + factor * start * normal;
+  // Last, heights from the mean edge: a twisted trapezoid with one short edge (a rear interface's
+  // lowest quad, from the trailing edge down to its halo) needs an apex above the twist of its long
+  // edges, which the short edge does not measure; the lowest valid one is taken.
+  const double start = kHeightPerShortestEdge * shortest, mean_edge = 0.25 * perimeter;
+  std::vector<double> heights;
+  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) heights.push_back(factor * start);
+  for (const double factor : {0.3, 0.4, 0.55, 0.75, 1.0})
+    if (factor * mean_edge > 4.0 * start) heights.push_back(factor * mean_edge);
+  for (const double height : heights) {
+    const Eigen::Vector3d apex = centroid + height * normal;
     nodes.row(4) = apex.transpose();
     if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
   }
