@@ -104,6 +104,16 @@ TEST(StepShells, HTypeWakeLeavesTheInclinedBaseAlongTheFreestream) {
   EXPECT_EQ(field.wake.hexes % wake.layers, 0);
   EXPECT_GE(field.wake.gap, wake.gap - 1e-9);
   EXPECT_GT(field.junction_hexes, 0);
+  // The base is a rectangle capped by a half disc: at its two top corners the side meets the arc
+  // tangentially, and a hex there would have a vanishing Jacobian once curved (2 invalid at order 4).
+  // Each corner quad is swept as two prisms instead, split from the corner.
+  const mesh::Mesh& m = field.mesh;
+  const int wake_region = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "wake") -
+                                           m.region_names().begin());
+  int prisms = 0;
+  for (const mesh::Element& e : m.elements())
+    if (e.region == wake_region && e.shape == ho::Shape::Prism) ++prisms;
+  EXPECT_EQ(prisms, 2 * 2 * wake.layers);
 }
 
 }  // namespace
