@@ -72,9 +72,7 @@ surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, i
   surface::SurfaceMeshes out = meshes;
   surface::SurfaceMesh& m = out.surfaces.at(te);
   for (auto q : m.quads) {
-    for (int k = 0; k < 4; ++k)
-      if (flat.count(m.origin[q[0]].vertex)) break;
-      else std::rotate(q.begin(), q.begin() + 1, q.end());
+    for (int k = 0; k < 4 && !flat.count(m.origin[q[0]].vertex); ++k) std::rotate(q.begin(), q.begin() + 1, q.end());
     m.triangles.push_back({q[0], q[1], q[2]});
     m.triangles.push_back({q[0], q[2], q[3]});
   }

@@ -1,6 +1,6 @@
 // The whole NACA model: every surface meshed, closed and conforming, and the count scaling.
-#include "semimesh/surface/mesh_quality.hpp"
 #include "semimesh/surface/error.hpp"
+#include "semimesh/surface/mesh_quality.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 #include "wing_fixture.hpp"
 
