@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 
 namespace semimesh::farfield {
 namespace {
@@ -25,6 +26,17 @@ TEST(PyramidApex, ThinQuadGetsAFlatPyramid) {
   // 0.01 x 1: the apex 0.003 above, so that it leans less than 45 degrees over its long edges too
   const Vector3d apex = pyramid_apex({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 0.01, 0), Vector3d(0, 0.01, 0)});
   EXPECT_NEAR((apex - Vector3d(0.5, 0.005, 0.003)).norm(), 0.0, 1e-12);
+}
+
+TEST(PyramidApex, ShearedParallelogramRisesLessThanFortyFiveDegreesFromItsLongEdges) {
+  // Edges 1 and ~2.01, altitudes 0.2 and ~0.0995 (the wake block's underside behind a steep wake
+  // direction): the apex 0.3 times the smaller altitude above, not 0.3 times the shorter edge (that
+  // pyramid leaned over its long edges at 80 degrees and crossed its neighbours' in TetGen's input).
+  const std::array<Vector3d, 4> quad{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(3, 0.2, 0), Vector3d(2, 0.2, 0)};
+  const Vector3d apex = pyramid_apex(quad);
+  const double altitude = 0.2 / std::hypot(2.0, 0.2);
+  EXPECT_NEAR(apex.z(), 0.3 * altitude, 1e-12);
+  EXPECT_NEAR((apex.head<2>() - Eigen::Vector2d(1.5, 0.1)).norm(), 0.0, 1e-12);
 }
 
 TEST(PyramidApex, TwistedTrapezoidWithAShortEdgeGetsATallerApex) {
