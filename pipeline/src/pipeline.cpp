@@ -548,7 +548,9 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
                                              progress_part(report, 0.1, 0.9));
     if (report) report(0.9, "geometric error");
-    const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples);
+    std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
+    curved.push_back(g.roles.wall);
+    const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
     result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
   });
   for (const mesh::Element& e : result.mesh.elements()) {

@@ -3,6 +3,7 @@
 #include "curving/cad_classification.hpp"
 #include "semimesh/ho/basis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -29,7 +30,7 @@ Eigen::MatrixX3d sample_points(Shape shape, int n) {
 }  // namespace
 
 GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, double reference_length,
-                               int samples_per_edge) {
+                               int samples_per_edge, const std::vector<int>& surfaces) {
   if (!(reference_length > 0.0))
     throw std::invalid_argument("geometric_error: reference_length must be > 0");
   if (samples_per_edge < 1) throw std::invalid_argument("geometric_error: samples_per_edge must be >= 1");
@@ -45,6 +46,7 @@ GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, 
     for (std::size_t j = 0; j < ids.size(); ++j) X.row(j) = mesh.node(ids[j]).transpose();
     const detail::CadPlace place = detail::classify(model, corners, false, X.colwise().mean().transpose());
     if (place.kind != detail::CadPlace::Surface) continue;
+    if (!surfaces.empty() && std::find(surfaces.begin(), surfaces.end(), place.id) == surfaces.end()) continue;
 
     const cad::Surface& surface = model.surface(place.id);
     Eigen::MatrixX2d uv(ids.size(), 2);

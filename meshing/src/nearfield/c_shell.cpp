@@ -269,6 +269,34 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   return j;
 }
 
+// The strip tops along a bare surface's root (the H-type's trailing-edge base) raised to one height,
+// the highest of them. Nothing stands on that root row but the junction, whose W-H faces there face
+// the far field and carry pyramids: on a swept, cambered base the two corners' strip tops (the
+// halos projected onto the trailing-edge curves) differ in height by several times the base's
+// thickness, which twists those quads until no pyramid apex is valid above them (a NACA 2412 swept
+// 28.6 degrees: the short edge of the quad stood at 60 degrees to the long one).
+void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const BodyMesh& body,
+                           const std::vector<int>& loop, int bare_surface,
+                           const std::map<std::pair<int, int>, int>& triangle_of_edge, std::vector<JunctionNode>& nodes) {
+  const int n = static_cast<int>(loop.size());
+  auto on_bare = [&](int a, int b) { return body.triangle_surface[triangle_of_edge.at({a, b})] == bare_surface; };
+  std::vector<int> base;
+  double level = -1e300;
+  for (int i = 0; i < n; ++i)
+    if (on_bare(loop[(i + n - 1) % n], loop[i]) || on_bare(loop[i], loop[(i + 1) % n])) {
+      base.push_back(i);
+      level = std::max(level, wall.height(nodes[i].strip_top));
+    }
+  for (int i : base) {
+    JunctionNode& j = nodes[i];
+    j.strip_top = detail::move_to_height(model, wall, j.strip_top, j.strip_top_cad, level);
+    if (!(std::abs(wall.height(j.strip_top) - level) <= 1e-6 * level))
+      throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
+                           surface_label(model, bare_surface) + " cannot reach the height " + number_label(level) +
+                           " of its neighbours on that surface");
+  }
+}
+
 // Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
 // the strip is too tall for the body or a triangle would fold.
 std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
@@ -426,6 +454,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     fan_surface[0] = body.triangle_surface[triangle_of_edge.at({loop[(fan + n - 1) % n], loop[fan]})];
     fan_surface[1] = body.triangle_surface[triangle_of_edge.at({loop[fan], loop[(fan + 1) % n]})];
   }
+  if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, triangle_of_edge, nodes);
   std::vector<CadAttachment> root_cad(n);
   for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
 

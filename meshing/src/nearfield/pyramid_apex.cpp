@@ -5,34 +5,51 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <vector>
 
 namespace semimesh::nearfield {
 
-constexpr double kHeightPerShortestEdge = 0.3;
+constexpr double kHeightPerWidth = 0.3;
 
 std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
-  double perimeter = 0.0, shortest = 1e300;
+  double perimeter = 0.0;
   for (int i = 0; i < 4; ++i) {
     const Eigen::Vector3d& p = quad[i];
     const Eigen::Vector3d& q = quad[(i + 1) % 4];
     centroid += 0.25 * p;
     normal += p.cross(q);  // Newell: twice the vector area of the (possibly warped) quad
     perimeter += (q - p).norm();
-    shortest = std::min(shortest, (q - p).norm());
   }
   if (normal.norm() <= 1e-14 * perimeter * perimeter) return std::nullopt;
   normal.normalize();
+  // The quad's narrowest width: twice the centre's distance to the nearest edge line, in the mean
+  // plane (a rectangle's shorter side; a sheared parallelogram's smaller altitude, not its shorter
+  // edge: the wake block's underside behind a steep wake direction).
+  double width = 1e300;
+  for (int i = 0; i < 4; ++i) {
+    Eigen::Vector3d edge = quad[(i + 1) % 4] - quad[i], to_centre = centroid - quad[i];
+    edge -= edge.dot(normal) * normal;
+    to_centre -= to_centre.dot(normal) * normal;
+    if (edge.norm() > 0.0) width = std::min(width, 2.0 * edge.normalized().cross(to_centre).norm());
+  }
 
   Eigen::MatrixX3d nodes(5, 3);
   for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
   // Two pyramids on skin quads meeting at a right-angled concave corner (the H-type's wake root and
   // the rear interfaces below it) stay apart when each rises from its base edges at less than 45
-  // degrees: 2 height / edge <= 0.6 for every edge.
+  // degrees: 2 height / width <= 0.6.
   // Lower first (flat quads), then higher: a warped quad needs the apex above all four corner planes.
-  const double start = kHeightPerShortestEdge * shortest;
-  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) {
-    const Eigen::Vector3d apex = centroid + factor * start * normal;
+  // Last, heights from the mean edge: a twisted trapezoid with one short edge (a rear interface's
+  // lowest quad, from the trailing edge down to its halo) needs an apex above the twist of its long
+  // edges, which its width does not measure; the lowest valid one is taken.
+  const double start = kHeightPerWidth * width, mean_edge = 0.25 * perimeter;
+  std::vector<double> heights;
+  for (const double factor : {1.0, 0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625, 2.0, 4.0}) heights.push_back(factor * start);
+  for (const double factor : {0.3, 0.4, 0.55, 0.75, 1.0})
+    if (factor * mean_edge > 4.0 * start) heights.push_back(factor * mean_edge);
+  for (const double height : heights) {
+    const Eigen::Vector3d apex = centroid + height * normal;
     nodes.row(4) = apex.transpose();
     if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;
   }

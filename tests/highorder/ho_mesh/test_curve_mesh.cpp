@@ -219,6 +219,19 @@ TEST(CurveMesh, CurvedThenSplitLayerIsValidAndKeepsTheWing) {
                    geometric_error(curved, *wing().model, 1.0, 6).max_rel);
 }
 
+TEST(GeometricError, MeasuresOnlyTheSurfacesItIsGiven) {
+  // The straight-sided layer's wing faces are off the curved upper surface; a list without that
+  // surface measures nothing there (the pipeline leaves a sphere far field straight on purpose).
+  const mesh::Mesh linear = upper_layer(6, 2, 0.02, false);
+  const GeometricError all = geometric_error(linear, *wing().model, 1.0, 6);
+  const GeometricError upper = geometric_error(linear, *wing().model, 1.0, 6, {wing().upper});
+  const GeometricError other = geometric_error(linear, *wing().model, 1.0, 6, {wing().upper + 1});
+  EXPECT_GT(all.max_rel, 1e-5);
+  EXPECT_EQ(upper.max_rel, all.max_rel);
+  EXPECT_EQ(upper.samples, all.samples);
+  EXPECT_EQ(other.samples, 0);
+}
+
 TEST(CurveMesh, RejectsBadInput) {
   const mesh::Mesh linear = upper_layer(4, 1, 0.02, false);
   EXPECT_THROW(curve_mesh(linear, *wing().model, {0, NodeSet::GLL, 50, 1e-10}), std::invalid_argument);

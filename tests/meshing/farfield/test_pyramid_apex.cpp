@@ -2,8 +2,12 @@
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
+#include "semimesh/ho/validity.hpp"
 
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
 
 namespace semimesh::farfield {
 namespace {
@@ -22,6 +26,35 @@ TEST(PyramidApex, ThinQuadGetsAFlatPyramid) {
   // 0.01 x 1: the apex 0.003 above, so that it leans less than 45 degrees over its long edges too
   const Vector3d apex = pyramid_apex({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 0.01, 0), Vector3d(0, 0.01, 0)});
   EXPECT_NEAR((apex - Vector3d(0.5, 0.005, 0.003)).norm(), 0.0, 1e-12);
+}
+
+TEST(PyramidApex, ShearedParallelogramRisesLessThanFortyFiveDegreesFromItsLongEdges) {
+  // Edges 1 and ~2.01, altitudes 0.2 and ~0.0995 (the wake block's underside behind a steep wake
+  // direction): the apex 0.3 times the smaller altitude above, not 0.3 times the shorter edge (that
+  // pyramid leaned over its long edges at 80 degrees and crossed its neighbours' in TetGen's input).
+  const std::array<Vector3d, 4> quad{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(3, 0.2, 0), Vector3d(2, 0.2, 0)};
+  const Vector3d apex = pyramid_apex(quad);
+  const double altitude = 0.2 / std::hypot(2.0, 0.2);
+  EXPECT_NEAR(apex.z(), 0.3 * altitude, 1e-12);
+  EXPECT_NEAR((apex.head<2>() - Eigen::Vector2d(1.5, 0.1)).norm(), 0.0, 1e-12);
+}
+
+TEST(PyramidApex, TwistedTrapezoidWithAShortEdgeGetsATallerApex) {
+  // An H-type rear interface's lowest quad (a swept NACA 4412 behind its base): a 0.016 edge on the
+  // trailing edge, 0.12 long sides, its corners 0.0075 off their mean plane. Heights from the short
+  // edge (up to 0.019) are all invalid; about 0.07 over the centre is valid.
+  const std::array<Vector3d, 4> quad{Vector3d(1.02003336, 0.00121949105, 0.115611525),
+                                     Vector3d(1.11099088, 0.0747518669, 0.1),
+                                     Vector3d(1.05315867, 0.115122563, 0.126466576),
+                                     Vector3d(1.0227955, 0.00121539569, 0.131685306)};
+  const Vector3d apex = pyramid_apex(quad);
+  Eigen::MatrixX3d nodes(5, 3);
+  for (int i = 0; i < 4; ++i) nodes.row(i) = quad[i].transpose();
+  nodes.row(4) = apex.transpose();
+  EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid);
+  const Vector3d centre = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
+  EXPECT_GT((apex - centre).norm(), 0.019);  // above the short edge's heights
+  EXPECT_LT((apex - centre).norm(), 0.1);    // the lowest valid one found, below the long edges' length
 }
 
 TEST(PyramidApex, NonConvexQuadHasNoValidPyramid) {

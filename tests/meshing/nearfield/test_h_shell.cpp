@@ -7,6 +7,7 @@
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/nearfield/error.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
+#include "semimesh/nearfield/pyramid_apex.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <gtest/gtest.h>
@@ -27,13 +28,18 @@ struct Built {
   NearField field;
 };
 
-Built build(const WakeParams& wake, bool sharp = false) {
-  Built b;
+mock_cad::NacaWingParams naca0012(bool sharp) {
   mock_cad::NacaWingParams wing;
   wing.code = "0012";
   wing.span = 1.5;
   wing.sharp_te = sharp;
-  b.model = mock_cad::make_naca_wing(wing);
+  return wing;
+}
+
+Built build(const WakeParams& wake, bool sharp = false, const mock_cad::NacaWingParams& wing = naca0012(false),
+            double thickness = 0.05, double wall_thickness = 0.04) {
+  Built b;
+  b.model = mock_cad::make_naca_wing(sharp ? naca0012(true) : wing);
   surface::SizeParams size;
   size.max_size = 0.4;
   size.min_size = 0.01;
@@ -49,8 +55,8 @@ Built build(const WakeParams& wake, bool sharp = false) {
     if (auto s = b.model->find_surface(name)) roles.body_surfaces.push_back(*s);
   roles.wall_surface = *b.model->find_surface("wall");
   ShellParams shell;
-  shell.thickness = 0.05;
-  b.field = build_h_shell(*b.model, meshes, roles, shell, JunctionParams{}, 0.04, wake, b.model->bbox(), {});
+  shell.thickness = thickness;
+  b.field = build_h_shell(*b.model, meshes, roles, shell, JunctionParams{}, wall_thickness, wake, b.model->bbox(), {});
   return b;
 }
 
@@ -128,6 +134,44 @@ int curve_named(const cad::Model& model, const std::string& name) {
     if (model.curve(c).name() == name) return c;
   return -1;
 }
+
+// The quads the near field leaves to the far field each carry a valid pyramid. On a swept,
+// cambered base the junction's faces along the base's root were twisted (its two corners' strip
+// tops at different heights) until no apex was valid over the lowest one: the strip tops along the
+// bare base now stand at one height.
+TEST(HShell, SweptCamberedBaseLeavesQuadsAPyramidFits) {
+  mock_cad::NacaWingParams wing;
+  wing.code = "2412";
+  wing.sweep_deg = 28.6;
+  wing.taper = 0.948;
+  wing.span = 1.0;
+  const Built b = build(short_wake(), false, wing, /*thickness=*/0.14, /*wall_thickness=*/0.1);
+  const mesh::Mesh& m = b.field.mesh;
+  int quads = 0;
+  for (const SkinFace& f : b.field.skin) {
+    if (f.count != 4) continue;
+    ++quads;
+    std::array<Eigen::Vector3d, 4> q;
+    for (int k = 0; k < 4; ++k) q[k] = m.node(f.nodes[k]);
+    EXPECT_TRUE(pyramid_apex(q).has_value()) << "skin quad at " << (0.25 * (q[0] + q[1] + q[2] + q[3])).transpose();
+  }
+  EXPECT_GT(quads, 0);
+  // The junction's strip tops on the base (wing nodes on the base surface or its corner curves,
+  // the lowest row of them): one height.
+  const int te_base = *b.model->find_surface("te_base");
+  const int te_upper = curve_named(*b.model, "te_upper"), te_lower = curve_named(*b.model, "te_lower");
+  std::vector<double> heights;
+  for (mesh::NodeId v = 0; v < m.num_nodes(); ++v) {
+    const mesh::CadAttachment& at = m.cad_attachment(v);
+    const bool on_base = (at.kind == mesh::CadAttachment::Surface && at.entity == te_base) ||
+                         (at.kind == mesh::CadAttachment::Curve && (at.entity == te_upper || at.entity == te_lower));
+    if (on_base && m.node(v).z() > 1e-9) heights.push_back(m.node(v).z());
+  }
+  std::sort(heights.begin(), heights.end());
+  ASSERT_GE(heights.size(), 2u);
+  EXPECT_NEAR(heights[1], heights[0], 1e-6);
+}
+
 
 // Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own
 // normal (two offsets per curve node), the wake's upper and lower hexes share the swept curve (the

@@ -5,6 +5,8 @@
 #include "semimesh/cad/model.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
+#include <vector>
+
 namespace semimesh::ho {
 
 struct GeometricError {
@@ -16,8 +18,10 @@ struct GeometricError {
 /// Samples every boundary face whose vertices lie on one CAD surface (by their attachments) at a
 /// lattice of samples_per_edge intervals per edge, maps the samples through the face's own map, and
 /// projects each onto the surface (guess: the (u, v) interpolated from the face nodes' parameters).
+/// Only faces on `surfaces` when it is not empty (the pipeline's: the body and the wall, which it
+/// curves; a curved far field such as a sphere stays straight-sided on purpose).
 /// Throws std::invalid_argument for reference_length <= 0 or samples_per_edge < 1.
 GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, double reference_length,
-                               int samples_per_edge = 10);
+                               int samples_per_edge = 10, const std::vector<int>& surfaces = {});
 
 }  // namespace semimesh::ho
