@@ -11,6 +11,7 @@ add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/flat_corners.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_surface.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/structured_surface.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/strip_counts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_quality.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/model_surfaces.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/cad_roles.cpp)

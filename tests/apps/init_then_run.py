@@ -1,11 +1,12 @@
 """`semimesh init --cad FILE` output run by `semimesh run` unchanged but for the given --set keys.
 
-  init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...]
+  init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
 
 Writes DIR/wing.toml with init, runs it into DIR/out, and fails unless the run exits 0 with
-0 invalid elements.
+0 invalid elements (and elements in each of the given regions, by report.json).
 """
 import argparse
+import json
 import os
 import shutil
 import subprocess
@@ -18,6 +19,7 @@ def main():
     parser.add_argument("--cad", required=True)
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--set", action="append", default=[], help="config override for the run")
+    parser.add_argument("--regions", default="", help="comma-separated regions the mesh must hold elements in")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -36,6 +38,12 @@ def main():
     if "invalid elements                        0" not in done.stdout:
         print("FAIL: the run reports invalid elements")
         return 1
+    with open(os.path.join(args.workdir, "out", "report.json")) as f:
+        regions = json.load(f)["elements_by_region"]
+    for region in filter(None, args.regions.split(",")):
+        if regions.get(region, 0) <= 0:
+            print("FAIL: no elements in region '%s': %s" % (region, regions))
+            return 1
     print("ok")
     return 0
 

@@ -8,7 +8,7 @@ order >= 4 through exact bounds on Gmsh's own basis (Gmsh 4.8's plugin is wrong 
 gmsh_validity.py and pyramid_bounds.py): all must be positive. Then checks exit codes of bad inputs.
 
   gmsh_check_run.py --exe SEMIMESH --config CASE.toml --workdir DIR [--set KEY=VALUE ...]
-                    [--timeout SECONDS] [--skip-bad-input]
+                    [--timeout SECONDS] [--skip-bad-input] [--regions NAME,NAME,...]
 
 --set options go to the main run only (e.g. highorder.order=2 for a curved mesh).
 """
@@ -50,6 +50,8 @@ def main():
                         help="gmsh reads and counts the elements but does not certify them (order > 6: Gmsh's "
                              "Bezier matrices for the Jacobian of an order-8 hex take minutes per element type)")
     parser.add_argument("--timeout", type=float, default=240, help="seconds for the main run")
+    parser.add_argument("--regions", default="",
+                        help="comma-separated regions report.json must hold elements in (e.g. the H-type's wake)")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     out = os.path.join(args.workdir, "out")
@@ -63,6 +65,9 @@ def main():
             fail("no progress line for stage '%s' in:\n%s" % (stage, stdout))
     with open(os.path.join(out, "report.json")) as f:
         report = json.load(f)
+    for region in filter(None, args.regions.split(",")):
+        if report["elements_by_region"].get(region, 0) <= 0:
+            fail("report.json: no elements in region '%s': %s" % (region, report["elements_by_region"]))
 
     written = sorted(f for f in os.listdir(out) if f.endswith(".msh"))
     if not written:

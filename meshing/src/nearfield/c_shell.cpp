@@ -86,7 +86,9 @@ std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles&
   return surface_of;
 }
 
-// The curve leaving a root vertex up the body: the one of its curves that does not bound the wall.
+// The curve leaving a root vertex up the body: the one of its curves that does not bound the wall;
+// -1 when none does (a vertex inside one body face, e.g. the leading edge of a wing whose skin is
+// one face: the strip top is then on that face).
 int spanwise_curve(const cad::Model& model, int vertex, int wall) {
   std::vector<int> found;
   for (int c : model.curves_of_vertex(vertex)) {
@@ -94,10 +96,11 @@ int spanwise_curve(const cad::Model& model, int vertex, int wall) {
     if (std::none_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; }))
       found.push_back(c);
   }
+  if (found.empty()) return -1;
   if (found.size() != 1)
     throw NearFieldError("near field: the root vertex '" + model.vertex(vertex).name + "' (id " +
                          std::to_string(vertex) + ") has " + std::to_string(found.size()) +
-                         " curves leaving the wall; the junction block needs exactly one");
+                         " curves leaving the wall; the junction block needs at most one");
   return found.front();
 }
 
@@ -217,6 +220,16 @@ CrackedLayer crack_open(const BodyMesh& layer, const CrackNodes& crack) {
   return out;
 }
 
+// The root curve a root node lies on (of its vertex: the first curve on the wall).
+int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) {
+  if (root.kind == CadAttachment::Curve) return root.entity;
+  for (int c : model.curves_of_vertex(root.entity)) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; })) return c;
+  }
+  return -1;
+}
+
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
 // plane away from the body (bisecting the two root segments' outward normals).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
@@ -238,15 +251,15 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
   // foot projected onto the edge of its face, raised, could land on the next root's own).
   CadAttachment from_root;
-  if (at.kind == CadAttachment::Vertex) {
-    const int c = spanwise_curve(model, at.entity, roles.wall_surface);
+  const int c = at.kind == CadAttachment::Vertex ? spanwise_curve(model, at.entity, roles.wall_surface) : -1;
+  if (c >= 0) {
     const auto p = model.curve(c).project(j.halo);
     j.strip_top = p.point;
     j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
     from_root = {CadAttachment::Curve, c, model.curve(c).project(j.root).t, 0.0};
   } else {
-    const auto it = root_surface.find(at.entity);
-    if (at.kind != CadAttachment::Curve || it == root_surface.end())
+    const auto it = root_surface.find(root_curve_of(model, at, roles.wall_surface));
+    if (it == root_surface.end())
       throw NearFieldError("near field: the root node at " + point_label(j.root) + " is not on a body-wall curve");
     const cad::Surface& face = model.surface(it->second);
     const auto p = face.project(j.halo, face.project(j.root).uv);
@@ -297,23 +310,30 @@ void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const Bod
   }
 }
 
-// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node); throws when
-// the strip is too tall for the body or a triangle would fold.
+// Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node), fading out
+// at the lowest CAD vertex of the body off the wall (the tip's corners on an ordinary wing; on a
+// revolved tip the trailing edge's top, below the tip's crown: a node on the tip's faces must not
+// be lifted past the end of the face below it); throws when the strip is too tall for the body or
+// a triangle would fold. Returns the strip height and the body's top height.
 std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& wall, const std::vector<int>& loop,
                                           const std::vector<JunctionNode>& nodes, double delta_wall, BodyMesh& body) {
   double tip = 0.0, strip = 0.0;
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
-  if (!(strip < 0.5 * tip))
+  double ceiling = tip;
+  for (int v = 0; v < body.num_nodes(); ++v)
+    if (body.cad[v].kind == CadAttachment::Vertex && wall.height(body.points[v]) > 1e-9 * tip)
+      ceiling = std::min(ceiling, wall.height(body.points[v]));
+  if (!(strip < 0.5 * ceiling))
     throw NearFieldError("near field: the root strip (height " + number_label(strip) +
                          ") for the wall layer thickness " + number_label(delta_wall) +
-                         " takes more than half of the body's height " + number_label(tip) +
-                         " above the wall; use a thinner wall layer");
+                         " takes more than half of the body's height " + number_label(ceiling) +
+                         " above the wall (up to its lowest corner off the wall); use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
   std::vector<char> on_root(body.num_nodes(), 0);
   for (int r : loop) on_root[r] = 1;
   for (int v = 0; v < body.num_nodes(); ++v)
-    if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, tip, body.points[v], body.cad[v]);
+    if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, ceiling, body.points[v], body.cad[v]);
   for (std::size_t i = 0; i < loop.size(); ++i)
     body.points[loop[i]] = nodes[i].strip_top, body.cad[loop[i]] = nodes[i].strip_top_cad;
   for (const auto& t : body.triangles) {
@@ -329,16 +349,6 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
           "; the root loop is too short for the sizes: use a thinner wall layer or a finer surface mesh");
   }
   return {strip, tip};
-}
-
-// The root curve a root node lies on (of its vertex: the first curve on the wall).
-int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) {
-  if (root.kind == CadAttachment::Curve) return root.entity;
-  for (int c : model.curves_of_vertex(root.entity)) {
-    const auto& uses = model.surfaces_of_curve(c);
-    if (std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == wall; })) return c;
-  }
-  return -1;
 }
 
 // The strip top next to body node `node` (the node itself, or one of a triangle it shares), -1 when
@@ -624,11 +634,11 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
   return p;
 }
 
-Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double ceiling, const Vec3& x,
                CadAttachment& cad) {
   const double d = wall.height(x);
-  if (d >= tip * (1.0 - 1e-12) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
-  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / tip));
+  if (d >= ceiling * (1.0 - 1e-9) || cad.kind == CadAttachment::Vertex || cad.kind == CadAttachment::None) return x;
+  return move_to_height(model, wall, x, cad, strip + d * (1.0 - strip / ceiling));
 }
 
 }  // namespace detail

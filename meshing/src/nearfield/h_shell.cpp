@@ -36,12 +36,43 @@ std::vector<double> stations(const WakeParams& w) {
   return s;
 }
 
+// The base's flat corners: CAD vertices where its two curves meet at more than kFlatCorner degrees
+// inside the face (a revolved tip's rounded trailing edge continues the base's sides tangentially:
+// the NekMesh wing's base is a rectangle capped by a half disc). A structured quad there has two
+// edges along one tangent line: curved onto the CAD its Jacobian vanishes at that corner and a hex
+// swept from it is invalid at order >= 2.
+constexpr double kFlatCorner = 150.0;
+
+std::set<int> flat_base_corners(const cad::Model& model, int te) {
+  std::set<int> flat;
+  const auto& loops = model.loops(te);
+  for (const cad::Loop& loop : loops)
+    for (std::size_t k = 0; k < loop.uses.size(); ++k) {
+      const cad::CurveUse& in = loop.uses[k];
+      const cad::CurveUse& out = loop.uses[(k + 1) % loop.uses.size()];
+      const cad::Curve& a = model.curve(in.curve);
+      const cad::Curve& b = model.curve(out.curve);
+      if (a.is_degenerate() || b.is_degenerate()) continue;
+      // Tangents leaving the shared vertex along each curve.
+      const Vec3 back = in.forward ? Vec3(-a.derivatives(a.bounds().hi).d1) : Vec3(a.derivatives(a.bounds().lo).d1);
+      const Vec3 ahead = out.forward ? Vec3(b.derivatives(b.bounds().lo).d1) : Vec3(-b.derivatives(b.bounds().hi).d1);
+      const double cosine = back.normalized().dot(ahead.normalized());
+      if (cosine < std::cos(kFlatCorner * kPi / 180.0)) {
+        const auto ends = model.curve_vertices(out.curve);
+        flat.insert(out.forward ? ends[0] : ends[1]);
+      }
+    }
+  return flat;
+}
+
 // The surface meshes with the base's quads as triangle pairs (q0 q1 q2, q0 q2 q3), so the junction
-// machinery sees one triangulated body; quad i becomes triangles 2i and 2i + 1 of the base.
-surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, int te) {
+// machinery sees one triangulated body; quad i becomes triangles 2i and 2i + 1 of the base. A quad
+// at a flat corner is turned to start there, so its diagonal leaves the corner and halves its angle.
+surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, int te, const std::set<int>& flat) {
   surface::SurfaceMeshes out = meshes;
   surface::SurfaceMesh& m = out.surfaces.at(te);
-  for (const auto& q : m.quads) {
+  for (auto q : m.quads) {
+    for (int k = 0; k < 4 && !flat.count(m.origin[q[0]].vertex); ++k) std::rotate(q.begin(), q.begin() + 1, q.end());
     m.triangles.push_back({q[0], q[1], q[2]});
     m.triangles.push_back({q[0], q[2], q[3]});
   }
@@ -49,10 +80,10 @@ surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, i
   return out;
 }
 
-bool hex_valid(const mesh::Mesh& m, const std::array<NodeId, 8>& h) {
-  Eigen::MatrixX3d x(8, 3);
-  for (int k = 0; k < 8; ++k) x.row(k) = m.node(h[k]).transpose();
-  return ho::certify_jacobian(ho::Shape::Hexahedron, 1, ho::NodeSet::Equispaced, x).valid;
+bool element_valid(const mesh::Mesh& m, ho::Shape shape, const std::vector<NodeId>& v) {
+  Eigen::MatrixX3d x(v.size(), 3);
+  for (std::size_t k = 0; k < v.size(); ++k) x.row(k) = m.node(v[k]).transpose();
+  return ho::certify_jacobian(shape, 1, ho::NodeSet::Equispaced, x).valid;
 }
 
 // One quad of the wake's cross-section at the trailing edge: q0 -> q1 its body-side edge and
@@ -60,6 +91,7 @@ bool hex_valid(const mesh::Mesh& m, const std::array<NodeId, 8>& h) {
 struct Section {
   std::array<NodeId, 4> q;
   bool layer = false;
+  bool triangle = false;  ///< a base triangle (q[3] unused): swept into a prism
 };
 
 // Vertex pairs (bottom, top) along reference axis 0, 1, 2 of a hexahedron (Gmsh order).
@@ -172,13 +204,14 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
          (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
                                  : "") +
          "; the H-type near field sweeps the wake from the trailing edge");
+  const std::set<int> flat = blunt ? flat_base_corners(model, te) : std::set<int>{};
   if (blunt) {
     const surface::SurfaceMesh& te_mesh = meshes.surfaces.at(te);
     if (te_mesh.quads.empty() || !te_mesh.triangles.empty())
       fail("the trailing-edge base " + surface_label(model, te) + " must be meshed with structured quads only");
   }
 
-  detail::JunctionShell js = detail::build_junction_shell(model, blunt ? base_as_triangles(meshes, te) : meshes, roles,
+  detail::JunctionShell js = detail::build_junction_shell(model, blunt ? base_as_triangles(meshes, te, flat) : meshes, roles,
                                                           params, junction, wall_thickness, te, crack);
   if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
@@ -240,12 +273,25 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
          " above the wall, leaving no trailing-edge row below the wing's tip (" + number_label(js.tip) +
          "); use a smaller gap");
   auto above_cut = [&](NodeId v) { return js.wall.height(m.node(v)) >= cut - tolerance; };
-
+  // A base quad at a flat corner is swept as two prisms, its triangles split from the corner (a
+  // hex there would have a vanishing Jacobian at the corner once curved).
+  auto at_flat_corner = [&](const std::array<NodeId, 4>& q) {
+    return std::any_of(q.begin(), q.end(), [&](NodeId v) {
+      const mesh::CadAttachment& a = m.cad_attachment(v);
+      return a.kind == mesh::CadAttachment::Vertex && flat.count(a.entity) > 0;
+    });
+  };
   std::vector<Section> section;
   std::vector<std::array<NodeId, 4>> exposed_base;
   for (const auto& q : base) {
-    if (std::all_of(q.begin(), q.end(), above_cut)) section.push_back({q, false});
-    else exposed_base.push_back(q);
+    if (!std::all_of(q.begin(), q.end(), above_cut)) {
+      exposed_base.push_back(q);
+    } else if (at_flat_corner(q)) {  // q starts at its flat corner (base_as_triangles)
+      section.push_back({{q[0], q[1], q[2], mesh::kNoNode}, false, true});
+      section.push_back({{q[0], q[2], q[3], mesh::kNoNode}, false, true});
+    } else {
+      section.push_back({q, false});
+    }
   }
   const std::set<int> chain(js.chain.begin(), js.chain.end());
   for (const auto& [a, b] : open_edges(js.layer)) {
@@ -293,19 +339,22 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
 
   const int wake_region = m.region_index("wake");
   for (Section c : section) {
-    const Vec3 n = (m.node(c.q[1]) - m.node(c.q[0])).cross(m.node(c.q[3]) - m.node(c.q[0]));
+    const int corners = c.triangle ? 3 : 4;
+    const Vec3 n = (m.node(c.q[1]) - m.node(c.q[0])).cross(m.node(c.q[corners - 1]) - m.node(c.q[0]));
     int axis = 1;  // the layer direction q0 -> q3
-    if (n.dot(d) < 0.0) std::swap(c.q[1], c.q[3]), axis = 0;
-    if (!c.layer) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {c.q[0], c.q[3], c.q[2], c.q[1]});
+    if (n.dot(d) < 0.0) std::swap(c.q[1], c.q[corners - 1]), axis = 0;
+    if (c.triangle) m.add_boundary_face("wing", ho::Shape::Triangle, {c.q[0], c.q[2], c.q[1]});
+    else if (!c.layer) m.add_boundary_face("wing", ho::Shape::Quadrilateral, {c.q[0], c.q[3], c.q[2], c.q[1]});
+    const ho::Shape shape = c.triangle ? ho::Shape::Prism : ho::Shape::Hexahedron;
     for (std::size_t k = 0; k + 1 < s.size(); ++k) {
-      std::array<NodeId, 8> h;
-      for (int v = 0; v < 4; ++v) h[v] = station_nodes(c.q[v])[k], h[v + 4] = station_nodes(c.q[v])[k + 1];
-      if (!hex_valid(m, h))
+      std::vector<NodeId> h(2 * corners);
+      for (int v = 0; v < corners; ++v) h[v] = station_nodes(c.q[v])[k], h[v + corners] = station_nodes(c.q[v])[k + 1];
+      if (!element_valid(m, shape, h))
         fail(std::string(wake.widening_deg > 0.0 ? "wake.widening = " + number_label(wake.widening_deg) + " with " : "") +
              "wake.direction = " + direction_label(wake) + ": the wake hex behind " + point_label(m.node(c.q[0])) +
              " at station " + std::to_string(k) +
              " would be inverted (the block folds); use a smaller widening or a direction closer to the chord");
-      m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), wake_region);
+      m.add_element(shape, h, wake_region);
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
       field.element_surface.push_back(te);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
@@ -325,7 +374,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     for (NodeId v : ids) lowest = std::min(lowest, js.wall.height(m.node(v)));
   w.gap = lowest - wall_thickness;
   for (const Section& c : section)  // the trailing-edge nodes: rear interfaces' body side, base quads
-    for (int k = 0; k < (c.layer ? 2 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
+    for (int k = 0; k < (c.layer ? 2 : c.triangle ? 3 : 4); ++k) w.origins.push_back(m.node(c.q[k]));
   // A sharp edge's nodes below the cut and its root R too: the ratio there is the trailing edge's
   // own (r), at R and W alike. The junction hexes beside the fan interpolate their layer
   // interfaces between R's and W's along R-W, the fan's pieces (cut in advance, straight from R's

@@ -60,9 +60,9 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
 Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, mesh::CadAttachment& cad,
                     double target);
 
-/// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / tip),
-/// updating its attachment; nodes at the tip and CAD vertices stay.
-Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double tip, const Vec3& x,
+/// The lift of a wing node at height d along its CAD entity to height strip + d (1 - strip / ceiling),
+/// updating its attachment; nodes at or above the ceiling and CAD vertices stay.
+Vec3 lift_node(const cad::Model& model, const WallFrame& wall, double strip, double ceiling, const Vec3& x,
                mesh::CadAttachment& cad);
 
 }  // namespace semimesh::nearfield::detail

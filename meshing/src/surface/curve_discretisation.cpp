@@ -61,15 +61,15 @@ CurveMesh pole_mesh(const cad::Model& model, int curve) {
   return mesh;
 }
 
-}  // namespace
+// The size integral F = integral of ds / h along a curve, cumulative at fine samples that resolve
+// the size field, with the arc length s at the same samples.
+struct SizeIntegral {
+  std::vector<double> s;  ///< [samples] arc length from the start
+  std::vector<double> F;  ///< [samples] integral of ds / h from the start
+};
 
-CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& size, int min_segments) {
-  check_curve_id(model, curve);
-  if (min_segments < 1) throw SurfaceMeshError("min_segments must be >= 1, got " + std::to_string(min_segments));
-  if (model.curve(curve).is_degenerate()) return pole_mesh(model, curve);
-  const cad::Curve& c = model.curve(curve);
+SizeIntegral size_integral(const cad::Curve& c, const SizeField& size) {
   const cad::Interval range = c.bounds();
-
   // Fine samples (parameter, size), bisected until every interval is short against the size.
   std::vector<double> t(kInitialSamples + 1), h(kInitialSamples + 1);
   for (int i = 0; i <= kInitialSamples; ++i) {
@@ -98,24 +98,51 @@ CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& 
   }
 
   // F = integral of ds / h (trapezoid), cumulative at the samples.
-  std::vector<double> F(t.size(), 0.0);
+  SizeIntegral out;
+  std::vector<double>& F = out.F;
+  F.assign(t.size(), 0.0);
   for (std::size_t i = 0; i + 1 < t.size(); ++i) F[i + 1] = F[i] + 0.5 * ds[i] * (1.0 / h[i] + 1.0 / h[i + 1]);
-  const int floor_segments = std::max(min_segments, is_closed(model, curve) ? 3 : 1);
-  const int n = std::max(floor_segments, static_cast<int>(std::lround(F.back())));
+  out.s.assign(t.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) out.s[i + 1] = out.s[i] + ds[i];
+  return out;
+}
 
-  // Node i at F = i F_end / n, as an arc-length fraction (linear within a fine interval).
-  std::vector<double> s(t.size(), 0.0);
-  for (std::size_t i = 0; i + 1 < t.size(); ++i) s[i + 1] = s[i] + ds[i];
+// n segments, node i at F = i F_end / n, as an arc-length fraction (linear within a fine interval).
+CurveMesh mesh_by_size_integral(const cad::Model& model, int curve, const SizeIntegral& integral, int n) {
+  const std::vector<double>& s = integral.s;
+  const std::vector<double>& F = integral.F;
   std::vector<double> fractions{0.0};
   std::size_t k = 0;
   for (int i = 1; i < n; ++i) {
     const double target = F.back() * i / n;
     while (k + 2 < F.size() && F[k + 1] < target) ++k;
     const double w = F[k + 1] > F[k] ? (target - F[k]) / (F[k + 1] - F[k]) : 0.0;
-    fractions.push_back((s[k] + w * ds[k]) / s.back());
+    fractions.push_back((s[k] + w * (s[k + 1] - s[k])) / s.back());
   }
   fractions.push_back(1.0);
   return mesh_from_fractions(model, curve, fractions);
+}
+
+}  // namespace
+
+CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& size, int min_segments) {
+  check_curve_id(model, curve);
+  if (min_segments < 1) throw SurfaceMeshError("min_segments must be >= 1, got " + std::to_string(min_segments));
+  if (model.curve(curve).is_degenerate()) return pole_mesh(model, curve);
+  const SizeIntegral integral = size_integral(model.curve(curve), size);
+  const int floor_segments = std::max(min_segments, is_closed(model, curve) ? 3 : 1);
+  const int n = std::max(floor_segments, static_cast<int>(std::lround(integral.F.back())));
+  return mesh_by_size_integral(model, curve, integral, n);
+}
+
+CurveMesh discretise_curve_to_count(const cad::Model& model, int curve, const SizeField& size, int segments) {
+  check_curve_id(model, curve);
+  if (model.curve(curve).is_degenerate()) return pole_mesh(model, curve);
+  if (segments < (is_closed(model, curve) ? 3 : 1))
+    throw SurfaceMeshError(cad::curve_label(model, curve) + ": segments must be >= " +
+                           (is_closed(model, curve) ? "3 on a closed curve" : std::string("1")) + ", got " +
+                           std::to_string(segments));
+  return mesh_by_size_integral(model, curve, size_integral(model.curve(curve), size), segments);
 }
 
 CurveMesh discretise_curve(const cad::Model& model, int curve, const CurveCount& count) {

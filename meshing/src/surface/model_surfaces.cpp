@@ -57,7 +57,9 @@ SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size
   // Progress: the curves count as one item, each surface as one.
   const double items = 1.0 + model.num_surfaces();
   if (progress) progress(0.0, "curves");
-  out.curves = discretise_all_curves(model, size, options.curve_counts, options.min_segments);
+  std::vector<CurveMesh> curves = discretise_all_curves(model, size, options.curve_counts, options.min_segments).all();
+  equalise_strip_counts(model, size, options.structured_surfaces, options.curve_counts, curves);
+  out.curves = CurveMeshes(std::move(curves));
   for (int s = 0; s < model.num_surfaces(); ++s) {
     if (progress) progress((1.0 + s) / items, model.surface(s).name());
     out.surfaces.push_back(options.structured_surfaces.count(s)

@@ -1,4 +1,5 @@
 // The whole NACA model: every surface meshed, closed and conforming, and the count scaling.
+#include "semimesh/surface/error.hpp"
 #include "semimesh/surface/mesh_quality.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 #include "wing_fixture.hpp"
@@ -123,6 +124,46 @@ TEST(ModelSurfaces, StructuredTrailingEdgeBaseConformsWithItsNeighbours) {
   const SurfaceMeshes with_quads = mesh_model_surfaces(*model, size, options);
   EXPECT_EQ(with_quads.num_quads(), 20);
   for (const auto& line : check_conformity(*model, with_quads)) ADD_FAILURE() << line;
+}
+
+// A tapered wing's base is thinner at the tip (0.3 x 2.5e-3 thick) than at the root (2.5e-3): at
+// te_size 1e-3 the size field gives root_te 2 or more segments and tip_te 1 (the NekMesh wing's
+// base got 1 and 2). The strip takes the root's count on both, and its neighbours (the wall and
+// the tip) mesh the same curve meshes.
+TEST(ModelSurfaces, StructuredStripTakesTheLargerCountOfItsOppositeCurves) {
+  mock_cad::NacaWingParams params;
+  params.taper = 0.3;
+  params.box = {-2, -2, 0, 3, 2, 4};
+  auto model = mock_cad::make_naca_wing(params);
+  SizeParams p;
+  p.max_size = 0.4;
+  p.min_size = 1e-3;
+  p.curvature_segments = 0.0;
+  p.te_size = 1e-3;
+  p.gradation = 2.0;  // coarse away from the trailing edge: a lean test
+  SizeField size(*model, p);
+  const int root_te = testing::curve_named(*model, "root_te"), tip_te = testing::curve_named(*model, "tip_te");
+  const int at_root = discretise_curve(*model, root_te, size).segments();
+  ASSERT_GE(at_root, 2);
+  ASSERT_EQ(discretise_curve(*model, tip_te, size).segments(), 1);
+  ModelMeshOptions options;
+  for (const char* name : {"te_upper", "te_lower"}) options.curve_counts[testing::curve_named(*model, name)] = {12, {}};
+  const int te_base = testing::surface_named(*model, "te_base");
+  options.structured_surfaces = {te_base};
+  const SurfaceMeshes meshes = mesh_model_surfaces(*model, size, options);
+  EXPECT_EQ(meshes.curves.at(root_te).segments(), at_root);
+  EXPECT_EQ(meshes.curves.at(tip_te).segments(), at_root);
+  EXPECT_EQ(meshes.surfaces[te_base].quads.size(), 12u * at_root);
+  for (const auto& line : check_conformity(*model, meshes)) ADD_FAILURE() << line;
+
+  // A prescribed count imposes itself on the opposite free curve; two prescribed ones must agree.
+  const std::map<int, CurveCount> tip{{tip_te, {3, {}}}};
+  std::vector<CurveMesh> curves = discretise_all_curves(*model, size, tip).all();
+  equalise_strip_counts(*model, size, {te_base}, tip, curves);
+  EXPECT_EQ(curves[root_te].segments(), 3);
+  const std::map<int, CurveCount> both{{tip_te, {3, {}}}, {root_te, {4, {}}}};
+  curves = discretise_all_curves(*model, size, both).all();
+  EXPECT_THROW(equalise_strip_counts(*model, size, {te_base}, both, curves), SurfaceMeshError);
 }
 
 TEST(ModelSurfaces, CountScalesWithTheInverseSquareOfTheSize) {

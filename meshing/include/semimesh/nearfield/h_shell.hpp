@@ -24,7 +24,11 @@
 //    trailing-edge row at least `gap` above the wall layer's top) are swept along `direction` in
 //    `layers` streamwise cells growing by `growth` up to `length`, the layer offsets moving away
 //    from the wake sheet by tan(widening) per unit length. Hexes over rear interfaces continue their
-//    wing layer (a LayerStack of the wing family), hexes over the base are not split;
+//    wing layer (a LayerStack of the wing family), hexes over the base are not split. A base quad
+//    at a flat corner of the base (its two curves meeting at over 150 degrees, e.g. where a
+//    revolved tip's rounded trailing edge continues the base's sides tangentially) is swept as two
+//    prisms, its triangles split from that corner: a hex there has two edges on one tangent line
+//    and, curved, a Jacobian that vanishes at the corner;
 //  - the skin: every near-field face used once that is neither body, wall nor on the footprint,
 //    plus the base quads below the cut. A skin quad that the wing layer's split will cut (the rear
 //    interfaces below the cut, the junction's faces behind the base, the wake's root and outflow

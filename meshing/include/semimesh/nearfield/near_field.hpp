@@ -63,7 +63,7 @@ struct WakeBlock {
   Eigen::Vector3d span_axis = Eigen::Vector3d::UnitZ();  ///< unit, across `direction` (the wall normal's part)
   double length = 0.0;
   int streamwise_cells = 0;
-  int hexes = 0;
+  int hexes = 0;   ///< wake elements: hexes, and prisms behind a base's flat corners (h_shell.hpp)
   double gap = 0.0;  ///< measured: lowest wake node's height above the wall layer's top
 };
 

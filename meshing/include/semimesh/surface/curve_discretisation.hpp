@@ -44,6 +44,10 @@ struct CurveCount {
 /// vertex. Throws SurfaceMeshError on an unknown curve id or min_segments < 1.
 CurveMesh discretise_curve(const cad::Model& model, int curve, const SizeField& size, int min_segments = 1);
 
+/// Size-graded as above, but exactly `segments` segments (the nodes at equal shares of the integral
+/// of ds / h). Throws SurfaceMeshError on segments < 1 (< 3 on a closed curve).
+CurveMesh discretise_curve_to_count(const cad::Model& model, int curve, const SizeField& size, int segments);
+
 /// Prescribed count with a bunching law (fractions of the arc length). Throws SurfaceMeshError on
 /// segments < 1 or an invalid bunching parameter.
 CurveMesh discretise_curve(const cad::Model& model, int curve, const CurveCount& count);

@@ -31,6 +31,15 @@ struct SurfaceMeshes {
 SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size, const ModelMeshOptions& options = {},
                                   const ProgressCallback& progress = {});
 
+/// Opposite curves of each structured strip in `strips` (a loop of four curve uses) get equal segment
+/// counts: a curve prescribed in `prescribed` imposes its count on the opposite one; otherwise the
+/// smaller count is raised to the larger one, size-graded (discretise_curve_to_count). Repeated
+/// until every strip agrees, so strips sharing curves agree too. Throws SurfaceMeshError naming
+/// the surface and both curves when two prescribed opposite curves differ. Surfaces that are no
+/// such strip, or whose side is a pole, are left to mesh_surface_structured's error.
+void equalise_strip_counts(const cad::Model& model, const SizeField& size, const std::set<int>& strips,
+                           const std::map<int, CurveCount>& prescribed, std::vector<CurveMesh>& curves);
+
 /// Boundary edges (used by one element of their surface mesh) must each be a segment of a curve
 /// mesh, and every curve segment must be a boundary edge of exactly as many surface meshes as the
 /// model says the curve bounds (two on a closed model), with the very same two 3D points.
