@@ -3,6 +3,7 @@
 #include "semimesh/cad/labels.hpp"
 
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
+#include "semimesh/nearfield/pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "semimesh/farfield/detail/wall_annulus.hpp"
 #include "wall_layer.hpp"
@@ -189,18 +190,60 @@ std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const
   return triangles;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// The slope caps of skin quad `q`'s pyramid (nearfield::pyramid_apex): over each edge where the
+// neighbouring skin face closes in on the quad's side at a far-field angle theta < 180 degrees,
+// tan(0.45 theta). Two pyramids across that edge then keep a tenth of the wedge between them: at a
+// right angle the caps leave the usual heights alone, but behind a tapered wing the trailing edge
+// leans forward under the wake block and the corner between the block's underside and the rear
+// interfaces below it closes to ~60 degrees, where the usual heights crossed (TetGen aborted).
+std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mesh& mesh, std::size_t q,
+                                 const std::map<std::pair<NodeId, NodeId>, std::size_t>& face_of_edge) {
+  auto centre = [&](const nearfield::SkinFace& f) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int k = 0; k < f.count; ++k) c += mesh.node(f.nodes[k]);
+    return Eigen::Vector3d(c / f.count);
+  };
+  auto unit_normal = [&](const nearfield::SkinFace& f) {
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int k = 0; k < f.count; ++k) n += mesh.node(f.nodes[k]).cross(mesh.node(f.nodes[(k + 1) % f.count]));
+    return Eigen::Vector3d(n.normalized());
+  };
+  const nearfield::SkinFace& face = nf.skin[q];
+  const Eigen::Vector3d n = unit_normal(face);
+  std::array<double, 4> caps = nearfield::kNoSlopeCap;
+  for (int k = 0; k < 4; ++k) {
+    const NodeId a = face.nodes[k], b = face.nodes[(k + 1) % 4];
+    const auto it = face_of_edge.find({b, a});  // the neighbour runs the shared edge the other way
+    if (it == face_of_edge.end()) continue;
+    const nearfield::SkinFace& other = nf.skin[it->second];
+    const Eigen::Vector3d m = 0.5 * (mesh.node(a) + mesh.node(b));
+    if (!((centre(other) - m).dot(n) > 0.0)) continue;  // convex or flat: nothing closes in
+    const double between_normals = std::acos(std::clamp(n.dot(unit_normal(other)), -1.0, 1.0));
+    caps[k] = std::tan(0.45 * (kPi - between_normals));
+  }
+  return caps;
+}
+
 // Each skin quad becomes a pyramid; returns the far field's view of the skin: the skin triangles
 // and the pyramids' four side triangles.
 std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh, int& pyramids) {
+  std::map<std::pair<NodeId, NodeId>, std::size_t> face_of_edge;
+  for (std::size_t f = 0; f < nf.skin.size(); ++f)
+    for (int k = 0; k < nf.skin[f].count; ++k)
+      face_of_edge[{nf.skin[f].nodes[k], nf.skin[f].nodes[(k + 1) % nf.skin[f].count]}] = f;
   std::vector<Triangle> triangles;
-  for (const nearfield::SkinFace& face : nf.skin) {
+  for (std::size_t f = 0; f < nf.skin.size(); ++f) {
+    const nearfield::SkinFace& face = nf.skin[f];
     const auto& v = face.nodes;
     if (face.count == 3) {
       triangles.push_back({v[0], v[1], v[2]});
       continue;
     }
     if (face.count != 4) throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
-    const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])}));
+    const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])},
+                                                   slope_caps(nf, mesh, f, face_of_edge)));
     mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, mesh.region_index("farfield"));
     ++pyramids;
     for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});

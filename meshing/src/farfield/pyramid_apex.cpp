@@ -7,7 +7,10 @@
 
 namespace semimesh::farfield {
 
-Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
+Eigen::Vector3d pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad, const std::array<double, 4>& max_slope) {
+  if (const auto apex = nearfield::pyramid_apex(quad, max_slope)) return *apex;
+  // A warped quad in a tight corner (the bare triangles round a sharp trailing edge's tip) may need
+  // more height than the caps allow: the uncapped apex, which TetGen checks against its neighbours.
   if (const auto apex = nearfield::pyramid_apex(quad)) return *apex;
   const Eigen::Vector3d centroid = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
   std::ostringstream where;

@@ -11,7 +11,8 @@ namespace semimesh::nearfield {
 
 constexpr double kHeightPerWidth = 0.3;
 
-std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad) {
+std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad,
+                                            const std::array<double, 4>& max_slope) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
   double perimeter = 0.0;
   for (int i = 0; i < 4; ++i) {
@@ -26,12 +27,15 @@ std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>
   // The quad's narrowest width: twice the centre's distance to the nearest edge line, in the mean
   // plane (a rectangle's shorter side; a sheared parallelogram's smaller altitude, not its shorter
   // edge: the wake block's underside behind a steep wake direction).
-  double width = 1e300;
+  double width = 1e300, highest = 1e300;  // highest: the apex height every edge's slope cap allows
   for (int i = 0; i < 4; ++i) {
     Eigen::Vector3d edge = quad[(i + 1) % 4] - quad[i], to_centre = centroid - quad[i];
     edge -= edge.dot(normal) * normal;
     to_centre -= to_centre.dot(normal) * normal;
-    if (edge.norm() > 0.0) width = std::min(width, 2.0 * edge.normalized().cross(to_centre).norm());
+    if (!(edge.norm() > 0.0)) continue;
+    const double distance = edge.normalized().cross(to_centre).norm();
+    width = std::min(width, 2.0 * distance);
+    highest = std::min(highest, max_slope[i] * distance);
   }
 
   Eigen::MatrixX3d nodes(5, 3);
@@ -49,6 +53,7 @@ std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>
   for (const double factor : {0.3, 0.4, 0.55, 0.75, 1.0})
     if (factor * mean_edge > 4.0 * start) heights.push_back(factor * mean_edge);
   for (const double height : heights) {
+    if (height > highest) continue;
     const Eigen::Vector3d apex = centroid + height * normal;
     nodes.row(4) = apex.transpose();
     if (ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) return apex;

@@ -57,6 +57,17 @@ TEST(PyramidApex, TwistedTrapezoidWithAShortEdgeGetsATallerApex) {
   EXPECT_LT((apex - centre).norm(), 0.1);    // the lowest valid one found, below the long edges' length
 }
 
+TEST(PyramidApex, SlopeCapOverAnEdgeLowersTheApex) {
+  // A 2 x 2 square (apex 0.6 uncapped): a neighbour closing in over edge 0 allows slope 0.3 there,
+  // i.e. at most 0.3 above the centre, 1 from that edge: the ladder's next height, 0.3, is taken.
+  const std::array<Vector3d, 4> square{Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(2, 2, 0), Vector3d(0, 2, 0)};
+  const Vector3d apex = pyramid_apex(square, {0.3, 1e300, 1e300, 1e300});
+  EXPECT_NEAR((apex - Vector3d(1, 1, 0.3)).norm(), 0.0, 1e-12);
+  // A cap below every height the ladder tries: the uncapped apex (TetGen checks it against the
+  // neighbours).
+  EXPECT_NEAR((pyramid_apex(square, {1e300, 1e300, 1e-4, 1e300}) - Vector3d(1, 1, 0.6)).norm(), 0.0, 1e-12);
+}
+
 TEST(PyramidApex, NonConvexQuadHasNoValidPyramid) {
   // an arrowhead: the corner (0.2, 0.2) is reflex, det J < 0 there whatever the apex height
   EXPECT_THROW(pyramid_apex({Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(0.2, 0.2, 0), Vector3d(0, 2, 0)}),

@@ -10,6 +10,8 @@
 
 namespace semimesh::nearfield {
 
+inline constexpr std::array<double, 4> kNoSlopeCap{1e300, 1e300, 1e300, 1e300};
+
 /// Apex over the quad a,b,c,d (counter-clockwise seen from the side the pyramid goes to): the
 /// centroid plus h times the unit (Newell) normal, h = 0.3 times its narrowest width (twice the
 /// centroid's distance to the nearest edge line: a rectangle's shorter side), halved (down to
@@ -17,6 +19,10 @@ namespace semimesh::nearfield {
 /// mean edge (a twisted trapezoid with one short edge), until the linear pyramid (a,b,c,d,apex) has
 /// a certified positive Jacobian; none when the quad has zero area or no such height gives a valid
 /// pyramid (the quad is folded or far from planar).
-std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad);
+/// `max_slope[k]`: the largest tan of the angle at which the pyramid's side over edge k (quad[k] ->
+/// quad[k+1]) may rise from the quad, where a neighbouring face closes in (the far field's concave
+/// corners); heights above any edge's cap are not tried.
+std::optional<Eigen::Vector3d> pyramid_apex(const std::array<Eigen::Vector3d, 4>& quad,
+                                            const std::array<double, 4>& max_slope = kNoSlopeCap);
 
 }  // namespace semimesh::nearfield
