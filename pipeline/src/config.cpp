@@ -108,6 +108,24 @@ class Section {
   std::set<std::string> known_;
 };
 
+const ConfigSection* find_section(const std::string& name) {
+  for (const ConfigSection& s : config_sections())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+// In the table of a section of alternatives, drops every alternative but `chosen` when it is one.
+void keep_alternative(toml::table& table, const ConfigSection& section, const std::string& chosen) {
+  std::set<std::string> names;
+  for (const auto& k : section.keys) names.insert(k.name);
+  for (const ConfigSection& s : config_sections())
+    if (s.name.rfind(section.name + ".", 0) == 0 && s.name.find('.', section.name.size() + 1) == std::string::npos)
+      names.insert(s.name.substr(section.name.size() + 1));
+  if (!names.count(chosen)) return;
+  for (const std::string& other : names)
+    if (other != chosen) table.erase(other);
+}
+
 // Sets `dotted.key` in `root` to the TOML value of `value_text` (a bare word becomes a string).
 void apply_override(toml::table& root, const std::string& assignment, Origin& origin) {
   const auto eq = assignment.find('=');
@@ -133,11 +151,17 @@ void apply_override(toml::table& root, const std::string& assignment, Origin& or
   std::string::size_type start = 0;
   for (auto dot = key.find('.'); dot != std::string::npos; start = dot + 1, dot = key.find('.', start)) {
     const std::string part = key.substr(start, dot - start);
+    const ConfigSection* section = find_section(key.substr(0, dot));
     toml::node* next = table->get(part);
+    // A key that holds a value or a table (geometry.farfield: surface names, or the far field to
+    // build): a --set inside the table replaces the file's value.
+    if (next && !next->is_table() && section && section->or_value) next = nullptr;
     if (!next) next = &table->insert_or_assign(part, toml::table{}).first->second;
     if (!next->is_table())
       throw ConfigError("config error: --set " + assignment + ": " + key.substr(0, dot) + " is a value, not a table");
     table = next->as_table();
+    if (section && section->alternatives)
+      keep_alternative(*table, *section, key.substr(dot + 1, key.find('.', dot + 1) - dot - 1));
   }
   table->insert_or_assign(key.substr(start), std::move(*parsed.get("value")));
   origin.overrides[key] = assignment;
@@ -506,7 +530,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"geometry", geometry_keys()},
       {"geometry.naca", naca_keys()},
       {"geometry.wall_plane", wall_plane_keys()},
-      {"geometry.farfield", farfield_shape_keys(), true},
+      {"geometry.farfield", farfield_shape_keys(), true, true},
       {"geometry.farfield.sphere", farfield_sphere_keys()},
       {"nearfield", nearfield_keys()},
       {"boundary_layer", boundary_layer_keys()},

@@ -407,6 +407,49 @@ TEST(Config, WallPlaneAndFarFieldErrorsNameTheKey) {
   EXPECT_NE(e.find("unknown key geometry.farfield.cylinder"), std::string::npos) << e;
 }
 
+// geometry.farfield holds one of box | sphere | box_chords: a --set of one replaces the file's
+// other (it used to be added beside it and the run refused both); a --set inside the table replaces
+// a file's surface names. The wall plane's pieces are set one by one, the other kept.
+TEST(Config, SetOfOneFarFieldShapeReplacesTheFilesOther) {
+  const std::string file = "[geometry]\nbackend = \"occ\"\nsource = \"m6.stp\"\n"
+                           "wall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n";
+  const std::string box = file + "farfield = { box = [-8, -8, -8, 9, 9, 8] }\n";
+  Config c = parse_config(box, "case.toml", {}, {"geometry.farfield.box_chords=20"});
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 20.0);
+  EXPECT_FALSE(c.geometry.farfield_shape.box.has_value());
+  c = parse_config(box, "case.toml", {}, {"geometry.farfield.sphere.centre=[1, 2, 3]", "geometry.farfield.sphere.radius=9"});
+  EXPECT_EQ(c.geometry.farfield_shape.sphere.radius, 9.0);
+  EXPECT_FALSE(c.geometry.farfield_shape.box.has_value());
+  c = parse_config(file + "farfield = { box_chords = 20 }\n", "case.toml", {}, {"geometry.farfield.box=[0, 0, 0, 1, 2, 3]"});
+  EXPECT_EQ(c.geometry.farfield_shape.box, (std::array<double, 6>{0, 0, 0, 1, 2, 3}));
+  EXPECT_FALSE(c.geometry.farfield_shape.box_chords.has_value());
+  // Within the sphere only the key set changes.
+  c = parse_config(file + "farfield = { sphere = { centre = [1, 2, 3], radius = 9 } }\n", "case.toml", {},
+                   {"geometry.farfield.sphere.radius=5"});
+  EXPECT_EQ(c.geometry.farfield_shape.sphere.radius, 5.0);
+  EXPECT_EQ(c.geometry.farfield_shape.sphere.centre, (std::array<double, 3>{1, 2, 3}));
+  // A half-given sphere replacing a box is named as such; an unknown key replaces nothing.
+  std::string e = error_of(box, {"geometry.farfield.sphere.radius=9"});
+  EXPECT_NE(e.find("--set geometry.farfield.sphere.radius=9"), std::string::npos) << e;
+  EXPECT_NE(e.find("together with geometry.farfield.sphere.centre"), std::string::npos) << e;
+  e = error_of(box, {"geometry.farfield.cylinder=5"});
+  EXPECT_NE(e.find("unknown key geometry.farfield.cylinder"), std::string::npos) << e;
+  // Surface names in the file: the far field to build replaces them.
+  c = parse_config(std::string("[geometry]\nbackend = \"occ\"\nsource = \"m6.stp\"\nfarfield = [\"outer\"]\n"),
+                   "case.toml", {},
+                   {"geometry.wall_plane.point=[0, 0, 0]", "geometry.wall_plane.normal=[0, 1, 0]",
+                    "geometry.farfield.box_chords=20"});
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 20.0);
+  EXPECT_EQ(c.geometry.farfield, (std::vector<std::string>{"auto"}));
+  // The wall plane's pieces.
+  c = parse_config(box, "case.toml", {}, {"geometry.wall_plane.normal=[0, 0, 1]"});
+  EXPECT_EQ(c.geometry.wall_plane.normal, (std::array<double, 3>{0, 0, 1}));
+  EXPECT_EQ(c.geometry.wall_plane.point, (std::array<double, 3>{0, 0, 0}));
+  c = parse_config(box, "case.toml", {}, {"geometry.wall_plane.point=[1, 2, 3]"});
+  EXPECT_EQ(c.geometry.wall_plane.point, (std::array<double, 3>{1, 2, 3}));
+  EXPECT_EQ(c.geometry.wall_plane.normal, (std::array<double, 3>{0, 1, 0}));
+}
+
 // The generated wing stands on z = 0 in a box: only that plane and a box far field apply to it.
 TEST(Config, AGeneratedWingTakesTheWallZEqualsZeroAndABox) {
   const Config c = parse_config("[geometry]\nwall_plane = { point = [1, 2, 0], normal = [0, 0, 2] }\n"

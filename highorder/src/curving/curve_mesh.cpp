@@ -133,7 +133,7 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     pts.row(0) = xa.transpose();
     pts.row(1) = xb.transpose();
     for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
-    if (detail::near_pole(poles_[place.id], {xa, xb}))
+    if (detail::near_pole(poles_[place.id], xa, xb, params_.pole_reach))
       for (int i = 0; i < P - 1; ++i) detail::place_by_projection(s, out.x[i], uv, pts, i + 2);
     else if (springs)
       out.fallback = !detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts,
@@ -218,7 +218,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
     std::vector<cad::Vec3> vertices;
     for (int v = 0; v < face.num_vertices; ++v) vertices.push_back(X.row(v).transpose());
-    if (detail::near_pole(poles_[place.id], vertices))
+    if (detail::face_near_pole(poles_[place.id], vertices, params_.pole_reach))
       for (int j : ext.interior) detail::place_by_projection(s, straight.row(j).transpose(), uv2, pts, j);
     else if (params_.placement == NodePlacement::Springs)
       out.fallback = !detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
@@ -278,6 +278,9 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
                                 std::to_string(in_.order()));
   if (const auto bad = params::violation(params_, curving_keys(), "highorder"))
     throw std::invalid_argument("curve_mesh: " + *bad);
+  if (!(params_.pole_reach >= 0.0))
+    throw std::invalid_argument("curve_mesh: CurvingParams::pole_reach = " + std::to_string(params_.pole_reach) +
+                                " must be >= 0");
   if (!(params_.tolerance > 0.0))
     throw std::invalid_argument("curve_mesh: CurvingParams::tolerance = " + std::to_string(params_.tolerance) +
                                 " must be > 0");

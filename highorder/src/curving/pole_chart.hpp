@@ -20,11 +20,15 @@ namespace semimesh::ho::detail {
 /// (not a cone's apex).
 std::vector<cad::Vec3> surface_poles(const cad::Model& model, int surface);
 
-/// Whether an element with these vertices lies next to one of `poles`: a vertex within
-/// kPoleReach times the element's longest side of a pole. Beyond it an element spans an angle of
-/// about 1 / kPoleReach radians at the pole, which the polar parameters interpolate well.
-constexpr double kPoleReach = 3.0;
-bool near_pole(const std::vector<cad::Vec3>& poles, const std::vector<cad::Vec3>& vertices);
+/// Whether the edge from a to b lies next to one of `poles`: a or b within `reach` times the edge's
+/// length of a pole (CurvingParams::pole_reach).
+bool near_pole(const std::vector<cad::Vec3>& poles, const cad::Vec3& a, const cad::Vec3& b, double reach);
+
+/// Whether every side of a face with these vertices lies next to one of `poles` (near_pole): then
+/// its interior nodes are placed by projection too. A face with a side placed by parameters takes
+/// the parameters: its interior, projected from the straight-sided face, would not meet that side's
+/// nodes (measured: the prisms along the reach's edge had 5-10 times the error of their neighbours).
+bool face_near_pole(const std::vector<cad::Vec3>& poles, const std::vector<cad::Vec3>& vertices, double reach);
 
 /// Row `row` of (uv, pts): the closest point of `surface` to x, started from uv's row (moved into
 /// the parameter box).

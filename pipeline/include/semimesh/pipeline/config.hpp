@@ -164,6 +164,9 @@ struct ConfigSection {
   /// The section's key in its parent may hold a value instead, read by the parent's row of the same
   /// name (geometry.farfield: surface names, or the table of the far field to build).
   bool or_value = false;
+  /// Its keys and nested sections are alternatives, one of them given (geometry.farfield: box |
+  /// sphere | box_chords): a --set of one replaces the file's other ones.
+  bool alternatives = false;
 };
 
 /// Every section and key, in file order (the source of reading, checking and the docs test).

@@ -25,10 +25,11 @@
 //    interpolant: next to the leading edge, on faces of aspect ratio ~1000, the geometric error only
 //    falls like h^3 at P = 3 and 4, and arc-length placement on a curve alone already costs that
 //    (measured; see tests/highorder/ho_mesh/test_curve_mesh.cpp).
-//  Either way, next to a pole with a tangent plane (a rounded nose, a revolved tip: within 3 element
-//  sides of it) the parameters are polar and no smooth chart: there the nodes are the closest
-//  points of the surface to the straight-sided element's nodes (measured rates 4.0, 4.0, 6.0 at
-//  P = 2, 3, 4 on an ellipsoid's pole, 2.0 in the polar parameters; test_curve_periodic.cpp).
+//  Either way, next to a pole with a tangent plane (a rounded nose, a revolved tip: within
+//  pole_reach = 3 element sides of it, a face only when all its sides are) the parameters are polar
+//  and no smooth chart: there the nodes are the closest points of the surface to the straight-sided
+//  element's nodes (measured rates 4.0, 4.0, 6.0 at P = 2, 3, 4 on an ellipsoid's pole, 2.0 in the
+//  polar parameters; test_curve_periodic.cpp; the reach: bench/ho_mesh/bench_pole_reach.cpp).
 // Which CAD entity an edge or face lies on comes from the CAD attachments of its vertices (see
 // cad_classification in the sources); only edges and faces of boundary faces are curved.
 #pragma once
@@ -49,6 +50,9 @@ struct CurvingParams {
   int spring_iterations = 50;          ///< Gauss-Newton iterations per edge/face before falling back
   double tolerance = 1e-10;            ///< relative move below which the optimisation has converged
   NodePlacement placement = NodePlacement::Parameter;  ///< see the top of this file
+  /// Edges and faces with a vertex within pole_reach times their longest side of a pole (with a
+  /// tangent plane) are placed by projection (see the top of this file); beyond it, by parameters.
+  double pole_reach = 3.0;
 };
 
 /// One row per user key of CurvingParams (semimesh/params/table.hpp).
