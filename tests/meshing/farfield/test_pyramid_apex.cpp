@@ -28,15 +28,16 @@ TEST(PyramidApex, ThinQuadGetsAFlatPyramid) {
   EXPECT_NEAR((apex - Vector3d(0.5, 0.005, 0.003)).norm(), 0.0, 1e-12);
 }
 
-TEST(PyramidApex, ShearedParallelogramRisesLessThanFortyFiveDegreesFromItsLongEdges) {
+TEST(PyramidApex, ShearedParallelogramBetweenNeighboursStaysUnderItsCaps) {
   // Edges 1 and ~2.01, altitudes 0.2 and ~0.0995 (the wake block's underside behind a steep wake
-  // direction): the apex 0.3 times the smaller altitude above, not 0.3 times the shorter edge (that
-  // pyramid leaned over its long edges at 80 degrees and crossed its neighbours' in TetGen's input).
+  // direction): alone, 0.3 times the shorter edge above (leaning ~80 degrees over its long edges);
+  // with right-angled neighbours over its long edges (caps tan 40.5 degrees), under those caps.
   const std::array<Vector3d, 4> quad{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(3, 0.2, 0), Vector3d(2, 0.2, 0)};
-  const Vector3d apex = pyramid_apex(quad);
-  const double altitude = 0.2 / std::hypot(2.0, 0.2);
-  EXPECT_NEAR(apex.z(), 0.3 * altitude, 1e-12);
-  EXPECT_NEAR((apex.head<2>() - Eigen::Vector2d(1.5, 0.1)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(pyramid_apex(quad).z(), 0.3, 1e-12);
+  const double cap = std::tan(0.45 * 3.14159265358979323846 / 2.0), altitude = 0.2 / std::hypot(2.0, 0.2);
+  const Vector3d apex = pyramid_apex(quad, {1e300, cap, 1e300, cap});
+  EXPECT_LE(apex.z(), cap * 0.5 * altitude + 1e-12);
+  EXPECT_GT(apex.z(), 0.0);
 }
 
 TEST(PyramidApex, TwistedTrapezoidWithAShortEdgeGetsATallerApex) {

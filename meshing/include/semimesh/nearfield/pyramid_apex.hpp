@@ -13,8 +13,7 @@ namespace semimesh::nearfield {
 inline constexpr std::array<double, 4> kNoSlopeCap{1e300, 1e300, 1e300, 1e300};
 
 /// Apex over the quad a,b,c,d (counter-clockwise seen from the side the pyramid goes to): the
-/// centroid plus h times the unit (Newell) normal, h = 0.3 times its narrowest width (twice the
-/// centroid's distance to the nearest edge line: a rectangle's shorter side), halved (down to
+/// centroid plus h times the unit (Newell) normal, h = 0.3 times the shortest edge, halved (down to
 /// 1/64) then doubled (up to 4 times: a warped quad needs a taller apex), then 0.3 to 1 times the
 /// mean edge (a twisted trapezoid with one short edge), until the linear pyramid (a,b,c,d,apex) has
 /// a certified positive Jacobian; none when the quad has zero area or no such height gives a valid
