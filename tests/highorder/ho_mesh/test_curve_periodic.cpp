@@ -158,79 +158,9 @@ std::unique_ptr<cad::Model> ellipsoid() {
   return m;
 }
 
-/// Two rings of triangles around the pole at u = 0 of model's surface 0, u = h and 2h (6 and 12
-/// nodes), as one layer of prisms of thickness h / 10: the pole a node on CAD vertex 0, the rings
-/// attached to the surface. Refining h keeps the shape (the elements span a fixed angle at the pole).
-mesh::Mesh pole_fan(const cad::Model& model, double h, const Vec3& pole_normal) {
-  const cad::Surface& s = model.surface(0);
-  mesh::Mesh m(1);
-  const auto add = [&](const mesh::CadAttachment& a, const cad::Vec2& uv) {
-    Vec3 n = s.normal(uv);
-    if (n.norm() < 0.5) n = pole_normal;
-    const mesh::NodeId body = m.add_node(s.point(uv), a);
-    m.add_node(s.point(uv) + 0.1 * h * n);
-    return body;
-  };
-  const mesh::NodeId pole = add({mesh::CadAttachment::Vertex, 0, 0, 0}, {0.0, 0.0});
-  std::vector<mesh::NodeId> ring1, ring2;
-  for (int j = 0; j < 6; ++j) {
-    const cad::Vec2 uv(h, 0.3 + 2 * kPi * j / 6);
-    ring1.push_back(add({mesh::CadAttachment::Surface, 0, uv.x(), uv.y()}, uv));
-  }
-  for (int j = 0; j < 12; ++j) {
-    const cad::Vec2 uv(2 * h, 0.3 + 2 * kPi * j / 12);
-    ring2.push_back(add({mesh::CadAttachment::Surface, 0, uv.x(), uv.y()}, uv));
-  }
-  const int region = m.region_index("layer");
-  const auto triangle = [&](mesh::NodeId a, mesh::NodeId b, mesh::NodeId c) {
-    // Counter-clockwise seen from outside, so the prism grows along its body face's normal.
-    if ((m.node(b) - m.node(a)).cross(m.node(c) - m.node(a)).dot(m.node(a + 1) - m.node(a)) < 0) {
-      std::swap(b, c);
-    }
-    m.add_element(Shape::Prism, {a, b, c, a + 1, b + 1, c + 1}, region);
-    m.add_boundary_face("body", Shape::Triangle, {a, c, b});
-  };
-  for (int j = 0; j < 6; ++j) {
-    const int k = (j + 1) % 6;
-    triangle(pole, ring1[j], ring1[k]);
-    triangle(ring1[j], ring2[2 * j], ring2[2 * j + 1]);
-    triangle(ring1[j], ring2[2 * j + 1], ring1[k]);
-    triangle(ring1[k], ring2[2 * j + 1], ring2[(2 * j + 2) % 12]);
-  }
-  return m;
-}
-
-/// Max geometric error of the pole fan at h, h / 2, h / 4, curved at order P; each curved fan valid.
-std::vector<double> pole_errors(const cad::Model& model, const Vec3& pole_normal, double h, int P) {
-  std::vector<double> e;
-  for (double size : {h, h / 2, h / 4}) {
-    const mesh::Mesh curved = curve_mesh(pole_fan(model, size, pole_normal), model, {P, NodeSet::GLL, 50, 1e-10});
-    e.push_back(geometric_error(curved, model, 1.0, 8).max_rel);
-    EXPECT_EQ(certify_mesh(curved, 8).invalid, 0u) << "P = " << P << ", h = " << size;
-  }
-  std::printf("pole P = %d: max relative geometric error", P);
-  for (double x : e) std::printf(" %.3e", x);
-  std::printf("; rates");
-  for (std::size_t k = 1; k < e.size(); ++k) std::printf(" %.2f", std::log2(e[k - 1] / e[k]));
-  std::printf("\n");
-  return e;
-}
-
-// At a pole the surface's parameters are polar: an element interpolated linearly in them is a
-// polar patch spanning a fixed angle however small it is, and its error falls like h^2 at every
-// order (measured before the pole chart: rates 2.0 at P = 2, 3, 4; now 2.0, 4.0, 4.0, 6.0 at
-// P = 1..4). Expected here, as on the other faces (test_curve_mesh.cpp): max error ~ h^(P+1), every
-// observed rate >= P + 0.5, on the fan of 30 triangles around a pole of a smooth surface.
-TEST(CurvePeriodic, GeometricErrorConvergesAtAPoleUnderRefinement) {
-  const auto model = ellipsoid();
-  for (int P = 1; P <= 4; ++P) {
-    const std::vector<double> e = pole_errors(*model, Vec3::UnitX(), 0.1, P);
-    for (std::size_t k = 1; k < e.size(); ++k) EXPECT_GE(std::log2(e[k - 1] / e[k]), P + 0.5) << "P = " << P << " level " << k;
-  }
-}
-
 /// `rings` rings of triangles around the pole at u = 0 of model's surface 0, ring k at u = k h with
-/// 6 k nodes, as one layer of prisms of thickness h / 10 (pole_fan's two rings, continued).
+/// 6 k nodes, as one layer of prisms of thickness h / 10: the pole a node on CAD vertex 0, the
+/// rings attached to the surface. Refining h keeps the shape (the elements span a fixed angle at the pole).
 mesh::Mesh pole_rings(const cad::Model& model, double h, int rings, const Vec3& pole_normal) {
   const cad::Surface& s = model.surface(0);
   mesh::Mesh m(1);
@@ -266,6 +196,36 @@ mesh::Mesh pole_rings(const cad::Model& model, double h, int rings, const Vec3& 
     }
   return m;
 }
+
+/// Max geometric error of the pole fan at h, h / 2, h / 4, curved at order P; each curved fan valid.
+std::vector<double> pole_errors(const cad::Model& model, const Vec3& pole_normal, double h, int P) {
+  std::vector<double> e;
+  for (double size : {h, h / 2, h / 4}) {
+    const mesh::Mesh curved = curve_mesh(pole_rings(model, size, 2, pole_normal), model, {P, NodeSet::GLL, 50, 1e-10});
+    e.push_back(geometric_error(curved, model, 1.0, 8).max_rel);
+    EXPECT_EQ(certify_mesh(curved, 8).invalid, 0u) << "P = " << P << ", h = " << size;
+  }
+  std::printf("pole P = %d: max relative geometric error", P);
+  for (double x : e) std::printf(" %.3e", x);
+  std::printf("; rates");
+  for (std::size_t k = 1; k < e.size(); ++k) std::printf(" %.2f", std::log2(e[k - 1] / e[k]));
+  std::printf("\n");
+  return e;
+}
+
+// At a pole the surface's parameters are polar: an element interpolated linearly in them is a
+// polar patch spanning a fixed angle however small it is, and its error falls like h^2 at every
+// order (measured before the pole chart: rates 2.0 at P = 2, 3, 4; now 2.0, 4.0, 4.0, 6.0 at
+// P = 1..4). Expected here, as on the other faces (test_curve_mesh.cpp): max error ~ h^(P+1), every
+// observed rate >= P + 0.5, on the fan of 30 triangles around a pole of a smooth surface.
+TEST(CurvePeriodic, GeometricErrorConvergesAtAPoleUnderRefinement) {
+  const auto model = ellipsoid();
+  for (int P = 1; P <= 4; ++P) {
+    const std::vector<double> e = pole_errors(*model, Vec3::UnitX(), 0.1, P);
+    for (std::size_t k = 1; k < e.size(); ++k) EXPECT_GE(std::log2(e[k - 1] / e[k]), P + 0.5) << "P = " << P << " level " << k;
+  }
+}
+
 
 // Five rings round the ellipsoid's pole at P = 4 with the default reach (3 sides): the reach's edge
 // runs through the third and fourth rings. A face there with a side placed by parameters takes the
