@@ -9,7 +9,8 @@ packages=(
   libocct-data-exchange-dev libtbb-dev          # OCCT's CMake export names libtbb.so
   libeigen3-dev libgtest-dev libgmock-dev libfmt-dev
   libtomlplusplus-dev libcli11-dev libpugixml-dev libzip-dev
-  zlib1g-dev                                    # compressed VTU / Nektar++ output
+  zlib1g-dev                                    # compressed Nektar++ output (one zlib stream per array)
+  libdeflate-dev                                # compressed VTU (independent 64 KiB zlib blocks)
   libtet1.5-dev libcgal-dev libgmp-dev libmpfr-dev
   python3 python3-numpy python3-gmsh python3-vtk9 python3-meshio
   librsvg2-bin                                  # scripts/readme-pictures.sh: large SVG pictures to PNG

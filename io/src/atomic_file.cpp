@@ -85,6 +85,14 @@ void AtomicFile::flush_buffer() {
     throw os_error("cannot write to", temp_path_);
   written_ += buffer_.size();
   buffer_.clear();
+  // The disk is the slowest part of a large write (~180 MB/s here against ~1 GB/s of formatting):
+  // start writing each full stretch back now, so that it overlaps the formatting of the next one
+  // and the fsync in commit() waits only for the tail. A hint: its failure changes nothing.
+  if (written_ - started_writeback_ >= kWritebackBytes && std::fflush(file_) == 0) {
+    ::sync_file_range(::fileno(file_), static_cast<off_t>(started_writeback_),
+                      static_cast<off_t>(written_ - started_writeback_), SYNC_FILE_RANGE_WRITE);
+    started_writeback_ = written_;
+  }
 }
 
 void AtomicFile::commit() {

@@ -49,19 +49,25 @@ Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from) {
   return out;
 }
 
-/// Resamples the nodes an entity owns from all its nodes `ids`; the buffers are reused between calls.
+/// Resamples the nodes an entity owns from all its nodes `ids`: to[ids[positions[k]]] =
+/// sum_i rows(k, i) from[ids[i]]. A plain loop down the (column-major) matrix: the matrices are
+/// tiny (at most 27 x 125), where a general matrix product costs more in set-up than in arithmetic.
+/// The buffers are reused between calls (one resampler per thread).
 struct Resampler {
   const std::vector<Eigen::Vector3d>& from;
   std::vector<Eigen::Vector3d>& to;
-  Eigen::MatrixX3d x, y;
+  std::vector<Eigen::Vector3d> sum;
+  std::vector<mesh::NodeId> ids;
 
   template <typename Ids>
-  void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& ids) {
-    x.resize(static_cast<Eigen::Index>(ids.size()), 3);
-    for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = from[ids[i]].transpose();
-    y.resize(rows.rows(), 3);
-    y.noalias() = rows * x;
-    for (std::size_t k = 0; k < positions.size(); ++k) to[ids[positions[k]]] = y.row(k).transpose();
+  void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& entity_ids) {
+    sum.assign(positions.size(), Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < entity_ids.size(); ++i) {
+      const Eigen::Vector3d& x = from[entity_ids[i]];
+      const double* column = rows.data() + i * positions.size();
+      for (std::size_t k = 0; k < positions.size(); ++k) sum[k] += column[k] * x;
+    }
+    for (std::size_t k = 0; k < positions.size(); ++k) to[entity_ids[positions[k]]] = sum[k];
   }
 };
 
@@ -106,7 +112,9 @@ EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
   parallel_ranges(m.faces().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
     for (std::size_t f = begin; f < end; ++f) {
       const OwnedRows& owned = m.faces()[f].num_vertices == 3 ? tri : quad;
-      if (!owned.positions.empty()) r(owned.rows, owned.positions, m.face_nodes(f));
+      if (owned.positions.empty()) continue;
+      m.face_nodes(f, r.ids);
+      r(owned.rows, owned.positions, r.ids);
     }
   });
 

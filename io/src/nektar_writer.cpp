@@ -107,16 +107,8 @@ struct Geometry {
   // Only curved entities get a CURVED entry (as NekMesh writes): a straight one is the same
   // geometry without it, and the straight-sided far field is most of a mesh.
   std::vector<char> edge_curved, face_curved;
-  // Edge k of a face joins its stored vertices k and k+1 (found once: the lookups are most of the cost).
-  std::vector<std::array<std::uint32_t, 4>> stored_face_edges;
 
   Geometry(const mesh::Mesh& mesh, const EquispacedNodes& nodes) : m(mesh), node(nodes), numbering(number_for_nektar(mesh)) {
-    stored_face_edges.resize(m.faces().size());
-    parallel_for(m.faces().size(), [&](std::size_t f) {
-      const auto& v = m.faces()[f].vertices;
-      const int n = num_face_vertices(f);
-      for (int k = 0; k < n; ++k) stored_face_edges[f][k] = static_cast<std::uint32_t>(m.find_edge(v[k], v[(k + 1) % n]));
-    });
     if (m.order() < 2) return;
     tri_point_order = tri_orders(m.order()), quad_point_order = quad_order(m.order());
     tri_reference_ = ho::reference_nodes(ho::Shape::Triangle, m.order(), ho::NodeSet::Equispaced);
@@ -124,8 +116,10 @@ struct Geometry {
     face_curved.resize(m.faces().size());
     parallel_for(m.faces().size(), [&](std::size_t f) {
       const bool tri = num_face_vertices(f) == 3;
-      face_curved[f] = m.order() >= (tri ? 3 : 2) &&
-                       !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.face_nodes(f));
+      thread_local std::vector<mesh::NodeId> ids;
+      if (m.order() < (tri ? 3 : 2)) return;
+      m.face_nodes(f, ids);
+      face_curved[f] = !on_linear_map(tri ? ho::Shape::Triangle : ho::Shape::Quadrilateral, ids);
     });
     edge_curved.resize(m.edges().size());
     parallel_for(m.edges().size(), [&](std::size_t e) {
@@ -134,7 +128,7 @@ struct Geometry {
     // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
     for (std::size_t f = 0; f < m.faces().size(); ++f)
       if (face_curved[f])
-        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[stored_face_edges[f][k]] = 1;
+        for (int k = 0; k < num_face_vertices(f); ++k) edge_curved[m.faces()[f].edges[k]] = 1;
   }
 
   /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
@@ -180,7 +174,7 @@ struct Geometry {
   std::array<std::int64_t, 4> face_edges(std::size_t f) const {
     const int n = num_face_vertices(f), s = written_rotation(f);
     std::array<std::int64_t, 4> e{};
-    for (int k = 0; k < n; ++k) e[k] = stored_face_edges[f][(k + s) % n];
+    for (int k = 0; k < n; ++k) e[k] = m.faces()[f].edges[(k + s) % n];  // edge k joins stored vertices k, k+1
     return e;
   }
 
@@ -210,7 +204,8 @@ struct Geometry {
   /// Curved nodes of a face, in the order written.
   template <typename Emit>
   void face_nodes_written(std::size_t f, Emit emit) const {
-    const auto ids = m.face_nodes(f);
+    thread_local std::vector<mesh::NodeId> ids;
+    m.face_nodes(f, ids);
     if (num_face_vertices(f) == 3) {
       for (int k : tri_point_order[written_rotation(f)]) emit(ids[k]);
     } else {

@@ -28,8 +28,8 @@ constexpr std::size_t kBatchBlocks = 64;  // compressed together, in parallel
 /// known in advance), is filled in at the end.
 class CompressedArray {
  public:
-  CompressedArray(AtomicFile& out, std::size_t raw_bytes, Content content)
-      : out_(out), content_(content), raw_bytes_(raw_bytes), header_at_(out.bytes_written()) {
+  CompressedArray(AtomicFile& out, std::size_t raw_bytes)
+      : out_(out), raw_bytes_(raw_bytes), header_at_(out.bytes_written()) {
     const std::vector<std::uint64_t> placeholder(3 + (raw_bytes + kBlockBytes - 1) / kBlockBytes, 0);
     out.write(placeholder.data(), placeholder.size() * sizeof(std::uint64_t));
   }
@@ -62,14 +62,13 @@ class CompressedArray {
 
  private:
   void flush() {
-    for (const std::string& z : zlib_compress_blocks(batch_, content_)) {
+    for (const std::string& z : zlib_compress_blocks(batch_)) {
       sizes_.push_back(z.size());
       out_.write(z.data(), z.size());
     }
     batch_.clear();
   }
   AtomicFile& out_;
-  Content content_;
   std::size_t raw_bytes_, header_at_;
   std::vector<std::string> batch_;
   std::vector<std::uint64_t> sizes_;
@@ -127,18 +126,25 @@ struct Arrays {
   bool int32_connectivity() const { return num_points() <= std::size_t(INT32_MAX); }
   bool int32_offsets() const { return connectivity_size <= std::size_t(INT32_MAX); }
 
-  /// f(shape, canonical node ids, boundary group or -1, region or -1) per cell: elements, then faces.
+  /// f(shape, boundary group or -1, region or -1) per cell: elements, then faces.
   template <typename F>
   void each_cell(F f) const {
+    if (piece.volume)
+      for (const mesh::Element& el : m.elements()) f(el.shape, -1, int(el.region));
+    for (const mesh::BoundaryFace& bf : m.boundary_faces())
+      if (piece.takes(bf)) f(bf.shape, int(bf.group), -1);
+  }
+  /// f(shape, canonical node ids) per cell, in each_cell's order.
+  template <typename F>
+  void each_cell_nodes(F f) const {
     std::vector<mesh::NodeId> ids;
     if (piece.volume)
       for (std::size_t e = 0; e < m.elements().size(); ++e) {
         m.element_nodes(e, ids);
-        f(m.elements()[e].shape, ids, -1, int(m.elements()[e].region));
+        f(m.elements()[e].shape, ids);
       }
     for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
-      if (piece.takes(m.boundary_faces()[b]))
-        f(m.boundary_faces()[b].shape, m.boundary_face_nodes(b), int(m.boundary_faces()[b].group), -1);
+      if (piece.takes(m.boundary_faces()[b])) f(m.boundary_faces()[b].shape, m.boundary_face_nodes(b));
   }
   template <typename Emit>
   void points(Emit emit) const {
@@ -148,7 +154,7 @@ struct Arrays {
   }
   template <typename Emit, typename EndCell>
   void connectivity(Emit emit, EndCell end_cell) const {
-    each_cell([&](ho::Shape shape, const std::vector<mesh::NodeId>& canonical, int, int) {
+    each_cell_nodes([&](ho::Shape shape, const std::vector<mesh::NodeId>& canonical) {
       for (int k : *permutation[static_cast<int>(shape)]) emit(point(canonical[k]));
       end_cell();
     });
@@ -156,21 +162,19 @@ struct Arrays {
   template <typename Emit>
   void offsets(Emit emit) const {
     std::int64_t offset = 0;
-    each_cell([&](ho::Shape shape, const std::vector<mesh::NodeId>&, int, int) { emit(offset += cell_size(shape)); });
+    each_cell([&](ho::Shape shape, int, int) { emit(offset += cell_size(shape)); });
   }
   template <typename Emit>
   void types(Emit emit) const {
-    each_cell([&](ho::Shape shape, const std::vector<mesh::NodeId>&, int, int) {
-      emit(static_cast<std::uint8_t>(vtk_cell_type(shape)));
-    });
+    each_cell([&](ho::Shape shape, int, int) { emit(static_cast<std::uint8_t>(vtk_cell_type(shape))); });
   }
   template <typename Emit>
   void boundary_group(Emit emit) const {
-    each_cell([&](ho::Shape, const std::vector<mesh::NodeId>&, int group, int) { emit(std::int32_t(group)); });
+    each_cell([&](ho::Shape, int group, int) { emit(std::int32_t(group)); });
   }
   template <typename Emit>
   void regions(Emit emit) const {
-    each_cell([&](ho::Shape, const std::vector<mesh::NodeId>&, int, int region) { emit(std::int32_t(region)); });
+    each_cell([&](ho::Shape, int, int region) { emit(std::int32_t(region)); });
   }
 };
 
@@ -250,32 +254,32 @@ void write_compressed(AtomicFile& out, const Arrays& a, const ProgressCallback& 
   });
   out.print("<AppendedData encoding=\"raw\">\n_");
   const std::size_t base = out.bytes_written();
-  auto array = [&](int k, std::size_t raw_bytes, Content content, auto fill) {
+  auto array = [&](int k, std::size_t raw_bytes, auto fill) {
     if (progress) progress(k / 6.0, kNames[k]);
     const std::string offset = fmt::format("{:<{}}", out.bytes_written() - base, kOffsetWidth);
     out.overwrite(placeholder[k], offset.data(), offset.size());
-    CompressedArray c(out, raw_bytes, content);
+    CompressedArray c(out, raw_bytes);
     fill(c);
     c.finish();
   };
-  array(0, a.num_points() * sizeof(Eigen::Vector3d), Content::Doubles, [&](CompressedArray& c) {
+  array(0, a.num_points() * sizeof(Eigen::Vector3d), [&](CompressedArray& c) {
     if (a.piece.points.empty())
       c.add(a.x.all().data(), a.x.all().size() * sizeof(Eigen::Vector3d));
     else
       a.points([&](const Eigen::Vector3d& p) { c.add(p.data(), sizeof(Eigen::Vector3d)); });
   });
   const bool int32_ids = a.int32_connectivity(), int32_offsets = a.int32_offsets();
-  array(1, a.connectivity_size * (int32_ids ? 4 : 8), Content::Integers, [&](CompressedArray& c) {
+  array(1, a.connectivity_size * (int32_ids ? 4 : 8), [&](CompressedArray& c) {
     a.connectivity([&](std::int64_t v) { int32_ids ? c.add_value(std::int32_t(v)) : c.add_value(v); },
                    [] {});
   });
-  array(2, a.num_cells * (int32_offsets ? 4 : 8), Content::Integers, [&](CompressedArray& c) {
+  array(2, a.num_cells * (int32_offsets ? 4 : 8), [&](CompressedArray& c) {
     a.offsets([&](std::int64_t v) { int32_offsets ? c.add_value(std::int32_t(v)) : c.add_value(v); });
   });
-  array(3, a.num_cells, Content::Integers, [&](CompressedArray& c) { a.types([&](std::uint8_t v) { c.add_value(v); }); });
-  array(4, a.num_cells * 4, Content::Integers,
+  array(3, a.num_cells, [&](CompressedArray& c) { a.types([&](std::uint8_t v) { c.add_value(v); }); });
+  array(4, a.num_cells * 4,
         [&](CompressedArray& c) { a.boundary_group([&](std::int32_t v) { c.add_value(v); }); });
-  array(5, a.num_cells * 4, Content::Integers,
+  array(5, a.num_cells * 4,
         [&](CompressedArray& c) { a.regions([&](std::int32_t v) { c.add_value(v); }); });
   out.print("\n</AppendedData>\n</VTKFile>\n");
   if (progress) progress(1.0, "");

@@ -1,5 +1,6 @@
 #include "zlib_stream.hpp"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@ namespace semimesh::io {
 namespace {
 
 constexpr std::size_t kChunkBytes = 1 << 20;
+constexpr int kLibdeflateLevel = 1;
 
 std::runtime_error zlib_error(const char* what, int code) {
   return std::runtime_error(std::string("zlib: ") + what + " failed (code " + std::to_string(code) + ")");
@@ -38,20 +40,20 @@ std::string deflate_chunk(const std::string& in, bool last, Content content) {
   return out;
 }
 
-/// One whole zlib stream.
-std::string compress_block(const std::string& in, Content content) {
-  z_stream z{};
-  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15, 8, strategy(content));
-  if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
-  std::string out(deflateBound(&z, in.size()), '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
-  z.avail_in = static_cast<uInt>(in.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = static_cast<uInt>(out.size());
-  rc = deflate(&z, Z_FINISH);
-  out.resize(out.size() - z.avail_out);
-  deflateEnd(&z);
-  if (rc != Z_STREAM_END) throw zlib_error("deflate", rc);
+/// One whole zlib stream, by libdeflate (several times zlib's speed at a like ratio on mesh data;
+/// it compresses whole buffers only, which is what an independent block is). A compressor per
+/// thread: libdeflate's are not shared between threads, and making one costs more than a block.
+std::string compress_block(const std::string& in) {
+  struct Compressor {
+    libdeflate_compressor* c = libdeflate_alloc_compressor(kLibdeflateLevel);
+    ~Compressor() { libdeflate_free_compressor(c); }
+  };
+  thread_local Compressor compressor;
+  if (!compressor.c) throw std::runtime_error("libdeflate: cannot allocate a compressor");
+  std::string out(libdeflate_zlib_compress_bound(compressor.c, in.size()), '\0');
+  const std::size_t bytes = libdeflate_zlib_compress(compressor.c, in.data(), in.size(), out.data(), out.size());
+  if (bytes == 0) throw std::runtime_error("libdeflate: a block did not fit its bound");
+  out.resize(bytes);
   return out;
 }
 
@@ -128,8 +130,8 @@ void ZlibStream::finish() {
   finished_ = true;
 }
 
-std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
-  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
+std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks) {
+  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i]); });
 }
 
 void Base64Out::add(const char* data, std::size_t bytes) {

@@ -240,6 +240,14 @@ std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::u
     Face face;
     std::copy(local_vertices, local_vertices + n, face.vertices.begin());
     face.num_vertices = static_cast<std::uint8_t>(n);
+    // The face's edges exist already (link_entities finds an element's edges first); kept so that
+    // face_nodes needs no lookup.
+    const auto& local_edges = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
+    for (std::size_t e = 0; e < local_edges.size(); ++e) {
+      const NodeId a = local_vertices[local_edges[e][0]], b = local_vertices[local_edges[e][1]];
+      face.edges[e] = edge_index_.at(edge_key(a, b));
+      if (a > b) face.edge_reversed |= static_cast<std::uint8_t>(1u << e);
+    }
     face.first_node = static_cast<std::uint32_t>(face_pool_.size());
     face_pool_.resize(face_pool_.size() + face_interior_count(n, order_), kNoNode);
     faces_.push_back(face);
@@ -319,21 +327,17 @@ std::vector<NodeId> Mesh::edge_nodes(std::size_t edge) const {
 }
 
 std::vector<NodeId> Mesh::face_nodes(std::size_t face) const {
+  std::vector<NodeId> out;
+  face_nodes(face, out);
+  return out;
+}
+
+void Mesh::face_nodes(std::size_t face, std::vector<NodeId>& out) const {
   const Face& f = faces_.at(face);
   const ho::Shape shape = f.num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral;
-  std::array<std::uint32_t, 4> edge_ids{};
-  std::uint16_t reversed = 0;
-  const auto& local_edges = ho::edges(shape);
-  for (std::size_t e = 0; e < local_edges.size(); ++e) {
-    const NodeId a = f.vertices[local_edges[e][0]], b = f.vertices[local_edges[e][1]];
-    edge_ids[e] = static_cast<std::uint32_t>(find_edge(a, b));
-    if (a > b) reversed |= static_cast<std::uint16_t>(1u << e);
-  }
   const auto id = static_cast<std::uint32_t>(face);
   const std::uint8_t identity = 0;
-  std::vector<NodeId> out;
-  assemble(shape, f.vertices.data(), edge_ids.data(), reversed, &id, &identity, 0, out);
-  return out;
+  assemble(shape, f.vertices.data(), f.edges.data(), f.edge_reversed, &id, &identity, 0, out);
 }
 
 std::size_t Mesh::memory_bytes() const {

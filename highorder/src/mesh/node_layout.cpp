@@ -2,8 +2,9 @@
 
 #include <Eigen/Dense>
 
+#include <array>
+#include <atomic>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -191,12 +192,19 @@ const NodeLayout& node_layout(ho::Shape shape, int order) {
   if (order < 1 || order > ho::kMaxOrder)
     throw std::invalid_argument("node_layout: order " + std::to_string(order) + " outside [1, " +
                                 std::to_string(ho::kMaxOrder) + "]");
+  // Read on every element_nodes call, by several threads at once: a lock-free slot per (shape,
+  // order), filled once under the mutex (layouts are never freed, so a pointer once seen stays valid).
+  constexpr int kShapes = static_cast<int>(ho::Shape::Hexahedron) + 1;
+  static std::array<std::atomic<const NodeLayout*>, kShapes*(ho::kMaxOrder + 1)> table{};
+  std::atomic<const NodeLayout*>& slot = table[static_cast<int>(shape) * (ho::kMaxOrder + 1) + order];
+  if (const NodeLayout* layout = slot.load(std::memory_order_acquire)) return *layout;
   static std::mutex mutex;
-  static std::map<std::pair<int, int>, std::unique_ptr<NodeLayout>> cache;
+  static std::vector<std::unique_ptr<NodeLayout>> owned;
   const std::lock_guard<std::mutex> lock(mutex);
-  auto& entry = cache[{static_cast<int>(shape), order}];
-  if (!entry) entry = build_layout(shape, order);
-  return *entry;
+  if (const NodeLayout* layout = slot.load(std::memory_order_relaxed)) return *layout;
+  owned.push_back(build_layout(shape, order));
+  slot.store(owned.back().get(), std::memory_order_release);
+  return *owned.back();
 }
 
 }  // namespace semimesh::mesh

@@ -24,6 +24,9 @@ using semimesh::mesh::NodeId;
 Eigen::Vector3d straight_map(Shape shape, const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3d& r) {
   if (shape == Shape::Tetrahedron) return (1 - r[0] - r[1] - r[2]) * v[0] + r[0] * v[1] + r[1] * v[2] + r[2] * v[3];
   if (shape == Shape::Triangle) return (1 - r[0] - r[1]) * v[0] + r[0] * v[1] + r[1] * v[2];
+  if (shape == Shape::Quadrilateral)  // on [-1,1]^2, vertices counter-clockwise from (-1,-1)
+    return ((1 - r[0]) * (1 - r[1]) * v[0] + (1 + r[0]) * (1 - r[1]) * v[1] + (1 + r[0]) * (1 + r[1]) * v[2] +
+            (1 - r[0]) * (1 + r[1]) * v[3]) / 4.0;
   // Hexahedron on [-1,1]^3, vertices in Gmsh order.
   const std::array<std::array<int, 3>, 8> s = {
       {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
@@ -55,6 +58,29 @@ struct NodeMaker {
   }
 };
 
+// Every face's nodes lie where the straight map of its stored vertices puts them (so its edges,
+// and their directions, are the right ones), and its edge k joins its stored vertices k and k+1.
+void expect_straight_faces(const Mesh& mesh) {
+  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+    const auto& face = mesh.faces()[f];
+    const Shape shape = face.num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+    std::vector<Eigen::Vector3d> v;
+    for (int k = 0; k < face.num_vertices; ++k) {
+      v.push_back(mesh.node(face.vertices[k]));
+      const NodeId a = face.vertices[k], b = face.vertices[(k + 1) % face.num_vertices];
+      const auto& edge = mesh.edges()[face.edges[k]].vertices;
+      EXPECT_EQ(edge[0], std::min(a, b)) << "face " << f << " edge " << k;
+      EXPECT_EQ(edge[1], std::max(a, b)) << "face " << f << " edge " << k;
+    }
+    const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(shape, mesh.order(), NodeSet::Equispaced);
+    const auto ids = mesh.face_nodes(f);
+    ASSERT_EQ(static_cast<long>(ids.size()), ref.rows());
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      EXPECT_LT((mesh.node(ids[i]) - straight_map(shape, v, ref.row(i).transpose())).norm(), 1e-12)
+          << "face " << f << " node " << i;
+  }
+}
+
 void expect_rows(const Eigen::MatrixX3d& got, const std::vector<Eigen::Vector3d>& expected) {
   ASSERT_EQ(got.rows(), static_cast<long>(expected.size()));
   for (std::size_t i = 0; i < expected.size(); ++i)
@@ -80,6 +106,7 @@ TEST(MeshModel, TwoTetsShareAFaceInEveryVertexOrder) {
     EXPECT_EQ(mesh.edges().size(), 9u);   // 6 + 6 - 3 shared
     EXPECT_EQ(mesh.element_nodes(1), ids);
     expect_rows(mesh.element_coordinates(1), expected);
+    expect_straight_faces(mesh);
     ++cases;
   } while (std::next_permutation(perm.begin(), perm.end()));
   EXPECT_EQ(cases, 24);
@@ -112,6 +139,7 @@ TEST(MeshModel, TwoHexesShareAQuadInEveryOrientation) {
       EXPECT_EQ(mesh.edges().size(), 20u);
       EXPECT_EQ(mesh.element_nodes(1), ids);
       expect_rows(mesh.element_coordinates(1), expected);
+      expect_straight_faces(mesh);
       distinct_faces_seen.insert(std::vector<NodeId>(mesh.elements()[1].face_orientation.begin(),
                                                      mesh.elements()[1].face_orientation.end()));
     }

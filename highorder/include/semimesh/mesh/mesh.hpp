@@ -54,8 +54,10 @@ struct Edge {
 
 struct Face {
   std::array<NodeId, 4> vertices{kNoNode, kNoNode, kNoNode, kNoNode};  ///< reference orientation
-  std::uint8_t num_vertices = 0;                                         ///< 3 or 4
-  std::uint32_t first_node = 0;  ///< interior nodes: Mesh::face_pool()[first_node, +count)
+  std::array<std::uint32_t, 4> edges{};  ///< edge ids in ho::edges(tri/quad) order of `vertices`
+  std::uint32_t first_node = 0;          ///< interior nodes: Mesh::face_pool()[first_node, +count)
+  std::uint8_t num_vertices = 0;         ///< 3 or 4
+  std::uint8_t edge_reversed = 0;        ///< bit e set: local edge e runs against the edge
 };
 
 struct Element {
@@ -151,6 +153,7 @@ class Mesh {
   std::vector<NodeId> edge_nodes(std::size_t edge) const;
   /// Node ids of a face in the canonical order of a tri/quad whose vertices are the stored ones.
   std::vector<NodeId> face_nodes(std::size_t face) const;
+  void face_nodes(std::size_t face, std::vector<NodeId>& out) const;
 
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
   std::size_t memory_bytes() const;

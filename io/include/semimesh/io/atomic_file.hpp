@@ -43,12 +43,14 @@ class AtomicFile {
 
  private:
   static constexpr std::size_t kFlushBytes = 1 << 20;
+  static constexpr std::size_t kWritebackBytes = std::size_t{16} << 20;
   void flush_buffer();
 
   std::string path_, temp_path_;
   std::FILE* file_ = nullptr;
   fmt::memory_buffer buffer_;
   std::size_t written_ = 0;
+  std::size_t started_writeback_ = 0;  ///< bytes [0, this) handed to the kernel's writeback
   bool committed_ = false;
 };
 
