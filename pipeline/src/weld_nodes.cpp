@@ -146,10 +146,15 @@ std::unordered_map<mesh::NodeId, Eigen::Vector3d> carry_inwards(const mesh::Mesh
   if (std::none_of(snapped.edge_moved.begin(), snapped.edge_moved.end(), [](char c) { return c != 0; })) return moved;
   std::vector<char> face_moved = snapped.face_moved, on_cad(mesh.faces().size(), 0);
   for (const mesh::BoundaryFace& b : mesh.boundary_faces()) on_cad[b.face] = 1;
+  std::vector<char> ends(mesh.num_nodes(), 0);  // the vertices of moved edges: few, a cheap filter
+  for (std::size_t e = 0; e < mesh.edges().size(); ++e)
+    if (snapped.edge_moved[e]) ends[mesh.edges()[e].vertices[0]] = ends[mesh.edges()[e].vertices[1]] = 1;
   for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
     const mesh::Face& face = mesh.faces()[f];
     const int n = face.num_vertices;
     if (face_moved[f] || on_cad[f]) continue;
+    if (std::count_if(face.vertices.begin(), face.vertices.begin() + n, [&](mesh::NodeId v) { return ends[v]; }) < 2)
+      continue;
     bool touched = false;
     for (int k = 0; k < n; ++k) {
       const long e = mesh.find_edge(face.vertices[k], face.vertices[(k + 1) % n]);
