@@ -1,10 +1,14 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
+#include "semimesh/ho/curving/extend_inward.hpp"
 #include "semimesh/mesh/compact.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -48,57 +52,138 @@ class PointIndex {
   std::unordered_map<Cell, std::vector<mesh::NodeId>, CellHash> cells_;
 };
 
-// Inner nodes of `mine` mapped to the nearest of `theirs` (then through `to`) when that one is
-// clearly the nearest (under half the distance to the next); the others are left alone.
-void match_inner_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine,
-                       const std::vector<mesh::NodeId>& theirs, std::vector<mesh::NodeId>& to) {
-  for (mesh::NodeId m : mine) {
-    if (to[m] != m) continue;
-    double best = 1e300, next = 1e300;
-    mesh::NodeId nearest = m;
-    for (mesh::NodeId n : theirs) {
-      const double d = (mesh.node(n) - mesh.node(m)).norm();
-      if (d < best) next = best, best = d, nearest = n;
-      else next = std::min(next, d);
-    }
-    if (nearest != m && best < 0.5 * next) to[m] = to[nearest];
-  }
+// Where the far field's entities meet the split's: an edge or face whose vertices were welded onto
+// those of another (`theirs`, the entity of the element seen first) takes its inner nodes, each
+// matched by its place in the entity (order along the edge, slot in the face under the
+// orientation relating the two), never by distance: the far field's pre-cut skin quads are
+// straight, the split's pieces of a curved rear interface are not, and the bulge can exceed the
+// spacing of the nodes (order 3 on an 8-layer split at the sharp trailing edge's tip).
+struct Snapped {
+  std::vector<char> edge_moved, face_moved;  ///< [edges], [faces]: inner nodes now at other points
+  double largest_move = 0.0;
+};
+
+std::vector<mesh::NodeId> pool_part(const std::vector<mesh::NodeId>& pool, std::size_t first, std::size_t count) {
+  return std::vector<mesh::NodeId>(pool.begin() + first, pool.begin() + first + count);
 }
 
-// An edge or face whose vertices were all welded onto another entity's takes that entity's inner
-// nodes: the far field's straight skin quads place theirs between their vertices, the split places
-// its own where the interfaces, interpolated between the vertices', fall on the element's map;
-// they differ inside the entity by more than round-off where the ratio varies (the wake).
-void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to) {
+// to[mine[k]] = to[theirs[k]] for every k; whether a node then sits elsewhere (beyond tolerance).
+bool take_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine, const std::vector<mesh::NodeId>& theirs,
+                double tolerance, std::vector<mesh::NodeId>& to, double& largest_move) {
+  bool moved = false;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    to[mine[k]] = to[theirs[k]];
+    const double d = (mesh.node(to[mine[k]]) - mesh.node(mine[k])).norm();
+    largest_move = std::max(largest_move, d);
+    moved = moved || d > tolerance;
+  }
+  return moved;
+}
+
+Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to) {
   const int P = mesh.order();
-  if (P < 2) return;
-  auto pool = [](const std::vector<mesh::NodeId>& from, std::size_t first, std::size_t count) {
-    return std::vector<mesh::NodeId>(from.begin() + first, from.begin() + first + count);
-  };
+  Snapped out{std::vector<char>(mesh.edges().size(), 0), std::vector<char>(mesh.faces().size(), 0), 0.0};
+  if (P < 2) return out;
   for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
     const mesh::Edge& edge = mesh.edges()[e];
     const mesh::NodeId a = to[edge.vertices[0]], b = to[edge.vertices[1]];
     if (a == edge.vertices[0] && b == edge.vertices[1]) continue;
     const long other = mesh.find_edge(a, b);
     if (other < 0 || static_cast<std::size_t>(other) == e) continue;
-    match_inner_nodes(mesh, pool(mesh.edge_pool(), edge.first_node, P - 1),
-                      pool(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1), to);
+    std::vector<mesh::NodeId> theirs = pool_part(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1);
+    if (mesh.edges()[other].vertices[0] != a) std::reverse(theirs.begin(), theirs.end());
+    out.edge_moved[e] = take_nodes(mesh, pool_part(mesh.edge_pool(), edge.first_node, P - 1), theirs, tolerance, to,
+                                   out.largest_move);
   }
   for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
     const mesh::Face& face = mesh.faces()[f];
-    std::vector<mesh::NodeId> welded;
+    const int n = face.num_vertices;
+    std::vector<mesh::NodeId> welded(face.vertices.begin(), face.vertices.begin() + n);
     bool moved = false;
-    for (int k = 0; k < face.num_vertices; ++k) {
-      welded.push_back(to[face.vertices[k]]);
-      moved = moved || welded.back() != face.vertices[k];
-    }
+    for (mesh::NodeId& v : welded) moved = moved || to[v] != v, v = to[v];
     if (!moved) continue;
     const long other = mesh.find_face(welded);
     if (other < 0 || static_cast<std::size_t>(other) == f) continue;
-    const std::size_t count = face.num_vertices == 4 ? (P - 1) * (P - 1) : (P - 1) * (P - 2) / 2;
-    match_inner_nodes(mesh, pool(mesh.face_pool(), face.first_node, count),
-                      pool(mesh.face_pool(), mesh.faces()[other].first_node, count), to);
+    const mesh::Face& their_face = mesh.faces()[other];
+    const int code = mesh::face_orientation_code(welded.data(), their_face.vertices.data(), n);
+    if (code < 0)
+      throw std::logic_error("weld: face " + std::to_string(f) + " welds onto face " + std::to_string(other) +
+                             " but no rotation or reflection relates their vertices");
+    // Face f seen with its welded vertices is face `other` seen with orientation `code`.
+    const mesh::NodeLayout& layout = mesh::node_layout(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral, P);
+    std::vector<mesh::NodeId> mine, theirs;
+    for (const mesh::NodeSlot& slot : layout.slots)
+      if (slot.kind == mesh::NodeSlot::Face) {
+        mine.push_back(mesh.face_pool()[face.first_node + slot.slot[0]]);
+        theirs.push_back(mesh.face_pool()[their_face.first_node + slot.slot[code]]);
+      }
+    out.face_moved[f] = take_nodes(mesh, mine, theirs, tolerance, to, out.largest_move);
   }
+  return out;
+}
+
+// The points after the weld: node v at to[v]'s, or where `moved` puts it.
+Eigen::MatrixXd welded_points(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& ids,
+                              const std::vector<mesh::NodeId>& to,
+                              const std::unordered_map<mesh::NodeId, Eigen::Vector3d>& moved) {
+  Eigen::MatrixXd x(ids.size(), 3);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const mesh::NodeId v = to[ids[k]];
+    const auto it = moved.find(v);
+    x.row(k) = (it == moved.end() ? mesh.node(v) : it->second).transpose();
+  }
+  return x;
+}
+
+// The far field's faces and elements around the snapped entities take the inner nodes curving
+// would have given them had their edges been curved then (their harmonic extension, as
+// ho::curve_mesh): a face off the CAD with a snapped edge, then every element with a moved edge or
+// face. Returns the new points by node id.
+std::unordered_map<mesh::NodeId, Eigen::Vector3d> carry_inwards(const mesh::Mesh& mesh, const Snapped& snapped,
+                                                                const std::vector<mesh::NodeId>& to) {
+  const int P = mesh.order();
+  std::unordered_map<mesh::NodeId, Eigen::Vector3d> moved;
+  if (std::none_of(snapped.edge_moved.begin(), snapped.edge_moved.end(), [](char c) { return c != 0; })) return moved;
+  std::vector<char> face_moved = snapped.face_moved, on_cad(mesh.faces().size(), 0);
+  for (const mesh::BoundaryFace& b : mesh.boundary_faces()) on_cad[b.face] = 1;
+  std::vector<char> ends(mesh.num_nodes(), 0);  // the vertices of moved edges: few, a cheap filter
+  for (std::size_t e = 0; e < mesh.edges().size(); ++e)
+    if (snapped.edge_moved[e]) ends[mesh.edges()[e].vertices[0]] = ends[mesh.edges()[e].vertices[1]] = 1;
+  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+    const mesh::Face& face = mesh.faces()[f];
+    const int n = face.num_vertices;
+    if (face_moved[f] || on_cad[f]) continue;
+    if (std::count_if(face.vertices.begin(), face.vertices.begin() + n, [&](mesh::NodeId v) { return ends[v]; }) < 2)
+      continue;
+    bool touched = false;
+    for (int k = 0; k < n; ++k) {
+      const long e = mesh.find_edge(face.vertices[k], face.vertices[(k + 1) % n]);
+      touched = touched || (e >= 0 && snapped.edge_moved[e]);
+    }
+    if (!touched) continue;
+    const ho::Shape shape = n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral;
+    const std::vector<mesh::NodeId> ids = mesh.face_nodes(f);
+    Eigen::MatrixXd x = welded_points(mesh, ids, to, moved);
+    ho::extend_inward(shape, P, mesh.node_set(), x);
+    const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
+    for (std::size_t k = 0; k < ids.size(); ++k)
+      if (layout.slots[k].kind == mesh::NodeSlot::Face) moved[ids[k]] = x.row(k).transpose();
+    face_moved[f] = 1;
+  }
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const mesh::Element& el = mesh.elements()[e];
+    bool touched = false;
+    for (std::size_t k = 0; k < ho::edges(el.shape).size(); ++k) touched = touched || snapped.edge_moved[el.edges[k]];
+    for (std::size_t k = 0; k < ho::faces(el.shape).size(); ++k) touched = touched || face_moved[el.faces[k]];
+    if (!touched) continue;
+    const std::vector<mesh::NodeId> ids = mesh.element_nodes(e);
+    Eigen::MatrixXd x = welded_points(mesh, ids, to, moved);
+    ho::extend_inward(el.shape, P, mesh.node_set(), x);
+    const mesh::NodeLayout& layout = mesh::node_layout(el.shape, P);
+    for (std::size_t k = 0; k < ids.size(); ++k)
+      if (layout.slots[k].kind == mesh::NodeSlot::Interior) moved[ids[k]] = x.row(k).transpose();
+  }
+  return moved;
 }
 
 }  // namespace
@@ -113,40 +198,25 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const Pro
   Welded out{mesh::Mesh(mesh.order(), mesh.node_set()), 0};
 
   report(0.0, "vertices");
-  // Coincident vertices first (few nodes); then all nodes of the elements touching one of them.
-  std::vector<char> seen(n, 0), merged_vertex(n, 0);
+  // Coincident vertices by their points; the nodes inside edges and faces by topology (above).
+  std::vector<char> seen(n, 0);
   PointIndex vertices(mesh, tolerance);
   for (const mesh::Element& e : mesh.elements())
     for (int k = 0; k < ho::num_vertices(e.shape); ++k) {
       const mesh::NodeId v = e.vertices[k];
       if (seen[v]) continue;
       seen[v] = 1;
-      const mesh::NodeId w = vertices.find_or_add(v);
-      if (w != v) merged_vertex[v] = merged_vertex[w] = 1;
+      to[v] = vertices.find_or_add(v);
     }
-  report(0.05, "nodes");
-  PointIndex nodes(mesh, tolerance);
-  std::vector<mesh::NodeId> list;
-  std::fill(seen.begin(), seen.end(), 0);
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
-    const mesh::Element& el = mesh.elements()[e];
-    bool touches = false;
-    for (int k = 0; k < ho::num_vertices(el.shape); ++k) touches = touches || merged_vertex[el.vertices[k]];
-    if (!touches) continue;
-    mesh.element_nodes(e, list);
-    for (mesh::NodeId v : list)
-      if (!seen[v]) {
-        seen[v] = 1;
-        to[v] = nodes.find_or_add(v);
-        if (to[v] != v) ++out.merged;
-      }
-  }
-
-  report(0.15, "edges and faces");
-  snap_welded_entities(mesh, to);
+  report(0.1, "edges and faces");
+  const Snapped snapped = snap_welded_entities(mesh, tolerance, to);
+  out.largest_move = snapped.largest_move;
+  for (std::size_t v = 0; v < n; ++v) out.merged += to[v] != v;
+  report(0.15, "inwards");
+  const auto moved = carry_inwards(mesh, snapped, to);
+  out.carried = moved.size();
   report(0.2, "mesh");
-
-  out.mesh = mesh::with_nodes_replaced(mesh, to, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
+  out.mesh = mesh::with_nodes_replaced(mesh, to, moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
   return out;
 }
 

@@ -1,10 +1,20 @@
 // The weld (pipeline/weld_nodes.hpp): two hexes given their shared face twice (as the far field's
 // pre-cut skin and the split give one point two ids) become one conforming pair; only the nodes
-// still used are kept, in order; the progress it reports rises to 1 through its steps.
+// still used are kept, in order; the progress it reports rises to 1 through its steps. At high
+// order a pyramid standing on a hex's curved face (as the far field's pyramids on the split's
+// pieces of a curved rear interface) takes the hex's nodes by their place, however far the curve
+// bulges, and follows the curve inwards.
 #include "semimesh/pipeline/weld_nodes.hpp"
+
+#include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/validity.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,6 +56,100 @@ TEST(WeldNodes, DoubledFaceBecomesOneKeepingOnlyUsedNodesAndReportsProgress) {
   EXPECT_EQ(seen.back().first, 1.0);
   EXPECT_EQ(seen.front().second, "vertices");
   EXPECT_EQ(seen.back().second, "mesh");
+}
+
+constexpr int kOrder = 3;
+constexpr ho::NodeSet kSet = ho::NodeSet::GLL;
+
+// The nodes of an order-kOrder element mapped from its vertices by its linear (P1) map.
+Eigen::MatrixX3d straight_nodes(ho::Shape shape, const Eigen::MatrixX3d& vertices) {
+  return ho::LagrangeBasis(shape, 1, ho::NodeSet::Equispaced).values(ho::reference_nodes(shape, kOrder, kSet)) * vertices;
+}
+
+std::vector<mesh::NodeId> add_nodes(mesh::Mesh& m, const Eigen::MatrixX3d& x) {
+  std::vector<mesh::NodeId> ids;
+  for (int k = 0; k < x.rows(); ++k) ids.push_back(m.add_node(x.row(k).transpose()));
+  return ids;
+}
+
+// The hex's top face z = 0 bulges up near its edge y = 0 (by `bulge` at the edge's middle).
+double lift(const Eigen::Vector3d& x, double bulge) {
+  return bulge * 4.0 * x.x() * (1.0 - x.x()) * std::pow(1.0 - x.y(), 4) * (1.0 + x.z());
+}
+
+// A hex [0, 1]^2 x [-1, 0] lifted by `lift` (zero on its other faces), added first (the split's
+// curved element), then a straight pyramid of apex height `apex` on its top face with nodes of its
+// own (the far field's, on the pre-cut quad). `base_order`: the pyramid's base vertices, as indices
+// into the hex's top face (0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0).
+mesh::Mesh pyramid_on_a_bulging_hex(double bulge, double apex, std::array<int, 4> base_order = {0, 1, 2, 3}) {
+  mesh::Mesh m(kOrder, kSet);
+  Eigen::MatrixX3d hex_vertices(8, 3), top(4, 3), pyramid_vertices(5, 3);
+  hex_vertices << 0, 0, -1, 1, 0, -1, 1, 1, -1, 0, 1, -1, 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  top << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  for (int k = 0; k < 4; ++k) pyramid_vertices.row(k) = top.row(base_order[k]);
+  pyramid_vertices.row(4) << 0.5, 0.5, apex;
+  Eigen::MatrixX3d hex = straight_nodes(ho::Shape::Hexahedron, hex_vertices);
+  for (int k = 0; k < hex.rows(); ++k) hex(k, 2) += lift(hex.row(k).transpose(), bulge);
+  m.add_element(ho::Shape::Hexahedron, add_nodes(m, hex));
+  m.add_element(ho::Shape::Pyramid, add_nodes(m, straight_nodes(ho::Shape::Pyramid, pyramid_vertices)));
+  return m;
+}
+
+bool on_pyramid_base(int canonical) {
+  return std::abs(ho::reference_nodes(ho::Shape::Pyramid, kOrder, kSet)(canonical, 2)) < 1e-12;
+}
+
+TEST(WeldNodes, InnerNodesTakeTheirPlaceInTheEntityHoweverFarTheCurveBulges) {
+  // The edge y = 0 bulges by 0.4 at its inner nodes, nearly their spacing (0.45): the nearest of
+  // the hex's nodes to a straight one is not clearly its own (the old rule left both unmatched
+  // and the rebuild threw).
+  const double bulge = 0.5;
+  const mesh::Mesh m = pyramid_on_a_bulging_hex(bulge, 0.5);
+  const Welded w = weld_coincident_nodes(m, 1e-9);
+  ASSERT_EQ(w.mesh.elements().size(), 2u);
+  EXPECT_EQ(w.mesh.faces().size(), 10u);  // 6 + 5, the base once
+  EXPECT_EQ(w.mesh.num_nodes(), static_cast<std::size_t>(64 + 30 - 16));  // the base's 16 nodes once
+  EXPECT_EQ(w.merged, 16u);
+  EXPECT_NEAR(w.largest_move, bulge * 4.0 * 0.276393202250021 * 0.723606797749979, 1e-12);
+  // Each base node of the pyramid is the hex's node at its own place: its straight point lifted.
+  const Eigen::MatrixX3d straight = m.element_coordinates(1), welded = w.mesh.element_coordinates(1);
+  for (int i = 0; i < straight.rows(); ++i) {
+    if (!on_pyramid_base(i)) continue;
+    Eigen::Vector3d expected = straight.row(i).transpose();
+    expected.z() += lift(expected, bulge);
+    EXPECT_LT((welded.row(i).transpose() - expected).norm(), 1e-12) << "node " << i;
+  }
+}
+
+TEST(WeldNodes, FarFieldElementFollowsTheMovedEdgeInwards) {
+  // A bulge of 0.2 (0.16 at the edge's inner nodes: the old nearest rule matched them): the
+  // pyramid with only its base moved onto the hex's is inverted; carrying the move inwards (the
+  // harmonic extension of its new boundary, as curving gives) keeps it valid.
+  const mesh::Mesh m = pyramid_on_a_bulging_hex(0.2, 0.5);
+  const Welded w = weld_coincident_nodes(m, 1e-9);
+  ASSERT_TRUE(ho::certify_jacobian(ho::Shape::Pyramid, kOrder, kSet, m.element_coordinates(1)).valid);
+  const Eigen::MatrixX3d welded = w.mesh.element_coordinates(1);
+  Eigen::MatrixX3d matched_only = welded;  // the base from the hex, the rest where it was
+  for (int i = 0; i < welded.rows(); ++i)
+    if (!on_pyramid_base(i)) matched_only.row(i) = m.element_coordinates(1).row(i);
+  EXPECT_FALSE(ho::certify_jacobian(ho::Shape::Pyramid, kOrder, kSet, matched_only).valid);
+  EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Pyramid, kOrder, kSet, welded).valid);
+  EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Hexahedron, kOrder, kSet, w.mesh.element_coordinates(0)).valid);
+  // Moved: the inner node of the triangle face on the edge y = 0 and the pyramid's own.
+  EXPECT_EQ(w.carried, 2u);
+}
+
+TEST(WeldNodes, FaceWhoseWeldedVerticesAreNoRotationOfAnothersIsAnInternalError) {
+  // The pyramid's base crosses itself (vertices 0, 2, 1, 3 of the hex's top): the same four
+  // points, in an order no rotation or reflection gives.
+  const mesh::Mesh m = pyramid_on_a_bulging_hex(0.0, 0.5, {0, 2, 1, 3});
+  try {
+    weld_coincident_nodes(m, 1e-9);
+    FAIL() << "expected std::logic_error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("weld: face "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no rotation or reflection"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

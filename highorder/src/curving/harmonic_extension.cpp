@@ -1,5 +1,7 @@
 #include "harmonic_extension.hpp"
 
+#include "semimesh/ho/curving/extend_inward.hpp"
+
 #include "semimesh/ho/quadrature.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/mesh/node_layout.hpp"
@@ -61,3 +63,11 @@ void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values) {
 }
 
 }  // namespace semimesh::ho::detail
+
+namespace semimesh::ho {
+
+void extend_inward(Shape shape, int order, NodeSet set, Eigen::MatrixXd& x) {
+  detail::extend_harmonically(detail::harmonic_extension(shape, order, set), x);
+}
+
+}  // namespace semimesh::ho

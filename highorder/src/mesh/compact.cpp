@@ -38,6 +38,16 @@ std::size_t count_unreferenced_nodes(const Mesh& mesh) {
 Mesh without_unreferenced_nodes(const Mesh& m) { return with_nodes_replaced(m, identity(m.num_nodes())); }
 
 Mesh with_nodes_replaced(const Mesh& m, const std::vector<NodeId>& to, const std::function<void(double)>& done) {
+  return with_nodes_replaced(m, to, {}, done);
+}
+
+Mesh with_nodes_replaced(const Mesh& m, const std::vector<NodeId>& to,
+                         const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                         const std::function<void(double)>& done) {
+  for (const auto& [id, x] : moved)
+    if (m.cad_attachment(id).kind != CadAttachment::None)
+      throw std::invalid_argument("with_nodes_replaced: node " + std::to_string(id) +
+                                  " is attached to the CAD and cannot be moved off it");
   if (to.size() != m.num_nodes())
     throw std::invalid_argument("with_nodes_replaced: a map of " + std::to_string(to.size()) + " nodes for a mesh of " +
                                 std::to_string(m.num_nodes()));
@@ -45,7 +55,10 @@ Mesh with_nodes_replaced(const Mesh& m, const std::vector<NodeId>& to, const std
   Mesh out(m.order(), m.node_set());
   std::vector<NodeId> new_id(m.num_nodes(), kNoNode);
   for (NodeId id = 0; id < m.num_nodes(); ++id)
-    if (used[id]) new_id[id] = out.add_node(m.node(id), m.cad_attachment(id));
+    if (used[id]) {
+      const auto it = moved.find(id);
+      new_id[id] = out.add_node(it == moved.end() ? m.node(id) : it->second, m.cad_attachment(id));
+    }
   for (const std::string& g : m.group_names()) out.group_index(g);
   out.copy_regions_from(m);
   if (!m.elements().empty()) out.reserve(m.elements().front().shape, m.elements().size());

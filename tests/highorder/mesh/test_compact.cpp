@@ -110,4 +110,21 @@ TEST(Compact, ReplacingDuplicateNodesJoinsTheElements) {
   EXPECT_THROW(semimesh::mesh::with_nodes_replaced(m, to), std::invalid_argument);
 }
 
+// Moved nodes (a weld carrying a snapped edge inwards): a listed node is kept at its new point,
+// the others where they were; a node on the CAD cannot be moved off it.
+TEST(Compact, ReplacingNodesCanMoveTheKeptOnesOffNoCad) {
+  const Mesh source = mesh_with_orphans();
+  std::vector<NodeId> to(source.num_nodes());
+  for (NodeId v = 0; v < source.num_nodes(); ++v) to[v] = v;
+  const std::vector<NodeId> tet = source.element_nodes(1);
+  const NodeId free = tet.back();  // an edge node, no CAD attachment
+  ASSERT_EQ(source.cad_attachment(free).kind, CadAttachment::None);
+  const Eigen::Vector3d there(0.6, 0.7, 0.8);
+  const Mesh out = semimesh::mesh::with_nodes_replaced(source, to, {{free, there}});
+  const std::vector<NodeId> moved_tet = out.element_nodes(1);
+  EXPECT_EQ(out.node(moved_tet.back()), there);
+  for (std::size_t k = 0; k + 1 < tet.size(); ++k) EXPECT_EQ(out.node(moved_tet[k]), source.node(tet[k])) << k;
+  EXPECT_THROW(semimesh::mesh::with_nodes_replaced(source, to, {{tet[0], there}}), std::invalid_argument);
+}
+
 }  // namespace

@@ -5,6 +5,7 @@
 #include "semimesh/mesh/mesh.hpp"
 
 #include <functional>
+#include <unordered_map>
 #include <vector>
 
 namespace semimesh::mesh {
@@ -23,6 +24,13 @@ Mesh without_unreferenced_nodes(const Mesh& mesh);
 /// with_nodes_replaced(m, identity). `done` (optional) receives the fraction of elements rebuilt,
 /// about a hundred times.
 Mesh with_nodes_replaced(const Mesh& mesh, const std::vector<NodeId>& to,
+                         const std::function<void(double)>& done = {});
+
+/// The same with the kept nodes listed in `moved` (by old id) at their listed points instead
+/// (a weld that carries snapped edges inwards); a listed node must have no CAD attachment
+/// (std::invalid_argument).
+Mesh with_nodes_replaced(const Mesh& mesh, const std::vector<NodeId>& to,
+                         const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
                          const std::function<void(double)>& done = {});
 
 }  // namespace semimesh::mesh

@@ -12,20 +12,26 @@ namespace semimesh::pipeline {
 
 struct Welded {
   mesh::Mesh mesh;
-  std::size_t merged = 0;  ///< nodes replaced by an equal one
+  std::size_t merged = 0;     ///< nodes replaced by another (vertices, inner nodes of welded entities)
+  double largest_move = 0.0;  ///< farthest an inner node of a welded entity was from the one it became
+  std::size_t carried = 0;    ///< face and element inner nodes re-placed around moved edges
 };
 
-/// A copy of `mesh` in which every node that lies within `tolerance` of a node seen before it is
-/// replaced by that node, and only the nodes some element or boundary face then uses are kept (in
-/// their relative order, with their CAD attachments: one rebuild of the mesh for the weld and the
-/// compaction, as mesh::with_nodes_replaced). Only
-/// elements with a vertex coinciding with another element's vertex are searched for their other
-/// nodes (a weld starts at the vertices). An edge or face whose vertices were all welded onto
-/// those of another then takes that one's inner nodes, each the nearest (the split's interfaces,
-/// interpolated between the vertices', are not where a straight skin quad has its nodes). Throws std::invalid_argument (from Mesh::add_element)
-/// when two elements would then give one edge or face different nodes.
-/// `progress`: the search (steps "vertices", "nodes", "edges and faces"), then the rebuild ("mesh"),
-/// from the calling thread.
+/// A copy of `mesh` in which every element vertex that lies within `tolerance` of a vertex seen
+/// before it (in element order) is replaced by that one, and an edge or face whose vertices were
+/// all so welded onto those of another takes that one's inner nodes, matched by their place in it
+/// (order along the edge, slot in the face; never by distance: the far field's pre-cut skin quads
+/// are straight, the split's pieces of a curved rear interface are not). Where that moved an edge's
+/// nodes (beyond `tolerance`), the faces off the CAD with that edge and the elements with a moved
+/// edge or face take the harmonic extension of their new boundary, as ho::curve_mesh gives them
+/// (ho::extend_inward), so a far-field element follows the split's curved edge. Only the nodes
+/// some element or boundary face then uses are kept (in their relative order, with their CAD
+/// attachments: one rebuild of the mesh, as mesh::with_nodes_replaced).
+/// Throws std::logic_error (an internal error) naming both faces when a face's welded vertices
+/// are another face's in no rotation or reflection, and std::invalid_argument (from
+/// Mesh::add_element) when two elements would then give one edge or face different nodes.
+/// `progress`: the search (steps "vertices", "edges and faces", "inwards"), then the rebuild
+/// ("mesh"), from the calling thread.
 Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress = {});
 
 }  // namespace semimesh::pipeline
