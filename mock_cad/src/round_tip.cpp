@@ -12,9 +12,13 @@ SurfaceDerivatives RoundTipMap::eval(double u, double phi) const {
   auto lift = [](const Vec2& p) { return Vec3(p.x(), p.y(), 0.0); };
   const Vec3 C = Vec3(w.leading_edge_x(span), 0.0, span) + 0.5 * c * lift(up.p + lo.p);
   const Vec3 C1 = 0.5 * c * lift(up.d1 + lo.d1), C2 = 0.5 * c * lift(up.d2 + lo.d2);
-  const Vec3 B = 0.5 * c * lift(up.p - lo.p), B1 = 0.5 * c * lift(up.d1 - lo.d1), B2 = 0.5 * c * lift(up.d2 - lo.d2);
+  Vec3 B = 0.5 * c * lift(up.p - lo.p);
+  const Vec3 B1 = 0.5 * c * lift(up.d1 - lo.d1), B2 = 0.5 * c * lift(up.d2 - lo.d2);
   const double yc = 0.5 * (up.p.y() + lo.p.y()), yc1 = 0.5 * (up.d1.y() + lo.d1.y()), yc2 = 0.5 * (up.d2.y() + lo.d2.y());
-  const ScalarPoint yt = w.section().half_thickness_in_u(u);
+  ScalarPoint yt = w.section().half_thickness_in_u(u);
+  // A closed trailing edge has y_t(1) = 0 exactly; the polynomial's round-off (1e-17) would leave a
+  // circle there whose curvature (1e17) the callers would take for the surface's: make it the pole.
+  if (w.section().sharp_te() && u >= 1.0) B = Vec3::Zero(), yt.f = 0.0;
   const Vec3 W(w.tan_sweep() + dc * u * u, dc * yc, 1.0), W1(2.0 * dc * u, dc * yc1, 0.0), W2(2.0 * dc, dc * yc2, 0.0);
   const Vec3 D = c * yt.f * W, D1 = c * (yt.d1 * W + yt.f * W1), D2 = c * (yt.d2 * W + 2.0 * yt.d1 * W1 + yt.f * W2);
   const double cs = std::cos(phi), sn = std::sin(phi);

@@ -301,6 +301,8 @@ params::Table<Config> naca_keys() {
       params::real("sweep", &NacaConfig::sweep, "(-80, 80)", "leading-edge sweep, degrees"),
       params::string("te", &NacaConfig::te, "\"blunt\" | \"sharp\"",
                      "squared-off trailing edge (with a te_base face) or closed"),
+      params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",
+                     "flat tip cap, or round: the tip section revolved about its camber line (backend naca)"),
       params::reals("box", &NacaConfig::box, "",
                     "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0"),
   };
@@ -476,6 +478,10 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   sections.at("geometry.naca")
       ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
+
+  sections.at("geometry.naca")
+      ->require(geo.naca.tip == "flat" || !geo.source.empty() || geo.backend == "naca", "tip",
+                "\"flat\" for backend \"" + geo.backend + "\" (the rounded tip is the analytic backend's: backend = \"naca\")");
 
   check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.farfield"),
                          *sections.at("geometry.farfield.sphere"));
