@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,37 @@ void scale_lengths(pipeline::Config& config, double factor) {
           key.set(config, round_to_4_digits(std::get<double>(key.get(config)) * factor));
 }
 
+// Whether the H-type near field can stand on the body: a trailing-edge base, or a sharp trailing
+// edge (a curve between two body surfaces leaving the wall in the root's downstream half; the
+// leading edge of a two-face skin is the other such curve, in the upstream half). The near field
+// finds these the same way (h_shell.hpp).
+bool allows_h_type(const cad::Model& model, const surface::CadRoles& roles) {
+  if (roles.te_base) return true;
+  const cad::Vec3 n = roles.span_direction, x = cad::Vec3::UnitX();
+  const cad::Vec3 streamwise = (x - x.dot(n) * n).normalized();
+  auto is_body = [&](int s) { return std::binary_search(roles.body.begin(), roles.body.end(), s); };
+  auto on_wall = [&](int vertex) {
+    for (int c : model.curves_of_vertex(vertex))
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c))
+        if (u.surface == roles.wall) return true;
+    return false;
+  };
+  double lo = 1e300, hi = -1e300, sharp = -1e300;
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    if (uses.size() != 2) continue;
+    const int a = uses[0].surface, b = uses[1].surface;
+    const bool root = (a == roles.wall && is_body(b)) || (b == roles.wall && is_body(a));
+    const bool body_body = a != b && is_body(a) && is_body(b);
+    for (int v : model.curve_vertices(c)) {
+      const double along = model.vertex(v).point.dot(streamwise);
+      if (root) lo = std::min(lo, along), hi = std::max(hi, along);
+      if (body_body && on_wall(v)) sharp = std::max(sharp, along);
+    }
+  }
+  return sharp > 0.5 * (lo + hi);
+}
+
 }  // namespace
 
 const std::vector<std::string>& length_keys() {
@@ -57,6 +89,10 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   c.geometry.farfield = surface_entries(*model, roles.farfield);
   if (roles.te_base) c.wake.te_base = surface_entry(*model, *roles.te_base);
   scale_lengths(c, roles.chord);
+  // The paper's near field where the body allows it; its wall layer and wake keys are the defaults
+  // scaled by the chord (as every length here).
+  const bool h_type = allows_h_type(*model, roles);
+  if (h_type) c.nearfield.topology = "H";
   out.summary = fmt::format("Written by `semimesh init --cad {}`: the roles found in the file, and the lengths of the\n"
                             "paper's case (chord 1) times the body's root chord {:.6g} {}.\n",
                             cad_path, roles.chord, model->units());
@@ -73,6 +109,8 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
                                  c.sizing.size.min_size, c.nearfield.shell.thickness);
     }
   }
+  out.summary += h_type ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"
+                        : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n";
   out.summary += surface::describe_cad_roles(*model, roles);
   return out;
 }

@@ -4,6 +4,7 @@
 #include "naca_wing.hpp"
 #include "plane_entities.hpp"
 #include "revolution_entities.hpp"
+#include "round_tip_entities.hpp"
 #include "wing_entities.hpp"
 
 #include "semimesh/cad/error.hpp"
@@ -34,6 +35,7 @@ class Builder {
       : p_(p),
         wing_(std::make_shared<const detail::NacaWing>(detail::NacaSection(detail::parse_naca_code(p.code), p.sharp_te),
                                                        p.chord, p.span, p.taper, p.sweep_deg)),
+        tip_(p.round_tip ? std::make_shared<const detail::RoundTipMap>(wing_) : nullptr),
         model_(std::make_unique<cad::Model>("naca")),
         tol_(kSolverTolerance * p.chord),
         band_(kBoundaryBand * p.chord) {}
@@ -95,8 +97,23 @@ class Builder {
       line("te_upper", "root_te_upper", "tip_te_upper", Interval{0.0, span});
       line("te_lower", "root_te_lower", "tip_te_lower", Interval{0.0, span});
       line("root_te", "root_te_lower", "root_te_upper", Interval{0.0, 1.0});
-      line("tip_te", "tip_te_lower", "tip_te_upper", Interval{0.0, 1.0});
+      if (tip_)
+        curves_["tip_te"] = model_->add_curve(std::make_unique<detail::TipArc>(model_->num_curves(), "tip_te", tip_, tol_),
+                                              vertices_.at("tip_te_lower"), vertices_.at("tip_te_upper"));
+      else
+        line("tip_te", "tip_te_lower", "tip_te_upper", Interval{0.0, 1.0});
     }
+    if (tip_) {
+      pole("tip_le_pole", "tip_le");
+      if (p_.sharp_te) pole("tip_te_pole", "tip_te");
+    }
+  }
+
+  // A pole of the rounded tip: t = phi in [0, pi].
+  void pole(const std::string& name, const std::string& at) {
+    const int v = vertices_.at(at);
+    curves_[name] = model_->add_curve(
+        std::make_unique<detail::PoleCurve>(model_->num_curves(), name, model_->vertex(v).point, Interval{0.0, M_PI}), v, v);
   }
 
   static std::string corner(int i, int j, int k) {
@@ -135,9 +152,19 @@ class Builder {
             {Loop{{fwd(c("leading_edge")), fwd(c("tip_upper")), rev(te_up), rev(c("root_upper"))}}});
     surface(std::make_unique<detail::WingSkin>(next_surface(), "lower", wing_, Side::Lower, tol_),
             {Loop{{fwd(c("root_lower")), fwd(te_lo), rev(c("tip_lower")), rev(c("leading_edge"))}}});
-    if (!sharp)
-      surface(std::make_unique<detail::TrailingEdgeBase>(next_surface(), "te_base", wing_, tol_),
-              {Loop{{fwd(c("root_te")), fwd(c("te_upper")), rev(c("tip_te")), rev(c("te_lower"))}}});
+    if (!sharp) {
+      const Loop base_loop{{fwd(c("root_te")), fwd(c("te_upper")), rev(c("tip_te")), rev(c("te_lower"))}};
+      if (tip_)
+        surface(std::make_unique<detail::CappedTrailingEdgeBase>(next_surface(), "te_base", tip_, tol_), {base_loop});
+      else
+        surface(std::make_unique<detail::TrailingEdgeBase>(next_surface(), "te_base", wing_, tol_), {base_loop});
+    }
+    if (tip_) {  // clockwise in (u, phi) (orientation -1): up the pole, along phi = pi, down u = 1, back
+      const int te = sharp ? c("tip_te_pole") : c("tip_te");
+      surface(std::make_unique<detail::RoundTipFace>(next_surface(), "tip", tip_, tol_),
+              {Loop{{fwd(c("tip_le_pole")), fwd(c("tip_lower")), fwd(te), rev(c("tip_upper"))}}});
+      return;
+    }
 
     const double span = p_.span, chord = wing_->chord_at(span), x_le = wing_->leading_edge_x(span);
     const cad::Vec2 lo = wing_->section().extent_lo(), hi = wing_->section().extent_hi();
@@ -182,6 +209,7 @@ class Builder {
 
   const NacaWingParams& p_;
   std::shared_ptr<const detail::NacaWing> wing_;
+  std::shared_ptr<const detail::RoundTipMap> tip_;  // naca.tip = round only
   std::unique_ptr<cad::Model> model_;
   double tol_, band_;
   std::map<std::string, int> vertices_, curves_;

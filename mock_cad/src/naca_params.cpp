@@ -36,7 +36,7 @@ std::array<double, 6> parse_box(const std::string& text) {
 
 NacaWingParams naca_params_from(const cad::Params& p) {
   p.require_known({"naca.code", "naca.chord", "naca.span", "naca.taper", "naca.sweep", "naca.te", "naca.farfield",
-                   "naca.box", "naca.units", "naca.shape"},
+                   "naca.box", "naca.units", "naca.shape", "naca.tip"},
                   "naca");
   NacaWingParams out;
   out.code = p.get_string("naca.code", out.code);
@@ -54,6 +54,10 @@ NacaWingParams naca_params_from(const cad::Params& p) {
   if (shape != "wing" && shape != "revolution")
     reject("naca.shape", shape, "wing (a wing on a wall) or revolution (the section's thickness revolved about the chord line)");
   out.revolution = shape == "revolution";
+  const std::string tip = p.get_string("naca.tip", "flat");
+  if (tip != "flat" && tip != "round")
+    reject("naca.tip", tip, "flat (a plane cap) or round (the tip section revolved about its camber line)");
+  out.round_tip = tip == "round";
   detail::validate(out);
   return out;
 }

@@ -87,16 +87,22 @@ double NacaSection::half_thickness(double x) const {
   return 5.0 * digits_.thickness * (kA0 * u + kA1 * x + kA2 * x2 + kA3 * x2 * x + a4_ * x2 * x2);
 }
 
+ScalarPoint NacaSection::half_thickness_in_u(double u) const {
+  // Thickness as a polynomial in u (x = u^2 turns sqrt(x) into u).
+  const double u2 = u * u, u3 = u2 * u, u4 = u2 * u2, u5 = u4 * u, u6 = u4 * u2, u7 = u6 * u, u8 = u4 * u4;
+  const double tt = 5.0 * digits_.thickness;
+  return {tt * (kA0 * u + kA1 * u2 + kA2 * u4 + kA3 * u6 + a4_ * u8),
+          tt * (kA0 + 2.0 * kA1 * u + 4.0 * kA2 * u3 + 6.0 * kA3 * u5 + 8.0 * a4_ * u7),
+          tt * (2.0 * kA1 + 12.0 * kA2 * u2 + 30.0 * kA3 * u4 + 56.0 * a4_ * u6)};
+}
+
 ProfilePoint NacaSection::eval(Side side, double u) const {
   const double sg = sign_of(side);
-  const double u2 = u * u, u3 = u2 * u, u4 = u2 * u2, u5 = u4 * u, u6 = u4 * u2, u7 = u6 * u, u8 = u4 * u4;
+  const double u2 = u * u;
   const double x = u2;
 
-  // Thickness as a polynomial in u (x = u^2 turns sqrt(x) into u).
-  const double tt = 5.0 * digits_.thickness;
-  const double yt = tt * (kA0 * u + kA1 * u2 + kA2 * u4 + kA3 * u6 + a4_ * u8);
-  const double yt_u = tt * (kA0 + 2.0 * kA1 * u + 4.0 * kA2 * u3 + 6.0 * kA3 * u5 + 8.0 * a4_ * u7);
-  const double yt_uu = tt * (2.0 * kA1 + 12.0 * kA2 * u2 + 30.0 * kA3 * u4 + 56.0 * a4_ * u6);
+  const ScalarPoint thickness = half_thickness_in_u(u);
+  const double yt = thickness.f, yt_u = thickness.d1, yt_uu = thickness.d2;
 
   // sin and cos of the camber-line angle theta = atan(s) and their x-derivatives
   // (s'' = 0 on each parabolic arc): with c = 1/sqrt(1+s^2), sin = s c, (sin)' = s' c^3,

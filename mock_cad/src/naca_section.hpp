@@ -26,6 +26,11 @@ struct ProfilePoint {
   Vec2 d2;
 };
 
+/// A scalar function of u and its first two u-derivatives.
+struct ScalarPoint {
+  double f = 0.0, d1 = 0.0, d2 = 0.0;
+};
+
 /// The four NACA digits MPTT as fractions of the chord.
 struct NacaDigits {
   double max_camber = 0.0;      ///< m = M / 100
@@ -47,6 +52,8 @@ class NacaSection {
 
   /// Half thickness y_t at chordwise station x in [0, 1].
   double half_thickness(double x) const;
+  /// y_t(u^2) and its u-derivatives (a polynomial in u: sqrt(x) = u).
+  ScalarPoint half_thickness_in_u(double u) const;
   /// dy_t/du at u = 0: the leading-edge slope of Y for a symmetric section.
   double leading_edge_slope() const { return 5.0 * digits_.thickness * kA0; }
 

@@ -1,6 +1,7 @@
 #include "naca_validation.hpp"
 
 #include "naca_wing.hpp"
+#include "round_tip.hpp"
 
 #include "semimesh/cad/error.hpp"
 
@@ -8,9 +9,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace semimesh::mock_cad::detail {
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kCapSamples = 200;  // per parameter of the rounded tip, for its extent
 
 [[noreturn]] void reject(const std::string& key, const std::string& value, const std::string& expected) {
   throw cad::CadError(cad::CadError::Kind::BadParameter, key + " = '" + value + "': expected " + expected);
@@ -57,6 +62,7 @@ void validate(const NacaWingParams& p) {
     if (digits.max_camber > 0.0) reject("naca.code", p.code, "a symmetric code 00TT " + what);
     if (!p.sharp_te) reject("naca.te", "blunt", "sharp " + what + " (the tail is a pole)");
     if (p.farfield) reject("naca.farfield", "true", "false " + what + " (the body has no wall)");
+    if (p.round_tip) reject("naca.tip", "round", "flat " + what + " (the body has no tip)");
     return;
   }
   if (!p.farfield) return;
@@ -74,10 +80,20 @@ void validate(const NacaWingParams& p) {
     ymin = std::min(ymin, c * lo.y());
     ymax = std::max(ymax, c * hi.y());
   }
-  if (!(b[0] < xmin && b[3] > xmax && b[1] < ymin && b[4] > ymax && b[5] > p.span))
+  double zmax = p.span;
+  if (p.round_tip) {  // the rounded cap above z = span, sampled (it leans with sweep and taper)
+    const RoundTipMap tip(std::make_shared<const NacaWing>(wing));
+    for (int i = 0; i <= kCapSamples; ++i)
+      for (int j = 0; j <= kCapSamples; ++j) {
+        const Vec3 x = tip.point(static_cast<double>(i) / kCapSamples, kPi * j / kCapSamples);
+        xmin = std::min(xmin, x.x()), xmax = std::max(xmax, x.x()), zmax = std::max(zmax, x.z());
+        ymin = std::min(ymin, x.y()), ymax = std::max(ymax, x.y());
+      }
+  }
+  if (!(b[0] < xmin && b[3] > xmax && b[1] < ymin && b[4] > ymax && b[5] > zmax))
     reject("naca.box", box_text(b),
            "xmin,ymin,zmin,xmax,ymax,zmax strictly enclosing the wing, which spans x [" + number(xmin) + ", " + number(xmax) +
-               "], y [" + number(ymin) + ", " + number(ymax) + "], z [0, " + number(p.span) + "]");
+               "], y [" + number(ymin) + ", " + number(ymax) + "], z [0, " + number(zmax) + "]");
 }
 
 }  // namespace semimesh::mock_cad::detail

@@ -28,6 +28,9 @@ class NacaWing {
   double span() const { return span_; }
   double chord_at(double v) const { return chord_ + dchord_ * v; }
   double leading_edge_x(double v) const { return tan_sweep_ * v; }
+  /// dc/dv and dx_le/dv (both constant).
+  double chord_slope() const { return dchord_; }
+  double tan_sweep() const { return tan_sweep_; }
   /// Radius of curvature at the leading edge, (5 t a0)^2 / 2 c(v) (~1.1019 t^2 c).
   double leading_edge_radius(double v) const {
     const double slope = section_.leading_edge_slope();

@@ -76,10 +76,8 @@ cad::CurveDerivatives MeridianCurve::derivatives(double t) const {
           chord_ * cad::Vec3(e.d2.x(), e.d2.y(), 0.0)};
 }
 
-cad::Interval PoleCurve::bounds() const { return {0.0, kTwoPi}; }
-
 cad::CurveProjection PoleCurve::project(const cad::Vec3& x, std::optional<double> guess) const {
-  const double t = bounds().clamp(guess.value_or(M_PI));
+  const double t = bounds().clamp(guess.value_or(0.5 * (range_.lo + range_.hi)));
   return {t, at_, (x - at_).norm(), true};
 }
 

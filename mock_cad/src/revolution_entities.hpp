@@ -14,6 +14,7 @@
 #include "semimesh/cad/curve.hpp"
 #include "semimesh/cad/surface.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -51,13 +52,15 @@ class MeridianCurve final : public cad::Curve {
   double chord_;
 };
 
-/// A pole: the point `at` walked over t = w in [0, 2 pi].
+/// A pole: the point `at` walked over t = w in `range` ([0, 2 pi] on the body of revolution,
+/// [0, pi] on the rounded tip).
 class PoleCurve final : public cad::Curve {
  public:
-  PoleCurve(int id, std::string name, const cad::Vec3& at) : cad::Curve(id, std::move(name)), at_(at) {}
+  PoleCurve(int id, std::string name, const cad::Vec3& at, cad::Interval range = {0.0, 2.0 * M_PI})
+      : cad::Curve(id, std::move(name)), at_(at), range_(range) {}
 
   cad::CurveKind kind() const override { return cad::CurveKind::Analytic; }
-  cad::Interval bounds() const override;
+  cad::Interval bounds() const override { return range_; }
   cad::CurveDerivatives derivatives(double) const override { return {at_, cad::Vec3::Zero(), cad::Vec3::Zero()}; }
   /// Every t is as near as any other: the guess (or the middle of the range) is the answer.
   cad::CurveProjection project(const cad::Vec3& x, std::optional<double> guess = std::nullopt) const override;
@@ -65,6 +68,7 @@ class PoleCurve final : public cad::Curve {
 
  private:
   cad::Vec3 at_;
+  cad::Interval range_;
 };
 
 }  // namespace semimesh::mock_cad::detail

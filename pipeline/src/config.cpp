@@ -301,6 +301,8 @@ params::Table<Config> naca_keys() {
       params::real("sweep", &NacaConfig::sweep, "(-80, 80)", "leading-edge sweep, degrees"),
       params::string("te", &NacaConfig::te, "\"blunt\" | \"sharp\"",
                      "squared-off trailing edge (with a te_base face) or closed"),
+      params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",
+                     "flat tip cap, or round: the tip section revolved about its camber line (backend naca)"),
       params::reals("box", &NacaConfig::box, "",
                     "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0"),
   };
@@ -476,6 +478,17 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   sections.at("geometry.naca")
       ->require(box[0] < box[3] && box[1] < box[4] && box[2] < box[5], "box",
                 "[xmin, ymin, zmin, xmax, ymax, zmax] with each min < max");
+
+  sections.at("geometry.naca")
+      ->require(geo.naca.tip == "flat" || !geo.source.empty() || geo.backend == "naca", "tip",
+                "\"flat\" for backend \"" + geo.backend + "\" (the rounded tip is the analytic backend's: backend = \"naca\")");
+  // A sharp trailing edge closes the rounded tip to a cone's apex (half angle ~8 degrees for 0012):
+  // at order 1 its prisms are valid, curved they fold there (4 invalid at order 4 on the coarse
+  // case, at every shell thickness and surface size tried: the apex is self-similar).
+  sections.at("geometry.naca")
+      ->require(geo.naca.tip == "flat" || geo.naca.te == "blunt" || c.highorder.order == 1, "tip",
+                "\"flat\" with te = \"sharp\" at highorder.order > 1 (a sharp trailing edge closes the rounded tip "
+                "to a conical point where curved prisms fold), or te = \"blunt\", or highorder.order = 1");
 
   check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.farfield"),
                          *sections.at("geometry.farfield.sphere"));

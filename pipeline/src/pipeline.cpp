@@ -155,6 +155,7 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.taper", fmt::format("{}", g.naca.taper));
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
     source.params.set("naca.te", g.naca.te);
+    if (g.naca.tip != "flat") source.params.set("naca.tip", g.naca.tip);
     source.params.set("naca.box", box_text(g.wall_plane.given() ? generated_box(g) : g.naca.box));
     if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)

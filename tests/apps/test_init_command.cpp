@@ -89,9 +89,10 @@ TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
 
   const auto model = backends::default_registry().load("occ", cad::Source{nekmesh_wing(), {}});
   const surface::CadRoles found = surface::detect_cad_roles(*model);
-  pipeline::Config h = c;
-  h.nearfield.topology = "H";
-  const pipeline::Roles roles = pipeline::resolve_roles(*model, h);
+  // The base found: the paper's H-type near field (before, init wrote "O" whatever the file).
+  EXPECT_EQ(c.nearfield.topology, "H");
+  EXPECT_GT(c.wall_layer.thickness, 0.0);
+  const pipeline::Roles roles = pipeline::resolve_roles(*model, c);
   EXPECT_EQ(roles.wall, found.wall);
   EXPECT_EQ(roles.body, found.body);
   EXPECT_EQ(roles.farfield, found.farfield);

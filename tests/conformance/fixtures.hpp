@@ -117,6 +117,52 @@ struct NacaCamberedTaperedSweptSharp {
   static Expectations expect() { return smooth_wing(); }
 };
 
+/// Rounded tips (naca.tip = round): a pole at the tip's leading edge, and a second one at a sharp
+/// trailing edge; a blunt base capped by a half disc.
+inline Expectations rounded_tip(int poles, Expectations e = {}) {
+  e.seams = 0;
+  e.poles = poles;
+  return e;
+}
+
+struct NacaRoundTipBlunt {
+  static constexpr const char* kName = "naca 0012 blunt TE, rounded tip";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"", {{"naca.tip", "round"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.le_radius = NacaDefault::expect().le_radius;
+    return rounded_tip(1, e);
+  }
+};
+
+struct NacaRoundTipBluntTaperedSwept {
+  static constexpr const char* kName = "naca 0015 blunt TE, rounded tip, taper 0.6, sweep 20 deg";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{
+        "", {{"naca.code", "0015"}, {"naca.tip", "round"}, {"naca.taper", "0.6"}, {"naca.sweep", "20"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return rounded_tip(1); }
+};
+
+struct NacaRoundTipCamberedTaperedSweptSharp {
+  static constexpr const char* kName = "naca 2412 sharp TE, rounded tip, taper 0.5, sweep 25 deg";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.code", "2412"},
+                                                      {"naca.te", "sharp"},
+                                                      {"naca.tip", "round"},
+                                                      {"naca.taper", "0.5"},
+                                                      {"naca.sweep", "25"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return rounded_tip(2); }
+};
+
 #ifdef SEMIMESH_HAVE_OCC
 struct OccNaca {
   static constexpr const char* kName = "occ B-spline NACA 0012 wing";

@@ -42,7 +42,8 @@ class Conformance : public ::testing::Test {
   static inline std::string load_error_;
 };
 
-using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution
+using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution,
+                                NacaRoundTipBlunt, NacaRoundTipBluntTaperedSwept, NacaRoundTipCamberedTaperedSweptSharp
 #ifdef SEMIMESH_HAVE_OCC
                                 ,
                                 OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6, OccStepOneraM6OnWall,

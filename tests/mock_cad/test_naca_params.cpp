@@ -89,7 +89,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"naca.box", "-10,-10,0,11,10,2", "enclos"}, BadCase{"naca.box", "1,2,3", "6 comma-separated"},
                       BadCase{"naca.box", "-10,-10,0,11,10,10,4", "6 comma-separated"},
                       BadCase{"naca.box", "-10;-10;0;11;10;10", "6 comma-separated"}, BadCase{"naca.units", "", "unit"},
-                      BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.cord", "1", "unknown parameter"}));
+                      BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.tip", "rounded", "flat"}, BadCase{"naca.cord", "1", "unknown parameter"}));
 
 // The body of revolution has no wall, a pole at the tail and no camber: each conflict is named.
 TEST(NacaParams, RevolutionNeedsSymmetricSharpAndNoWall) {
@@ -107,6 +107,33 @@ TEST(NacaParams, RevolutionNeedsSymmetricSharpAndNoWall) {
       EXPECT_NE(msg.find(key), std::string::npos) << msg;
       EXPECT_NE(msg.find("revolution"), std::string::npos) << msg;
     }
+  }
+}
+
+// The rounded tip stands above z = span (by the tip section's half thickness, 0.06 chord for 0012):
+// a box that clears the flat tip but not the cap is refused with the cap's height; a body of
+// revolution has no tip to round.
+TEST(NacaParams, RoundTipNeedsRoomAboveTheSpanAndAWing) {
+  const Params low_box{{"naca.tip", "round"}, {"naca.span", "2"}, {"naca.box", "-10,-10,0,11,10,2.03"}};
+  try {
+    naca_params_from(low_box);
+    FAIL() << "a box below the rounded tip's crown was accepted";
+  } catch (const CadError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("naca.box"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("z [0, 2.06"), std::string::npos) << msg;  // 2 + 0.5 * 0.12 (max y_t ~ t / 2)
+  }
+  Params flat = low_box;
+  flat.set("naca.tip", "flat");
+  EXPECT_NO_THROW(naca_params_from(flat));
+  const Params body{{"naca.shape", "revolution"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}, {"naca.tip", "round"}};
+  try {
+    naca_params_from(body);
+    FAIL() << "naca.tip = round was accepted with naca.shape = revolution";
+  } catch (const CadError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("naca.tip"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("revolution"), std::string::npos) << msg;
   }
 }
 

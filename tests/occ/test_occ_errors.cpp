@@ -121,5 +121,14 @@ TEST(OccErrors, NonPositiveScaleIsRejected) {
   EXPECT_NE(std::string(error.what()).find("occ.scale"), std::string::npos) << error.what();
 }
 
+// The generated B-spline wing has a flat tip: a rounded one (the analytic backend's) is refused by
+// name, not silently built flat.
+TEST(OccErrors, RoundTipOfTheGeneratedWingIsRefused) {
+  const CadError error = load_error("", {{"naca.tip", "round"}});
+  EXPECT_EQ(error.kind(), CadError::Kind::BadParameter);
+  EXPECT_NE(std::string(error.what()).find("naca.tip"), std::string::npos) << error.what();
+  EXPECT_NE(std::string(error.what()).find("flat tip"), std::string::npos) << error.what();
+}
+
 }  // namespace
 }  // namespace semimesh::occ

@@ -154,6 +154,21 @@ TEST(Config, UnitsAndSewingAreCheckedAgainstTheSource) {
   EXPECT_EQ(c.geometry.sew_tolerance, 1e-4);
 }
 
+// The rounded tip: the analytic backend only (occ's generated B-spline wing is flat-tipped), and
+// with a sharp trailing edge at order 1 only (its conical point folds curved prisms).
+TEST(Config, RoundTipIsTheAnalyticBackendsAndSharpAtOrderOneOnly) {
+  EXPECT_EQ(parse_config("[geometry.naca]\ntip = \"round\"\n", "case.toml").geometry.naca.tip, "round");
+  EXPECT_NE(error_of("[geometry.naca]\ntip = \"domed\"\n").find("geometry.naca.tip = \"domed\": expected \"flat\" or \"round\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbackend = \"occ\"\n[geometry.naca]\ntip = \"round\"\n")
+                .find("geometry.naca.tip = \"round\": expected \"flat\" for backend \"occ\""),
+            std::string::npos);
+  const std::string sharp = "[geometry.naca]\ntip = \"round\"\nte = \"sharp\"\n";
+  EXPECT_NE(error_of(sharp + "[highorder]\norder = 4\n").find("geometry.naca.tip = \"round\": expected \"flat\" with te = \"sharp\""),
+            std::string::npos);
+  EXPECT_EQ(parse_config(sharp + "[highorder]\norder = 1\n", "case.toml").highorder.order, 1);
+}
+
 TEST(Config, ABareStringIsAListOfOne) {
   EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
   EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,

@@ -191,7 +191,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{"sharp_swept_tapered", {"geometry.naca.te=sharp", "geometry.naca.taper=0.6", "geometry.naca.sweep=20"}},
                       Variant{"sharp_cambered_4412", {"geometry.naca.te=sharp", "geometry.naca.code=\"4412\""}},
                       // swept back: the strip top's legs to the two halos open by more than 180 degrees
-                      Variant{"sharp_swept_back", {"geometry.naca.te=sharp", "geometry.naca.sweep=20"}}),
+                      Variant{"sharp_swept_back", {"geometry.naca.te=sharp", "geometry.naca.sweep=20"}},
+                      // the rounded tip: the base capped by a half disc (flat corners), a pole at the tip's LE
+                      Variant{"round_tip", {"geometry.naca.tip=\"round\""}},
+                      Variant{"round_tip_sharp_swept_tapered",
+                              {"geometry.naca.tip=\"round\"", "geometry.naca.te=sharp", "geometry.naca.taper=0.6",
+                               "geometry.naca.sweep=20"}}),
     [](const ::testing::TestParamInfo<Variant>& info) { return info.param.name; });
 
 void expect_same_mesh(const RunResult& analytic, const RunResult& occ) {

@@ -179,6 +179,10 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
                                                        "(use naca.* keys, occ.scale and occ.units)");
   }
   const mock_cad::NacaWingParams wing = mock_cad::naca_params_from(naca_params);
+  if (wing.round_tip)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'naca.tip' = 'round': the generated B-spline wing of backend 'occ' has a flat tip "
+                   "(the rounded tip is backend 'naca''s)");
   const double scale = source.params.get_double("occ.scale", 1.0);
   if (!(scale > 0.0))
     throw CadError(CadError::Kind::BadParameter, "parameter 'occ.scale' = " + number_label(scale) + ": expected a positive number");

@@ -32,6 +32,17 @@
 // tip_te_upper, tip_te_lower (blunt) or root_te, tip_te (sharp), box_<x>_<y>_<z> corners.
 // With farfield the model is watertight: every curve bounds exactly two surfaces.
 //
+// naca.tip = round replaces the flat tip cap by a rounded one (src/round_tip.hpp): the tip
+// section's half thickness revolved about its camber line through a half turn above z = span,
+//   tip  (u, phi) in [0,1] x [0,pi]: phi = 0 on tip_upper, phi = pi on tip_lower (normal outward),
+// bounded by a pole at the tip's leading edge (curve tip_le_pole, degenerate, t = phi) and, blunt,
+// by the arc tip_te (t in [0, pi], lower -> upper) or, sharp, a second pole tip_te_pole. The blunt
+// te_base is then one plane in the affine coordinates (a, b) = (across the base, along its span):
+// the trapezoid under z = span capped by a half disc whose rim is tip_te, so the base's sides run
+// into the arc tangentially at tip_te_upper and tip_te_lower (its "flat corners", as on the
+// NekMesh test wing). Curves in id order: as above with tip_te the arc, then tip_le_pole and,
+// sharp, tip_te_pole. A swept or tapered wing tilts the half turn along its span (round_tip.hpp).
+//
 // naca.shape = revolution builds instead a body of revolution: the section's thickness (a
 // symmetric code, sharp TE) revolved a full turn about the chord line on the x axis, no wall and
 // no box. One periodic surface "body" (u, w) in [0,1] x [0,2 pi], w the angle from +y towards +z,
@@ -60,6 +71,7 @@ struct NacaWingParams {
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 (naca.box)
   std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
   bool revolution = false;  ///< naca.shape = revolution: a body of revolution, not a wing (naca.shape)
+  bool round_tip = false;   ///< naca.tip = round: the tip section revolved about its camber line (naca.tip)
 };
 
 /// Reads the naca.* keys of `p` (unknown keys are errors) over the defaults and validates them.

@@ -41,6 +41,7 @@ struct NacaConfig {
   double taper = 1.0;
   double sweep = 0.0;         ///< degrees
   std::string te = "blunt";   ///< "blunt" | "sharp"
+  std::string tip = "flat";   ///< "flat" | "round"
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin, ymin, zmin, xmax, ymax, zmax
 };
 
