@@ -11,6 +11,7 @@
 #include "shell_common.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -239,6 +240,18 @@ int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) 
   return -1;
 }
 
+// The wall foot L below halo j.halo of root j.root, `outward` the direction in the wall plane away
+// from the body. Where the wing leans over the fluid, the halo's feet come close to the root: the
+// hex would be a sliver there, folded by the curved root. Its wall strip keeps the width delta_wing
+// (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
+void place_wall_foot(const cad::Model& model, int wall_surface, const Vec3& outward, const Frame& wall,
+                     double delta_wing, double delta_wall, JunctionNode& j) {
+  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
+  const auto foot = model.surface(wall_surface).project(j.root + std::max(out, delta_wing) * outward);
+  j.wall_foot = foot.point;
+  j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
+}
+
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
 // plane away from the body (bisecting the two root segments' outward normals).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
@@ -247,14 +260,7 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
-  const cad::Surface& wall_face = model.surface(roles.wall_surface);
-  // Where the wing leans over the fluid, the halo's feet come close to the root: the hex would be a
-  // sliver there, folded by the curved root. Its wall strip keeps the width delta_wing (the wall
-  // layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
-  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
-  const auto foot = wall_face.project(j.root + std::max(out, delta_wing) * outward);
-  j.wall_foot = foot.point;
-  j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
+  place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
   const CadAttachment& at = body.cad[r];
   // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
   // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
@@ -289,6 +295,42 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
   return j;
+}
+
+// A sharp trailing edge's root (the crack curve's vertex on the wall, root point j_side[0].root):
+// the strip top W on the edge at the wall layer's height and each side's halo in the plane of that
+// side's rear interface (the edge's tangent t at W and the side's normal there), delta_wing from the
+// edge and at the wall layer's height; its foot as elsewhere. A halo placed from the root in the wall
+// plane, as elsewhere, lies off that plane where the edge sweeps back (W stands downstream of the
+// root): the lowest rear-interface quad twists from it to the next row's offset along the side's
+// normal and lies nearly flat over the fan's top (a NACA 0018 swept 34.5 degrees: a 24 degree wedge
+// where no pyramid fitted; TetGen aborted), and the fan's legs open by more than 180 degrees.
+void place_fan_halos(const cad::Model& model, int wall_surface, int crack_curve, const std::array<int, 2>& side_surface,
+                     const std::array<Vec3, 2>& outward, const Frame& wall, double delta_wing, double delta_wall,
+                     std::array<JunctionNode*, 2> j_side) {
+  const cad::Curve& edge = model.curve(crack_curve);
+  const Vec3 root = j_side[0]->root;
+  CadAttachment on_edge{CadAttachment::Curve, crack_curve, edge.project(root).t, 0.0};
+  const Vec3 w = detail::move_to_height(model, wall, root, on_edge, delta_wall);
+  Vec3 t = edge.derivatives(on_edge.u).d1.normalized();
+  if (t.dot(wall.normal) < 0.0) t = -t;
+  const double rise = t.dot(wall.normal);  // of the edge per unit length along it
+  constexpr double kLeast = 0.0871557;     // sin 5 degrees
+  if (!(std::abs(wall.height(w) - delta_wall) <= 1e-6 * delta_wall) || !(rise > kLeast))
+    throw NearFieldError("near field: the sharp trailing edge " + curve_label(model, crack_curve) +
+                         " does not rise off the wall at its root " + point_label(root) + " to the wall layer's height " +
+                         number_label(delta_wall) + " (it leans within 5 degrees of the wall or ends below it)");
+  for (int side : {0, 1}) {
+    const cad::Surface& face = model.surface(side_surface[side]);
+    const Vec3 n = face.normal(face.project(w).uv);
+    const Vec3 across = (n - n.dot(t) * t).normalized();  // the side's normal, square to the edge
+    const double along = (delta_wall - wall.height(w) - delta_wing * across.dot(wall.normal)) / rise;
+    JunctionNode& j = *j_side[side];
+    j.strip_top = w;
+    j.strip_top_cad = on_edge;
+    j.halo = w + delta_wing * across + along * t;
+    place_wall_foot(model, wall_surface, outward[side], wall, delta_wing, delta_wall, j);
+  }
 }
 
 // The strip tops along a bare surface's root (the H-type's trailing-edge base) raised to one height,
@@ -491,8 +533,11 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   // [sides] the surface of the fan node's root segment on each side
   std::array<int, 2> fan_surface{-1, -1};
   if (fan >= 0) {
-    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({loop[(fan + n - 1) % n], loop[fan]})];
-    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({loop[fan], loop[(fan + 1) % n]})];
+    const int prev = loop[(fan + n - 1) % n], r = loop[fan], next = loop[(fan + 1) % n];
+    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({prev, r})];
+    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({r, next})];
+    place_fan_halos(model, roles.wall_surface, crack_curve, fan_surface, {outward(prev, r), outward(r, next)}, wall,
+                    delta_wing, delta_wall, {&nodes[fan], &fan_side1});
   }
   if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, triangle_of_edge, nodes);
   std::vector<CadAttachment> root_cad(n);
