@@ -297,39 +297,50 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   return j;
 }
 
-// A sharp trailing edge's root (the crack curve's vertex on the wall, root point j_side[0].root):
-// the strip top W on the edge at the wall layer's height and each side's halo in the plane of that
-// side's rear interface (the edge's tangent t at W and the side's normal there), delta_wing from the
-// edge and at the wall layer's height; its foot as elsewhere. A halo placed from the root in the wall
-// plane, as elsewhere, lies off that plane where the edge sweeps back (W stands downstream of the
-// root): the lowest rear-interface quad twists from it to the next row's offset along the side's
-// normal and lies nearly flat over the fan's top (a NACA 0018 swept 34.5 degrees: a 24 degree wedge
-// where no pyramid fitted; TetGen aborted), and the fan's legs open by more than 180 degrees.
-void place_fan_halos(const cad::Model& model, int wall_surface, int crack_curve, const std::array<int, 2>& side_surface,
-                     const std::array<Vec3, 2>& outward, const Frame& wall, double delta_wing, double delta_wall,
-                     std::array<JunctionNode*, 2> j_side) {
+// A sharp trailing edge's root (the crack curve's vertex on the wall): no side's halo upstream of
+// that side's rear interface, the plane of the edge's tangent t at the strip top W and the side's
+// normal there. A halo placed from the root in the wall plane, as elsewhere, lies upstream of that
+// plane where the edge sweeps back (W stands downstream of the root): the lowest rear-interface
+// quad twists from it to the next row's offset along the side's normal and lies flat over the fan's
+// top (a NACA 0018 swept 34.5 degrees: a 24 degree wedge where no pyramid fitted; TetGen aborted).
+// Such a halo is moved into the plane: delta_wing from the edge along the side's normal square to
+// the edge, then along the edge to the wall layer's height; its wall foot below it (the wall
+// layer's prisms stand straight there). Downstream of the plane (an edge leaning forward, the
+// rear interface obtuse over the fan's top) a halo stays: moved up to the plane it would pass its
+// neighbour's and fold the layer between them.
+void keep_fan_halos_off_the_rear_interfaces(const cad::Model& model, int wall_surface, int crack_curve,
+                                            const std::array<int, 2>& side_surface, const std::array<Vec3, 2>& outward,
+                                            const Frame& wall, double delta_wing, double delta_wall,
+                                            std::array<JunctionNode*, 2> j_side) {
+  const Vec3 w = j_side[0]->strip_top;
   const cad::Curve& edge = model.curve(crack_curve);
-  const Vec3 root = j_side[0]->root;
-  CadAttachment on_edge{CadAttachment::Curve, crack_curve, edge.project(root).t, 0.0};
-  const Vec3 w = detail::move_to_height(model, wall, root, on_edge, delta_wall);
-  Vec3 t = edge.derivatives(on_edge.u).d1.normalized();
+  Vec3 t = edge.derivatives(edge.project(w).t).d1.normalized();
   if (t.dot(wall.normal) < 0.0) t = -t;
   const double rise = t.dot(wall.normal);  // of the edge per unit length along it
   constexpr double kLeast = 0.0871557;     // sin 5 degrees
-  if (!(std::abs(wall.height(w) - delta_wall) <= 1e-6 * delta_wall) || !(rise > kLeast))
+  if (!(rise > kLeast))
     throw NearFieldError("near field: the sharp trailing edge " + curve_label(model, crack_curve) +
-                         " does not rise off the wall at its root " + point_label(root) + " to the wall layer's height " +
-                         number_label(delta_wall) + " (it leans within 5 degrees of the wall or ends below it)");
+                         " leans within 5 degrees of the wall at its root " + point_label(j_side[0]->root) +
+                         "; the junction cannot stand under it");
+  std::array<Vec3, 2> across;  // each side's normal at W, square to the edge
   for (int side : {0, 1}) {
     const cad::Surface& face = model.surface(side_surface[side]);
     const Vec3 n = face.normal(face.project(w).uv);
-    const Vec3 across = (n - n.dot(t) * t).normalized();  // the side's normal, square to the edge
-    const double along = (delta_wall - wall.height(w) - delta_wing * across.dot(wall.normal)) / rise;
+    across[side] = (n - n.dot(t) * t).normalized();
+  }
+  const Vec3 downstream = across[0] + across[1];  // the bisector of the sides' normals leaves the edge
+  for (int side : {0, 1}) {
     JunctionNode& j = *j_side[side];
-    j.strip_top = w;
-    j.strip_top_cad = on_edge;
-    j.halo = w + delta_wing * across + along * t;
-    place_wall_foot(model, wall_surface, outward[side], wall, delta_wing, delta_wall, j);
+    Vec3 behind = t.cross(across[side]);  // the rear interface's normal, downstream
+    if (behind.dot(downstream) < 0.0) behind = -behind;
+    if ((j.halo - w).dot(behind) >= 0.0) continue;
+    const double along = (delta_wall - wall.height(w) - delta_wing * across[side].dot(wall.normal)) / rise;
+    j.halo = w + delta_wing * across[side] + along * t;
+    const Vec3 below = j.halo - delta_wall * wall.normal;
+    const double out = (below - j.root).dot(outward[side]);  // the wall strip keeps the width delta_wing
+    const auto foot = model.surface(wall_surface).project(below + std::max(0.0, delta_wing - out) * outward[side]);
+    j.wall_foot = foot.point;
+    j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
   }
 }
 
@@ -536,8 +547,9 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
     const int prev = loop[(fan + n - 1) % n], r = loop[fan], next = loop[(fan + 1) % n];
     fan_surface[0] = body.triangle_surface[triangle_of_edge.at({prev, r})];
     fan_surface[1] = body.triangle_surface[triangle_of_edge.at({r, next})];
-    place_fan_halos(model, roles.wall_surface, crack_curve, fan_surface, {outward(prev, r), outward(r, next)}, wall,
-                    delta_wing, delta_wall, {&nodes[fan], &fan_side1});
+    keep_fan_halos_off_the_rear_interfaces(model, roles.wall_surface, crack_curve, fan_surface,
+                                           {outward(prev, r), outward(r, next)}, wall, delta_wing, delta_wall,
+                                           {&nodes[fan], &fan_side1});
   }
   if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, triangle_of_edge, nodes);
   std::vector<CadAttachment> root_cad(n);

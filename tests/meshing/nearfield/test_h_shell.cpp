@@ -289,7 +289,7 @@ TEST(HShellSharp, TheTipKeepsItsPrismsAtTheTrailingEdgesEnd) {
 }
 
 // A sharp edge swept back: its root's halos (the fan's side legs W-H) lie in their sides' rear
-// interfaces, so the lowest rear-interface quads stand as steeply over the fan's top (the skin
+// interfaces (were upstream of them), so the lowest rear-interface quads stand as steeply over the fan's top (the skin
 // triangles on the wall layer's top beside them) as the edge leans, 64 degrees here. Halos placed
 // from the root in the wall plane stood 25 degrees off those planes and twisted the quads towards
 // the fan's top: 37 degrees here; in the far field, the outermost band of the split's pre-cut quads
