@@ -1,6 +1,7 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
 #include "semimesh/mesh/compact.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
 #include <array>
@@ -48,32 +49,20 @@ class PointIndex {
   std::unordered_map<Cell, std::vector<mesh::NodeId>, CellHash> cells_;
 };
 
-// Inner nodes of `mine` mapped to the nearest of `theirs` (then through `to`) when that one is
-// clearly the nearest (under half the distance to the next); the others are left alone.
-void match_inner_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine,
-                       const std::vector<mesh::NodeId>& theirs, std::vector<mesh::NodeId>& to) {
-  for (mesh::NodeId m : mine) {
-    if (to[m] != m) continue;
-    double best = 1e300, next = 1e300;
-    mesh::NodeId nearest = m;
-    for (mesh::NodeId n : theirs) {
-      const double d = (mesh.node(n) - mesh.node(m)).norm();
-      if (d < best) next = best, best = d, nearest = n;
-      else next = std::min(next, d);
-    }
-    if (nearest != m && best < 0.5 * next) to[m] = to[nearest];
-  }
-}
-
 // An edge or face whose vertices were all welded onto another entity's takes that entity's inner
-// nodes: the far field's straight skin quads place theirs between their vertices, the split places
-// its own where the interfaces, interpolated between the vertices', fall on the element's map;
-// they differ inside the entity by more than round-off where the ratio varies (the wake).
+// nodes, slot for slot (the edge's direction, the face's orientation code relating the two vertex
+// orders): the far field's straight skin quads place theirs between their vertices, the split
+// places its own where the interfaces, interpolated between the vertices', fall on the element's
+// curved map; they differ inside the entity by more than round-off where the ratio varies (the
+// wake) or the layer element's body edge is curved (a sharp trailing edge's tip end, where the
+// quads over the curved wing stand bare). Taken by nearest point before, the pairing failed where
+// that difference reached half the node spacing (a first layer 2e-4 thick, a body edge's sagitta
+// 7e-5: the mesh rebuild's internal error).
 void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to) {
   const int P = mesh.order();
   if (P < 2) return;
-  auto pool = [](const std::vector<mesh::NodeId>& from, std::size_t first, std::size_t count) {
-    return std::vector<mesh::NodeId>(from.begin() + first, from.begin() + first + count);
+  auto take = [&](mesh::NodeId mine, mesh::NodeId theirs) {
+    if (to[mine] == mine) to[mine] = to[theirs];
   };
   for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
     const mesh::Edge& edge = mesh.edges()[e];
@@ -81,8 +70,10 @@ void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to)
     if (a == edge.vertices[0] && b == edge.vertices[1]) continue;
     const long other = mesh.find_edge(a, b);
     if (other < 0 || static_cast<std::size_t>(other) == e) continue;
-    match_inner_nodes(mesh, pool(mesh.edge_pool(), edge.first_node, P - 1),
-                      pool(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1), to);
+    const mesh::Edge& theirs = mesh.edges()[other];
+    const bool same_way = theirs.vertices[0] == a;
+    for (int i = 0; i < P - 1; ++i)
+      take(mesh.edge_pool()[edge.first_node + i], mesh.edge_pool()[theirs.first_node + (same_way ? i : P - 2 - i)]);
   }
   for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
     const mesh::Face& face = mesh.faces()[f];
@@ -95,9 +86,16 @@ void snap_welded_entities(const mesh::Mesh& mesh, std::vector<mesh::NodeId>& to)
     if (!moved) continue;
     const long other = mesh.find_face(welded);
     if (other < 0 || static_cast<std::size_t>(other) == f) continue;
-    const std::size_t count = face.num_vertices == 4 ? (P - 1) * (P - 1) : (P - 1) * (P - 2) / 2;
-    match_inner_nodes(mesh, pool(mesh.face_pool(), face.first_node, count),
-                      pool(mesh.face_pool(), mesh.faces()[other].first_node, count), to);
+    const mesh::Face& theirs = mesh.faces()[other];
+    const int code = mesh::face_orientation_code(welded.data(), theirs.vertices.data(), face.num_vertices);
+    if (code < 0) continue;
+    // Seen from this face's own vertex order (code 0), a node at slot[0] of this face's list sits
+    // at slot[code] of theirs.
+    const mesh::NodeLayout& layout =
+        mesh::node_layout(face.num_vertices == 4 ? ho::Shape::Quadrilateral : ho::Shape::Triangle, P);
+    for (const mesh::NodeSlot& s : layout.slots)
+      if (s.kind == mesh::NodeSlot::Face)
+        take(mesh.face_pool()[face.first_node + s.slot[0]], mesh.face_pool()[theirs.first_node + s.slot[code]]);
   }
 }
 
