@@ -7,6 +7,7 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/element_type.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
@@ -150,6 +151,40 @@ TEST(WeldNodes, FaceWhoseWeldedVerticesAreNoRotationOfAnothersIsAnInternalError)
     EXPECT_NE(std::string(e.what()).find("weld: face "), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("no rotation or reflection"), std::string::npos) << e.what();
   }
+}
+
+// Order 3: hex 1's nodes inside its face at x = 1 (and inside that face's edges along z) stand 0.13
+// off hex 0's along z, the spacing being 1/3, as the split's interfaces stand off a far-field skin
+// quad's straight ones: none is clearly the nearest of its counterpart. The weld pairs them by their
+// slot in the welded edge or face and gives hex 1 hex 0's nodes (before: left apart, the rebuild
+// threw an internal error).
+TEST(WeldNodes, InnerNodesOfAWeldedFacePairBySlotNotByNearestPoint) {
+  mesh::Mesh m(3);
+  const Eigen::MatrixX3d reference = ho::reference_nodes(ho::Shape::Hexahedron, 3);
+  const int region = m.region_index("volume");
+  auto inside = [](double t) { return t > 1e-9 && t < 1.0 - 1e-9; };
+  for (int side = 0; side < 2; ++side) {
+    std::vector<mesh::NodeId> ids;
+    for (int i = 0; i < reference.rows(); ++i) {
+      Eigen::Vector3d x = 0.5 * (reference.row(i).transpose() + Eigen::Vector3d::Ones());
+      x.x() += side;
+      if (side == 1 && std::abs(x.x() - 1.0) < 1e-9 && inside(x.z())) x.z() += 0.13;
+      ids.push_back(m.add_node(x));
+    }
+    m.add_element(ho::Shape::Hexahedron, ids, region);
+  }
+  const Welded w = weld_coincident_nodes(m, 1e-9);
+  EXPECT_EQ(w.mesh.elements().size(), 2u);
+  EXPECT_EQ(w.mesh.faces().size(), 11u);  // the face at x = 1 once
+  int on_face = 0;
+  for (mesh::NodeId v = 0; v < w.mesh.num_nodes(); ++v) {
+    const Eigen::Vector3d& x = w.mesh.node(v);
+    if (std::abs(x.x() - 1.0) > 1e-9) continue;
+    ++on_face;
+    const double thirds = 3.0 * x.z();
+    EXPECT_NEAR(thirds, std::round(thirds), 1e-9) << "a node of hex 1's face kept at z = " << x.z();
+  }
+  EXPECT_EQ(on_face, 16);  // one order-3 quad's nodes
 }
 
 }  // namespace

@@ -3,11 +3,18 @@
 #include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace semimesh::mesh {
 namespace {
+
+std::string point_text(const Eigen::Vector3d& x) {
+  std::ostringstream out;
+  out << "(" << x.x() << ", " << x.y() << ", " << x.z() << ")";
+  return out.str();
+}
 
 std::uint64_t edge_key(NodeId a, NodeId b) {
   if (a > b) std::swap(a, b);
@@ -114,9 +121,9 @@ void Mesh::check_same_node(NodeId stored, NodeId given, const std::string& who) 
   const Eigen::Vector3d& b = nodes_[given];
   const double scale = std::max({1.0, a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
   if ((a - b).norm() > 1e-9 * scale)
-    throw std::invalid_argument(who + ": node " + std::to_string(given) + " is not at the place of node " +
-                                std::to_string(stored) + " that the shared entity already owns (non-conforming " +
-                                "elements or a wrong node order)");
+    throw std::invalid_argument(who + ": node " + std::to_string(given) + " at " + point_text(b) +
+                                " is not at the place of node " + std::to_string(stored) + " at " + point_text(a) +
+                                " that the shared entity already owns (non-conforming elements or a wrong node order)");
 }
 
 void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,

@@ -11,6 +11,7 @@
 #include "shell_common.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -239,6 +240,18 @@ int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) 
   return -1;
 }
 
+// The wall foot L below halo j.halo of root j.root, `outward` the direction in the wall plane away
+// from the body. Where the wing leans over the fluid, the halo's feet come close to the root: the
+// hex would be a sliver there, folded by the curved root. Its wall strip keeps the width delta_wing
+// (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
+void place_wall_foot(const cad::Model& model, int wall_surface, const Vec3& outward, const Frame& wall,
+                     double delta_wing, double delta_wall, JunctionNode& j) {
+  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
+  const auto foot = model.surface(wall_surface).project(j.root + std::max(out, delta_wing) * outward);
+  j.wall_foot = foot.point;
+  j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
+}
+
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
 // plane away from the body (bisecting the two root segments' outward normals).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
@@ -247,14 +260,7 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
-  const cad::Surface& wall_face = model.surface(roles.wall_surface);
-  // Where the wing leans over the fluid, the halo's feet come close to the root: the hex would be a
-  // sliver there, folded by the curved root. Its wall strip keeps the width delta_wing (the wall
-  // layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
-  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
-  const auto foot = wall_face.project(j.root + std::max(out, delta_wing) * outward);
-  j.wall_foot = foot.point;
-  j.wall_foot_cad = {CadAttachment::Surface, roles.wall_surface, foot.uv.x(), foot.uv.y()};
+  place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
   const CadAttachment& at = body.cad[r];
   // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
   // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
@@ -289,6 +295,53 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
   return j;
+}
+
+// A sharp trailing edge's root (the crack curve's vertex on the wall): no side's halo upstream of
+// that side's rear interface, the plane of the edge's tangent t at the strip top W and the side's
+// normal there. A halo placed from the root in the wall plane, as elsewhere, lies upstream of that
+// plane where the edge sweeps back (W stands downstream of the root): the lowest rear-interface
+// quad twists from it to the next row's offset along the side's normal and lies flat over the fan's
+// top (a NACA 0018 swept 34.5 degrees: a 24 degree wedge where no pyramid fitted; TetGen aborted).
+// Such a halo is moved into the plane: delta_wing from the edge along the side's normal square to
+// the edge, then along the edge to the wall layer's height; its wall foot below it (the wall
+// layer's prisms stand straight there). Downstream of the plane (an edge leaning forward, the
+// rear interface obtuse over the fan's top) a halo stays: moved up to the plane it would pass its
+// neighbour's and fold the layer between them.
+void keep_fan_halos_off_the_rear_interfaces(const cad::Model& model, int wall_surface, int crack_curve,
+                                            const std::array<int, 2>& side_surface, const std::array<Vec3, 2>& outward,
+                                            const Frame& wall, double delta_wing, double delta_wall,
+                                            std::array<JunctionNode*, 2> j_side) {
+  const Vec3 w = j_side[0]->strip_top;
+  const cad::Curve& edge = model.curve(crack_curve);
+  Vec3 t = edge.derivatives(edge.project(w).t).d1.normalized();
+  if (t.dot(wall.normal) < 0.0) t = -t;
+  const double rise = t.dot(wall.normal);  // of the edge per unit length along it
+  constexpr double kLeast = 0.0871557;     // sin 5 degrees
+  if (!(rise > kLeast))
+    throw NearFieldError("near field: the sharp trailing edge " + curve_label(model, crack_curve) +
+                         " leans within 5 degrees of the wall at its root " + point_label(j_side[0]->root) +
+                         "; the junction cannot stand under it");
+  std::array<Vec3, 2> across;  // each side's normal at W, square to the edge
+  for (int side : {0, 1}) {
+    const cad::Surface& face = model.surface(side_surface[side]);
+    const Vec3 n = face.normal(face.project(w).uv);
+    across[side] = (n - n.dot(t) * t).normalized();
+  }
+  const Vec3 downstream = across[0] + across[1];  // the bisector of the sides' normals leaves the edge
+  for (int side : {0, 1}) {
+    JunctionNode& j = *j_side[side];
+    Vec3 behind = t.cross(across[side]);  // the rear interface's normal, downstream
+    if (behind.dot(downstream) < 0.0) behind = -behind;
+    if ((j.halo - w).dot(behind) >= 0.0) continue;
+    const double along = (delta_wall - wall.height(w) - delta_wing * across[side].dot(wall.normal)) / rise;
+    j.halo = w + delta_wing * across[side] + along * t;
+    const Vec3 below = j.halo - delta_wall * wall.normal;
+    const double out = (below - j.root).dot(outward[side]);  // the wall strip keeps the width delta_wing
+    const auto foot = model.surface(wall_surface).project(below + std::max(0.0, delta_wing - out) * outward[side]);
+    j.wall_foot = foot.point;
+    j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
+  }
 }
 
 // The strip tops along a bare surface's root (the H-type's trailing-edge base) raised to one height,
@@ -491,8 +544,12 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   // [sides] the surface of the fan node's root segment on each side
   std::array<int, 2> fan_surface{-1, -1};
   if (fan >= 0) {
-    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({loop[(fan + n - 1) % n], loop[fan]})];
-    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({loop[fan], loop[(fan + 1) % n]})];
+    const int prev = loop[(fan + n - 1) % n], r = loop[fan], next = loop[(fan + 1) % n];
+    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({prev, r})];
+    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({r, next})];
+    keep_fan_halos_off_the_rear_interfaces(model, roles.wall_surface, crack_curve, fan_surface,
+                                           {outward(prev, r), outward(r, next)}, wall, delta_wing, delta_wall,
+                                           {&nodes[fan], &fan_side1});
   }
   if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, triangle_of_edge, nodes);
   std::vector<CadAttachment> root_cad(n);

@@ -16,8 +16,10 @@
 //    (the two interfaces would meet at a zero angle along one edge: no element fills that, no
 //    pyramid stands in it), so it ends on the layer's edge: at the tip the triangles touching the
 //    tip vertex stay bare, faced by the far field (the block stops one trailing-edge cell below the
-//    tip); at the root the junction gives the strip top one halo per side and fills the wedge
-//    between them with prisms standing on the wall, cut in advance at the wing layer's split
+//    tip); at the root the junction gives the strip top one halo per side, none upstream of its
+//    side's rear interface (the plane of the curve's tangent and the side's normal: where the edge
+//    sweeps back, a halo placed from the root is moved into it, so the rear interface stays flat
+//    down to the wall layer), and fills the wedge between them with prisms standing on the wall, cut in advance at the wing layer's split
 //    interfaces (the split cannot fan a prism from its root) and welded to the junction hexes'
 //    split nodes;
 //  - the wake block: the base quads and the rear interfaces above the cut row (the lowest
