@@ -5,7 +5,8 @@
 // Prints MB, seconds, MB/s and the writer's peak memory above what the process held before it
 // (the kernel's peak is reset before each writer: /proc/self/clear_refs) per format, the ASCII
 // trio (msh41 + vtu-ascii + nektar-xml) against the compact trio (msh41-binary + vtu + nektar),
-// and with --config the compact trio written as `semimesh run` writes it (its write stage).
+// with --config the compact trio written as `semimesh run` writes it (its write stage), and the
+// disk's own fsync'd MB/s, which bounds every writer's.
 // usage: bench_io [nx ny nz] [output-directory (default /tmp)]
 //        bench_io --msh FILE.msh [output-directory [format...]]      (default: every format)
 //        bench_io --config CASE.toml [output-directory [format...]]
@@ -203,6 +204,18 @@ int main(int argc, char** argv) {
     ::rmdir(config.output.directory.c_str());
     std::printf("write stage (msh41-binary + vtu + nektar): %9.1f MB in %6.2f s (CPU %6.2f s), peak memory +%.0f MB\n",
                 mb, s, cpu_seconds() - cpu, status_mb("VmHWM") - rss);
+  }
+  {  // what the disk takes at most: the writers fsync each file before it replaces an older one
+    const std::string path = dir + "/bench_io_" + std::to_string(::getpid()) + ".disk";
+    const std::vector<char> block(std::size_t{1} << 20, 1);
+    const auto t = Clock::now();
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    const int blocks = 256;
+    for (int i = 0; f && i < blocks; ++i) std::fwrite(block.data(), 1, block.size(), f);
+    if (f) std::fflush(f), ::fsync(::fileno(f)), std::fclose(f);
+    std::remove(path.c_str());
+    std::printf("disk: %d MB written and fsync'd at %.0f MB/s (a bound on any writer's MB/s)\n", blocks,
+                blocks * 1.048576 / seconds_since(t));
   }
   std::printf("peak memory of the process before writing: %.0f MB (%s the mesh included)\n", memory_before,
               from_case ? "meshing" : from_file ? "reading" : "building");
