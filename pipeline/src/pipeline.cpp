@@ -337,6 +337,7 @@ surface::SurfaceMeshes mesh_surfaces(const Config& config, const Geometry& g, Pr
     if (report) report(1.0, "curvature");
     return field;
   });
+  for (const std::string& w : surface::size_warnings(config.sizing.size)) result.warnings.push_back("size field: " + w);
   surface::SurfaceMeshes surfaces = stage("surface mesh", progress, result, [&](const ProgressCallback& report) {
     return surface::mesh_model_surfaces(model, size, mesh_options(model, config, g.roles), report);
   });

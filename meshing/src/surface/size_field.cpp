@@ -37,6 +37,20 @@ const params::Table<SizeParams>& size_keys() {
   return table;
 }
 
+std::vector<std::string> size_warnings(const SizeParams& params) {
+  std::vector<std::string> out;
+  const auto below = [&](const std::string& key, double size, const std::string& what) {
+    if (size > 0.0 && size < params.min_size)
+      out.push_back(key + " = " + params::to_text(size) + " is below sizing.min_size = " +
+                    params::to_text(params.min_size) + ": the edges " + what + " get sizing.min_size");
+  };
+  below("sizing.le_size", params.le_size, "along the leading edge");
+  below("sizing.te_size", params.te_size, "along the trailing edge");
+  for (const CurveSource& src : params.curve_sources)
+    below("the size of curve source '" + src.curve + "'", src.size, "along that curve");
+  return out;
+}
+
 SizeField::SizeField(const cad::Model& model, const SizeParams& params) : params_(params), slope_(params.gradation - 1.0) {
   if (const auto bad = params::violation(params, size_keys(), "sizing")) require(false, *bad);
   require(params.min_size <= params.max_size, "sizing.min_size = " + params::to_text(params.min_size) +

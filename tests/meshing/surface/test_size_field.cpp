@@ -49,6 +49,18 @@ TEST(SizeField, BoxSourceIsConstantInsideAndGradedOutside) {
   EXPECT_NEAR(size(Vec3(3, 0, 2)), 0.1 + 0.5 * 1.0, 1e-12);
 }
 
+TEST(SizeField, SizesBelowTheMinimumAreNamedInAWarning) {
+  SizeParams p = no_curvature();
+  p.min_size = 0.03;
+  EXPECT_TRUE(size_warnings(p).empty());  // le/te sizes off
+  p.le_size = 0.05, p.te_size = 0.02;
+  p.curve_sources.push_back({"tip_upper", 0.01});
+  const auto w = size_warnings(p);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_NE(w[0].find("sizing.te_size = 0.02 is below sizing.min_size = 0.03"), std::string::npos) << w[0];
+  EXPECT_NE(w[1].find("'tip_upper'"), std::string::npos) << w[1];
+}
+
 TEST(SizeField, MinSizeBoundsEverySource) {
   auto model = naca_model();
   SizeParams p = no_curvature();

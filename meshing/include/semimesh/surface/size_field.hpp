@@ -65,6 +65,10 @@ struct SizeParams {
 /// One row per user key of SizeParams (semimesh/params/table.hpp).
 const params::Table<SizeParams>& size_keys();
 
+/// A sentence per size the field cannot give because min_size bounds it (le_size, te_size or a
+/// curve source below min_size: those edges get min_size), naming both keys; empty if none.
+std::vector<std::string> size_warnings(const SizeParams& params);
+
 class SizeField {
  public:
   /// Samples the model once. Throws SurfaceMeshError naming the parameter when one is out of range
