@@ -15,6 +15,8 @@
 #include "semimesh/surface/cad_roles.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
+#include "wing_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,17 +83,6 @@ NearField h_shell(const Wing& w) {
                        w.model->bbox(), {});
 }
 
-int invalid_elements(const mesh::Mesh& m) {
-  int invalid = 0;
-  for (const mesh::Element& e : m.elements()) {
-    const int n = ho::num_vertices(e.shape);
-    Eigen::MatrixX3d x(n, 3);
-    for (int k = 0; k < n; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
-    invalid += ho::certify_jacobian(e.shape, 1, ho::NodeSet::Equispaced, x).valid ? 0 : 1;
-  }
-  return invalid;
-}
-
 int region_id(const mesh::Mesh& m, const std::string& name) {
   return static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), name) - m.region_names().begin());
 }
@@ -125,7 +116,7 @@ TEST(RoundTipShells, HTypeWakeSweepsTwoPrismsAtEachFlatCornerOfTheBase) {
     const NearField field = h_shell(w);
     const mesh::Mesh& m = field.mesh;
     const std::string what = round_tip ? "rounded tip" : "flat tip";
-    EXPECT_EQ(invalid_elements(m), 0) << what;
+    EXPECT_EQ(testing::invalid_elements(m), 0) << what;
     EXPECT_GT(field.wake.hexes, 0) << what;
     EXPECT_GE(field.wake.gap, wake.gap - 1e-9) << what;
     const int wake_region = region_id(m, "wake");
@@ -158,7 +149,7 @@ TEST(RoundTipShells, LiftOntoTheRootStripFadesOutAtTheLowestVertexOffTheWall) {
     const NearField field = h_type ? h_shell(w)
                                    : build_c_shell(*w.model, w.meshes, body_roles(w), shell(), JunctionParams{}, kWallThickness);
     const std::string what = h_type ? "H-type" : "C-type";
-    EXPECT_EQ(invalid_elements(field.mesh), 0) << what;
+    EXPECT_EQ(testing::invalid_elements(field.mesh), 0) << what;
     std::vector<Vec3> meshed;
     for (int s : w.roles.body)
       for (const Vec3& x : w.meshes.surfaces.at(s).points) meshed.push_back(x);
@@ -193,7 +184,7 @@ TEST(RoundTipShells, SharpTrailingEdgeClosedByAPoleGivesAValidHType) {
   WakeParams wake = wake_behind(w);
   const NearField field = build_h_shell(*w.model, w.meshes, body_roles(w), shell(), JunctionParams{}, kWallThickness, wake,
                                         w.model->bbox(), {});
-  EXPECT_EQ(invalid_elements(field.mesh), 0);
+  EXPECT_EQ(testing::invalid_elements(field.mesh), 0);
   EXPECT_GT(field.wake.hexes, 0);
 }
 

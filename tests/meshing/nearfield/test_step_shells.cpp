@@ -13,6 +13,8 @@
 #include "semimesh/surface/cad_roles.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
+#include "wing_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,17 +51,6 @@ StepWing mesh_step_wing(bool h_type) {
   return w;
 }
 
-int invalid_elements(const mesh::Mesh& m) {
-  int invalid = 0;
-  for (const mesh::Element& e : m.elements()) {
-    const int n = ho::num_vertices(e.shape);
-    Eigen::MatrixX3d x(n, 3);
-    for (int k = 0; k < n; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
-    invalid += ho::certify_jacobian(e.shape, 1, ho::NodeSet::Equispaced, x).valid ? 0 : 1;
-  }
-  return invalid;
-}
-
 BodyRoles body_roles(const StepWing& w) { return {w.roles.body, w.roles.wall}; }
 
 ShellParams shell() {
@@ -77,7 +68,7 @@ TEST(StepShells, CTypeJunctionRunsAroundTheOneFaceSkinAndTheRevolvedTipStays) {
   const StepWing w = mesh_step_wing(false);
   ASSERT_TRUE(w.roles.te_base.has_value());
   const NearField field = build_c_shell(*w.model, w.meshes, body_roles(w), shell(), JunctionParams{}, 20.0);
-  EXPECT_EQ(invalid_elements(field.mesh), 0);
+  EXPECT_EQ(testing::invalid_elements(field.mesh), 0);
   EXPECT_EQ(field.junction_hexes, static_cast<int>(field.footprint.size()));
   // The revolved tip is not lifted: its nodes keep their place on the CAD.
   const cad::Surface& tip = w.model->surface(w.roles.tip.front());
@@ -99,7 +90,7 @@ TEST(StepShells, HTypeWakeLeavesTheInclinedBaseAlongTheFreestream) {
   wake.gap = 100.0;
   const NearField field =
       build_h_shell(*w.model, w.meshes, body_roles(w), shell(), JunctionParams{}, 20.0, wake, w.model->bbox(), {});
-  EXPECT_EQ(invalid_elements(field.mesh), 0);
+  EXPECT_EQ(testing::invalid_elements(field.mesh), 0);
   EXPECT_GT(field.wake.hexes, 0);
   EXPECT_EQ(field.wake.hexes % wake.layers, 0);
   EXPECT_GE(field.wake.gap, wake.gap - 1e-9);

@@ -2,6 +2,8 @@
 // the body (upper, lower, te_base when blunt, tip) and the wall as roles.
 #pragma once
 
+#include "semimesh/ho/element_type.hpp"
+#include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
@@ -43,6 +45,18 @@ inline mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double
   p.sweep_deg = sweep;
   p.span = 1.5;
   return p;
+}
+
+/// Elements whose straight-sided (vertex) map is not certified valid.
+inline int invalid_elements(const mesh::Mesh& m) {
+  int invalid = 0;
+  for (const mesh::Element& e : m.elements()) {
+    const int n = ho::num_vertices(e.shape);
+    Eigen::MatrixX3d x(n, 3);
+    for (int k = 0; k < n; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
+    invalid += ho::certify_jacobian(e.shape, 1, ho::NodeSet::Equispaced, x).valid ? 0 : 1;
+  }
+  return invalid;
 }
 
 }  // namespace semimesh::nearfield::testing
