@@ -40,8 +40,9 @@ std::string deflate_chunk(const std::string& in, bool last, Content content) {
   return out;
 }
 
-/// One whole zlib stream, by libdeflate (several times zlib's speed at a like ratio on mesh data;
-/// it compresses whole buffers only, which is what an independent block is). A compressor per
+/// One whole zlib stream, by libdeflate (faster than zlib's fastest level: the VTU of bench_io's
+/// prism block 0.49 s against 1.15 s CPU; it compresses whole buffers only, which is what an
+/// independent block is; on a real mesh's Float64 points the ratio is within 7 %). A compressor per
 /// thread: libdeflate's are not shared between threads, and making one costs more than a block.
 std::string compress_block(const std::string& in) {
   struct Compressor {
