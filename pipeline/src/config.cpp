@@ -378,6 +378,10 @@ params::Table<Config> output_keys() {
   params::Table<OutputConfig> o = {
       params::strings("formats", &OutputConfig::formats, "each of " + params::choice_range(names),
                       "mesh files to write, each format at most once"),
+      params::choice("target", &OutputConfig::target, {{"any", OutputTarget::Any}, {"pyfr", OutputTarget::Pyfr}},
+                     "\"pyfr\": meet PyFR's importer (pyramids only on parallelogram bases: the hex columns under "
+                     "the others split into prisms, their end pyramids into tetrahedra; order <= 4; an ASCII MSH "
+                     "format); \"any\": the near field's hexes as built"),
       params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
       params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
       params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),
@@ -534,6 +538,12 @@ void check_across_keys(Config& c, const std::map<std::string, Section*>& section
   const std::set<std::string> distinct(c.output.formats.begin(), c.output.formats.end());
   o.require(distinct.size() == c.output.formats.size(), "formats", "each format at most once");
   o.require(c.output.basename.find('/') == std::string::npos, "basename", "a file name without folder, e.g. \"wing\"");
+  if (c.output.target == OutputTarget::Pyfr) {
+    // PyFR's gmsh reader takes ASCII MSH only, and element types up to order 4.
+    o.require(distinct.count("msh41") + distinct.count("msh22") > 0, "formats",
+              "with target = \"pyfr\": \"msh41\" or \"msh22\" among them (PyFR reads ASCII MSH only)");
+    sections.at("highorder")->require(c.highorder.order <= 4, "order", "at most 4 with output.target = \"pyfr\" (PyFR's importer)");
+  }
 }
 
 }  // namespace

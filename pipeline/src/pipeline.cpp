@@ -18,6 +18,7 @@
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/pyfr_limits.hpp"
+#include "semimesh/ho/splitting/pyramid_columns.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/roles.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
@@ -500,6 +501,24 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   return std::move(split.mesh);
 }
 
+// output.target = "pyfr": no pyramid on a base that is not a parallelogram, PyFR's importer rule
+// (the H-type's transition pyramids on the wake block's trapezoids): the hex columns under them are
+// split into prisms and their end pyramids into tetrahedra. Before the checks, which certify the pieces.
+mesh::Mesh meet_pyfr_pyramid_rule(const mesh::Mesh& mesh, Progress& progress, RunResult& result) {
+  return stage("pyfr", progress, result, [&] {
+    try {
+      // A tenth of PyFR's tolerance: a margin for its own order of operations on the same doubles.
+      ho::PyramidColumns split = ho::split_pyramid_columns(mesh, kPyfrParallelogramTolerance / 10);
+      result.pyfr_columns = split.stats;
+      return std::move(split.mesh);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("output.target = \"pyfr\" cannot be met: ") + e.what() +
+                       "; for PyFR use nearfield.topology = \"C\" (no pyramids; docs/solvers.md says which H-type "
+                       "pyramids cannot be split yet)");
+    }
+  });
+}
+
 // The chord: geometry.naca.chord for a generated wing, else the body's streamwise extent.
 double chord_of(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces) {
   std::vector<const surface::SurfaceMesh*> body;
@@ -661,6 +680,7 @@ RunResult run(const Config& config, Progress& progress) {
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, result.mesh, linear, chord, progress, result);
+  if (config.output.target == OutputTarget::Pyfr) result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
   check(config, geometry, surfaces, chord, progress, result);
   // A user writing MSH for PyFR hears now what its importer would refuse.
   if (std::any_of(config.output.formats.begin(), config.output.formats.end(),

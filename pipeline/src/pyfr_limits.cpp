@@ -1,18 +1,16 @@
 #include "semimesh/pipeline/pyfr_limits.hpp"
 
+#include "semimesh/ho/splitting/pyramid_columns.hpp"
+
 #include <fmt/format.h>
 
 namespace semimesh::pipeline {
 
 std::size_t pyramids_pyfr_refuses(const mesh::Mesh& mesh) {
-  constexpr double kPyfrTolerance = 1e-10;  // absolute, per coordinate (as tests/io/pyfr_rules.py)
   std::size_t count = 0;
-  for (const mesh::Element& e : mesh.elements()) {
-    if (e.shape != ho::Shape::Pyramid) continue;
-    const auto x = [&](int k) { return mesh.node(e.vertices[k]); };
-    const Eigen::Vector3d miss = x(0) + x(2) - x(1) - x(3);
-    count += miss.cwiseAbs().maxCoeff() > kPyfrTolerance;
-  }
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e)
+    count += mesh.elements()[e].shape == ho::Shape::Pyramid &&
+             !ho::has_parallelogram_base(mesh, e, kPyfrParallelogramTolerance);
   return count;
 }
 
@@ -21,7 +19,8 @@ std::vector<std::string> pyfr_refusals(const mesh::Mesh& mesh) {
   if (const std::size_t pyramids = pyramids_pyfr_refuses(mesh); pyramids > 0)
     reasons.push_back(fmt::format(
         "PyFR cannot import this mesh: {} pyramid(s) stand on quads that are not parallelograms (PyFR's "
-        "importer requires parallelogram bases; the O- and C-type near fields have no pyramids)", pyramids));
+        "importer requires parallelogram bases): set output.target = \"pyfr\" to split them and the hexes under "
+        "them, or use the O- or C-type near field (no pyramids)", pyramids));
   if (mesh.order() > 4)
     reasons.push_back(fmt::format("PyFR cannot import this mesh: order {} (PyFR's importer takes orders 1 to 4)",
                                   mesh.order()));

@@ -113,6 +113,11 @@ std::string report_json(const RunResult& r, const Config& config) {
                    "\"tetgen_seconds\": {}}},\n",
                    r.far_field.tets, r.far_field.pyramids, r.far_field.wall_triangles, r.far_field.box_triangles,
                    json_number(r.far_field.seconds_tetgen));
+  if (config.output.target == OutputTarget::Pyfr)
+    j += fmt::format("  \"pyfr_split\": {{\"pyramids_refused\": {}, \"columns\": {}, \"hexes_to_prisms\": {}, "
+                     "\"pyramids_to_tets\": {}, \"boundary_quads_to_triangles\": {}}},\n",
+                     r.pyfr_columns.pyramids_refused, r.pyfr_columns.columns, r.pyfr_columns.hexes_split,
+                     r.pyfr_columns.pyramids_split, r.pyfr_columns.boundary_quads_split);
   j += fmt::format("  \"thickness_min\": {},\n  \"thickness_max\": {},\n", json_number(r.thickness_min),
                    json_number(r.thickness_max));
   j += fmt::format("  \"layers\": {},\n  \"layer_ratio\": {},\n  \"achieved_layer_ratio\": {},\n", r.layers.layers,

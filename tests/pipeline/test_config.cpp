@@ -218,6 +218,19 @@ TEST(Config, OutOfRangeValueNamesKeyValueAndRange) {
   EXPECT_NE(error_of("[nearfield]\nthickness = -1\n").find("nearfield.thickness = -1: expected > 0"), std::string::npos);
 }
 
+TEST(Config, PyfrTargetWantsAnAsciiMshAndOrderAtMostFour) {
+  EXPECT_EQ(parse_config("", "empty.toml").output.target, OutputTarget::Any);
+  EXPECT_EQ(parse_config("[output]\ntarget = \"pyfr\"\nformats = [\"msh22\"]\n", "case.toml").output.target,
+            OutputTarget::Pyfr);
+  EXPECT_NE(error_of("[output]\ntarget = \"pyfr\"\nformats = [\"msh41-binary\", \"vtu\"]\n")
+                .find("expected with target = \"pyfr\": \"msh41\" or \"msh22\" among them"),
+            std::string::npos);
+  EXPECT_NE(error_of("[output]\ntarget = \"pyfr\"\n[highorder]\norder = 5\n")
+                .find("highorder.order = 5: expected at most 4 with output.target = \"pyfr\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[output]\ntarget = \"nektar\"\n").find("output.target"), std::string::npos);
+}
+
 TEST(Config, ChecksFloorHasAPositiveDefaultAndARange) {
   EXPECT_EQ(parse_config("", "empty.toml").checks.min_scaled_jacobian, 1e-5);
   EXPECT_EQ(parse_config("[checks]\nmin_scaled_jacobian = 0.01\n", "case.toml").checks.min_scaled_jacobian, 0.01);

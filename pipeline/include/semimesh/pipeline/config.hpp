@@ -136,8 +136,15 @@ struct ChecksConfig {
 };
 
 /// [output]
+/// Which solver's import rules the mesh must meet beyond every format's own (docs/solvers.md).
+enum class OutputTarget {
+  Any,   ///< the method's elements as built (hex blocks with pyramids on their skin quads)
+  Pyfr,  ///< PyFR: no pyramid on a base that is not a parallelogram (ho::split_pyramid_columns), order <= 4
+};
+
 struct OutputConfig {
   std::vector<std::string> formats = {"msh41", "vtu"};  ///< names from output_formats()
+  OutputTarget target = OutputTarget::Any;
   std::string directory = ".";   ///< resolved against the current directory
   std::string basename = "mesh";
   bool allow_invalid = false;    ///< write the mesh even when a check fails

@@ -8,6 +8,7 @@
 #include "semimesh/checks/volume.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/splitting/pyramid_columns.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/pipeline/config.hpp"
 
@@ -103,6 +104,7 @@ struct RunResult {
   std::string node_placement;  ///< highorder.node_placement used by the curve stage; empty at order 1
   ho::CurvingStats curving;    ///< zeros at order 1
   farfield::FarFieldStats far_field;
+  ho::PyramidColumnStats pyfr_columns;  ///< output.target = "pyfr": what was split (zeros otherwise)
   GeometricErrorFigures geometric_error;
   /// Tolerance of the element volume against box - body of the linear surface meshes: round-off for
   /// a linear mesh; a curved body's volume differs from its triangulation's (see pipeline.cpp).

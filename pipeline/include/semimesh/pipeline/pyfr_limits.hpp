@@ -11,6 +11,9 @@
 
 namespace semimesh::pipeline {
 
+/// PyFR's absolute tolerance on a pyramid base's b0 - b1 + b2 - b3, per coordinate.
+constexpr double kPyfrParallelogramTolerance = 1e-10;
+
 /// Pyramids of `mesh` whose base vertices b0 b1 b2 b3 (in cyclic order) miss b0 + b2 = b1 + b3 by
 /// more than PyFR's absolute 1e-10 in some coordinate.
 std::size_t pyramids_pyfr_refuses(const mesh::Mesh& mesh);
