@@ -19,8 +19,8 @@ std::vector<std::string> pyfr_refusals(const mesh::Mesh& mesh) {
   if (const std::size_t pyramids = pyramids_pyfr_refuses(mesh); pyramids > 0)
     reasons.push_back(fmt::format(
         "PyFR cannot import this mesh: {} pyramid(s) stand on quads that are not parallelograms (PyFR's "
-        "importer requires parallelogram bases): set output.target = \"pyfr\" to split them and the hexes under "
-        "them, or use the O- or C-type near field (no pyramids)", pyramids));
+        "importer requires parallelogram bases): for PyFR use the O- or C-type near field (no pyramids); "
+        "docs/solvers.md says what output.target = \"pyfr\" can split", pyramids));
   if (mesh.order() > 4)
     reasons.push_back(fmt::format("PyFR cannot import this mesh: order {} (PyFR's importer takes orders 1 to 4)",
                                   mesh.order()));

@@ -1,9 +1,13 @@
 """`semimesh init --cad FILE` output run by `semimesh run` unchanged but for the given --set keys.
 
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
+                   [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
 
-Writes DIR/wing.toml with init, runs it into DIR/out, and fails unless the run exits 0 with
-0 invalid elements (and elements in each of the given regions, by report.json).
+With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
+NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
+fails unless the run exits 0 with 0 invalid elements (and elements in each of the given regions, by
+report.json); with --gmsh, Gmsh's own certified Jacobian bounds of every element of the written
+.msh must be positive too (tests/pipeline/gmsh_validity.py).
 """
 import argparse
 import json
@@ -20,9 +24,18 @@ def main():
     parser.add_argument("--workdir", required=True)
     parser.add_argument("--set", action="append", default=[], help="config override for the run")
     parser.add_argument("--regions", default="", help="comma-separated regions the mesh must hold elements in")
+    parser.add_argument("--writer", help="write_wing_variant, to write FILE first")
+    parser.add_argument("--variant", help="the variant write_wing_variant writes")
+    parser.add_argument("--naca", action="append", default=[], help="naca.KEY=VALUE for write_wing_variant")
+    parser.add_argument("--gmsh", action="store_true", help="certify the .msh with Gmsh too")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
+    if args.writer:
+        done = subprocess.run([args.writer, args.variant, args.cad] + args.naca, capture_output=True, text=True)
+        if done.returncode != 0:
+            print("FAIL: write_wing_variant exited with %d\n%s" % (done.returncode, done.stderr))
+            return 1
     config = os.path.join(args.workdir, "wing.toml")
     done = subprocess.run([args.exe, "init", "--cad", args.cad, "-o", config], capture_output=True, text=True)
     if done.returncode != 0:
@@ -43,6 +56,19 @@ def main():
     for region in filter(None, args.regions.split(",")):
         if regions.get(region, 0) <= 0:
             print("FAIL: no elements in region '%s': %s" % (region, regions))
+            return 1
+    if args.gmsh:
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pipeline"))
+        from gmsh_validity import certified_ratios
+        meshes = [f for f in os.listdir(os.path.join(args.workdir, "out")) if f.endswith(".msh")]
+        if not meshes:
+            print("FAIL: --gmsh, but the run wrote no .msh file")
+            return 1
+        ratios = certified_ratios(os.path.join(args.workdir, "out", meshes[0]))
+        worst = min(ratios["direct"] + ratios["prisms"] + ratios["pyramids"])
+        print("gmsh: %d elements certified, min J / max J %.3g" % (sum(ratios["counts"].values()), worst))
+        if worst <= 0:
+            print("FAIL: Gmsh finds elements with a Jacobian that is not positive")
             return 1
     print("ok")
     return 0

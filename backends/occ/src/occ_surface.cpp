@@ -2,10 +2,14 @@
 
 #include "semimesh/cad/error.hpp"
 
+#include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <GProp_GProps.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom2d_Curve.hxx>
 #include <GeomAdaptor_Surface.hxx>
@@ -27,6 +31,30 @@ namespace semimesh::occ {
 namespace {
 
 cad::Vec3 to_vec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
+
+// Planar by geometry, whatever the surface's type: within 1e-7 of the face's bounding-box diagonal
+// over the parameter box (the trimmed face lies inside it).
+bool lies_in_a_plane(const Handle(Geom_Surface)& surface, const TopoDS_Face& face, const std::array<cad::Interval, 2>& box) {
+  constexpr double kRelativeTolerance = 1e-7;
+  Bnd_Box extent;
+  BRepBndLib::Add(face, extent);
+  if (extent.IsVoid()) return false;
+  const double size = std::sqrt(extent.SquareExtent());
+  if (!(size > 0.0)) return false;
+  try {
+    const Handle(Geom_Surface) patch =
+        new Geom_RectangularTrimmedSurface(surface, box[0].lo, box[0].hi, box[1].lo, box[1].hi);
+    return GeomLib_IsPlanarSurface(patch, kRelativeTolerance * size).IsPlanar();
+  } catch (const Standard_Failure&) {
+    // A parameter box OCC will not trim to (e.g. past a periodic surface's period): the whole
+    // surface must be a plane then.
+  }
+  try {
+    return GeomLib_IsPlanarSurface(surface, kRelativeTolerance * size).IsPlanar();
+  } catch (const Standard_Failure&) {
+    return false;  // OCC cannot tell: not planar, as by type
+  }
+}
 
 cad::SurfaceKind kind_of(GeomAbs_SurfaceType type) {
   switch (type) {
@@ -101,6 +129,7 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance_);
   GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
+  planar_ = kind_ == cad::SurfaceKind::Plane || lies_in_a_plane(surface_, face_, bounds_);
   mutable_evaluator_ = type == GeomAbs_SurfaceOfRevolution || type == GeomAbs_SurfaceOfExtrusion ||
                        type == GeomAbs_OffsetSurface;
   grid_ = std::make_unique<SampleGrid>(bounds_, samples_along(box_adaptor, true), samples_along(box_adaptor, false),

@@ -22,6 +22,10 @@ class OccSurface final : public cad::Surface {
   OccSurface(int id, std::string name, const TopoDS_Face& fluid_face);
 
   cad::SurfaceKind kind() const override { return kind_; }
+  /// A plane, or any surface (B-spline, offset, ...) whose face lies in a plane to within 1e-7 of
+  /// the face's size (GeomLib_IsPlanarSurface on its parameter box): CAD tools export planar walls
+  /// and box faces as B-splines.
+  bool is_planar() const override { return planar_; }
   std::array<cad::Interval, 2> bounds() const override { return bounds_; }
   cad::SurfaceDerivatives derivatives(const cad::Vec2& uv) const override;
   bool contains(const cad::Vec2& uv) const override;
@@ -68,6 +72,7 @@ class OccSurface final : public cad::Surface {
   mutable std::once_flag raster_built_;
   mutable std::unique_ptr<TrimRaster> raster_;
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
+  bool planar_ = false;
   bool mutable_evaluator_ = false;
 };
 
