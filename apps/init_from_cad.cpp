@@ -1,11 +1,14 @@
 #include "init_from_cad.hpp"
 
+#include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/surface/cad_roles.hpp"
+#include "semimesh/surface/root_plane.hpp"
 #include "semimesh/surface/shell_size_limit.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -26,6 +29,18 @@ std::vector<std::string> surface_entries(const cad::Model& model, const std::vec
 
 // Four significant digits: what a user would write, and plenty for a size.
 double round_to_4_digits(double x) { return std::stod(fmt::format("{:.4g}", x)); }
+
+// The far field around a body-only file: the paper's box is about ten chords on every side.
+constexpr double kBoxChords = 10.0;
+
+// A point or direction as written in the config: 12 significant digits, round-off zeros as 0.
+std::array<double, 3> rounded(const cad::Vec3& x) {
+  const double scale = std::max(1.0, x.cwiseAbs().maxCoeff());
+  std::array<double, 3> out{};
+  for (int k = 0; k < 3; ++k)
+    out[k] = std::abs(x[k]) < 1e-12 * scale ? 0.0 : std::stod(fmt::format("{:.12g}", x[k]));
+  return out;
+}
 
 void scale_lengths(pipeline::Config& config, double factor) {
   for (const pipeline::ConfigSection& section : pipeline::config_sections())
@@ -77,12 +92,28 @@ const std::vector<std::string>& length_keys() {
 
 CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_path, const std::string& source_text) {
   const std::string backend = registry.backend_for_path(cad_path);
-  const std::unique_ptr<cad::Model> model = registry.load(backend, cad::Source{cad_path, {}});
-  const surface::CadRoles roles = surface::detect_cad_roles(*model);
+  std::unique_ptr<cad::Model> model = registry.load(backend, cad::Source{cad_path, {}});
   CadConfig out;
   pipeline::Config& c = out.config;
   c.geometry.backend = backend;
   c.geometry.source = source_text;
+  std::string domain;
+  if (!surface::has_wall_with_root_loop(*model)) {
+    // The body alone (no wall sewn to it): its root plane becomes geometry.wall_plane and a box
+    // around it the far field, both built at load as `run` will.
+    const std::optional<surface::RootPlane> root = surface::find_root_plane(*model);
+    if (!root) surface::detect_cad_roles(*model);  // throws, saying what is missing
+    c.geometry.wall_plane.point = rounded(root->point);
+    c.geometry.wall_plane.normal = rounded(root->normal);
+    c.geometry.farfield_shape.box_chords = kBoxChords;
+    pipeline::GeometryConfig load = c.geometry;
+    load.source = cad_path;
+    model = registry.load(backend, pipeline::cad_source(load));
+    domain = fmt::format("geometry.wall_plane: {}; geometry.farfield = {{box_chords = {}}}: the file holds the body "
+                         "only, so the wall and a box around the body are built at load.\n",
+                         root->why, kBoxChords);
+  }
+  const surface::CadRoles roles = surface::detect_cad_roles(*model);
   c.geometry.units = model->units();
   c.geometry.body = surface_entries(*model, roles.body);
   c.geometry.wall = surface_entry(*model, roles.wall);
@@ -111,6 +142,7 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   }
   out.summary += h_type ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"
                         : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n";
+  out.summary += domain;
   out.summary += surface::describe_cad_roles(*model, roles);
   return out;
 }

@@ -14,7 +14,8 @@ add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/strip_counts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/mesh_quality.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/model_surfaces.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/src/surface/cad_roles.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/cad_roles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/surface/root_plane.cpp)
 add_library(semimesh::surface_mesh ALIAS semimesh_surface_mesh)
 target_include_directories(semimesh_surface_mesh PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_surface_mesh PUBLIC semimesh_cadapi PRIVATE CGAL::CGAL fmt::fmt semimesh_warnings)

@@ -145,6 +145,8 @@ void set_domain_params(const GeometryConfig& g, cad::Params& params) {
   }
 }
 
+}  // namespace
+
 cad::Source cad_source(const GeometryConfig& g) {
   cad::Source source;
   source.path = g.source;
@@ -173,6 +175,8 @@ cad::Source cad_source(const GeometryConfig& g) {
   }
   return source;
 }
+
+namespace {
 
 // The wake's keys with te_base naming the resolved base (the near field finds it by name); left
 // as written when none was found (a sharp trailing edge), for the near field's own message.

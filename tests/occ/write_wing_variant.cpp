@@ -3,25 +3,47 @@
 //
 //   write_wing_variant VARIANT OUT.step [naca.key=value ...]
 //
+//   asis    the shape as the backend builds it (with naca.farfield=false: the body alone, its root
+//           section left open: free curves in the wall plane, as wing CAD is often exported);
 //   nurbs   every face converted to a B-spline (BRepBuilderAPI_NurbsConvert), as many CAD tools
-//           export: the wall and the box faces are planar B-splines, not planes.
+//           export: the wall and the box faces are planar B-splines, not planes;
+//   capped  every open planar loop closed by a planar face and sewn on (with naca.farfield=false: a
+//           closed body whose root is a planar cap, like the ONERA M6 file).
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <STEPControl_Writer.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
 
 #include <iostream>
 #include <string>
 
 namespace {
 
+TopoDS_Shape capped(const TopoDS_Shape& shape) {
+  ShapeAnalysis_FreeBounds bounds(shape, 1e-7, /*splitclosed=*/false, /*splitopen=*/true);
+  BRepBuilderAPI_Sewing sewing(1e-7);
+  sewing.Add(shape);
+  for (TopExp_Explorer w(bounds.GetClosedWires(), TopAbs_WIRE); w.More(); w.Next())
+    sewing.Add(BRepBuilderAPI_MakeFace(TopoDS::Wire(w.Current()), /*OnlyPlane=*/true).Face());
+  sewing.Perform();
+  return sewing.SewedShape();
+}
+
 TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing) {
+  if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
-  throw std::invalid_argument("unknown variant '" + name + "' (known: nurbs)");
+  if (name == "capped") return capped(wing);
+  throw std::invalid_argument("unknown variant '" + name + "' (known: asis, nurbs, capped)");
 }
 
 }  // namespace

@@ -2,11 +2,12 @@
 
 #include "semimesh/cad/error.hpp"
 
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
@@ -16,10 +17,13 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Wire.hxx>
 #include <TopoDS_Solid.hxx>
 #include <gp_Ax3.hxx>
 #include <gp_Trsf.hxx>
@@ -42,20 +46,57 @@ std::string length_text(double x) {
   return out.str();
 }
 
-// The body as solids with their normals pointing out of them: its solids, else its closed shells
-// made solid.
-TopoDS_Shape body_solids(const TopoDS_Shape& body) {
+// The free loops of a shell (edges that bound one of its faces only), each closed by a planar face
+// through it, sewn on: an open root (the root section as free curves in the wall plane) or an open
+// flat tip becomes a closed body. A free loop that is not closed or not planar is refused by place.
+TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double tolerance) {
+  ShapeAnalysis_FreeBounds bounds(shell, tolerance, /*splitclosed=*/false, /*splitopen=*/true);
+  const TopoDS_Compound& closed = bounds.GetClosedWires();
+  const TopoDS_Compound& open = bounds.GetOpenWires();
+  if (TopExp_Explorer(open, TopAbs_EDGE).More()) {
+    Bnd_Box b;
+    BRepBndLib::Add(open, b);
+    const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
+    refuse("geometry.wall_plane: the body's free edges near (" + length_text(c.X()) + ", " + length_text(c.Y()) + ", " +
+           length_text(c.Z()) + ") form no closed loop, so no face can close the body there (sew it with "
+           "geometry.sew_tolerance, or close it in a CAD tool)");
+  }
+  if (!TopExp_Explorer(closed, TopAbs_WIRE).More()) return shell;
+  BRepBuilderAPI_Sewing sewing(tolerance);
+  sewing.Add(shell);
+  for (TopExp_Explorer w(closed, TopAbs_WIRE); w.More(); w.Next()) {
+    BRepBuilderAPI_MakeFace cap(TopoDS::Wire(w.Current()), /*OnlyPlane=*/true);
+    if (!cap.IsDone()) {
+      Bnd_Box b;
+      BRepBndLib::Add(w.Current(), b);
+      const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
+      refuse("geometry.wall_plane: the body is open along a loop of free edges around (" + length_text(c.X()) + ", " +
+             length_text(c.Y()) + ", " + length_text(c.Z()) + ") that does not lie in one plane; only a planar "
+             "opening (an open root or flat tip) is closed here: close it in a CAD tool");
+    }
+    sewing.Add(cap.Face());
+  }
+  sewing.Perform();
+  return sewing.SewedShape();
+}
+
+// The body as solids with their normals pointing out of them: its solids, else its shells (open
+// ones closed across their planar openings) made solid.
+TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance) {
   TopoDS_Compound solids;
   BRep_Builder builder;
   builder.MakeCompound(solids);
   int count = 0;
   for (TopExp_Explorer s(body, TopAbs_SOLID); s.More(); s.Next(), ++count) builder.Add(solids, s.Current());
-  for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next(), ++count) {
-    BRepBuilderAPI_MakeSolid make(TopoDS::Shell(s.Current()));
-    if (!make.IsDone()) refuse("geometry.wall_plane: the body's shell cannot be made a solid (is it closed?)");
-    TopoDS_Solid solid = make.Solid();
-    BRepLib::OrientClosedSolid(solid);
-    builder.Add(solids, solid);
+  for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next()) {
+    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance);
+    for (TopExp_Explorer sh(closed, TopAbs_SHELL); sh.More(); sh.Next(), ++count) {
+      BRepBuilderAPI_MakeSolid make(TopoDS::Shell(sh.Current()));
+      if (!make.IsDone()) refuse("geometry.wall_plane: the body's shell cannot be made a solid (is it closed?)");
+      TopoDS_Solid solid = make.Solid();
+      BRepLib::OrientClosedSolid(solid);
+      builder.Add(solids, solid);
+    }
   }
   if (count == 0) refuse("geometry.wall_plane: the CAD file holds no closed body (no solid, no shell) to stand on the plane");
   return solids;
@@ -82,8 +123,8 @@ double height_max(const Bnd_Box& b) {
   return z1;
 }
 
+// Whatever its surface type (a planar B-spline cap counts): all of it within tolerance of the plane.
 bool lies_in_plane(const TopoDS_Face& face, const WallPlane& wall, double tolerance) {
-  if (BRepAdaptor_Surface(face).GetType() != GeomAbs_Plane) return false;
   const Bnd_Box b = box_in_wall_frame(face, wall);
   return std::abs(height_min(b)) <= tolerance && std::abs(height_max(b)) <= tolerance;
 }
@@ -212,7 +253,7 @@ FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const T
 
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
                           FaceNames& names) {
-  const TopoDS_Shape solids = body_solids(body);
+  const TopoDS_Shape solids = body_solids(body, tolerance);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
   const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);

@@ -149,6 +149,12 @@ Extent extent(const std::vector<Vec3>& points, const Vec3& direction, const Vec3
 
 }  // namespace
 
+bool has_wall_with_root_loop(const cad::Model& model) {
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    if (holds_a_body(model, s)) return true;
+  return false;
+}
+
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
   CadRoles roles;
   if (wall) {

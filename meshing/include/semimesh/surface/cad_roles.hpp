@@ -44,6 +44,10 @@ struct CadRoles {
 /// a body that reaches below the wall plane, no face left for the far field).
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall = std::nullopt);
 
+/// Whether some planar face holds a body's root loop as an inner loop (detect_cad_roles can find a
+/// wall); false for a file that holds the body alone.
+bool has_wall_with_root_loop(const cad::Model& model);
+
 /// One line per role, e.g. "wall      surface 4 ('wall')", for cad-info and messages.
 std::string describe_cad_roles(const cad::Model& model, const CadRoles& roles);
 

@@ -10,6 +10,7 @@
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/splitting/pyramid_columns.hpp"
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/cad/source.hpp"
 #include "semimesh/pipeline/config.hpp"
 
 #include <cstddef>
@@ -121,6 +122,10 @@ struct RunResult {
   bool checks_passed() const { return conformity.ok() && validity.ok() && volume_ok(); }
   double total_seconds() const;
 };
+
+/// What the run loads for `geometry`: the file or the generator's keys, the backend's parameters
+/// (units, scale, sewing) and, for a body-only file, the wall plane and far field to build.
+cad::Source cad_source(const GeometryConfig& geometry);
 
 /// Runs every stage. Throws RunError (kinds as above). When a check fails the mesh is not written
 /// (unless config.output.allow_invalid): the result says which check failed. Files are written
