@@ -129,11 +129,22 @@ TEST(InitCommand, AFileWithoutAWallIsRefusedAndNothingWritten) {
   EXPECT_EQ(run_init_command({path.string(), false, "/no/such/wing.step"}, out, err), 1);
   EXPECT_NE(err.str().find("/no/such/wing.step"), std::string::npos) << err.str();
   EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// The ONERA M6 file holds the body alone, a closed solid with its root on y = 0: init finds that
+// root cap and writes the wall plane and a box around the body (it was refused: no wall).
+TEST(InitCommand, BodyOnlyFileGetsItsWallPlaneFromTheRootCap) {
   const std::string m6 = std::string(SEMIMESH_TESTDATA_DIR) + "/cad/onera_m6_sharp_te.stp";
   if (!std::filesystem::exists(m6)) GTEST_SKIP() << m6 << " not found (see shared/testdata/cad/README.md)";
-  EXPECT_EQ(run_init_command({path.string(), false, m6}, out, err), 1);
-  EXPECT_NE(err.str().find("no wall the body stands on"), std::string::npos) << err.str();
-  EXPECT_FALSE(std::filesystem::exists(path));
+  const std::filesystem::path path = semimesh::test::temp_path("init_m6.toml");
+  std::ostringstream out, err;
+  ASSERT_EQ(run_init_command({path.string(), false, m6}, out, err), 0) << err.str();
+  const pipeline::Config c = pipeline::load_config(path.string());
+  ASSERT_TRUE(c.geometry.wall_plane.point && c.geometry.wall_plane.normal);
+  EXPECT_NEAR((*c.geometry.wall_plane.point)[1], 0.0, 1e-6);
+  EXPECT_NEAR((*c.geometry.wall_plane.normal)[1], 1.0, 1e-9);
+  EXPECT_EQ(c.geometry.farfield_shape.box_chords, 10.0);
+  EXPECT_EQ(c.geometry.wall, "wall");
 }
 
 }  // namespace
