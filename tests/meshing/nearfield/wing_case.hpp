@@ -1,5 +1,6 @@
 // The near-field tests' wings: coarse surface meshes of an analytic NACA wing on its wall, with
-// the body (upper, lower, te_base when blunt, tip) and the wall as roles.
+// the body (upper, lower, te_base when blunt, tip) and the wall as roles; the base meshed with
+// structured quads when asked (as the H-type needs).
 #pragma once
 
 #include "semimesh/ho/element_type.hpp"
@@ -19,7 +20,7 @@ struct WingCase {
   BodyRoles roles;
 };
 
-inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4) {
+inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4, bool structured_base = false) {
   WingCase c;
   c.model = mock_cad::make_naca_wing(wing);
   surface::SizeParams size;
@@ -30,7 +31,9 @@ inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size 
   size.le_size = 0.04;
   size.te_size = 0.04;
   const surface::SizeField field(*c.model, size);
-  c.meshes = surface::mesh_model_surfaces(*c.model, field);
+  surface::ModelMeshOptions options;
+  if (structured_base && c.model->find_surface("te_base")) options.structured_surfaces.insert(*c.model->find_surface("te_base"));
+  c.meshes = surface::mesh_model_surfaces(*c.model, field, options);
   for (const std::string name : {"upper", "lower", "te_base", "tip"})
     if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
   c.roles.wall_surface = c.model->find_surface("wall").value();
