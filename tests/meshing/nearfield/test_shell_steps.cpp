@@ -25,14 +25,9 @@ namespace semimesh::nearfield {
 namespace {
 
 using cad::Vec3;
+using testing::curve_named;
 using testing::naca;
 using testing::wing_case;
-
-int curve_named(const cad::Model& model, const std::string& name) {
-  for (int c = 0; c < model.num_curves(); ++c)
-    if (model.curve(c).name() == name) return c;
-  return -1;
-}
 
 TEST(WakeStations, GrowGeometricallyFromTheTrailingEdgeToTheLength) {
   WakeParams wake;

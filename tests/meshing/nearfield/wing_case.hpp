@@ -3,6 +3,7 @@
 // structured quads when asked (as the H-type needs).
 #pragma once
 
+#include "semimesh/cad/model.hpp"
 #include "semimesh/ho/element_type.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
@@ -48,6 +49,13 @@ inline mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double
   p.sweep_deg = sweep;
   p.span = 1.5;
   return p;
+}
+
+/// The id of the model's curve called `name`, -1 when there is none.
+inline int curve_named(const cad::Model& model, const std::string& name) {
+  for (int c = 0; c < model.num_curves(); ++c)
+    if (model.curve(c).name() == name) return c;
+  return -1;
 }
 
 /// Elements whose straight-sided (vertex) map is not certified valid.
