@@ -474,6 +474,270 @@ detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const Bod
   }
 }
 
+
+// The planar wall's frame, taken at the middle of its parameter box.
+Frame wall_frame(const cad::Model& model, int wall_surface) {
+  const cad::Surface& wall_face = model.surface(wall_surface);
+  const cad::Vec2 wall_mid(0.5 * (wall_face.bounds()[0].lo + wall_face.bounds()[0].hi),
+                           0.5 * (wall_face.bounds()[1].lo + wall_face.bounds()[1].hi));
+  return {wall_face.normal(wall_mid), wall_face.point(wall_mid)};
+}
+
+// The body's triangles by their directed edges, for the root segments a -> b along the loop: which
+// triangle stands on each, its surface, and the segment's outward direction in the wall plane.
+class RootSegments {
+ public:
+  RootSegments(const BodyMesh& body, const Vec3& wall_normal) : body_(body), wall_normal_(wall_normal) {
+    for (std::size_t t = 0; t < body.triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k)
+        triangle_of_edge_[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+  }
+
+  Vec3 outward(int a, int b) const {
+    const auto& t = body_.triangles[triangle_of_edge_.at({a, b})];
+    const Vec3 n_tri =
+        (body_.points[t[1]] - body_.points[t[0]]).cross(body_.points[t[2]] - body_.points[t[0]]).normalized();
+    return segment_outward(body_.points[a], body_.points[b], n_tri, wall_normal_);
+  }
+  int surface(int a, int b) const { return body_.triangle_surface[triangle_of_edge_.at({a, b})]; }
+  const std::map<std::pair<int, int>, int>& triangle_of_edge() const { return triangle_of_edge_; }
+
+ private:
+  const BodyMesh& body_;
+  Vec3 wall_normal_;
+  std::map<std::pair<int, int>, int> triangle_of_edge_;
+};
+
+// The crack's root node (a sharp trailing edge's vertex on the root loop): its index in the loop,
+// -1 when there is none.
+int fan_index(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop, int crack_curve) {
+  int fan = -1;
+  if (crack_curve < 0) return fan;
+  const std::array<int, 2> ends = model.curve_vertices(crack_curve);
+  for (int i = 0; i < static_cast<int>(loop.size()); ++i) {
+    const CadAttachment& a = body.cad[loop[i]];
+    if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1])) fan = i;
+  }
+  return fan;
+}
+
+// The junction's cross-section at every root node (root, halo, strip top, wall foot); at the fan
+// node one per side, each over its own root segment's outward direction (side 0: the segment into
+// it, side 1: the one out of it).
+struct JunctionNodes {
+  std::vector<JunctionNode> at;           ///< [loop]; the fan node's side 0
+  int fan = -1;                           ///< loop index of the fan node, -1: none
+  JunctionNode fan_side1;                 ///< the fan node's side 1
+  std::array<int, 2> fan_surface{-1, -1};  ///< [sides] the surface of the fan node's root segment on each side
+};
+
+JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& roles, const std::map<int, int>& root_surface,
+                                   const BodyMesh& body, const std::vector<int>& loop, const RootSegments& segments,
+                                   int crack_curve, const Frame& wall, double delta_wing, double delta_wall) {
+  const int n = static_cast<int>(loop.size());
+  JunctionNodes j;
+  j.at.resize(n);
+  j.fan = fan_index(model, body, loop, crack_curve);
+  for (int i = 0; i < n; ++i) {
+    const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
+    if (i == j.fan) {
+      j.at[i] = place_junction_node(model, roles, root_surface, body, r, segments.outward(prev, r), wall, delta_wing,
+                                    delta_wall);
+      j.fan_side1 = place_junction_node(model, roles, root_surface, body, r, segments.outward(r, next), wall,
+                                        delta_wing, delta_wall);
+      continue;
+    }
+    j.at[i] = place_junction_node(model, roles, root_surface, body, r,
+                                  (segments.outward(prev, r) + segments.outward(r, next)).normalized(), wall,
+                                  delta_wing, delta_wall);
+  }
+  if (j.fan >= 0) {
+    const int prev = loop[(j.fan + n - 1) % n], r = loop[j.fan], next = loop[(j.fan + 1) % n];
+    j.fan_surface = {segments.surface(prev, r), segments.surface(r, next)};
+    keep_fan_halos_off_the_rear_interfaces(model, roles.wall_surface, crack_curve, j.fan_surface,
+                                           {segments.outward(prev, r), segments.outward(r, next)}, wall, delta_wing,
+                                           delta_wall, {&j.at[j.fan], &j.fan_side1});
+  }
+  return j;
+}
+
+// The body the wing layer stands on: without the bare triangles (whose own nodes get no offset:
+// pinned where they are), cracked open along the crack curve; the two sides of the crack count as
+// neighbours, as they still crowd each other.
+struct WingLayer {
+  CrackNodes crack;
+  std::vector<char> bare;                    ///< [body triangles]
+  CrackedLayer cracked;
+  std::vector<std::vector<int>> neighbours;  ///< [layer nodes]
+};
+
+WingLayer wing_layer(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop, int bare_surface,
+                     int crack_curve) {
+  WingLayer w;
+  w.crack = crack_nodes(model, body, crack_curve, loop);
+  w.bare = bare_triangles(model, body, bare_surface, crack_curve, w.crack);
+  w.cracked = crack_open(without_bare(body, w.bare), w.crack);
+  w.neighbours = node_neighbours(w.cracked.layer);
+  const int count = body.num_nodes();
+  for (std::size_t k = 0; k < w.cracked.copy_of.size(); ++k) {
+    w.neighbours[count + k].push_back(w.cracked.copy_of[k]);
+    w.neighbours[w.cracked.copy_of[k]].push_back(count + static_cast<int>(k));
+  }
+  return w;
+}
+
+// The fan node's layer node on each side: itself, or its copy on the side the crack gave copies.
+std::array<int, 2> fan_layer_nodes(const WingLayer& w, const BodyMesh& body, const std::vector<int>& loop,
+                                   const JunctionNodes& j) {
+  const int count = body.num_nodes();
+  const auto& copy_of = w.cracked.copy_of;
+  const int copy = static_cast<int>(std::find(copy_of.begin(), copy_of.end(), loop[j.fan]) - copy_of.begin());
+  if (copy == static_cast<int>(copy_of.size()) || j.fan_surface[0] == j.fan_surface[1])
+    throw NearFieldError("near field: the sharp trailing edge's root at " + point_label(body.points[loop[j.fan]]) +
+                         " does not part two body surfaces");
+  const int copied_surface = w.cracked.layer.node_surface[count + copy];
+  std::array<int, 2> fan_layer;
+  for (int side : {0, 1}) fan_layer[side] = j.fan_surface[side] == copied_surface ? count + copy : loop[j.fan];
+  return fan_layer;
+}
+
+// Where the layer's offsets start from and which stay: node normals ([layer nodes]); isolated nodes
+// pinned where they are, the strip tops (and the fan node's two layer nodes) pinned at their halos,
+// their normals towards them.
+struct LayerStart {
+  std::vector<Vec3> normals;
+  detail::OffsetConstraints constraints;
+  std::array<int, 2> fan_layer{-1, -1};  ///< the fan node's layer node on each side
+};
+
+LayerStart pin_layer_at_the_halos(const WingLayer& w, const BodyMesh& body, const std::vector<int>& loop,
+                                  const JunctionNodes& j, const ShellParams& params) {
+  const BodyMesh& layer = w.cracked.layer;
+  const int layer_count = layer.num_nodes();
+  LayerStart s;
+  NormalOptions normal_options;
+  normal_options.smoothing_passes = params.normal_smoothing_passes;
+  s.normals = node_normals(layer, std::vector<Vec3>(layer_count, Vec3::Zero()), normal_options);
+  s.constraints.pinned.assign(layer_count, 0);
+  s.constraints.pinned_outer.assign(layer_count, Vec3::Zero());
+  auto pin = [&](int node, const Vec3& outer, const Vec3& normal) {
+    s.constraints.pinned[node] = 1, s.constraints.pinned_outer[node] = outer, s.normals[node] = normal;
+  };
+  for (int i = 0; i < layer_count; ++i)
+    if (w.neighbours[i].empty()) pin(i, layer.points[i], Vec3::UnitX());
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    pin(loop[i], j.at[i].halo, (j.at[i].halo - j.at[i].strip_top).normalized());
+  if (j.fan >= 0) {
+    s.fan_layer = fan_layer_nodes(w, body, loop, j);
+    for (int side : {0, 1}) {
+      const JunctionNode& halo = side == 0 ? j.at[j.fan] : j.fan_side1;
+      pin(s.fan_layer[side], halo.halo, (halo.halo - j.at[j.fan].strip_top).normalized());
+    }
+  }
+  return s;
+}
+
+// The wing layer's prisms (region wing_layer): body node i is mesh node i, layer node i's offset
+// mesh node i + offset; each prism's body face a wing boundary face, its outer face skin. The
+// bare triangles off the bare surface are listed (the crack's ends).
+void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::LayerOffsets& offsets, int bare_surface,
+                    detail::JunctionShell& shell) {
+  NearField& field = shell.field;
+  mesh::Mesh& m = field.mesh;
+  const BodyMesh& layer = w.cracked.layer;
+  const int count = body.num_nodes(), layer_count = layer.num_nodes();
+  const int layer_region = m.region_index("wing_layer");
+  for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
+  const auto offset = static_cast<NodeId>(count);
+  for (int i = 0; i < layer_count; ++i) m.add_node(offsets.outer[i]);
+  auto id = [](int v) { return static_cast<NodeId>(v); };
+  shell.layer_body.resize(layer_count);
+  for (int i = 0; i < layer_count; ++i) shell.layer_body[i] = id(i < count ? i : w.cracked.copy_of[i - count]);
+  for (std::size_t t = 0; t < layer.triangles.size(); ++t) {
+    const auto& l = layer.triangles[t];
+    const std::array<NodeId, 3> v{shell.layer_body[l[0]], shell.layer_body[l[1]], shell.layer_body[l[2]]};
+    m.add_element(ho::Shape::Prism, {v[0], v[1], v[2], id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset},
+                  layer_region);
+    field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
+    field.element_surface.push_back(layer.triangle_surface[t]);
+    m.add_boundary_face("wing", ho::Shape::Triangle, {v[0], v[2], v[1]});
+    field.skin.push_back({{id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset, mesh::kNoNode}, 3});
+  }
+  for (std::size_t t = 0; t < body.triangles.size(); ++t)
+    if (w.bare[t] && body.triangle_surface[t] != bare_surface) shell.bare.push_back(body.triangles[t]);
+  shell.offset = offset;
+}
+
+// The junction's wall nodes: the root R and the wall foot L of every root node, and the fan node's
+// second foot (side 1).
+void add_junction_wall_nodes(const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
+                             const JunctionNodes& j, detail::JunctionShell& shell) {
+  mesh::Mesh& m = shell.field.mesh;
+  const std::size_t n = loop.size();
+  shell.root_id.resize(n), shell.foot_id.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    shell.root_id[i] = m.add_node(j.at[i].root, root_cad[i]);
+    shell.foot_id[i] = m.add_node(j.at[i].wall_foot, j.at[i].wall_foot_cad);
+  }
+  if (j.fan >= 0) shell.fan.foot = {shell.foot_id[j.fan], m.add_node(j.fan_side1.wall_foot, j.fan_side1.wall_foot_cad)};
+}
+
+// Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a on every root segment (region junction, stacks
+// of both families); a -> b along the loop or against it, whichever gives a positive volume. At
+// the fan node each segment takes its own side's foot and halo.
+void add_junction_hexes(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop,
+                        const JunctionNodes& j, const std::array<int, 2>& fan_layer, double delta_wing,
+                        double delta_wall, detail::JunctionShell& shell) {
+  NearField& field = shell.field;
+  mesh::Mesh& m = field.mesh;
+  const int n = static_cast<int>(loop.size()), fan = j.fan;
+  const int junction_region = m.region_index("junction");
+  auto id = [](int v) { return static_cast<NodeId>(v); };
+  auto side_of = [&](int other) { return other == (fan + n - 1) % n ? 0 : 1; };
+  auto foot = [&](int i, int other) { return i == fan ? shell.fan.foot[side_of(other)] : shell.foot_id[i]; };
+  auto top = [&](int i, int other) { return id(i == fan ? fan_layer[side_of(other)] : loop[i]) + shell.offset; };
+  auto hex_of = [&](int a, int b) {
+    return std::array<NodeId, 8>{shell.root_id[a], shell.root_id[b], id(loop[b]), id(loop[a]),
+                                 foot(a, b),       foot(b, a),       top(b, a),   top(a, b)};
+  };
+  auto corners = [&](const std::array<NodeId, 8>& h) {
+    std::array<Vec3, 8> x;
+    for (int k = 0; k < 8; ++k) x[k] = m.node(h[k]);
+    return x;
+  };
+  const bool along = hex_corners_valid(corners(hex_of(0, 1)));
+  for (int i = 0; i < n; ++i) {
+    const int a = along ? i : (i + 1) % n, b = along ? (i + 1) % n : i;
+    const std::array<NodeId, 8> h = hex_of(a, b);
+    if (!hex_corners_valid(corners(h)))
+      throw NearFieldError("near field: the junction hex on the root segment " + point_label(j.at[a].root) + " - " +
+                           point_label(j.at[b].root) + " on " + surface_label(model, body.node_surface[loop[a]]) +
+                           " would be inverted: the root loop turns too sharply there for thickness " +
+                           number_label(delta_wing) + " and wall layer thickness " + number_label(delta_wall) +
+                           "; use thinner layers or a finer root mesh");
+    m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), junction_region);
+    field.stacks.push_back(
+        {field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
+    field.element_surface.push_back(body.node_surface[loop[a]]);
+    m.add_boundary_face("wing", ho::Shape::Quadrilateral, {h[0], h[3], h[2], h[1]});
+    m.add_boundary_face("wall", ho::Shape::Quadrilateral, {h[0], h[1], h[5], h[4]});
+    ++field.junction_hexes;
+  }
+}
+
+// The layer's thinnest and thickest offset after reduction, over the nodes that have neighbours
+// (the bare surface's own nodes get no offset).
+void record_thickness_range(const detail::LayerOffsets& offsets, const std::vector<std::vector<int>>& neighbours,
+                            double thickness, NearField& field) {
+  field.thickness_min = thickness;
+  field.thickness_max = 0.0;
+  for (std::size_t i = 0; i < neighbours.size(); ++i) {
+    if (neighbours[i].empty()) continue;
+    field.thickness_min = std::min(field.thickness_min, offsets.thickness[i]);
+    field.thickness_max = std::max(field.thickness_max, offsets.thickness[i]);
+  }
+}
+
 }  // namespace
 
 const params::Table<JunctionParams>& junction_keys() {
@@ -491,199 +755,51 @@ const params::Table<JunctionParams>& junction_keys() {
 
 namespace detail {
 
+// The method's steps (c_shell.hpp): the root loop and the junction's cross-section at each root
+// node, the wing mesh lifted onto the strip tops, the wing layer's offsets meeting the halos there,
+// then the mesh: the layer's prisms and the junction's hexes.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
                                    int bare_surface, int crack_curve) {
   detail::check_shell_params(model, roles, params);
   check_junction_params(model, roles, junction, wall_thickness);
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
-  BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
-  const int count = body.num_nodes();
-  const auto open = open_edges(body);
-  const cad::Surface& wall_face = model.surface(roles.wall_surface);
-  const cad::Vec2 wall_mid(0.5 * (wall_face.bounds()[0].lo + wall_face.bounds()[0].hi),
-                           0.5 * (wall_face.bounds()[1].lo + wall_face.bounds()[1].hi));
-  const Frame wall{wall_face.normal(wall_mid), wall_face.point(wall_mid)};
   const double delta_wing = params.thickness, delta_wall = wall_thickness;
+  BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
+  const Frame wall = wall_frame(model, roles.wall_surface);
 
   // Junction geometry per root node, then the wing mesh lifted onto the strip tops.
-  const std::vector<int> loop = root_loop(model, body, open, roles.wall_surface);
-  const int n = static_cast<int>(loop.size());
-  std::map<std::pair<int, int>, int> triangle_of_edge;
-  for (std::size_t t = 0; t < body.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      triangle_of_edge[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
-  auto outward = [&](int a, int b) {  // of the root segment a -> b
-    const auto& t = body.triangles[triangle_of_edge.at({a, b})];
-    const Vec3 n_tri =
-        (body.points[t[1]] - body.points[t[0]]).cross(body.points[t[2]] - body.points[t[0]]).normalized();
-    return segment_outward(body.points[a], body.points[b], n_tri, wall.normal);
-  };
-  // The crack's root node (a sharp trailing edge's): one halo per side, each over its own root
-  // segment's outward direction (side 0: the segment into it, side 1: the one out of it).
-  int fan = -1;
-  if (crack_curve >= 0) {
-    const std::array<int, 2> ends = model.curve_vertices(crack_curve);
-    for (int i = 0; i < n; ++i) {
-      const CadAttachment& a = body.cad[loop[i]];
-      if (a.kind == CadAttachment::Vertex && (a.entity == ends[0] || a.entity == ends[1])) fan = i;
-    }
-  }
-  std::vector<JunctionNode> nodes(n);
-  JunctionNode fan_side1;
-  for (int i = 0; i < n; ++i) {
-    const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
-    if (i == fan) {
-      nodes[i] = place_junction_node(model, roles, root_surface, body, r, outward(prev, r), wall, delta_wing, delta_wall);
-      fan_side1 = place_junction_node(model, roles, root_surface, body, r, outward(r, next), wall, delta_wing, delta_wall);
-      continue;
-    }
-    nodes[i] = place_junction_node(model, roles, root_surface, body, r,
-                                   (outward(prev, r) + outward(r, next)).normalized(), wall, delta_wing, delta_wall);
-  }
-  // [sides] the surface of the fan node's root segment on each side
-  std::array<int, 2> fan_surface{-1, -1};
-  if (fan >= 0) {
-    const int prev = loop[(fan + n - 1) % n], r = loop[fan], next = loop[(fan + 1) % n];
-    fan_surface[0] = body.triangle_surface[triangle_of_edge.at({prev, r})];
-    fan_surface[1] = body.triangle_surface[triangle_of_edge.at({r, next})];
-    keep_fan_halos_off_the_rear_interfaces(model, roles.wall_surface, crack_curve, fan_surface,
-                                           {outward(prev, r), outward(r, next)}, wall, delta_wing, delta_wall,
-                                           {&nodes[fan], &fan_side1});
-  }
-  if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, triangle_of_edge, nodes);
-  std::vector<CadAttachment> root_cad(n);
-  for (int i = 0; i < n; ++i) root_cad[i] = body.cad[loop[i]];
+  const std::vector<int> loop = root_loop(model, body, open_edges(body), roles.wall_surface);
+  const RootSegments segments(body, wall.normal);
+  JunctionNodes j = place_junction_nodes(model, roles, root_surface, body, loop, segments, crack_curve, wall,
+                                         delta_wing, delta_wall);
+  if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, segments.triangle_of_edge(), j.at);
+  std::vector<CadAttachment> root_cad;
+  for (int r : loop) root_cad.push_back(body.cad[r]);
+  const auto [strip, tip] = lift_onto_strip(model, wall, loop, j.at, delta_wall, body);
 
-  const auto [strip, tip] = lift_onto_strip(model, wall, loop, nodes, delta_wall, body);
-
-  // The wing layer on the lifted mesh (without the bare triangles, whose own nodes get no offset:
-  // pinned where they are; cracked along the crack curve), the strip tops' offsets pinned at the halo.
-  const CrackNodes crack = crack_nodes(model, body, crack_curve, loop);
-  const std::vector<char> bare = bare_triangles(model, body, bare_surface, crack_curve, crack);
-  const CrackedLayer cracked = crack_open(without_bare(body, bare), crack);
-  const BodyMesh& layer = cracked.layer;
-  const int layer_count = layer.num_nodes();
-  auto neighbours = node_neighbours(layer);
-  for (std::size_t k = 0; k < cracked.copy_of.size(); ++k) {  // the two sides still crowd each other
-    neighbours[count + k].push_back(cracked.copy_of[k]);
-    neighbours[cracked.copy_of[k]].push_back(count + static_cast<int>(k));
-  }
-  NormalOptions normal_options;
-  normal_options.smoothing_passes = params.normal_smoothing_passes;
-  std::vector<Vec3> normals = node_normals(layer, std::vector<Vec3>(layer_count, Vec3::Zero()), normal_options);
-  detail::OffsetConstraints constraints;
-  constraints.pinned.assign(layer_count, 0);
-  constraints.pinned_outer.assign(layer_count, Vec3::Zero());
-  for (int i = 0; i < layer_count; ++i)
-    if (neighbours[i].empty()) constraints.pinned[i] = 1, constraints.pinned_outer[i] = layer.points[i], normals[i] = Vec3::UnitX();
-  for (int i = 0; i < n; ++i) {
-    constraints.pinned[loop[i]] = 1;
-    constraints.pinned_outer[loop[i]] = nodes[i].halo;
-    normals[loop[i]] = (nodes[i].halo - nodes[i].strip_top).normalized();
-  }
-  // The fan node's layer node on each side: itself, or its copy on the side the crack gave copies.
-  std::array<int, 2> fan_layer{-1, -1};
-  if (fan >= 0) {
-    const int copy = static_cast<int>(std::find(cracked.copy_of.begin(), cracked.copy_of.end(), loop[fan]) -
-                                      cracked.copy_of.begin());
-    if (copy == static_cast<int>(cracked.copy_of.size()) || fan_surface[0] == fan_surface[1])
-      throw NearFieldError("near field: the sharp trailing edge's root at " + point_label(body.points[loop[fan]]) +
-                           " does not part two body surfaces");
-    const int copied_surface = layer.node_surface[count + copy];
-    for (int side : {0, 1}) {
-      fan_layer[side] = fan_surface[side] == copied_surface ? count + copy : loop[fan];
-      const JunctionNode& j = side == 0 ? nodes[fan] : fan_side1;
-      constraints.pinned[fan_layer[side]] = 1;
-      constraints.pinned_outer[fan_layer[side]] = j.halo;
-      normals[fan_layer[side]] = (j.halo - nodes[fan].strip_top).normalized();
-    }
-  }
-  const detail::LayerOffsets offsets = offsets_meeting_the_halo(model, layer, neighbours, normals, constraints, params,
-                                                                loop, root_cad, roles.wall_surface, delta_wall);
+  // The wing layer on the lifted mesh, its offsets meeting the halos at the strip tops.
+  const WingLayer layer = wing_layer(model, body, loop, bare_surface, crack_curve);
+  const LayerStart start = pin_layer_at_the_halos(layer, body, loop, j, params);
+  const detail::LayerOffsets offsets =
+      offsets_meeting_the_halo(model, layer.cracked.layer, layer.neighbours, start.normals, start.constraints, params,
+                               loop, root_cad, roles.wall_surface, delta_wall);
 
   JunctionShell shell;
-  NearField& field = shell.field;
-  field.warnings = offsets.warnings;
-  mesh::Mesh& m = field.mesh;
-  m.reserve(ho::Shape::Prism, body.triangles.size() + n);
-  const int layer_region = m.region_index("wing_layer"), junction_region = m.region_index("junction");
-  for (int i = 0; i < count; ++i) m.add_node(body.points[i], body.cad[i]);
-  const auto offset = static_cast<NodeId>(count);
-  for (int i = 0; i < layer_count; ++i) m.add_node(offsets.outer[i]);  // layer node i's offset: i + offset
-  auto id = [](int v) { return static_cast<NodeId>(v); };
-  shell.layer_body.resize(layer_count);
-  for (int i = 0; i < layer_count; ++i) shell.layer_body[i] = id(i < count ? i : cracked.copy_of[i - count]);
-  for (std::size_t t = 0; t < layer.triangles.size(); ++t) {
-    const auto& l = layer.triangles[t];
-    const std::array<NodeId, 3> v{shell.layer_body[l[0]], shell.layer_body[l[1]], shell.layer_body[l[2]]};
-    m.add_element(ho::Shape::Prism, {v[0], v[1], v[2], id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset},
-                  layer_region);
-    field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}}});
-    field.element_surface.push_back(layer.triangle_surface[t]);
-    m.add_boundary_face("wing", ho::Shape::Triangle, {v[0], v[2], v[1]});
-    field.skin.push_back({{id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset, mesh::kNoNode}, 3});
-  }
-  for (std::size_t t = 0; t < body.triangles.size(); ++t)
-    if (bare[t] && body.triangle_surface[t] != bare_surface) shell.bare.push_back(body.triangles[t]);
-
-  // Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a; a -> b along the loop or against it, whichever
-  // gives a positive volume.
-  std::vector<NodeId> root_id(n), foot_id(n);
-  for (int i = 0; i < n; ++i) {
-    root_id[i] = m.add_node(nodes[i].root, root_cad[i]);
-    foot_id[i] = m.add_node(nodes[i].wall_foot, nodes[i].wall_foot_cad);
-  }
-  // The fan node's foot and halo on the side of the segment to `other`.
-  const NodeId fan_foot1 = fan >= 0 ? m.add_node(fan_side1.wall_foot, fan_side1.wall_foot_cad) : mesh::kNoNode;
-  auto side_of = [&](int other) { return other == (fan + n - 1) % n ? 0 : 1; };
-  auto foot = [&](int i, int other) { return i == fan && side_of(other) == 1 ? fan_foot1 : foot_id[i]; };
-  auto top = [&](int i, int other) { return id(i == fan ? fan_layer[side_of(other)] : loop[i]) + offset; };
-  auto hex_of = [&](int a, int b) {
-    return std::array<NodeId, 8>{root_id[a], root_id[b], id(loop[b]), id(loop[a]),
-                                 foot(a, b),  foot(b, a),  top(b, a),   top(a, b)};
-  };
-  auto corners = [&](const std::array<NodeId, 8>& h) {
-    std::array<Vec3, 8> x;
-    for (int k = 0; k < 8; ++k) x[k] = m.node(h[k]);
-    return x;
-  };
-  const bool along = hex_corners_valid(corners(hex_of(0, 1)));
-  for (int i = 0; i < n; ++i) {
-    const int a = along ? i : (i + 1) % n, b = along ? (i + 1) % n : i;
-    const std::array<NodeId, 8> h = hex_of(a, b);
-    if (!hex_corners_valid(corners(h)))
-      throw NearFieldError("near field: the junction hex on the root segment " + point_label(nodes[a].root) + " - " +
-                           point_label(nodes[b].root) + " on " + surface_label(model, body.node_surface[loop[a]]) +
-                           " would be inverted: the root loop turns too sharply there for thickness " +
-                           number_label(delta_wing) + " and wall layer thickness " + number_label(delta_wall) +
-                           "; use thinner layers or a finer root mesh");
-    m.add_element(ho::Shape::Hexahedron, std::vector<NodeId>(h.begin(), h.end()), junction_region);
-    field.stacks.push_back(
-        {field.element_surface.size(), {LayerDirection{2, LayerFamily::Wing}, LayerDirection{1, LayerFamily::Wall}}});
-    field.element_surface.push_back(body.node_surface[loop[a]]);
-    m.add_boundary_face("wing", ho::Shape::Quadrilateral, {h[0], h[3], h[2], h[1]});
-    m.add_boundary_face("wall", ho::Shape::Quadrilateral, {h[0], h[1], h[5], h[4]});
-    ++field.junction_hexes;
-  }
-  field.thickness_min = params.thickness;
-  field.thickness_max = 0.0;
-  for (int i = 0; i < layer_count; ++i) {
-    if (neighbours[i].empty()) continue;
-    field.thickness_min = std::min(field.thickness_min, offsets.thickness[i]);
-    field.thickness_max = std::max(field.thickness_max, offsets.thickness[i]);
-  }
+  shell.field.warnings = offsets.warnings;
+  shell.field.mesh.reserve(ho::Shape::Prism, body.triangles.size() + loop.size());
+  add_wing_layer(body, layer, offsets, bare_surface, shell);
+  add_junction_wall_nodes(loop, root_cad, j, shell);
+  add_junction_hexes(model, body, loop, j, start.fan_layer, delta_wing, delta_wall, shell);
+  record_thickness_range(offsets, layer.neighbours, params.thickness, shell.field);
   shell.body = std::move(body);
-  shell.layer = layer;
-  shell.crack = crack.inner;
-  shell.offset = offset;
+  shell.layer = layer.cracked.layer;
+  shell.crack = layer.crack.inner;
   shell.chain = loop;
-  shell.root_id = root_id;
-  shell.foot_id = foot_id;
-  if (fan >= 0) {
-    shell.fan.index = fan;
-    shell.fan.foot = {foot_id[fan], fan_foot1};
-    shell.fan.top = {id(fan_layer[0]) + offset, id(fan_layer[1]) + offset};
+  if (j.fan >= 0) {
+    shell.fan.index = j.fan;
+    shell.fan.top = {static_cast<NodeId>(start.fan_layer[0]) + shell.offset,
+                     static_cast<NodeId>(start.fan_layer[1]) + shell.offset};
   }
   shell.wall = wall;
   shell.strip = strip;

@@ -10,6 +10,8 @@
 #include "semimesh/nearfield/pyramid_apex.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
+#include "wing_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,6 +24,7 @@ namespace semimesh::nearfield {
 namespace {
 
 using cad::Vec3;
+using testing::curve_named;
 
 struct Built {
   std::unique_ptr<cad::Model> model;
@@ -74,12 +77,7 @@ TEST(HShell, LayersEndAtTheTrailingEdgeWithTheirOwnNormals) {
   const Built b = build(short_wake());
   const mesh::Mesh& m = b.field.mesh;
   const int upper = *b.model->find_surface("upper"), lower = *b.model->find_surface("lower");
-  auto curve = [&](const std::string& name) {
-    for (int c = 0; c < b.model->num_curves(); ++c)
-      if (b.model->curve(c).name() == name) return c;
-    return -1;
-  };
-  const int te_upper = curve("te_upper"), te_lower = curve("te_lower");
+  const int te_upper = curve_named(*b.model, "te_upper"), te_lower = curve_named(*b.model, "te_lower");
   int checked = 0;
   for (const mesh::Element& e : m.elements()) {
     if (e.shape != ho::Shape::Prism) continue;
@@ -129,12 +127,6 @@ TEST(HShell, WakeHexesAreValidContinueTheLayerAndStandAboveTheGap) {
     if (m.elements()[s.element].region == region) ++layer_hexes;
   EXPECT_GT(layer_hexes, 0);
   EXPECT_LT(layer_hexes, hexes);  // the base's hexes are not split
-}
-
-int curve_named(const cad::Model& model, const std::string& name) {
-  for (int c = 0; c < model.num_curves(); ++c)
-    if (model.curve(c).name() == name) return c;
-  return -1;
 }
 
 // The quads the near field leaves to the far field each carry a valid pyramid. On a swept,

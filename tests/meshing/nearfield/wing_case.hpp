@@ -1,7 +1,9 @@
 // The near-field tests' wings: coarse surface meshes of an analytic NACA wing on its wall, with
-// the body (upper, lower, te_base when blunt, tip) and the wall as roles.
+// the body (upper, lower, te_base when blunt, tip) and the wall as roles; the base meshed with
+// structured quads when asked (as the H-type needs).
 #pragma once
 
+#include "semimesh/cad/model.hpp"
 #include "semimesh/ho/element_type.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
@@ -19,7 +21,7 @@ struct WingCase {
   BodyRoles roles;
 };
 
-inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4) {
+inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size = 0.4, bool structured_base = false) {
   WingCase c;
   c.model = mock_cad::make_naca_wing(wing);
   surface::SizeParams size;
@@ -30,7 +32,9 @@ inline WingCase wing_case(const mock_cad::NacaWingParams& wing, double max_size 
   size.le_size = 0.04;
   size.te_size = 0.04;
   const surface::SizeField field(*c.model, size);
-  c.meshes = surface::mesh_model_surfaces(*c.model, field);
+  surface::ModelMeshOptions options;
+  if (structured_base && c.model->find_surface("te_base")) options.structured_surfaces.insert(*c.model->find_surface("te_base"));
+  c.meshes = surface::mesh_model_surfaces(*c.model, field, options);
   for (const std::string name : {"upper", "lower", "te_base", "tip"})
     if (auto s = c.model->find_surface(name)) c.roles.body_surfaces.push_back(*s);
   c.roles.wall_surface = c.model->find_surface("wall").value();
@@ -45,6 +49,13 @@ inline mock_cad::NacaWingParams naca(const std::string& code, bool sharp, double
   p.sweep_deg = sweep;
   p.span = 1.5;
   return p;
+}
+
+/// The id of the model's curve called `name`, -1 when there is none.
+inline int curve_named(const cad::Model& model, const std::string& name) {
+  for (int c = 0; c < model.num_curves(); ++c)
+    if (model.curve(c).name() == name) return c;
+  return -1;
 }
 
 /// Elements whose straight-sided (vertex) map is not certified valid.

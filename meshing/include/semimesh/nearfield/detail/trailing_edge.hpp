@@ -1,0 +1,31 @@
+// Steps of the H-type near field (h_shell.cpp) with a contract of their own, here so their tests can
+// reach them: finding the trailing edge the wake is swept from, and the wake's streamwise stations.
+#pragma once
+
+#include "semimesh/cad/model.hpp"
+#include "semimesh/nearfield/body_mesh.hpp"
+#include "semimesh/nearfield/h_shell.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+
+#include <set>
+#include <vector>
+
+namespace semimesh::nearfield::detail {
+
+/// A sharp trailing edge: of the curves between two body surfaces that leave the wall (a vertex on
+/// a body-wall curve), the one whose wall vertex lies farthest downstream along `d` (the leading
+/// edge is the other one of a wing's section); -1 when there is none.
+int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const Vec3& d);
+
+/// The trailing-edge base's flat corners: CAD vertices where its two curves meet at more than 150
+/// degrees inside the face (a revolved tip's rounded trailing edge continues the base's sides
+/// tangentially: the NekMesh wing's base is a rectangle capped by a half disc). A structured quad
+/// there has two edges along one tangent line: curved onto the CAD its Jacobian vanishes at that
+/// corner and a hex swept from it is invalid at order >= 2.
+std::set<int> flat_base_corners(const cad::Model& model, int base);
+
+/// [layers + 1] streamwise stations 0 = s_0 < ... < s_K = length, each cell `growth` times the
+/// previous one.
+std::vector<double> wake_stations(const WakeParams& wake);
+
+}  // namespace semimesh::nearfield::detail
