@@ -8,6 +8,7 @@
 
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <gp_Vec.hxx>
 
@@ -202,7 +203,15 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
 }  // namespace
 
 std::unique_ptr<cad::Model> load_occ(const cad::Source& source) {
-  return source.path.empty() ? generate_wing(source) : load_file(source);
+  try {
+    return source.path.empty() ? generate_wing(source) : load_file(source);
+  } catch (const Standard_Failure& failure) {
+    // An OCC exception is no std::exception: uncaught, the command line could only say "unknown".
+    const std::string what = source.path.empty() ? std::string("the generated wing") : "'" + source.path + "'";
+    throw CadError(CadError::Kind::FileUnreadable, what + ": OpenCASCADE failed while building the model (" +
+                                                       failure.DynamicType()->Name() + ": " +
+                                                       failure.GetMessageString() + ")");
+  }
 }
 
 }  // namespace semimesh::occ
