@@ -13,13 +13,6 @@
 
 namespace semimesh::app {
 
-CLI::App* add_check_subcommand(CLI::App& app, CheckOptions& options) {
-  CLI::App* cmd = app.add_subcommand("check", "Certify every element of a mesh file and report its quality");
-  cmd->add_option("mesh", options.mesh, "Mesh file (Gmsh MSH 4.1 or 2.2, ASCII)")->required();
-  cmd->add_flag("--json", options.json, "Print one JSON object instead of a table");
-  return cmd;
-}
-
 int run_check_command(const CheckOptions& options, std::ostream& out, std::ostream& err) {
   mesh::Mesh m;
   try {

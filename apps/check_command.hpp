@@ -3,10 +3,12 @@
 // checks stage of `semimesh run`, so both report the same figures for one mesh).
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include <ostream>
 #include <string>
+
+namespace CLI {
+class App;  // CLI11's (CLI/CLI.hpp, which apps/subcommands.cpp and main.cpp include)
+}  // namespace CLI
 
 namespace semimesh::app {
 

@@ -14,15 +14,6 @@
 
 namespace semimesh::app {
 
-CLI::App* add_init_subcommand(CLI::App& app, InitOptions& options) {
-  CLI::App* cmd = app.add_subcommand("init", "Write a commented configuration with every key at its default");
-  cmd->add_option("-o,--output", options.output, "File to write (default: standard output)");
-  cmd->add_flag("--force", options.force, "Overwrite the file if it exists");
-  cmd->add_option("--cad", options.cad,
-                  "CAD file to configure for: its roles found and written by name, lengths scaled by its chord");
-  return cmd;
-}
-
 namespace {
 
 // A section that stands for a key of its parent (geometry.farfield: a table instead of surface

@@ -5,10 +5,12 @@
 
 #include "semimesh/pipeline/config.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <ostream>
 #include <string>
+
+namespace CLI {
+class App;  // CLI11's (CLI/CLI.hpp, which apps/subcommands.cpp and main.cpp include)
+}  // namespace CLI
 
 namespace semimesh::app {
 

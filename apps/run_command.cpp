@@ -200,21 +200,6 @@ void print_failed_checks(const pipeline::RunResult& r, std::ostream& err) {
 
 }  // namespace
 
-CLI::App* add_run_subcommand(CLI::App& app, RunOptions& options) {
-  CLI::App* cmd = app.add_subcommand("run", "Mesh a wing on a wall from a TOML configuration (docs/config.md)");
-  cmd->add_option("config", options.config, "Configuration file (TOML)")->required();
-  cmd->add_option("-o,--output", options.output_directory, "Output folder (overrides output.directory)");
-  cmd->add_option("--set", options.overrides, "Override a key: dotted.key=value, value in TOML syntax (repeatable)")
-      ->allow_extra_args(false);  // one value per --set, so a following CONFIG is not swallowed
-  cmd->add_flag("--allow-invalid", options.allow_invalid, "Write the mesh even when a check fails (exit code stays 2)");
-  cmd->add_flag("--pictures", options.pictures, "Write SVG pictures beside the mesh (output.pictures)");
-  cmd->add_flag("-q,--quiet", options.quiet, "Print errors only");
-  cmd->add_flag("-v,--verbose", options.verbose, "Also print the configuration as read, key by key");
-  cmd->add_flag("--log-json", options.log_json,
-                "Print one JSON object per event (stage started/progress/finished, warning, result) instead of text");
-  return cmd;
-}
-
 int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostream& err) {
   pipeline::Config config;
   try {

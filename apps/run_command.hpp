@@ -2,11 +2,13 @@
 // line per stage, a summary table, the mesh files and report.json.
 #pragma once
 
-#include <CLI/CLI.hpp>
-
 #include <ostream>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;  // CLI11's (CLI/CLI.hpp, which apps/subcommands.cpp and main.cpp include)
+}  // namespace CLI
 
 namespace semimesh::app {
 

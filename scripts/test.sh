@@ -1,10 +1,36 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds everything (Release, build/) and runs the whole test suite.
+# Installs the dependencies, builds (Release, build/) and runs the test suite (docs/testing.md).
+#   scripts/test.sh          the default tier: every test not labelled `long` (what CI runs)
+#   scripts/test.sh --long   everything: the default tier, the long end-to-end certifications
+#                            (CTest label `long`) and the benchmarks' build
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+long=0
+for arg in "$@"; do
+  case "$arg" in
+    --long) long=1 ;;
+    -h|--help) sed -n '2,5p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "test.sh: unknown option '$arg' (known: --long)" >&2; exit 1 ;;
+  esac
+done
+
 scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+# The benchmarks (bench/) print figures and are no test: built with --long only.
+bench=OFF
+if [ "$long" = 1 ]; then bench=ON; fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSEMIMESH_BUILD_BENCH="$bench"
 cmake --build build -j"$(nproc)"
+
+# CTest starts the longest tests first when it knows their times: from the last run in this build
+# folder, else from the times measured on 2 cores and kept in tests/ctest_cost_data.txt.
+mkdir -p build/Testing/Temporary
+if [ ! -s build/Testing/Temporary/CTestCostData.txt ]; then
+  cp tests/ctest_cost_data.txt build/Testing/Temporary/CTestCostData.txt
+fi
 cd build
-ctest --output-on-failure -j2
+if [ "$long" = 1 ]; then
+  ctest --output-on-failure -j2
+else
+  ctest --output-on-failure -j2 --label-exclude long
+fi

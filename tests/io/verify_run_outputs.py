@@ -9,9 +9,12 @@ Runs the CLI on a config at one order, then:
     reader rules (pyfr_rules.py) up to order 4, and a copy with the old per-dimension physical tags
     ("3 1 fluid" beside "2 1 ...") does not;
   - VTU: VTK reads the compressed binary file with the same points, cells and cell data as ASCII.
+With --every-format (order 8: MSH ASCII and binary, VTU, compressed Nektar++, one run): the stages'
+progress lines are printed, and gmsh reads the ASCII MSH with the element counts of report.json,
+at the order asked for.
 
-usage: verify_run_outputs.py --exe SEMIMESH --config CONFIG --workdir DIR --order P [--all-formats]
-                             [--pyfr-refuses-pyramids] [--set key=value ...]
+usage: verify_run_outputs.py --exe SEMIMESH --config CONFIG --workdir DIR --order P
+                             [--all-formats | --every-format] [--pyfr-refuses-pyramids] [--set key=value ...]
 """
 import argparse
 import os
@@ -61,12 +64,15 @@ def main():
     ap.add_argument("--workdir", required=True)
     ap.add_argument("--order", type=int, required=True)
     ap.add_argument("--all-formats", action="store_true")
+    ap.add_argument("--every-format", action="store_true",
+                    help="one file per format (msh41, msh41-binary, vtu, nektar) and gmsh's counts against report.json")
     ap.add_argument("--pyfr-refuses-pyramids", action="store_true",
                     help="the mesh has pyramids on non-parallelogram bases: PyFR must refuse them, and nothing else")
     ap.add_argument("--set", action="append", default=[])
     a = ap.parse_args()
     formats = ["msh41", "msh41-binary", "vtu", "vtu-ascii", "nektar", "nektar-xml"] if a.all_formats else \
-        ["msh41-binary", "nektar"]
+        ["msh41", "msh41-binary", "vtu", "nektar"] if a.every_format else ["msh41-binary", "nektar"]
+    binary_msh = "coarse.bin.msh" if a.all_formats or a.every_format else "coarse.msh"
     shutil.rmtree(a.workdir, ignore_errors=True)
     cmd = [a.exe, "run", a.config, "-o", a.workdir, "--set", f"highorder.order={a.order}",
            "--set", "output.formats=[" + ",".join(f'"{f}"' for f in formats) + "]"]
@@ -92,12 +98,27 @@ def main():
     import gmsh
     gmsh.initialize()
     gmsh.option.setNumber("General.Terminal", 0)
-    binary = gmsh_content(path("coarse.bin.msh" if a.all_formats else "coarse.msh"))
+    binary = gmsh_content(path(binary_msh))
     used = {int(n) for _, nodes in binary[2].values() for n in nodes}
     f.check(used == {int(t) for t in binary[0]}, f"{len(set(map(int, binary[0])) - used)} node(s) used by no element")
     if a.all_formats:
         f.check(gmsh_content(path("coarse.msh")) == binary, "binary MSH differs from ASCII MSH in gmsh")
     gmsh.finalize()
+
+    if a.every_format:
+        # (was pipeline_order8_every_format, which ran the same case a second time)
+        import json
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "pipeline"))
+        from gmsh_validity import gmsh_counts
+        for stage in ("load CAD", "surface mesh", "near field", "far field", "checks", "write"):
+            f.check(stage in run.stdout, f"no progress line for stage '{stage}'")
+        with open(path("report.json")) as fh:
+            report = json.load(fh)
+        f.check(report["order"] == report["requested_order"] == a.order,
+                f"report.json: order {report['order']}, requested {report['requested_order']}")
+        counts = gmsh_counts(path("coarse.msh"))
+        f.check(counts == report["elements_by_type"], f"coarse.msh: gmsh counts {counts}, report.json {report['elements_by_type']}")
+        f.check(os.path.getsize(path("coarse.vtu")) > 0, "coarse.vtu is empty")
 
     if a.all_formats:
         import numpy as np
