@@ -79,17 +79,19 @@ std::string bbox_json(const cad::BBox& b) {
 
 std::string report_json(const std::string& backend, const cad::Model& model, const std::vector<SurfaceRow>& rows,
                         const DetectedRoles& roles) {
+  std::string repairs;
+  for (const std::string& r : model.repairs()) repairs += (repairs.empty() ? "" : ",") + json_string(r);
   std::string list;
   for (const SurfaceRow& r : rows)
     list += fmt::format("{}{{\"id\":{},\"name\":{},\"kind\":{},\"area\":{}}}", list.empty() ? "" : ",", r.id,
                         json_string(r.name), json_string(r.kind), json_number(r.area.area));
   return fmt::format(
       "{{\"backend\":{},\"vertices\":{},\"curves\":{},\"surfaces\":{},\"bbox\":{},\"closed\":{},\"units\":{},"
-      "\"units_origin\":{},"
+      "\"units_origin\":{},\"repairs\":[{}],"
       "\"surface_list\":[{}],\"roles\":{}}}\n",
       json_string(backend), model.num_vertices(), model.num_curves(), model.num_surfaces(), bbox_json(model.bbox()),
-      model.is_closed() ? "true" : "false", json_string(model.units()), json_string(model.units_origin()), list,
-      roles_json(roles));
+      model.is_closed() ? "true" : "false", json_string(model.units()), json_string(model.units_origin()), repairs,
+      list, roles_json(roles));
 }
 
 std::string report_table(const std::string& backend, const std::string& source, const cad::Model& model,
@@ -99,6 +101,7 @@ std::string report_table(const std::string& backend, const std::string& source, 
   out += fmt::format("backend   {}\n", backend);
   out += fmt::format("units     {}: {} (scale applied at load: {})\n", model.units(),
                      model.units_origin().empty() ? "as the backend says" : model.units_origin(), model.scale_applied());
+  for (const std::string& repair : model.repairs()) out += fmt::format("repaired  {}\n", repair);
   const std::vector<int> free = pipeline::free_curves(model);
   out += fmt::format("closed    {}\n", free.empty() ? std::string("yes (every curve bounds two surfaces)")
                                                     : fmt::format("no: {} free curve(s): {}", free.size(),

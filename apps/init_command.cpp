@@ -81,9 +81,10 @@ std::string source_for(const std::string& cad, const std::string& output) {
   return file.lexically_relative(std::filesystem::absolute(output).parent_path()).string();
 }
 
-std::string init_text(const InitOptions& options) {
+std::string init_text(const InitOptions& options, std::ostream& err) {
   if (options.cad.empty()) return default_config_text();
   const CadConfig c = config_for_cad(backends::default_registry(), options.cad, source_for(options.cad, options.output));
+  for (const std::string& warning : c.warnings) fmt::print(err, "semimesh init: warning: {}\n", warning);
   return config_text(c.config, c.summary);
 }
 
@@ -92,7 +93,7 @@ std::string init_text(const InitOptions& options) {
 int run_init_command(const InitOptions& options, std::ostream& out, std::ostream& err) {
   std::string text;
   try {
-    text = init_text(options);
+    text = init_text(options, err);
   } catch (const Error& e) {
     fmt::print(err, "semimesh init: {}\n", e.what());
     return exit_code(e.cause());

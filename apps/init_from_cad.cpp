@@ -1,5 +1,7 @@
 #include "init_from_cad.hpp"
 
+#include "unit_doubt.hpp"
+
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 #include "semimesh/surface/root_plane.hpp"
@@ -32,6 +34,19 @@ double round_to_4_digits(double x) { return std::stod(fmt::format("{:.4g}", x));
 
 // The far field around a body-only file: the paper's box is about ten chords on every side.
 constexpr double kBoxChords = 10.0;
+
+// The body's largest edge where no curve names its leading or trailing edge: the paper's sizes
+// (chord-scaled) resolve the chord through le_size and te_size on those curves; without them only
+// the curvature refines, and the flat mid-chord would get two edges.
+constexpr double kUnnamedMaxSizeChords = 0.125;
+
+// Whether the model names the curves le_size and te_size act on (a generated wing's do).
+bool names_its_edges(const cad::Model& model) {
+  for (int c = 0; c < model.num_curves(); ++c)
+    for (const char* name : {"leading_edge", "trailing_edge", "te_upper", "te_lower"})
+      if (model.curve(c).name() == name) return true;
+  return false;
+}
 
 // A point or direction as written in the config: 12 significant digits, round-off zeros as 0.
 std::array<double, 3> rounded(const cad::Vec3& x) {
@@ -115,11 +130,26 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   }
   const surface::CadRoles roles = surface::detect_cad_roles(*model);
   c.geometry.units = model->units();
+  const std::optional<UnitDoubt> doubt = doubt_unit(roles.chord, model->units());
+  if (doubt) {
+    c.geometry.units = doubt->likelier;
+    out.warnings.push_back(fmt::format("the file's unit '{}' ({}) looks wrong: {}; geometry.units = \"{}\" written "
+                                       "(a label: the numbers are kept), check it",
+                                       model->units(), model->units_origin(), doubt->why, doubt->likelier));
+  }
   c.geometry.body = surface_entries(*model, roles.body);
   c.geometry.wall = surface_entry(*model, roles.wall);
   c.geometry.farfield = surface_entries(*model, roles.farfield);
   if (roles.te_base) c.wake.te_base = surface_entry(*model, *roles.te_base);
   scale_lengths(c, roles.chord);
+  // The wake leaves streamwise (x) in the wall's plane: a wall found from a root sewn across gaps
+  // leans by the gap's width, and x would point into it.
+  const cad::Vec3 x = cad::Vec3::UnitX(), n = roles.span_direction;
+  c.wake.direction = rounded((x - x.dot(n) * n).normalized());
+  if (!names_its_edges(*model)) {
+    c.sizing.size.max_size = round_to_4_digits(kUnnamedMaxSizeChords * roles.chord);
+    c.sizing.size.le_size = c.sizing.size.te_size = 0.0;
+  }
   // The paper's near field where the body allows it; its wall layer and wake keys are the defaults
   // scaled by the chord (as every length here).
   const bool h_type = allows_h_type(*model, roles);
@@ -140,9 +170,16 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
                                  c.sizing.size.min_size, c.nearfield.shell.thickness);
     }
   }
+  if (!names_its_edges(*model))
+    out.summary += fmt::format("sizing.max_size = {:.4g} (chord / 8), le_size = te_size = 0: no curve of the file is named "
+                               "leading_edge or trailing_edge, so only the body's curvature and this size resolve the "
+                               "chord.\n",
+                               c.sizing.size.max_size);
   out.summary += h_type ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"
                         : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n";
+  if (doubt) out.summary += fmt::format("geometry.units = \"{}\", not the file's '{}': {}.\n", doubt->likelier, model->units(), doubt->why);
   out.summary += domain;
+  for (const std::string& repair : model->repairs()) out.summary += "The file as loaded: " + repair + ".\n";
   out.summary += surface::describe_cad_roles(*model, roles);
   return out;
 }

@@ -18,6 +18,7 @@ const std::vector<std::string>& length_keys();
 struct CadConfig {
   pipeline::Config config;
   std::string summary;  ///< the roles and the chord, as comment lines for the file's header
+  std::vector<std::string> warnings;  ///< what the user should check (a doubtful unit), one sentence each
 };
 
 /// Loads `cad_path` (backend from its extension), finds the roles and the chord. `source_text` is

@@ -27,8 +27,8 @@ params::Table<Config> geometry_keys() {
                      "\"auto\": the declared one (chord for a generated wing). Sizes in this config are in it"),
       params::real("scale", &GeometryConfig::scale, "> 0", "factor applied to a CAD file's coordinates at load"),
       params::real("sew_tolerance", &GeometryConfig::sew_tolerance, "> 0",
-                   "CAD file: faces whose edges lie closer than this (model units) are sewn together; unset: 1e-6 "
-                   "of the model's diagonal"),
+                   "CAD file: faces whose edges lie closer than this (model units) are sewn together; unset: from "
+                   "1e-6 of the model's diagonal, raised tenfold up to 1e-4 while that closes more gaps"),
       params::strings("body", &GeometryConfig::body, "non-empty",
                       "surfaces wrapped by the near-field shell: names, ids (\"#7\") or \"auto\" (found from the model)"),
       params::string("wall", &GeometryConfig::wall, "non-empty",

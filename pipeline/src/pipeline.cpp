@@ -530,26 +530,6 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
   return reference_length(config.geometry, body);
 }
 
-// The far field's triangles as the mesh holds them, facing into the domain as the surface stage's
-// meshes do. A curved far-field surface (a sphere) stays straight-sided in the mesh, triangulated by
-// the far-field stage at its own sizes: the volume it bounds is these triangles', not the surface
-// stage's triangulation's (equal to round-off on planar faces only).
-surface::SurfaceMesh far_field_as_meshed(const mesh::Mesh& mesh) {
-  surface::SurfaceMesh out;
-  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
-    const mesh::BoundaryFace& f = mesh.boundary_faces()[b];
-    if (mesh.group_names()[f.group] != "farfield") continue;
-    const int first = out.num_nodes();
-    for (int v : {0, 2, 1}) out.points.push_back(mesh.node(f.vertices[v]));
-    out.triangles.push_back({first, first + 1, first + 2});
-    if (f.shape == ho::Shape::Quadrilateral) {
-      out.points.push_back(mesh.node(f.vertices[3]));
-      out.triangles.push_back({first, first + 3, first + 1});  // vertices 0, 3, 2 reversed
-    }
-  }
-  return out;
-}
-
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
@@ -562,8 +542,10 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
     const bool curved_far_field = std::any_of(g.roles.farfield.begin(), g.roles.farfield.end(),
                                               [&](int s) { return !g.model->surface(s).is_planar(); });
-    const surface::SurfaceMesh meshed_far_field = curved_far_field ? far_field_as_meshed(result.mesh) : surface::SurfaceMesh{};
-    if (curved_far_field) box = {&meshed_far_field};
+    // A curved far field (a sphere) is triangulated by the far-field stage at its own sizes, and
+    // where nodes lie on its CAD curved at order > 1: the box it bounds is the mesh's own far-field
+    // faces', not the surface stage's triangulation's (equal to round-off on planar faces only).
+    if (curved_far_field) box.clear();
     result.volume = checks::check_volume(result.mesh, body, box, surfaces.surfaces[g.roles.wall]);
     // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
     // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.

@@ -2,12 +2,15 @@
 
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
+                   [--init-says TEXT ...] [--init-refuses-with TEXT]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
 fails unless the run exits 0 with 0 invalid elements (and elements in each of the given regions, by
 report.json); with --gmsh, Gmsh's own certified Jacobian bounds of every element of the written
-.msh must be positive too (tests/pipeline/gmsh_validity.py).
+.msh must be positive too (tests/pipeline/gmsh_validity.py). --init-says: init's output (the
+config's header comments and its warnings) must hold TEXT. --init-refuses-with: init must exit 1
+with TEXT on stderr and write no config (nothing is run).
 """
 import argparse
 import json
@@ -28,6 +31,8 @@ def main():
     parser.add_argument("--variant", help="the variant write_wing_variant writes")
     parser.add_argument("--naca", action="append", default=[], help="naca.KEY=VALUE for write_wing_variant")
     parser.add_argument("--gmsh", action="store_true", help="certify the .msh with Gmsh too")
+    parser.add_argument("--init-says", action="append", default=[], help="text init must write or warn")
+    parser.add_argument("--init-refuses-with", help="init must exit 1 with this text on stderr")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -38,9 +43,25 @@ def main():
             return 1
     config = os.path.join(args.workdir, "wing.toml")
     done = subprocess.run([args.exe, "init", "--cad", args.cad, "-o", config], capture_output=True, text=True)
+    if args.init_refuses_with is not None:
+        print(done.stderr)
+        if done.returncode != 1 or args.init_refuses_with not in done.stderr:
+            print("FAIL: expected init to exit 1 saying '%s'; it exited %d" % (args.init_refuses_with, done.returncode))
+            return 1
+        if os.path.exists(config):
+            print("FAIL: init refused but wrote %s" % config)
+            return 1
+        print("ok")
+        return 0
     if done.returncode != 0:
         print("FAIL: init exited with %d\n%s" % (done.returncode, done.stderr))
         return 1
+    with open(config) as f:
+        said = f.read() + done.stderr
+    for text in args.init_says:
+        if text not in said:
+            print("FAIL: init's config and warnings do not say '%s':\n%s" % (text, said[:3000]))
+            return 1
     overrides = [a for kv in args.set for a in ("--set", kv)]
     done = subprocess.run([args.exe, "run", config, "-o", os.path.join(args.workdir, "out")] + overrides,
                           capture_output=True, text=True)

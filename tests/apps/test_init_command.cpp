@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <sstream>
 #include "temp_path.hpp"
@@ -98,11 +99,18 @@ TEST(InitCommand, ACadFileGetsItsRolesAndLengthsScaledByItsChord) {
   EXPECT_EQ(roles.farfield, found.farfield);
   EXPECT_EQ(roles.te_base, found.te_base);
 
+  // min_size: what the shell needs at the tip; the curves are unnamed (edge_<id>), so le_size and
+  // te_size act on nothing and max_size is a chord / 8.
+  const std::array<std::string, 4> kNotScaled = {"sizing.min_size", "sizing.max_size", "sizing.le_size", "sizing.te_size"};
+  EXPECT_NEAR(c.sizing.size.max_size, found.chord / 8, 1e-3 * found.chord);
+  EXPECT_EQ(c.sizing.size.le_size, 0.0);
+  EXPECT_EQ(c.sizing.size.te_size, 0.0);
   const pipeline::Config defaults;
   for (const pipeline::ConfigSection& section : pipeline::config_sections())
     for (const params::Key<pipeline::Config>& key : section.keys)
-      if (std::count(length_keys().begin(), length_keys().end(), section.name + "." + key.name) &&
-          section.name + "." + key.name != "sizing.min_size") {
+      if (const std::string name = section.name + "." + key.name;
+          std::count(length_keys().begin(), length_keys().end(), name) &&
+          !std::count(kNotScaled.begin(), kNotScaled.end(), name)) {
         const double scaled = std::get<double>(key.get(defaults)) * found.chord;
         EXPECT_NEAR(std::get<double>(key.get(c)), scaled, 1e-3 * scaled) << section.name << "." << key.name;
       }
@@ -145,6 +153,12 @@ TEST(InitCommand, BodyOnlyFileGetsItsWallPlaneFromTheRootCap) {
   EXPECT_NEAR((*c.geometry.wall_plane.normal)[1], 1.0, 1e-9);
   EXPECT_EQ(c.geometry.farfield_shape.box_chords, 10.0);
   EXPECT_EQ(c.geometry.wall, "wall");
+  // No curve named leading_edge / trailing_edge: the chord resolved by max_size = chord / 8.
+  EXPECT_NEAR(c.sizing.size.max_size, 810.49 / 8, 0.1);
+  EXPECT_EQ(c.sizing.size.le_size, 0.0);
+  EXPECT_EQ(c.sizing.size.te_size, 0.0);
+  EXPECT_DOUBLE_EQ(c.wake.direction[0], 1.0);  // x, in the wall plane y = 0
+  EXPECT_DOUBLE_EQ(c.wake.direction[1], 0.0);
 }
 
 }  // namespace

@@ -1,19 +1,41 @@
 // Writes the occ backend's B-spline NACA wing as a third-party CAD file of one of the kinds users
 // bring (issue "your own wing CAD as it comes"), for end-to-end tests of `init --cad` and `run`:
 //
-//   write_wing_variant VARIANT OUT.step [naca.key=value ...]
+//   write_wing_variant VARIANT OUT.step|OUT.igs [naca.key=value ...]
 //
 //   asis    the shape as the backend builds it (with naca.farfield=false: the body alone, its root
 //           section left open: free curves in the wall plane, as wing CAD is often exported);
 //   nurbs   every face converted to a B-spline (BRepBuilderAPI_NurbsConvert), as many CAD tools
 //           export: the wall and the box faces are planar B-splines, not planes;
 //   capped  every open planar loop closed by a planar face and sewn on (with naca.farfield=false: a
-//           closed body whose root is a planar cap, like the ONERA M6 file).
+//           closed body whose root is a planar cap, like the ONERA M6 file);
+//   open_tip   the skin without its tip face (with naca.farfield=false: root and tip both open);
+//   unsewn     every face moved by its own ~1e-5 chord and written as separate IGES trimmed faces
+//              (OUT.igs) with an INCH unit flag on numbers that are the chord's (metres);
+//   hemisphere the body standing on a planar B-spline wall disk (the root section its hole) inside a
+//              hemisphere of 8 chords, the far field in the file (needs naca.farfield=false);
+//   two_bodies two body-only wings side by side (bad input: needs naca.farfield=false);
+//   no_body    a box and nothing in it (bad input).
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <GC_MakeCircle.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <ShapeFix_Face.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Trsf.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -24,6 +46,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -39,11 +62,106 @@ TopoDS_Shape capped(const TopoDS_Shape& shape) {
   return sewing.SewedShape();
 }
 
-TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing) {
+// The shape's faces in the generator's order (upper, lower, [te_base], tip, [wall, box...]).
+std::vector<TopoDS_Face> faces_of(const TopoDS_Shape& shape) {
+  std::vector<TopoDS_Face> faces;
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) faces.push_back(TopoDS::Face(f.Current()));
+  return faces;
+}
+
+TopoDS_Compound compound_of(const std::vector<TopoDS_Shape>& shapes) {
+  TopoDS_Compound out;
+  BRep_Builder builder;
+  builder.MakeCompound(out);
+  for (const TopoDS_Shape& s : shapes) builder.Add(out, s);
+  return out;
+}
+
+TopoDS_Shape moved(const TopoDS_Shape& shape, const gp_Vec& by) {
+  gp_Trsf move;
+  move.SetTranslation(by);
+  return BRepBuilderAPI_Transform(shape, move, /*copy=*/true).Shape();
+}
+
+TopoDS_Shape without_tip(const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
+  const std::vector<TopoDS_Face> faces = faces_of(wing);
+  const std::size_t tip = params.sharp_te ? 2 : 3;
+  std::vector<TopoDS_Shape> kept;
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    if (i != tip) kept.push_back(faces[i]);
+  BRepBuilderAPI_Sewing sewing(1e-7);
+  for (const TopoDS_Shape& f : kept) sewing.Add(f);
+  sewing.Perform();
+  return sewing.SewedShape();
+}
+
+// Each face moved by its own vector of length 1e-5 chord: edges that no longer meet, as faces
+// exported one by one from a CAD tool do.
+TopoDS_Shape unsewn(const TopoDS_Shape& wing, double chord) {
+  std::vector<TopoDS_Shape> faces;
+  int i = 0;
+  for (const TopoDS_Face& f : faces_of(wing)) {
+    const double a = 1.3 * ++i;
+    faces.push_back(moved(f, gp_Vec(std::cos(a), std::sin(a), 0.5 * std::cos(2 * a)).Normalized() * (1e-5 * chord)));
+  }
+  return compound_of(faces);
+}
+
+// The root section: the body's free loop in the plane z = 0.
+TopoDS_Wire root_loop(const TopoDS_Shape& body) {
+  ShapeAnalysis_FreeBounds bounds(body, 1e-7, /*splitclosed=*/false, /*splitopen=*/true);
+  for (TopExp_Explorer w(bounds.GetClosedWires(), TopAbs_WIRE); w.More(); w.Next()) {
+    bool at_root = true;
+    for (TopExp_Explorer v(w.Current(), TopAbs_VERTEX); v.More(); v.Next())
+      at_root = at_root && std::abs(BRep_Tool::Pnt(TopoDS::Vertex(v.Current())).Z()) < 1e-9;
+    if (at_root) return TopoDS::Wire(w.Current());
+  }
+  throw std::invalid_argument("hemisphere: the body has no open root loop (use naca.farfield=false)");
+}
+
+TopoDS_Shape in_hemisphere(const TopoDS_Shape& body, double chord) {
+  const double radius = 8.0 * chord;
+  const gp_Ax2 axis(gp_Pnt(0.5 * chord, 0, 0), gp::DZ());
+  const TopoDS_Edge rim = BRepBuilderAPI_MakeEdge(GC_MakeCircle(gp_Circ(axis, radius)).Value()).Edge();
+  BRepBuilderAPI_MakeFace disk(new Geom_Plane(gp_Ax3(axis)), BRepBuilderAPI_MakeWire(rim).Wire(), Standard_True);
+  disk.Add(TopoDS::Wire(root_loop(body).Reversed()));
+  ShapeFix_Face fix(disk.Face());
+  fix.Perform();
+  const TopoDS_Shape wall = BRepBuilderAPI_NurbsConvert(fix.Face(), /*Copy=*/true).Shape();
+  const TopoDS_Face dome = BRepBuilderAPI_MakeFace(new Geom_SphericalSurface(gp_Ax3(axis), radius), 0.0, 2 * M_PI,
+                                                   0.0, M_PI / 2, 1e-9).Face();
+  BRepBuilderAPI_Sewing sewing(1e-7 * chord);
+  sewing.Add(body);
+  sewing.Add(wall);
+  sewing.Add(dome);
+  sewing.Perform();
+  return sewing.SewedShape();
+}
+
+TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
   if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
   if (name == "capped") return capped(wing);
-  throw std::invalid_argument("unknown variant '" + name + "' (known: asis, nurbs, capped)");
+  if (name == "open_tip") return without_tip(wing, params);
+  if (name == "unsewn") return unsewn(wing, params.chord);
+  if (name == "hemisphere") return in_hemisphere(wing, params.chord);
+  if (name == "two_bodies") return compound_of({wing, moved(wing, gp_Vec(0, 3 * params.chord, 0))});
+  if (name == "no_body") return BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), gp_Pnt(2, 1, 1)).Shape();
+  throw std::invalid_argument("unknown variant '" + name +
+                              "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body)");
+}
+
+// IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit
+// flag INCH, the numbers being the shape's own (OCC writes in its session unit, millimetres:
+// scaled by 25.4 first, the file's numbers are the chord's).
+void write_iges_inch_flag(const TopoDS_Shape& shape, const char* path) {
+  IGESControl_Controller::Init();
+  gp_Trsf scale;
+  scale.SetScale(gp::Origin(), 25.4);
+  IGESControl_Writer writer("IN", 0);
+  if (!writer.AddShape(BRepBuilderAPI_Transform(shape, scale, /*copy=*/true).Shape()) ||
+      (writer.ComputeModel(), !writer.Write(path)))
+    throw std::runtime_error(std::string("cannot write '") + path + "'");
 }
 
 }  // namespace
@@ -61,7 +179,12 @@ int main(int argc, char** argv) {
       if (eq == std::string::npos || kv.rfind("naca.", 0) != 0) throw std::invalid_argument("expected naca.key=value, got '" + kv + "'");
       params.set(kv.substr(0, eq), kv.substr(eq + 1));
     }
-    const TopoDS_Shape shape = variant(argv[1], semimesh::occ::make_naca_wing_shape(semimesh::mock_cad::naca_params_from(params)));
+    const semimesh::mock_cad::NacaWingParams wing = semimesh::mock_cad::naca_params_from(params);
+    const TopoDS_Shape shape = variant(argv[1], semimesh::occ::make_naca_wing_shape(wing), wing);
+    if (std::string(argv[1]) == "unsewn") {
+      write_iges_inch_flag(shape, argv[2]);
+      return 0;
+    }
     STEPControl_Writer writer;
     if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(argv[2]) != IFSelect_RetDone)
       throw std::runtime_error(std::string("cannot write '") + argv[2] + "'");

@@ -5,6 +5,7 @@
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_FindPlane.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
@@ -12,6 +13,7 @@
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepLib.hxx>
+#include <Geom_Plane.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
@@ -49,7 +51,7 @@ std::string length_text(double x) {
 // The free loops of a shell (edges that bound one of its faces only), each closed by a planar face
 // through it, sewn on: an open root (the root section as free curves in the wall plane) or an open
 // flat tip becomes a closed body. A free loop that is not closed or not planar is refused by place.
-TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double tolerance) {
+TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double tolerance, std::vector<std::string>& repairs) {
   ShapeAnalysis_FreeBounds bounds(shell, tolerance, /*splitclosed=*/false, /*splitopen=*/true);
   const TopoDS_Compound& closed = bounds.GetClosedWires();
   const TopoDS_Compound& open = bounds.GetOpenWires();
@@ -65,7 +67,11 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
   BRepBuilderAPI_Sewing sewing(tolerance);
   sewing.Add(shell);
   for (TopExp_Explorer w(closed, TopAbs_WIRE); w.More(); w.Next()) {
-    BRepBuilderAPI_MakeFace cap(TopoDS::Wire(w.Current()), /*OnlyPlane=*/true);
+    const TopoDS_Wire& wire = TopoDS::Wire(w.Current());
+    // Exactly planar, or planar within the tolerance the faces were sewn at (an export with gaps).
+    BRepBuilderAPI_MakeFace cap(wire, /*OnlyPlane=*/true);
+    if (!cap.IsDone())
+      if (BRepBuilderAPI_FindPlane plane(wire, tolerance); plane.Found()) cap = BRepBuilderAPI_MakeFace(plane.Plane()->Pln(), wire);
     if (!cap.IsDone()) {
       Bnd_Box b;
       BRepBndLib::Add(w.Current(), b);
@@ -75,6 +81,13 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
              "opening (an open root or flat tip) is closed here: close it in a CAD tool");
     }
     sewing.Add(cap.Face());
+    Bnd_Box b;
+    BRepBndLib::Add(wire, b);
+    const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
+    int edges = 0;
+    for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edges;
+    repairs.push_back("closed an open flat loop of " + std::to_string(edges) + " free edge(s) around (" +
+                      length_text(c.X()) + ", " + length_text(c.Y()) + ", " + length_text(c.Z()) + ") with a planar face");
   }
   sewing.Perform();
   return sewing.SewedShape();
@@ -82,14 +95,14 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
 
 // The body as solids with their normals pointing out of them: its solids, else its shells (open
 // ones closed across their planar openings) made solid.
-TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance) {
+TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance, std::vector<std::string>& repairs) {
   TopoDS_Compound solids;
   BRep_Builder builder;
   builder.MakeCompound(solids);
   int count = 0;
   for (TopExp_Explorer s(body, TopAbs_SOLID); s.More(); s.Next(), ++count) builder.Add(solids, s.Current());
   for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next()) {
-    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance);
+    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance, repairs);
     for (TopExp_Explorer sh(closed, TopAbs_SHELL); sh.More(); sh.Next(), ++count) {
       BRepBuilderAPI_MakeSolid make(TopoDS::Shell(sh.Current()));
       if (!make.IsDone()) refuse("geometry.wall_plane: the body's shell cannot be made a solid (is it closed?)");
@@ -202,8 +215,11 @@ TopoDS_Shape fluid_half_space(const WallPlane& wall, const TopoDS_Shape& far_fie
   return BRepPrimAPI_MakeBox(gp_Ax2(corner, wall.normal, frame.XDirection()), 2 * size, 2 * size, size).Solid();
 }
 
+// `fuzzy`: the distance below which the operation takes entities as coincident (OCCT's fuzzy
+// Booleans): a root sewn across gaps lies in the wall plane only that closely.
 template <class Operation>
-TopoDS_Shape run(Operation& op, const TopoDS_Shape& object, const TopoDS_Shape& tool, const std::string& what) {
+TopoDS_Shape run(Operation& op, const TopoDS_Shape& object, const TopoDS_Shape& tool, double fuzzy, const std::string& what) {
+  op.SetFuzzyValue(fuzzy);
   TopTools_ListOfShape objects, tools;
   objects.Append(object);
   tools.Append(tool);
@@ -252,16 +268,18 @@ FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const T
 }  // namespace
 
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
-                          FaceNames& names) {
-  const TopoDS_Shape solids = body_solids(body, tolerance);
+                          FaceNames& names, std::vector<std::string>& repairs) {
+  const TopoDS_Shape solids = body_solids(body, tolerance, repairs);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
   const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);
 
   BRepAlgoAPI_Common common;
-  const TopoDS_Shape clipped = run(common, outer, fluid_half_space(wall, outer), "far field on the wall's fluid side");
+  // The model's tolerance is a tenth of `tolerance` (load_occ.cpp: the sewing tolerance).
+  const double fuzzy = 0.1 * tolerance;
+  const TopoDS_Shape clipped = run(common, outer, fluid_half_space(wall, outer), fuzzy, "far field on the wall's fluid side");
   BRepAlgoAPI_Cut cut;
-  const TopoDS_Shape domain = run(cut, clipped, solids, "far field minus body");
+  const TopoDS_Shape domain = run(cut, clipped, solids, fuzzy, "far field minus body");
   TopExp_Explorer solid(domain, TopAbs_SOLID);
   if (!solid.More()) refuse(wall.label + ": the Boolean operations left no fluid domain");
   const TopoDS_Shape fluid = solid.Current();

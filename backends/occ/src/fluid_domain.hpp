@@ -13,6 +13,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace semimesh::occ {
 
@@ -37,8 +38,9 @@ struct FarFieldShape {
 /// their names; the new faces are named "wall" and "farfield_<k>". `tolerance` is the distance
 /// under which a point counts as on the plane. Throws cad::CadError(BadParameter) naming the
 /// plane or the far field when the body does not stand on the plane (no face of it lies in the
-/// plane), the plane cuts through the body, or the far field does not contain the body.
+/// plane), the plane cuts through the body, or the far field does not contain the body. An open
+/// body's flat free loops (its root, a flat tip) are closed by planar faces, each said in `repairs`.
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
-                          FaceNames& names);
+                          FaceNames& names, std::vector<std::string>& repairs);
 
 }  // namespace semimesh::occ

@@ -26,6 +26,12 @@ using cad::CadError;
 
 const char* const kBackend = "occ";
 
+// The sewing tolerance's range, as fractions of the model's bounding-box diagonal: the first is
+// round-off of a sewn export; the last stays far below any feature a wing mesh resolves (a blunt
+// trailing edge is ~1e-3 of the model).
+constexpr double kFirstSewFraction = 1e-6;
+constexpr double kLastSewFraction = 1e-4;
+
 FluidSide fluid_side_from(const cad::Params& params) {
   const std::string value = params.get_string("occ.fluid_inside", "auto");
   if (value == "auto") return FluidSide::Auto;
@@ -141,15 +147,29 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   ReadShape read = read_shape(source.path);
   TopoDS_Shape shape = scale_shape(read.shape, read.to_file_unit * scale, read.face_names);
 
-  const double tolerance = params.get_double("occ.sew_tolerance", 1e-6 * diagonal_of(shape));
+  // Sewing: from a millionth of the model's size, up to a ten-thousandth while that closes more
+  // gaps (sew_shape); a tolerance the user sets is used as it is.
+  const double diagonal = diagonal_of(shape);
+  double tolerance = params.get_double("occ.sew_tolerance", kFirstSewFraction * diagonal);
   if (!(tolerance > 0.0))
     throw CadError(CadError::Kind::BadParameter,
                    "parameter 'occ.sew_tolerance' = " + number_label(tolerance) + ": expected a positive length");
-  if (params.get_bool("occ.sew", true)) shape = sew_shape(shape, tolerance, read.face_names);
+  std::vector<std::string> repairs;
+  if (params.get_bool("occ.sew", true)) {
+    const double most = params.has("occ.sew_tolerance") ? tolerance : kLastSewFraction * diagonal;
+    Sewn sewn = sew_shape(shape, tolerance, most, read.face_names);
+    shape = std::move(sewn.shape);
+    tolerance = sewn.tolerance;
+    if (sewn.joined > 0)
+      repairs.push_back("sewn " + std::to_string(sewn.joined) + " pair(s) of edges within " + number_label(tolerance) +
+                        " (" + number_label(tolerance / diagonal) + " of the model's size), " +
+                        std::to_string(sewn.free) + " edge(s) left free" +
+                        (params.has("occ.sew_tolerance") ? " (geometry.sew_tolerance)" : ""));
+  }
   if (params.get_bool("occ.heal", true)) shape = heal_shape(shape, tolerance, read.face_names);
   if (domain) {
     try {
-      shape = fluid_domain(shape, domain->first, domain->second, 10.0 * tolerance, read.face_names);
+      shape = fluid_domain(shape, domain->first, domain->second, 10.0 * tolerance, read.face_names, repairs);
     } catch (const CadError& error) {
       throw CadError(error.kind(), "'" + source.path + "': " + error.what());
     }
@@ -162,6 +182,7 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   options.units_origin = unit_origin(params, read);
   options.fluid_side = domain ? FluidSide::Inside : fluid_side;
   options.face_names = std::move(read.face_names);
+  options.repairs = std::move(repairs);
   try {
     return model_from_shape(shape, kBackend, options);
   } catch (const CadError& error) {

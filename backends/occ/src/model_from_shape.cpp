@@ -161,6 +161,7 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
 
   model->set_units(options.units, options.scale_applied);
   model->set_units_origin(options.units_origin);
+  for (const std::string& repair : options.repairs) model->add_repair(repair);
   model->set_tolerance(ShapeAnalysis_ShapeTolerance().Tolerance(shape, 1));  // 1: the largest
   model->set_thread_safe(thread_safe);
   model->finalize();

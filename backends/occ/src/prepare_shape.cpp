@@ -70,15 +70,34 @@ bool has_free_edges(const TopoDS_Shape& shape) {
   return false;
 }
 
-TopoDS_Shape sew_shape(const TopoDS_Shape& shape, double tolerance, FaceNames& names) {
-  if (!has_free_edges(shape)) return shape;
+namespace {
+
+Sewn sew_at(const TopoDS_Shape& shape, double tolerance, FaceNames names_in, FaceNames& names_out) {
   BRepBuilderAPI_Sewing sewing(tolerance);
   sewing.Add(shape);
   sewing.Perform();
-  carry_names(names, [&](const TopoDS_Shape& face) {
+  carry_names(names_in, [&](const TopoDS_Shape& face) {
     return sewing.IsModifiedSubShape(face) ? sewing.ModifiedSubShape(face) : face;
   });
-  return sewing.SewedShape();
+  names_out = std::move(names_in);
+  return {sewing.SewedShape(), tolerance, sewing.NbContigousEdges(), sewing.NbFreeEdges()};
+}
+
+}  // namespace
+
+Sewn sew_shape(const TopoDS_Shape& shape, double tolerance, double max_tolerance, FaceNames& names) {
+  if (!has_free_edges(shape)) return {shape, tolerance, 0, 0};
+  FaceNames best_names;
+  Sewn best = sew_at(shape, tolerance, names, best_names);
+  for (double t = 10.0 * tolerance; best.free > 0 && t <= max_tolerance * (1.0 + 1e-12); t *= 10.0) {
+    FaceNames trial_names;
+    Sewn trial = sew_at(shape, t, names, trial_names);
+    if (trial.free >= best.free) break;
+    best = std::move(trial);
+    best_names = std::move(trial_names);
+  }
+  names = std::move(best_names);
+  return best;
 }
 
 TopoDS_Shape heal_shape(const TopoDS_Shape& shape, double precision, FaceNames& names) {

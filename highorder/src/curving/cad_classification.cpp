@@ -76,13 +76,14 @@ CadPlace classify(const cad::Model& model, const std::vector<mesh::CadAttachment
 }
 
 double curve_parameter(const cad::Model& model, int curve, const mesh::CadAttachment& a, const cad::Vec3& x,
-                       bool prefer_end) {
+                       std::optional<double> other_end) {
   const cad::Curve& c = model.curve(curve);
   if (a.kind == mesh::CadAttachment::Curve && a.entity == curve) return a.u;
   if (a.kind == mesh::CadAttachment::Vertex) {
     const auto ends = model.curve_vertices(curve);
     const cad::Interval b = c.bounds();
-    if (ends[0] == a.entity && ends[1] == a.entity) return prefer_end ? b.hi : b.lo;
+    if (ends[0] == a.entity && ends[1] == a.entity)
+      return other_end && *other_end - b.lo > b.hi - *other_end ? b.hi : b.lo;
     if (ends[0] == a.entity) return b.lo;
     if (ends[1] == a.entity) return b.hi;
   }

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace semimesh::ho::detail {
@@ -26,10 +27,11 @@ CadPlace classify(const cad::Model& model, const std::vector<mesh::CadAttachment
                   const cad::Vec3& probe);
 
 /// Parameter on `curve` of a node at x with attachment `a`: its own parameter when attached to the
-/// curve, the curve's end for a CAD vertex (`prefer_end`: which end of a closed curve), else the
-/// projection.
+/// curve, the curve's end for a CAD vertex (of a closed curve, whose vertex is both ends: the end
+/// nearer `other_end`, the parameter of the edge's other node, so the edge does not run round the
+/// whole curve; the start when not given), else the projection.
 double curve_parameter(const cad::Model& model, int curve, const mesh::CadAttachment& a, const cad::Vec3& x,
-                       bool prefer_end);
+                       std::optional<double> other_end);
 
 /// (u, v) on `surface` of a node at x with attachment `a`: its own when attached to the surface,
 /// else the projection of x (seeded by `guess` when given).

@@ -108,8 +108,10 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     // The node set's fractions of the parameter interval, or of the arc length (the spring chain's
     // optimum on a curve).
     const cad::Curve& c = model_.curve(place.id);
-    const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, false);
-    const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, true);
+    // b's parameter first on its own, then each end next to the other (a closed curve's vertex).
+    const double tb0 = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, std::nullopt);
+    const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, tb0);
+    const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, ta);
     const double length = springs ? c.arc_length(ta, tb) : 0.0;
     for (int i = 0; i < P - 1; ++i) {
       const double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -140,6 +141,37 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Sha
   return volume;
 }
 
+// The integral of field(x, dA) over the boundary faces `keep` accepts, each at the mesh's order
+// (dA: the area element, outward through the face's element); faces without an element are
+// counted in `orphans` and skipped.
+template <class Keep, class Field>
+double boundary_flux(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field field, std::size_t* orphans) {
+  // Owner of each face entity: element * 8 + local face (the last one seen; a boundary face has one).
+  std::vector<long> owner(mesh.faces().size(), -1);
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    const mesh::Element& element = mesh.elements()[e];
+    for (std::size_t f = 0; f < ho::faces(element.shape).size(); ++f) owner[element.faces[f]] = static_cast<long>(e * 8 + f);
+  }
+  double flux = 0.0;
+  for (const mesh::BoundaryFace& face : mesh.boundary_faces()) {
+    if (!keep(face)) continue;
+    if (owner[face.face] < 0) {
+      if (orphans) ++*orphans;
+      continue;
+    }
+    const std::size_t e = static_cast<std::size_t>(owner[face.face] / 8);
+    const int local = static_cast<int>(owner[face.face] % 8);
+    const FaceRule& rule = rules.face(mesh.elements()[e].shape, local);
+    const Eigen::MatrixX3d x = mesh.element_coordinates(e);
+    for (int q = 0; q < rule.rule.weights.size(); ++q) {
+      const Eigen::Matrix3d j = jacobian_at(rule.rule, q, x);
+      const Eigen::Vector3d point = (rule.rule.values.row(q) * x).transpose();
+      flux += rule.rule.weights(q) * field(point, (j * rule.t1).cross(j * rule.t2));
+    }
+  }
+  return flux;
+}
+
 MeshVolume mesh_volume(const mesh::Mesh& mesh) {
   RuleCache rules(mesh.order(), mesh.node_set());
   MeshVolume result;
@@ -158,29 +190,10 @@ MeshVolume mesh_volume(const mesh::Mesh& mesh) {
   for (std::thread& t : pool) t.join();
   for (double v : partial) result.element_volume += v;  // in batch order: independent of the threads
 
-  // Owner of each face entity: element * 8 + local face (the last one seen; a boundary face has one).
-  std::vector<long> owner(mesh.faces().size(), -1);
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
-    const mesh::Element& element = mesh.elements()[e];
-    for (std::size_t f = 0; f < ho::faces(element.shape).size(); ++f) owner[element.faces[f]] = static_cast<long>(e * 8 + f);
-  }
-  double flux = 0.0;
-  for (const mesh::BoundaryFace& face : mesh.boundary_faces()) {
-    if (owner[face.face] < 0) {
-      ++result.boundary_faces_without_element;
-      continue;
-    }
-    const std::size_t e = static_cast<std::size_t>(owner[face.face] / 8);
-    const int local = static_cast<int>(owner[face.face] % 8);
-    const FaceRule& rule = rules.face(mesh.elements()[e].shape, local);
-    const Eigen::MatrixX3d x = mesh.element_coordinates(e);
-    for (int q = 0; q < rule.rule.weights.size(); ++q) {
-      const Eigen::Matrix3d j = jacobian_at(rule.rule, q, x);
-      const Eigen::Vector3d point = (rule.rule.values.row(q) * x).transpose();
-      flux += rule.rule.weights(q) * point.dot((j * rule.t1).cross(j * rule.t2));
-    }
-  }
-  result.boundary_volume = flux / 3.0;
+  result.boundary_volume = boundary_flux(mesh, rules, [](const mesh::BoundaryFace&) { return true; },
+                                         [](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return x.dot(area); },
+                                         &result.boundary_faces_without_element);
+  result.boundary_volume /= 3.0;
   return result;
 }
 
@@ -218,7 +231,19 @@ VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface
   result.mesh = mesh_volume(mesh);
   result.body_volume = volume_under_surfaces(body, point, normal);
   // The far-field faces' normals point into the box: their flux is minus the box volume.
-  result.box_volume = -volume_under_surfaces(farfield, point, normal);
+  if (!farfield.empty()) {
+    result.box_volume = -volume_under_surfaces(farfield, point, normal);
+    return result;
+  }
+  // The mesh's own far-field faces, at its order, outward through their elements (out of the box):
+  // the same field F = ((x - p) . n) n, whose flux through the wall plane is zero.
+  RuleCache rules(mesh.order(), mesh.node_set());
+  const Eigen::Vector3d n = normal.normalized();
+  const auto it = std::find(mesh.group_names().begin(), mesh.group_names().end(), "farfield");
+  const int group = static_cast<int>(it - mesh.group_names().begin());
+  result.box_volume = boundary_flux(
+      mesh, rules, [&](const mesh::BoundaryFace& f) { return f.group == group; },
+      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return n.dot(area) * n.dot(x - point); }, nullptr);
   return result;
 }
 

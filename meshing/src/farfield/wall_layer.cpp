@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
+
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -20,6 +23,12 @@ bool bounds_surface(const cad::Model& model, int curve, int surface) {
   const auto& uses = model.surfaces_of_curve(curve);
   return std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == surface; });
 }
+
+// The largest lean of a far-field face from the wall's normal where they meet: its nodes are lifted
+// along the normal and projected back onto it, which keeps the layer's side quads on the face
+// when it rises perpendicular; a face leaning more (a cone, a slanted box) would need its own
+// lift direction.
+constexpr double kMaxTilt = 1e-3;
 
 // Re-attaches a moved node to its CAD entity (projection from its old parameters).
 void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x,
@@ -49,6 +58,27 @@ CadAttachment top_entity(const cad::Model& model, const CadAttachment& bottom, i
   return {};
 }
 
+// How far a far-field face leans from the wall's normal where it meets the wall (radians, the
+// largest over samples of the curves it shares with the wall), or nothing when it does not meet
+// the wall. A box side (plane) or a hemisphere cut at its equator: 0.
+std::optional<double> tilt_at_the_wall(const cad::Model& model, int surface, int wall, const Eigen::Vector3d& normal) {
+  constexpr int kSamples = 8;
+  std::optional<double> tilt;
+  for (const cad::Loop& loop : model.loops(surface))
+    for (const cad::CurveUse& use : loop.uses) {
+      if (!bounds_surface(model, use.curve, wall) || model.curve(use.curve).is_degenerate()) continue;
+      const cad::Curve& curve = model.curve(use.curve);
+      const cad::Interval t = curve.bounds();
+      for (int k = 0; k <= kSamples; ++k) {
+        const cad::Vec3 x = curve.point(t.lo + t.length() * k / kSamples);
+        const auto p = model.surface(surface).project(x);
+        const double leaning = std::asin(std::min(1.0, std::abs(model.surface(surface).normal(p.uv).dot(normal))));
+        tilt = std::max(tilt.value_or(0.0), leaning);
+      }
+    }
+  return tilt;
+}
+
 }  // namespace
 
 WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
@@ -63,18 +93,12 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   auto height = [&](const Eigen::Vector3d& x) { return (x - origin).dot(normal); };
   const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
 
-  for (int s : box_surfaces) {
-    bool meets_wall = false;
-    for (const cad::Loop& loop : model.loops(s))
-      for (const cad::CurveUse& use : loop.uses) meets_wall |= bounds_surface(model, use.curve, wall_surface);
-    const cad::Surface& face = model.surface(s);
-    const auto fb = face.bounds();
-    const Eigen::Vector3d n = face.normal({0.5 * (fb[0].lo + fb[0].hi), 0.5 * (fb[1].lo + fb[1].hi)});
-    if (meets_wall && (!face.is_planar() || std::abs(n.dot(normal)) > 1e-9))
-      throw FarFieldError(
-          "far field: box " + cad::surface_label(model, s) +
-          " meets the wall but is not a plane perpendicular to it; the wall layer needs such box sides");
-  }
+  for (int s : box_surfaces)
+    if (const std::optional<double> tilt = tilt_at_the_wall(model, s, wall_surface, normal); tilt && *tilt > kMaxTilt)
+      throw FarFieldError(fmt::format("far field: {} meets the wall at {:.3g} degrees from the wall's normal; the "
+                                      "wall layer stands its sides on the far field's faces, which must rise "
+                                      "perpendicular to the wall (within {:.3g} degrees) where they meet it",
+                                      cad::surface_label(model, s), *tilt * 180 / M_PI, kMaxTilt * 180 / M_PI));
 
   // Lift the box: nodes on the wall get a top node, the others move up.
   std::set<NodeId> box_nodes;

@@ -23,7 +23,8 @@ struct WallLayer {
 /// near.footprint_top, the "farfield" quads where the layer meets the box, and lifts the box nodes:
 /// a node at height d above the wall (box height D) moves to delta + d (1 - delta / D) on its CAD
 /// entity; `box` triangles referring to nodes on the wall then refer to their tops. Throws
-/// FarFieldError naming the surface when a box face meeting the wall is not perpendicular to it,
+/// FarFieldError naming the surface when a far-field face (a box side, a hemisphere) does not rise
+/// perpendicular to the wall where it meets it,
 /// or the footprint has no halo (near.footprint_top).
 WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
                            double thickness, const std::vector<Triangle>& wall, const nearfield::NearField& near,

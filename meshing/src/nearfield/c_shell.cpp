@@ -403,18 +403,18 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
   double tip = 0.0, strip = 0.0;
   for (const Vec3& x : body.points) tip = std::max(tip, wall.height(x));
   for (const JunctionNode& j : nodes) strip = std::max(strip, wall.height(j.strip_top));
+  std::vector<char> on_root(body.num_nodes(), 0);
+  for (int r : loop) on_root[r] = 1;
+  // Off the wall by topology, not height: a root sewn across gaps has its corners a gap's width off.
   double ceiling = std::min(tip, lift_top(body, wall, loop));
   for (int v = 0; v < body.num_nodes(); ++v)
-    if (body.cad[v].kind == CadAttachment::Vertex && wall.height(body.points[v]) > 1e-9 * tip)
-      ceiling = std::min(ceiling, wall.height(body.points[v]));
+    if (body.cad[v].kind == CadAttachment::Vertex && !on_root[v]) ceiling = std::min(ceiling, wall.height(body.points[v]));
   if (!(strip < 0.5 * ceiling))
     throw NearFieldError("near field: the root strip (height " + number_label(strip) +
                          ") for the wall layer thickness " + number_label(delta_wall) +
                          " takes more than half of the body's height " + number_label(ceiling) +
                          " above the wall (up to its lowest corner off the wall); use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
-  std::vector<char> on_root(body.num_nodes(), 0);
-  for (int r : loop) on_root[r] = 1;
   for (int v = 0; v < body.num_nodes(); ++v)
     if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, ceiling, body.points[v], body.cad[v]);
   for (std::size_t i = 0; i < loop.size(); ++i)

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <set>
 
@@ -167,6 +168,19 @@ CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
     fail("the wall " + cad::surface_label(model, roles.wall) +
          " has no inner loop another face shares: no body stands on it (name the body with geometry.body)");
   roles.body = faces_behind(model, roles.wall, root);
+  // One body: the faces reached from one root curve are all of them (two wings on one wall, or a
+  // file holding two bodies, reach two sets).
+  if (const std::vector<int> first = faces_behind(model, roles.wall, {*root.begin()}); first.size() < roles.body.size()) {
+    std::vector<int> other;
+    std::set_difference(roles.body.begin(), roles.body.end(), first.begin(), first.end(), std::back_inserter(other));
+    fail(fmt::format("the wall {} holds more than one body: {}, and apart from it {}; semimesh meshes one body on one "
+                     "wall (remove the others from the file, or split it)",
+                     cad::surface_label(model, roles.wall), labels(model, first), labels(model, other)));
+  }
+  if (std::none_of(roles.body.begin(), roles.body.end(), [&](int s) { return !model.surface(s).is_planar(); }))
+    fail("the body " + labels(model, roles.body) +
+         " has no curved face: it is no streamlined body (a file holding a box and no wing?); semimesh meshes "
+         "around a wing, blade or fin");
   for (int s = 0; s < model.num_surfaces(); ++s)
     if (s != roles.wall && !std::binary_search(roles.body.begin(), roles.body.end(), s)) roles.farfield.push_back(s);
   if (roles.farfield.empty())

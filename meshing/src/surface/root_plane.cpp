@@ -1,5 +1,7 @@
 #include "semimesh/surface/root_plane.hpp"
 
+#include "semimesh/surface/cad_roles.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
@@ -14,6 +16,10 @@ constexpr int kSamplesPerCurve = 16;
 constexpr double kFlatness = 1e-6;  // of the model's size: how far a point may stray from the plane
 
 double model_size(const cad::Model& model) { return (model.bbox().hi - model.bbox().lo).norm(); }
+
+// How far a point of a flat loop may stray from its plane: round-off of the model's size, or the
+// model's own tolerance where faces were sewn across gaps wider than that.
+double flatness_tolerance(const cad::Model& model) { return std::max(kFlatness * model_size(model), model.tolerance()); }
 
 // Points spread along every curve, ends included.
 std::vector<cad::Vec3> curve_samples(const cad::Model& model, const std::vector<int>& curves) {
@@ -35,33 +41,99 @@ bool body_on_one_side(const cad::Model& model, const cad::Vec3& point, const cad
   return true;
 }
 
-// An open root: the free curves (bounding one surface, not a seam nor a point), all in one plane.
-std::optional<RootPlane> plane_of_free_loop(const cad::Model& model) {
+// The free curves (bounding one surface, not a seam nor a point), grouped into loops: the curves
+// that share vertices, transitively.
+std::vector<std::vector<int>> free_loops(const cad::Model& model) {
+  std::vector<int> parent(static_cast<std::size_t>(model.num_vertices()));
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = static_cast<int>(v);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
   std::vector<int> free;
   for (int c = 0; c < model.num_curves(); ++c) {
     const auto& uses = model.surfaces_of_curve(c);
-    if (uses.size() == 1 && !model.curve(c).is_degenerate() && !model.is_seam(uses[0].surface, c)) free.push_back(c);
+    if (uses.size() != 1 || model.curve(c).is_degenerate() || model.is_seam(uses[0].surface, c)) continue;
+    free.push_back(c);
+    const auto ends = model.curve_vertices(c);
+    parent[root(ends[0])] = root(ends[1]);
   }
-  if (free.size() < 2) return std::nullopt;
-  const std::vector<cad::Vec3> points = curve_samples(model, free);
+  std::vector<std::vector<int>> loops;
+  std::vector<int> loop_of_root(parent.size(), -1);
+  for (int c : free) {
+    int& loop = loop_of_root[root(model.curve_vertices(c)[0])];
+    if (loop < 0) loop = static_cast<int>(loops.size()), loops.emplace_back();
+    loops[loop].push_back(c);
+  }
+  return loops;
+}
+
+// The loop's plane, the normal towards the body; a CadRoleError naming the loop when it is not
+// flat or its plane cuts the body (the root of a body standing on a plane is neither).
+RootPlane plane_of_loop(const cad::Model& model, const std::vector<int>& loop) {
+  const std::vector<cad::Vec3> points = curve_samples(model, loop);
   cad::Vec3 centre = cad::Vec3::Zero();
   for (const cad::Vec3& p : points) centre += p / static_cast<double>(points.size());
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   for (const cad::Vec3& p : points) scatter += (p - centre) * (p - centre).transpose();
   cad::Vec3 normal = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
-  const double tolerance = kFlatness * model_size(model);
-  for (const cad::Vec3& p : points)
-    if (std::abs((p - centre).dot(normal)) > tolerance) return std::nullopt;
+  const double tolerance = flatness_tolerance(model);
+  double off = 0.0;
+  for (const cad::Vec3& p : points) off = std::max(off, std::abs((p - centre).dot(normal)));
+  const std::string where = fmt::format("the body is open along a loop of {} free curve(s) (curve {} ...) around ({:.6g}, "
+                                        "{:.6g}, {:.6g})",
+                                        loop.size(), loop.front(), centre.x(), centre.y(), centre.z());
+  if (off > tolerance)
+    throw CadRoleError(fmt::format("CAD roles: {} that lies in no plane (it strays {:.3g} from its best plane, more than "
+                                   "{:.3g}): no open root or flat tip; faces not sewn together (a gap: set "
+                                   "geometry.sew_tolerance above it) or an opening to close in a CAD tool",
+                                   where, off, tolerance));
   if (!body_on_one_side(model, centre, normal, tolerance)) normal = -normal;
-  if (!body_on_one_side(model, centre, normal, tolerance)) return std::nullopt;  // the plane cuts the body
-  return RootPlane{centre, normal,
-                   fmt::format("the plane of the body's open root: its {} free curve(s) (curve {} ...) lie in one plane",
-                               free.size(), free.front())};
+  if (!body_on_one_side(model, centre, normal, tolerance))
+    throw CadRoleError(fmt::format("CAD roles: {} whose plane cuts through the body: the body cannot stand on it (set "
+                                   "geometry.wall_plane to the plane it stands on)",
+                                   where));
+  return RootPlane{centre, normal, ""};
+}
+
+double loop_length(const cad::Model& model, const std::vector<int>& loop) {
+  double length = 0.0;
+  for (int c : loop) length += model.curve(c).length();
+  return length;
+}
+
+// An open root: of the body's free loops, those lying in one plane with the body on one side; the
+// longest (a tapered wing's root), of loops within 1 % of the same length (a straight wing's open
+// root and open tip) the one nearer the origin. Nothing when a free loop is not flat: the body is
+// then open where no plane can close it (unsewn faces, a gap), which the caller reports.
+std::optional<RootPlane> plane_of_free_loop(const cad::Model& model) {
+  const std::vector<std::vector<int>> loops = free_loops(model);
+  struct Candidate {
+    std::size_t loop;
+    double length;
+    RootPlane plane;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    candidates.push_back({i, loop_length(model, loops[i]), plane_of_loop(model, loops[i])});
+  }
+  if (candidates.empty()) return std::nullopt;
+  const auto before = [](const Candidate& a, const Candidate& b) {
+    if (std::abs(a.length - b.length) > 0.01 * std::max(a.length, b.length)) return a.length > b.length;
+    return std::abs(a.plane.point.dot(a.plane.normal)) < std::abs(b.plane.point.dot(b.plane.normal));
+  };
+  const Candidate best = *std::min_element(candidates.begin(), candidates.end(), before);
+  RootPlane out = best.plane;
+  const std::vector<int>& loop = loops[best.loop];
+  out.why = fmt::format("the plane of the body's open root: of its {} open loop(s) of free curves, each in a plane, the "
+                        "longest or nearest the origin of equal ones ({} curve(s): curve {} ...)",
+                        loops.size(), loop.size(), loop.front());
+  return out;
 }
 
 // A closed body's planar caps, the largest (ties: nearer the origin).
 std::optional<RootPlane> plane_of_cap(const cad::Model& model) {
-  const double tolerance = kFlatness * model_size(model);
+  const double tolerance = flatness_tolerance(model);
   struct Cap {
     int surface;
     double area;

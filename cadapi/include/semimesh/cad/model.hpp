@@ -62,6 +62,9 @@ class Model {
   void set_units(std::string units, double scale_applied);
   /// Why the model is in that unit, for users: e.g. "declared by the file (STEP: MILLI METRE)".
   void set_units_origin(std::string origin) { units_origin_ = std::move(origin); }
+  /// What the backend changed in the file's geometry to make it a model (sewing a gap, closing an
+  /// opening), one sentence each, for users: e.g. "sewn 36 edge pairs at tolerance 1.4e-05".
+  void add_repair(std::string repair) { repairs_.push_back(std::move(repair)); }
   void set_tolerance(double tolerance) { tolerance_ = tolerance; }
   void set_thread_safe(bool thread_safe) { thread_safe_ = thread_safe; }
   /// Keeps a backend object (e.g. the OCC shape) alive as long as the model.
@@ -104,6 +107,8 @@ class Model {
   double scale_applied() const { return scale_applied_; }
   /// Why units() is what it is (empty when the backend does not say).
   const std::string& units_origin() const { return units_origin_; }
+  /// The backend's repairs of the file (add_repair), in the order made; empty: taken as it is.
+  const std::vector<std::string>& repairs() const { return repairs_; }
   /// Watertight: every curve bounds exactly two surfaces (seam curves: one surface, twice;
   /// degenerate curves are points and bound one surface once).
   bool is_closed() const { return closed_; }
@@ -124,6 +129,7 @@ class Model {
   double tolerance_ = 1e-7;
   std::string units_ = "unknown";
   std::string units_origin_;
+  std::vector<std::string> repairs_;
   double scale_applied_ = 1.0;
   bool closed_ = false;
   bool thread_safe_ = true;

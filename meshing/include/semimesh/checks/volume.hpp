@@ -3,7 +3,8 @@
 //  - boundary volume: (1/3) of the flux of x through the boundary faces (divergence theorem),
 //    each face oriented outward through the element it belongs to;
 //  - expected volume: the far-field box minus the body, both from the surface meshes the volume
-//    mesh was built on (divergence theorem on the triangulated surfaces).
+//    mesh was built on (divergence theorem on the triangulated surfaces), or the box from the
+//    mesh's own far-field faces when they are curved.
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"
@@ -44,7 +45,10 @@ struct VolumeCheck {
 
 /// Runs mesh_volume and computes the box and body volumes from the surface meshes: the fluid
 /// normals of the far-field faces point into the box, those of the body out of the solid; the wall
-/// surface mesh gives the closing plane (its first node and its mean normal).
+/// surface mesh gives the closing plane (its first node and its mean normal). With `farfield`
+/// empty, the box is the one the mesh's own "farfield" boundary faces enclose with that plane,
+/// integrated at the mesh's order: a curved far field (a sphere) curved onto its CAD at order > 1
+/// encloses more than its triangulation does.
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                          const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall);
 

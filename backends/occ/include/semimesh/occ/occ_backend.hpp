@@ -49,6 +49,7 @@ enum class FluidSide {
 struct ModelOptions {
   std::string units = "file";  ///< label of the coordinates' unit
   std::string units_origin;     ///< why (Model::units_origin)
+  std::vector<std::string> repairs;  ///< what loading changed in the file (Model::repairs)
   double scale_applied = 1.0;  ///< factor already applied to the shape, reported by the model
   FluidSide fluid_side = FluidSide::Auto;
   /// Face names (faces matched with TopoDS_Shape::IsSame). Unnamed faces, and names that are
