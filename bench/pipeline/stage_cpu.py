@@ -3,8 +3,9 @@
 comparable on a loaded machine (wall clock does not: it grows with the load, CPU time barely).
 
 Runs SEMIMESH run CONFIG -o OUT --log-json [--set ...], reads its stage events as they come and
-samples the process's CPU time (/proc/PID/stat utime + stime: all threads) at each stage's start
-and end; the peak resident memory and total CPU come from wait4's rusage.
+samples the process's CPU time (/proc/PID/stat utime + stime: all threads; + cutime + cstime: the
+children it has waited for, e.g. the far field's TetGen process) at each stage's start and end; the
+peak resident memory and total CPU come from wait4's rusage.
 
 usage: stage_cpu.py SEMIMESH CONFIG OUT [--set key=value ...]
 """
@@ -18,7 +19,7 @@ import time
 def cpu_seconds(pid):
     with open(f"/proc/{pid}/stat") as fh:
         fields = fh.read().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime, stime
+    return sum(int(f) for f in fields[11:15]) / os.sysconf("SC_CLK_TCK")  # utime, stime, cutime, cstime
 
 
 def main():
