@@ -1,6 +1,7 @@
 #include "semimesh/io/gmsh_types.hpp"
 #include "semimesh/io/msh.hpp"
 
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -54,6 +55,19 @@ class Lines {
 
   int line() const { return line_; }
 
+  /// Raw little-endian values of a binary file's data (count of them), failing at the end of file.
+  template <typename T>
+  void raw(T* values, std::size_t count, const char* expected) {
+    if (!in_.read(reinterpret_cast<char*>(values), static_cast<std::streamsize>(count * sizeof(T))))
+      fail(std::string("unexpected end of file in binary data, expected ") + expected);
+  }
+  template <typename T>
+  T raw(const char* expected) {
+    T v{};
+    raw(&v, 1, expected);
+    return v;
+  }
+
  private:
   std::string path_;
   std::ifstream in_;
@@ -71,6 +85,7 @@ struct RawElement {
 
 struct Parsed {
   double version = 0;
+  bool binary = false;  // MSH 4.1 file-type 1: $Entities, $Nodes, $Elements hold raw data
   std::map<std::pair<int, int>, std::string> names;  // (dim, physical tag) -> name
   std::map<int, int> surface_physical;              // surface entity tag -> first physical tag
   std::vector<long> node_tags;
@@ -173,6 +188,82 @@ void read_elements(Lines& in, Parsed& p) {
   expect_end(in, "Elements");
 }
 
+// Binary MSH 4.1 (file-type 1, data-size 8, little endian): ints for entity dimensions, tags and
+// types, size_t for counts and node/element tags, doubles for coordinates; a newline ends the data.
+void end_binary(Lines& in, const std::string& section) {
+  const std::string rest = in.require(("$End" + section).c_str());
+  if (!rest.empty()) in.fail("expected the end of the binary " + section + " data, got more bytes");
+  expect_end(in, section);
+}
+
+void read_entities_binary(Lines& in, Parsed& p) {
+  std::size_t n[4];
+  in.raw(n, 4, "4 entity counts");
+  for (int dim = 0; dim < 4; ++dim)
+    for (std::size_t i = 0; i < n[dim]; ++i) {
+      const int tag = in.raw<int>("an entity tag");
+      double box[6];
+      in.raw(box, dim == 0 ? 3 : 6, "an entity's point or box");
+      std::vector<int> physical(in.raw<std::size_t>("numPhysicalTags"));
+      in.raw(physical.data(), physical.size(), "physical tags");
+      if (dim == 2 && !physical.empty()) p.surface_physical[tag] = physical.front();
+      if (dim == 0) continue;
+      std::vector<int> bounding(in.raw<std::size_t>("numBoundingEntities"));
+      in.raw(bounding.data(), bounding.size(), "bounding entity tags");
+    }
+  end_binary(in, "Entities");
+}
+
+void read_nodes_binary(Lines& in, Parsed& p) {
+  std::size_t head[4];
+  in.raw(head, 4, "numEntityBlocks numNodes minNodeTag maxNodeTag");
+  for (std::size_t b = 0; b < head[0]; ++b) {
+    int block[3];
+    in.raw(block, 3, "entityDim entityTag parametric");
+    if (block[2] != 0) in.fail("parametric node coordinates are not supported");
+    const std::size_t count = in.raw<std::size_t>("numNodesInBlock");
+    std::vector<std::size_t> tags(count);
+    in.raw(tags.data(), count, "node tags");
+    std::vector<double> xyz(3 * count);
+    in.raw(xyz.data(), xyz.size(), "node coordinates");
+    for (std::size_t i = 0; i < count; ++i) {
+      p.node_tags.push_back(static_cast<long>(tags[i]));
+      p.node_xyz.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    }
+  }
+  end_binary(in, "Nodes");
+}
+
+void read_elements_binary(Lines& in, Parsed& p) {
+  std::size_t head[4];
+  in.raw(head, 4, "numEntityBlocks numElements minElementTag maxElementTag");
+  std::vector<std::size_t> data;
+  std::vector<double> nodes;
+  for (std::size_t b = 0; b < head[0]; ++b) {
+    int block[3];
+    in.raw(block, 3, "entityDim entityTag elementType");
+    const std::size_t count = in.raw<std::size_t>("numElementsInBlock");
+    const int dim = block[0], tag = block[1], type = block[2];
+    // The record length comes from the type: only the types read_msh keeps can be skipped over.
+    ho::Shape shape;
+    int order = 0;
+    if (!gmsh_shape_and_order(type, shape, order))
+      in.fail("element type " + std::to_string(type) + " in a binary file: only volume elements, triangles and "
+              "quadrangles can be read");
+    const auto per = static_cast<std::size_t>(ho::num_nodes(shape, order));
+    data.resize(count * (per + 1));
+    in.raw(data.data(), data.size(), "elementTag nodeTags...");
+    int physical = -1;
+    if (dim == 2 && p.surface_physical.count(tag)) physical = p.surface_physical[tag];
+    nodes.resize(per);
+    for (std::size_t i = 0; i < count; ++i) {
+      for (std::size_t k = 0; k < per; ++k) nodes[k] = static_cast<double>(data[i * (per + 1) + 1 + k]);
+      add_element(in, p, type, physical, nodes.data(), per);
+    }
+  }
+  end_binary(in, "Elements");
+}
+
 void read_physical_names(Lines& in, Parsed& p) {
   const auto count = static_cast<long>(in.numbers(1, "the number of physical names")[0]);
   for (long i = 0; i < count; ++i) {
@@ -197,20 +288,26 @@ mesh::Mesh read_msh(const std::string& path) {
     if (text == "$MeshFormat") {
       const auto& v = in.numbers(3, "version file-type data-size");
       p.version = v[0];
-      if (v[1] != 0) in.fail("binary MSH files are not supported; write ASCII (gmsh -save_all -format msh41)");
       if (p.version != 2.2 && p.version != 4.1)
         in.fail("MSH version " + std::to_string(v[0]) + " is not supported (2.2 or 4.1)");
+      p.binary = v[1] != 0;
+      if (p.binary) {
+        if (p.version != 4.1) in.fail("binary MSH is read in version 4.1 only");
+        if (v[2] != 8) in.fail("binary MSH with data-size " + std::to_string(static_cast<int>(v[2])) + ": 8 expected");
+        if (in.raw<int>("the endianness check 1") != 1) in.fail("big-endian binary MSH is not supported");
+        in.require("the end of the endianness line");
+      }
       expect_end(in, "MeshFormat");
     } else if (p.version == 0) {
       in.fail("expected $MeshFormat first, got '" + text + "'");
     } else if (text == "$PhysicalNames") {
       read_physical_names(in, p);
     } else if (text == "$Entities") {
-      read_entities(in, p);
+      p.binary ? read_entities_binary(in, p) : read_entities(in, p);
     } else if (text == "$Nodes") {
-      read_nodes(in, p);
+      p.binary ? read_nodes_binary(in, p) : read_nodes(in, p);
     } else if (text == "$Elements") {
-      read_elements(in, p);
+      p.binary ? read_elements_binary(in, p) : read_elements(in, p);
     } else if (text.size() > 1 && text[0] == '$') {
       skip_to_end(in, text.substr(1));
     } else {

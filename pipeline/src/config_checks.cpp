@@ -140,8 +140,9 @@ void check_output(const Config& c, Section& o, Section& highorder) {
   o.require(c.output.basename.find('/') == std::string::npos, "basename", "a file name without folder, e.g. \"wing\"");
   if (c.output.target == OutputTarget::Pyfr) {
     // PyFR's gmsh reader takes ASCII MSH only, and element types up to order 4.
-    o.require(distinct.count("msh41") + distinct.count("msh22") > 0, "formats",
-              "with target = \"pyfr\": \"msh41\" or \"msh22\" among them (PyFR reads ASCII MSH only)");
+    o.require(distinct.count("msh41-ascii") + distinct.count("msh22") > 0, "formats",
+              "with target = \"pyfr\": \"msh41-ascii\" or \"msh22\" among them (PyFR reads ASCII MSH only; "
+              "\"msh41\" is binary)");
     highorder.require(c.highorder.order <= 4, "order", "at most 4 with output.target = \"pyfr\" (PyFR's importer)");
   }
 }

@@ -189,6 +189,9 @@ params::Table<Config> checks_keys() {
       params::real("min_scaled_jacobian", &ChecksConfig::min_scaled_jacobian, "[0, 1)",
                    "an element counts as invalid unless proven valid with a certified scaled Jacobian of at "
                    "least this; 0: proven validity only"),
+      params::boolean("inherit_bounds", &ChecksConfig::inherit_bounds,
+                      "a split element's pieces take the det J bounds of their coarse element restricted to "
+                      "them; false: certify every element on its own nodes (the reference, slower)"),
   };
   params::Table<Config> table;
   append(table, &Config::checks, k);

@@ -17,7 +17,14 @@ const std::vector<OutputFormat>& output_formats() {
   using S = std::string;
   using Report = ProgressCallback;
   static const std::vector<OutputFormat> formats = {
+      // Binary by default: a third of the ASCII bytes and no number formatting; ASCII on request
+      // (PyFR reads ASCII only). "msh41-binary" is the same file, the name older configs use.
       {"msh41", ".msh", "",
+       [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
+         io::write_msh(m, x, p, MshVersion::V41, MshEncoding::Binary, progress);
+         return Paths{p};
+       }},
+      {"msh41-ascii", ".msh", ".ascii.msh",
        [](const Mesh& m, const Nodes& x, const S& p, const Report& progress) {
          io::write_msh(m, x, p, MshVersion::V41, MshEncoding::Ascii, progress);
          return Paths{p};

@@ -452,7 +452,7 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
 mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMesh& linear, double chord,
-                 Progress& progress, RunResult& result) {
+                 Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& inherited) {
   const std::vector<nearfield::LayerStack>& stacks = linear.stacks;
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
@@ -471,7 +471,7 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
-                                   report);
+                                   report, config.checks.inherit_bounds);
     // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
     // does it in its own rebuild of the mesh).
     if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
@@ -481,6 +481,9 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
       return weld_coincident_nodes(split.mesh, kWeldTolerance * chord, report).mesh;
     });
+  // The weld keeps the elements in order; an element it moved no longer matches its fingerprint.
+  inherited = std::move(split.inherited);
+  if (inherited.size() != split.mesh.elements().size()) inherited.clear();
   if (layers > 1) {
     result.layers.requested_ratio = ratio;
     result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
@@ -531,7 +534,7 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
 }
 
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
-           Progress& progress, RunResult& result) {
+           const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
     // Rough shares of the stage's time: the certification of every element is most of it.
     if (report) report(0.0, "conformity");
@@ -553,7 +556,7 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
       result.expected_volume_tolerance =
           kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
-                                             progress_part(report, 0.1, 0.9));
+                                             progress_part(report, 0.1, 0.9), &inherited);
     if (report) report(0.9, "geometric error");
     std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
     curved.push_back(g.roles.wall);
@@ -664,13 +667,17 @@ RunResult run(const Config& config, Progress& progress) {
   if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
+  std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
-    result.mesh = split(config, result.mesh, linear, chord, progress, result);
-  if (config.output.target == OutputTarget::Pyfr) result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
-  check(config, geometry, surfaces, chord, progress, result);
+    result.mesh = split(config, result.mesh, linear, chord, progress, result, inherited);
+  if (config.output.target == OutputTarget::Pyfr) {
+    result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
+    inherited.clear();  // elements renumbered: every one is certified on its own
+  }
+  check(config, geometry, surfaces, chord, inherited, progress, result);
   // A user writing MSH for PyFR hears now what its importer would refuse.
   if (std::any_of(config.output.formats.begin(), config.output.formats.end(),
-                  [](const std::string& f) { return f == "msh41" || f == "msh22"; }))
+                  [](const std::string& f) { return f == "msh41-ascii" || f == "msh22"; }))
     for (const std::string& refusal : pyfr_refusals(result.mesh)) result.warnings.push_back("output: " + refusal);
   result.peak_memory_mb = peak_memory_mb();
   if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);

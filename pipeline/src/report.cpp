@@ -148,6 +148,7 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));
   j += fmt::format("  \"min_scaled_jacobian_floor\": {},\n", json_number(r.validity.floor));
   j += fmt::format("  \"median_scaled_jacobian\": {},\n", json_number(r.validity.median_scaled_jacobian));
+  j += fmt::format("  \"inherited_bounds\": {},\n", r.validity.inherited);
   {
     std::string by_region = "{";
     for (const auto& [region, value] : r.validity.min_scaled_jacobian_by_region)

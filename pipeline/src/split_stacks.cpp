@@ -3,7 +3,8 @@
 namespace semimesh::pipeline {
 
 StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
-                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress) {
+                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress,
+                        bool inherit_bounds) {
   // Family 0 the wing's layers, 1 the wall's; a family of one layer leaves its directions unsplit.
   const std::vector<ho::SplitFamily> families = {{wing.distribution, wing.ratio}, {wall.distribution, wall.ratio}};
   std::vector<ho::LayerSplit> split;
@@ -22,7 +23,8 @@ StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::Lay
   StackSplit result;
   std::vector<ho::SplitStats> stats;
   std::vector<std::size_t> first;
-  result.mesh = ho::split_layers(mesh, split, families, &stats, &first, progress);
+  result.mesh = ho::split_layers(mesh, split, families, &stats, &first, progress,
+                                 inherit_bounds ? &result.inherited : nullptr);
   result.wing = stats[0];
   result.wall = stats[1];
   for (const nearfield::LayerStack& s : stacks) result.first_layer.push_back(first[s.element]);

@@ -54,6 +54,16 @@ TEST(CheckCommand, ReportsTheClosedFormScaledJacobians) {
   EXPECT_NE(out.str().find("\"invalid\": []"), std::string::npos) << out.str();
 }
 
+// What `semimesh run` writes by default (binary MSH 4.1) is checked as the ASCII file is.
+TEST(CheckCommand, ReadsTheBinaryMshRunWritesByDefault) {
+  const std::string path = scratch("three_prisms_binary.msh");
+  io::write_msh(prisms({{{1, 2, 4}}, {{1, 1, 2}}, {{3, 3, 3}}}), path, io::MshVersion::V41, io::MshEncoding::Binary);
+  std::ostringstream out, err;
+  ASSERT_EQ(run_check_command({path, true}, out, err), 0) << err.str();
+  EXPECT_NEAR(json_value(out.str(), "min_scaled_jacobian"), 0.25, 1e-9) << out.str();
+  EXPECT_NE(out.str().find("\"elements\": {\"prism\": {\"1\": 3}"), std::string::npos) << out.str();
+}
+
 TEST(CheckCommand, NamesTheInvalidElementAndExitsWith2) {
   const std::string path = scratch("folded.msh");
   io::write_msh(prisms({{{1, 1, 1}}, {{1, 1, -0.5}}}), path);  // the second one's top crosses its bottom

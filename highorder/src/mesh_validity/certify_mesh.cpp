@@ -4,13 +4,49 @@
 #include "semimesh/ho/quality.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
 namespace semimesh::ho {
+namespace {
+
+// An inherited certificate stands for the element's own when it is the same element (fingerprint)
+// and certify_jacobian would have stopped at its first expansion: above the floor (and so valid).
+bool usable(const InheritedBounds& inherited, const mesh::Mesh& mesh, std::size_t e, double floor) {
+  if (!inherited.present || !inherited.bounds.valid) return false;
+  const JacobianBounds& b = inherited.bounds;
+  if (!(b.min_lower > floor * b.max_upper)) return false;
+  return element_fingerprint(mesh, e) == inherited.fingerprint;
+}
+
+}  // namespace
+
+std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e) {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&](std::uint64_t word) {
+    for (int byte = 0; byte < 8; ++byte) {
+      hash ^= (word >> (8 * byte)) & 0xffu;
+      hash *= 1099511628211ull;
+    }
+  };
+  mix(static_cast<std::uint64_t>(mesh.elements()[e].shape));
+  mix(static_cast<std::uint64_t>(mesh.order()));
+  mix(static_cast<std::uint64_t>(mesh.node_set()));
+  for (mesh::NodeId id : mesh.element_nodes(e)) {
+    const Eigen::Vector3d& x = mesh.node(id);
+    for (int c = 0; c < 3; ++c) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &x[c], sizeof bits);
+      mix(bits);
+    }
+  }
+  return hash;
+}
 
 MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
-                          const ProgressCallback& progress) {
+                          const ProgressCallback& progress, const std::vector<InheritedBounds>* inherited) {
   if (max_depth < 0)
     throw std::invalid_argument("certify_mesh: max_depth = " + std::to_string(max_depth) + " must be >= 0");
   const std::size_t n = mesh.elements().size();
@@ -19,12 +55,24 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
       throw std::invalid_argument("certify_mesh: element " + std::to_string(e) + " is a " +
                                   to_string(mesh.elements()[e].shape) + "; only 3D elements can be certified");
 
+  if (inherited && !inherited->empty() && inherited->size() != n)
+    throw std::invalid_argument("certify_mesh: " + std::to_string(inherited->size()) +
+                                " inherited bounds for " + std::to_string(n) + " elements");
+  const bool inherit = inherited && !inherited->empty();
+
   MeshValidity out;
   out.bounds.resize(n);
+  std::atomic<std::size_t> taken{0};
   detail::parallel_for(n, true, [&](std::size_t e) {
+    if (inherit && usable((*inherited)[e], mesh, e, min_scaled_jacobian)) {
+      out.bounds[e] = (*inherited)[e].bounds;
+      taken.fetch_add(1, std::memory_order_relaxed);
+      return;
+    }
     out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(),
                                      mesh.element_coordinates(e), max_depth, min_scaled_jacobian);
   }, progress, "elements");
+  out.inherited = taken.load();
 
   std::vector<double> scaled(n);
   for (std::size_t e = 0; e < n; ++e) {

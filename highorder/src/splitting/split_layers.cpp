@@ -3,6 +3,7 @@
 #include "parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -91,7 +92,8 @@ class Splitter {
         stats_(families_.size()) {}
 
   mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
-                 std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {});
+                 std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
+                 std::vector<InheritedBounds>* inherited = nullptr);
 
  private:
   ShapeData& shape_data(Shape shape);
@@ -120,12 +122,15 @@ class Splitter {
     Eigen::MatrixX3d x;                                // (pieces * nodes, 3)
     std::array<std::vector<double>, 2> first_heights;  // per direction slot: [bottom vertices]
     std::array<std::vector<double>, 2> ratios;
+    std::vector<std::optional<JacobianBounds>> bounds;  // [pieces] inherited (certify_pieces), when asked
   };
   /// Per direction slot, the layer interfaces at each bottom vertex of that direction (calls the
   /// ratio field; serial). Empty for a slot whose ratio is constant over the element.
   using VertexInterfaces = std::array<std::vector<std::vector<double>>, 2>;
   VertexInterfaces interfaces_of(std::size_t element);
   SplitGeometry place_sub_nodes(std::size_t element, const VertexInterfaces& z_of_vertex) const;
+  /// The reference boxes of the pieces of an element split with constant interfaces `z` per slot.
+  std::vector<ReferenceBox> piece_boxes(std::size_t element, const std::array<std::vector<double>, 2>& z) const;
   /// Piece node lists of one coarse element, body-side pieces first; creates the new nodes.
   std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
   NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
@@ -146,6 +151,7 @@ class Splitter {
     int vertical_edges = 0, elements = 0;
   };
   std::vector<Figures> stats_;  // [families]
+  bool inherit_ = false;        // derive the pieces' bounds (certify_pieces)
 };
 
 ShapeData& Splitter::shape_data(Shape shape) {
@@ -278,6 +284,8 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     out.x =
         uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) *
         X;
+    // Constant interfaces: each piece is chi composed with an affine map, so its det J is chi's restricted.
+    if (inherit_) out.bounds = certify_pieces(el.shape, in_.order(), in_.node_set(), X, piece_boxes(element, uniform));
   } else {
     out.x = map_points(data.basis, X, sub_points(data, plan, interface_at));
   }
@@ -302,6 +310,23 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     }
   }
   return out;
+}
+
+std::vector<ReferenceBox> Splitter::piece_boxes(std::size_t element, const std::array<std::vector<double>, 2>& z) const {
+  const Shape shape = in_.elements()[element].shape;
+  const Plan& plan = plans_[element];
+  const int na = layers(element, 0), nb = layers(element, 1);
+  ReferenceBox whole;
+  for (int d = 0; d < 3; ++d) whole[d] = {shape == Shape::Prism && d < 2 ? 0.0 : -1.0, 1.0};
+  std::vector<ReferenceBox> boxes;
+  for (int kb = 0; kb < nb; ++kb)
+    for (int ka = 0; ka < na; ++ka) {  // piece kb N_a + ka, as sub_points orders them
+      ReferenceBox box = whole;
+      box[plan.direction[0]] = {z[0][ka], z[0][ka + 1]};
+      if (plan.two()) box[plan.direction[1]] = {z[1][kb], z[1][kb + 1]};
+      boxes.push_back(box);
+    }
+  return boxes;
 }
 
 // The key naming a new node so that every element whose split creates it names it alike: on a
@@ -442,7 +467,10 @@ void Splitter::check_side_faces(const std::vector<LayerSplit>& split) {
 }
 
 mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
-                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress) {
+                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                         std::vector<InheritedBounds>* inherited) {
+  inherit_ = inherited != nullptr;
+  if (inherited) inherited->clear();
   if (families_.empty()) throw std::invalid_argument(caller_ + ": no layer distribution given");
   for (std::size_t f = 0; f < families_.size(); ++f) {
     const LayerDistribution& d = families_[f].distribution;
@@ -518,8 +546,16 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
       copy_until(e);
       subs[position[e]] = split_element(e, geometry[k]);
       if (first_piece) (*first_piece)[e] = out_.elements().size();
-      for (const auto& nodes : subs[position[e]])
-        out_.add_element(in_.elements()[e].shape, nodes, in_.elements()[e].region);
+      const std::vector<std::optional<JacobianBounds>>& bounds = geometry[k].bounds;
+      for (std::size_t piece = 0; piece < subs[position[e]].size(); ++piece) {
+        out_.add_element(in_.elements()[e].shape, subs[position[e]][piece], in_.elements()[e].region);
+        if (!inherited || piece >= bounds.size() || !bounds[piece]) continue;
+        const std::size_t made = out_.elements().size() - 1;
+        inherited->resize(made + 1);
+        // The fingerprint of the piece as made: its shared nodes may come from a neighbour's
+        // evaluation of the same point (the same up to rounding, which kPieceMargin covers).
+        (*inherited)[made] = {true, element_fingerprint(out_, made), *bounds[piece]};
+      }
       next = e + 1;
     }
     counter.add(count);
@@ -527,6 +563,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   }
   counter.finish();
   copy_until(in_.elements().size());
+  if (inherited) inherited->resize(out_.elements().size());
 
   // Boundary faces: split with the element whose face they are when its split cuts them (each
   // piece lying on the face gives one), copied otherwise.
@@ -591,8 +628,9 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
-                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress) {
-  return Splitter(mesh, families, "split_layers").run(split, stats, first_piece, progress);
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                        std::vector<InheritedBounds>* inherited) {
+  return Splitter(mesh, families, "split_layers").run(split, stats, first_piece, progress, inherited);
 }
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,

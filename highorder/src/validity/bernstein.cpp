@@ -270,6 +270,42 @@ void BernsteinPolynomial::bisect(int factor, int vertex_a, int vertex_b, Bernste
   }
 }
 
+BernsteinPolynomial BernsteinPolynomial::restricted(int var, double a, double b) const {
+  const BernsteinLayout& l = *layout_;
+  if (var < 0 || var >= l.num_vars || l.factors[l.var_factor[var]].dim != 1)
+    throw std::invalid_argument("Bernstein restriction: variable " + std::to_string(var) + " is not a segment's");
+  if (!(0.0 <= a && a < b && b <= 1.0))
+    throw std::invalid_argument("Bernstein restriction: [" + std::to_string(a) + ", " + std::to_string(b) +
+                                "] is not an interval inside [0, 1]");
+  const int n = l.factors[l.var_factor[var]].degree;
+  const double s = a / b;  // where a lies on [0, b]
+  BernsteinPolynomial out(layout_);
+  std::vector<int> line(n + 1);
+  std::vector<double> work(n + 1), left(n + 1);
+  for (int start = 0; start < l.size(); ++start) {
+    if (l.index[start][var] != 0) continue;  // each line starts at alpha_1 = 0
+    for (int m = 0; m <= n; ++m) {
+      std::array<int, 3> free = l.index[start];
+      free[var] = m;
+      line[m] = l.id_of(free);
+      work[m] = coefficients_[line[m]];
+    }
+    // [0, b]: the first entry of each de Casteljau level at b.
+    left[0] = work[0];
+    for (int level = 1; level <= n; ++level) {
+      for (int q = 0; q + level <= n; ++q) work[q] = (1.0 - b) * work[q] + b * work[q + 1];
+      left[level] = work[0];
+    }
+    // [a, b] = [s, 1] of [0, b]: the last entry of each level at s.
+    out.coefficients_[line[n]] = left[n];
+    for (int level = 1; level <= n; ++level) {
+      for (int q = 0; q + level <= n; ++q) left[q] = (1.0 - s) * left[q] + s * left[q + 1];
+      out.coefficients_[line[n - level]] = left[n - level];
+    }
+  }
+  return out;
+}
+
 Eigen::MatrixXd bernstein_elevation_1d(int from, int to) {
   if (from < 0 || to < from)
     throw std::invalid_argument("Bernstein elevation: need 0 <= from <= to, got " + std::to_string(from) +

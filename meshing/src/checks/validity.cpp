@@ -7,12 +7,13 @@
 namespace semimesh::checks {
 
 ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed, double min_scaled_jacobian,
-                              const ProgressCallback& progress) {
-  const ho::MeshValidity certified = ho::certify_mesh(mesh, 8, min_scaled_jacobian, progress);
+                              const ProgressCallback& progress, const std::vector<ho::InheritedBounds>* inherited) {
+  const ho::MeshValidity certified = ho::certify_mesh(mesh, 8, min_scaled_jacobian, progress, inherited);
   ValidityResult result;
   result.elements = mesh.elements().size();
   result.floor = min_scaled_jacobian;
   result.invalid = certified.invalid;
+  result.inherited = certified.inherited;
   result.min_scaled_jacobian = certified.min_scaled_jacobian;
   result.median_scaled_jacobian = certified.median_scaled_jacobian;
   result.scaled_jacobians.reserve(certified.bounds.size());

@@ -89,6 +89,13 @@ class BernsteinPolynomial {
   void bisect(int factor, int vertex_a, int vertex_b, BernsteinPolynomial& first,
               BernsteinPolynomial& second) const;
 
+  /// The same polynomial on the part a <= t <= b (0 <= a < b <= 1) of the segment factor holding
+  /// variable `var`, in that part's own Bernstein basis (t = a + (b - a) s, s in [0, 1]): 1D de
+  /// Casteljau at b keeping [0, b], then at a / b keeping the rest, along every line of that variable.
+  /// Throws std::invalid_argument when `var` is not a segment factor's or the interval is not inside
+  /// [0, 1].
+  BernsteinPolynomial restricted(int var, double a, double b) const;
+
  private:
   std::shared_ptr<const BernsteinLayout> layout_;
   Eigen::VectorXd coefficients_;

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace semimesh::ho {
@@ -22,14 +23,34 @@ struct MeshValidity {
   double median_scaled_jacobian = 1.0;         ///< lower median over all elements; 1 for no elements
   std::vector<std::size_t> invalid_elements;   ///< [invalid] element indices, ascending
   std::vector<Eigen::Vector3d> invalid_centroids;  ///< [invalid] mean of each invalid element's vertices
+  std::size_t inherited = 0;                   ///< elements whose bounds came from their parent (InheritedBounds)
   bool all_valid() const { return invalid == 0; }
 };
+
+/// Bounds an element got when it was made (a piece of a split element: certify_pieces), for the
+/// node positions whose fingerprint it carries: they hold for that element while its nodes are
+/// exactly those, whatever the stages after (renumbering, welding) did to the mesh.
+struct InheritedBounds {
+  bool present = false;
+  std::uint64_t fingerprint = 0;  ///< element_fingerprint when the bounds were derived
+  JacobianBounds bounds;
+};
+
+/// A hash of element e's shape, the mesh's order and node set, and the bits of its nodes'
+/// coordinates in element order (FNV-1a, 64 bits).
+std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e);
 
 /// Certifies every 3D element of `mesh` (its order and node set) with certify_jacobian(..., max_depth,
 /// min_scaled_jacobian); an element below that floor counts as invalid (see acceptable()).
 /// Throws std::invalid_argument when the mesh holds a 2D element or max_depth < 0. `progress`
 /// receives the fraction of elements certified (step "elements"), from one thread, throttled.
+/// `inherited` (optional, [elements] or empty): an element whose entry is present, whose
+/// fingerprint is still its own and whose inherited bounds decide it at the floor (all above
+/// min_scaled_jacobian x their largest: certify_jacobian would not bisect) takes those bounds and
+/// no Bernstein expansion of its own; every other element is certified. With no `inherited` this
+/// is the reference: every element certified on its own nodes.
 MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_scaled_jacobian = 0.0,
-                          const ProgressCallback& progress = {});
+                          const ProgressCallback& progress = {},
+                          const std::vector<InheritedBounds>* inherited = nullptr);
 
 }  // namespace semimesh::ho

@@ -14,6 +14,10 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <optional>
+#include <vector>
+
 namespace semimesh::ho {
 
 /// Bounds of det J (derivatives with respect to Gmsh's reference coordinates) over the element.
@@ -70,6 +74,30 @@ bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d
                      JacobianBounds& bounds);
 
 constexpr int kMaxCertificationPieces = 200000;
+
+/// A box of a prism's or hexahedron's reference element: [lo, hi] per reference direction; a
+/// prism's xi and eta stay whole ([0, 1]: only its zeta range may be a part of [-1, 1]).
+using ReferenceBox = std::array<std::array<double, 2>, 3>;
+
+/// Bounds of the pieces of one element, derived from the element's own det J instead of a fresh
+/// Bernstein expansion per piece. Piece k is the element whose map is x o f_k, f_k the affine
+/// map from the reference element onto boxes[k] that scales each direction by (hi - lo) / (whole
+/// length), which is what splitting an element along reference directions with constant
+/// interfaces gives (split_layers). Then det J_k(xi) = det J(f_k(xi)) * det f_k, a polynomial of the
+/// same space, whose Bernstein coefficients are the element's restricted to the box (de Casteljau)
+/// times det f_k: exactly the coefficients certify_jacobian_by_subdivision computes from the
+/// piece's own nodes, before it bisects.
+/// Returns per piece what certify_jacobian would return for it when that needs no bisection: all
+/// coefficients above kPieceMargin x the largest (a margin far above the rounding of the piece's
+/// nodes), so valid and proven with min_lower / min_upper / max_upper from those coefficients. An
+/// affine element (affine_jacobian) gives each piece min = max = det A * det f_k (the element's
+/// proof carries over: J_k = J(f_k) A_k). Otherwise (a piece whose coefficients come near zero, a
+/// tetrahedron or pyramid, a box outside the element) std::nullopt: certify that piece itself.
+/// A floor on the scaled Jacobian is the caller's to apply (certify_mesh does).
+constexpr double kPieceMargin = 1e-6;
+std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order, NodeSet set,
+                                                          const Eigen::MatrixX3d& element_nodes,
+                                                          const std::vector<ReferenceBox>& boxes);
 
 /// Scaled Jacobian from certified bounds: min_lower / max(|max_upper|, |min_lower|), in [-1, 1].
 /// For a valid element that is min_lower / max_upper, a lower bound of min det J / max det J (the

@@ -1,4 +1,4 @@
-// Gmsh MSH files, ASCII, versions 4.1 and 2.2 (gmsh.info/doc/texinfo, "MSH file format").
+// Gmsh MSH files, versions 4.1 (binary or ASCII) and 2.2 (ASCII) (gmsh.info/doc/texinfo, "MSH file format").
 //
 // Written: $MeshFormat, $PhysicalNames (one dim-2 group per boundary group, tags 1..G in the
 // mesh's group order, then one dim-3 group per volume region that has elements, tags G+1.. in
@@ -35,11 +35,12 @@ void write_msh(const mesh::Mesh& mesh, const EquispacedNodes& nodes, const std::
                MshVersion version = MshVersion::V41, MshEncoding encoding = MshEncoding::Ascii,
                const ProgressCallback& progress = {});
 
-/// Reads an ASCII MSH 4.1 or 2.2 file: 3D elements become mesh elements, triangles and quads
+/// Reads an MSH 4.1 (ASCII or binary: little endian, data-size 8) or ASCII 2.2 file: 3D elements become mesh elements, triangles and quads
 /// become boundary faces in the group named by their physical group ("surface_<tag>" when the
 /// group has no name, "unassigned" without a physical group); points and lines are skipped.
 /// All elements must have one order (1..9). The node set is Equispaced. Throws std::runtime_error
-/// "FILE:LINE: what was expected" on malformed input.
+/// "FILE:LINE: what was expected" on malformed input (binary data: LINE is its section's first).
+/// A binary file may hold no point or line elements (their records cannot be sized).
 mesh::Mesh read_msh(const std::string& path);
 
 }  // namespace semimesh::io

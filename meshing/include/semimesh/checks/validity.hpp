@@ -2,6 +2,7 @@
 // whole-mesh certification) summarised with the worst invalid elements for the user.
 #pragma once
 
+#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/progress.hpp"
 
@@ -32,14 +33,16 @@ struct ValidityResult {
   std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
   std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
+  std::size_t inherited = 0;                 ///< elements whose bounds came from their coarse element
   bool ok() const { return invalid == 0; }
 };
 
 /// Certifies every element (ho::certify_mesh: OpenMP threads, the verdict independent of their
 /// count); min and median scaled Jacobian as certify_mesh defines them. An element counts as invalid
 /// unless proven valid with a scaled Jacobian >= min_scaled_jacobian (ho::acceptable). `progress` as
-/// certify_mesh's.
+/// certify_mesh's; `inherited` as certify_mesh's (split pieces' bounds from their coarse element).
 ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed = 100, double min_scaled_jacobian = 0.0,
-                              const ProgressCallback& progress = {});
+                              const ProgressCallback& progress = {},
+                              const std::vector<ho::InheritedBounds>* inherited = nullptr);
 
 }  // namespace semimesh::checks

@@ -133,6 +133,10 @@ struct ChecksConfig {
   /// An element whose certified scaled Jacobian is below this counts as invalid: a positive floor
   /// keeps numerically degenerate elements (det J ~ 1e-16 of its maximum) out of a written mesh.
   double min_scaled_jacobian = 1e-5;
+  /// The pieces of a split element take the bounds their coarse element's det J gives them
+  /// (ho::certify_pieces) instead of a Bernstein expansion of their own; false: every element is
+  /// certified on its own nodes (the reference; same verdicts and figures to rounding, slower).
+  bool inherit_bounds = true;
 };
 
 /// [output]

@@ -23,12 +23,15 @@ struct StackSplit {
   /// every direction)
   std::vector<std::size_t> first_layer;
   ho::SplitStats wing, wall;  ///< first-cell figures per family (zero when nothing of it was split)
+  /// [mesh elements] the bounds the pieces inherit (split_layers); empty unless asked
+  std::vector<ho::InheritedBounds> inherited;
 };
 
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
 /// differently, naming both elements.
-/// `progress` as split_layers'.
+/// `progress` as split_layers'. inherit_bounds: fill `inherited`.
 StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
-                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {});
+                        const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {},
+                        bool inherit_bounds = false);
 
 }  // namespace semimesh::pipeline

@@ -9,6 +9,7 @@
 // reference coordinate -1 of the chosen direction.
 #pragma once
 
+#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/params/table.hpp"
 #include "semimesh/progress.hpp"
@@ -93,9 +94,17 @@ struct LayerSplit {
 /// (*first_piece)[e] is the output index of input element e's first piece (its copy when not split).
 /// `progress` receives the fraction of split elements done (step "elements"), per block of elements,
 /// from the calling thread.
+/// `inherited` (optional) gets [output elements] the bounds of det J each piece inherits from its
+/// coarse element (certify_pieces), for certify_mesh: present for the pieces of an element whose
+/// interfaces are constant over it (no ratio field, or one giving the family's ratio at all its
+/// bottom vertices: each piece is then the coarse map composed with an affine map), and whose
+/// bounds need no bisection; absent for the rest (copied elements, pieces of an element whose
+/// interfaces vary: its pieces are then the interpolant of a map of higher degree, not the coarse
+/// map composed with an affine one).
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
-                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {});
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
+                        std::vector<InheritedBounds>* inherited = nullptr);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a

@@ -1,0 +1,85 @@
+// Bounds of an element's pieces from the element's own det J (see certify_pieces in validity.hpp).
+#include "semimesh/ho/validity.hpp"
+
+#include "jacobian_polynomial.hpp"
+
+#include <limits>
+
+namespace semimesh::ho {
+namespace {
+
+/// The box in the Bernstein domain's coordinates (t = (xi + 1) / 2 along a segment), per
+/// reference direction; false when it is not a box of the element that a piece can be.
+bool domain_box(Shape shape, const ReferenceBox& box, std::array<std::array<double, 2>, 3>& t) {
+  for (int d = 0; d < 3; ++d) {
+    const bool triangle = shape == Shape::Prism && d < 2;
+    if (triangle) {
+      if (box[d][0] != 0.0 || box[d][1] != 1.0) return false;  // a prism's triangle stays whole
+      t[d] = {0.0, 1.0};
+      continue;
+    }
+    if (!(-1.0 <= box[d][0] && box[d][0] < box[d][1] && box[d][1] <= 1.0)) return false;
+    t[d] = {0.5 * (box[d][0] + 1.0), 0.5 * (box[d][1] + 1.0)};
+  }
+  return true;
+}
+
+/// det f: the product of the box's widths over the element's (the triangle's directions: 1).
+double box_determinant(Shape shape, const ReferenceBox& box) {
+  double det = 1.0;
+  for (int d = (shape == Shape::Prism ? 2 : 0); d < 3; ++d) det *= 0.5 * (box[d][1] - box[d][0]);
+  return det;
+}
+
+/// What certify_jacobian_by_subdivision returns when the whole element is one conclusive leaf.
+std::optional<JacobianBounds> leaf_bounds(const BernsteinPolynomial& det_j) {
+  const Eigen::VectorXd& c = det_j.coefficients();
+  const double lowest = c.minCoeff(), highest = c.maxCoeff();
+  if (!(lowest > kPieceMargin * highest)) return std::nullopt;  // near zero: the piece bisects itself
+  JacobianBounds b;
+  b.min_lower = lowest;
+  b.max_upper = highest;
+  b.min_upper = std::numeric_limits<double>::infinity();
+  for (int id : det_j.layout().corners) b.min_upper = std::min(b.min_upper, c[id]);
+  b.valid = b.proven = true;
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order, NodeSet set,
+                                                          const Eigen::MatrixX3d& element_nodes,
+                                                          const std::vector<ReferenceBox>& boxes) {
+  std::vector<std::optional<JacobianBounds>> out(boxes.size());
+  if (shape != Shape::Prism && shape != Shape::Hexahedron) return out;
+  std::vector<std::array<std::array<double, 2>, 3>> t(boxes.size());
+  std::vector<bool> usable(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) usable[k] = domain_box(shape, boxes[k], t[k]);
+
+  JacobianBounds affine;
+  if (affine_jacobian(shape, order, set, element_nodes, affine)) {
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (!usable[k]) continue;
+      const double det = affine.min_lower * box_determinant(shape, boxes[k]);
+      if (!(det > 0.0)) continue;  // an inverted element's pieces: certify them themselves
+      JacobianBounds b = affine;
+      b.min_lower = b.min_upper = b.max_upper = det;
+      out[k] = b;
+    }
+    return out;
+  }
+  const BernsteinPolynomial whole = detail::jacobian_determinant(shape, order, set, element_nodes);
+  // The Bernstein variable of each segment direction: the prism's zeta is its third variable, a
+  // hexahedron's xi_d its variable d.
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    if (!usable[k]) continue;
+    BernsteinPolynomial piece = whole;
+    for (int d = (shape == Shape::Prism ? 2 : 0); d < 3; ++d)
+      if (t[k][d][0] != 0.0 || t[k][d][1] != 1.0) piece = piece.restricted(d, t[k][d][0], t[k][d][1]);
+    piece *= box_determinant(shape, boxes[k]);
+    out[k] = leaf_bounds(piece);
+  }
+  return out;
+}
+
+}  // namespace semimesh::ho

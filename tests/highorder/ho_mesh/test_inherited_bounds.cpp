@@ -1,0 +1,138 @@
+// The split pieces' inherited bounds (split_layers -> certify_mesh) pinned to the reference
+// certification of every element on its own nodes: same verdicts, same bounds to rounding, on
+// prisms and hexahedra (one and two directions) of orders 1-4; none inherited where the interfaces
+// vary (a ratio field) or a piece's nodes moved after the split.
+#include "semimesh/ho/mesh_validity.hpp"
+#include "semimesh/ho/quality.hpp"
+#include "semimesh/ho/splitting/split_layers.hpp"
+#include "semimesh/mesh/compact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+namespace semimesh::ho {
+namespace {
+
+using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+// Two elements of `shape` sharing the face at xi = 1 (hexahedra) or one prism, nodes F at the
+// reference nodes (hexahedra: the second shifted by 2 along xi; F is smooth, so they conform).
+mesh::Mesh curved_elements(Shape shape, int order, const Map& F) {
+  mesh::Mesh m(order, NodeSet::GLL);
+  const Eigen::MatrixX3d r = reference_nodes(shape, order, NodeSet::GLL);
+  const int copies = shape == Shape::Hexahedron ? 2 : 1;
+  std::vector<std::vector<mesh::NodeId>> ids(copies);
+  std::map<std::array<long, 3>, mesh::NodeId> made;
+  for (int c = 0; c < copies; ++c)
+    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+      Eigen::Vector3d q = r.row(i).transpose();
+      q(0) += 2.0 * c;
+      const std::array<long, 3> key{std::lround(q(0) * 1e9), std::lround(q(1) * 1e9), std::lround(q(2) * 1e9)};
+      auto it = made.find(key);
+      if (it == made.end()) it = made.emplace(key, m.add_node(F(q))).first;
+      ids[c].push_back(it->second);
+    }
+  for (const auto& element : ids) m.add_element(shape, element);
+  return m;
+}
+
+Eigen::Vector3d bent(const Eigen::Vector3d& r) {
+  const double x = r(0), y = r(1), z = r(2);
+  return {x + 0.05 * y * z + 0.02 * std::sin(z), 0.15 * std::sin(0.5 * x) + y + 0.03 * x * z,
+          0.1 * (z + 1.0) + 0.04 * std::cos(x) * (1.0 + 0.3 * y)};
+}
+
+void expect_same(const MeshValidity& fast, const MeshValidity& reference) {
+  ASSERT_EQ(fast.bounds.size(), reference.bounds.size());
+  EXPECT_EQ(fast.invalid, reference.invalid);
+  EXPECT_EQ(fast.invalid_elements, reference.invalid_elements);
+  for (std::size_t e = 0; e < fast.bounds.size(); ++e) {
+    const JacobianBounds &a = fast.bounds[e], &b = reference.bounds[e];
+    SCOPED_TRACE("element " + std::to_string(e));
+    EXPECT_EQ(a.valid, b.valid);
+    EXPECT_EQ(a.proven, b.proven);
+    const double scale = std::abs(b.max_upper);
+    EXPECT_NEAR(a.min_lower, b.min_lower, 1e-8 * scale);
+    EXPECT_NEAR(a.max_upper, b.max_upper, 1e-8 * scale);
+    EXPECT_NEAR(scaled_jacobian(a), scaled_jacobian(b), 1e-8);
+  }
+  EXPECT_NEAR(fast.min_scaled_jacobian, reference.min_scaled_jacobian, 1e-8);
+  EXPECT_NEAR(fast.median_scaled_jacobian, reference.median_scaled_jacobian, 1e-8);
+}
+
+TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
+  for (Shape shape : {Shape::Prism, Shape::Hexahedron})
+    for (int order = 1; order <= 4; ++order) {
+      SCOPED_TRACE(to_string(shape) + " P" + std::to_string(order));
+      const mesh::Mesh coarse = curved_elements(shape, order, bent);
+      std::vector<LayerSplit> split;
+      for (std::size_t e = 0; e < coarse.elements().size(); ++e)
+        split.push_back({e, {2, shape == Shape::Hexahedron ? 1 : -1}, {0, 1}});
+      std::vector<InheritedBounds> inherited;
+      const mesh::Mesh fine =
+          split_layers(coarse, split, {{{5, 2.0}, {}}, {{3, 1.5}, {}}}, nullptr, nullptr, {}, &inherited);
+      ASSERT_EQ(inherited.size(), fine.elements().size());
+      for (double floor : {0.0, 1e-5}) {
+        const MeshValidity fast = certify_mesh(fine, 8, floor, {}, &inherited);
+        const MeshValidity reference = certify_mesh(fine, 8, floor);
+        EXPECT_EQ(fast.inherited, fine.elements().size());
+        EXPECT_EQ(reference.inherited, 0u);
+        EXPECT_TRUE(reference.all_valid());
+        expect_same(fast, reference);
+      }
+    }
+}
+
+TEST(InheritedBounds, AFloorAboveTheInheritedRatioSendsThePieceToTheReference) {
+  const mesh::Mesh coarse = curved_elements(Shape::Prism, 3, bent);
+  std::vector<InheritedBounds> inherited;
+  const mesh::Mesh fine = split_layers(coarse, {{0, {2, -1}, {0, 0}}}, {{{5, 2.0}, {}}}, nullptr, nullptr, {}, &inherited);
+  const MeshValidity reference = certify_mesh(fine, 8, 0.0);
+  // A floor between the pieces' scaled Jacobians: the pieces below it are certified again (and
+  // refined against the floor), the others keep their inherited bounds.
+  std::vector<double> scaled;
+  for (const JacobianBounds& b : reference.bounds) scaled.push_back(scaled_jacobian(b));
+  const double floor = 0.5 * (*std::min_element(scaled.begin(), scaled.end()) + *std::max_element(scaled.begin(), scaled.end()));
+  const MeshValidity fast = certify_mesh(fine, 8, floor, {}, &inherited);
+  const MeshValidity slow = certify_mesh(fine, 8, floor);
+  EXPECT_GT(fast.inherited, 0u);
+  EXPECT_LT(fast.inherited, fine.elements().size());
+  expect_same(fast, slow);
+}
+
+TEST(InheritedBounds, NoneWhereTheInterfacesVaryOrANodeMoved) {
+  const mesh::Mesh coarse = curved_elements(Shape::Hexahedron, 2, bent);
+  std::vector<LayerSplit> split{{0, {2, -1}, {0, 0}}, {1, {2, -1}, {0, 0}}};
+  // A ratio that differs between the bottom vertices: the pieces are not the coarse map composed
+  // with an affine map, so none inherits.
+  const RatioField varying = [](const Eigen::Vector3d& x) { return 1.5 + 0.2 * x(0); };
+  std::vector<InheritedBounds> inherited;
+  mesh::Mesh fine = split_layers(coarse, split, {{{4, 1.5}, varying}}, nullptr, nullptr, {}, &inherited);
+  EXPECT_EQ(certify_mesh(fine, 8, 0.0, {}, &inherited).inherited, 0u);
+  // A field giving the family's own ratio everywhere: all inherit.
+  const RatioField constant = [](const Eigen::Vector3d&) { return 1.5; };
+  fine = split_layers(coarse, split, {{{4, 1.5}, constant}}, nullptr, nullptr, {}, &inherited);
+  EXPECT_EQ(certify_mesh(fine, 8, 0.0, {}, &inherited).inherited, fine.elements().size());
+  // Moving one inner node of piece 0 (as a later stage might): that piece is certified again.
+  const mesh::NodeId inner = fine.element_nodes(0).back();  // the piece's own volume node
+  std::vector<mesh::NodeId> identity(fine.num_nodes());
+  std::iota(identity.begin(), identity.end(), mesh::NodeId{0});
+  const mesh::Mesh moved =
+      mesh::with_nodes_replaced(fine, identity, {{inner, fine.node(inner) + Eigen::Vector3d(0.0, 0.0, 1e-3)}});
+  const MeshValidity fast = certify_mesh(moved, 8, 0.0, {}, &inherited);
+  EXPECT_EQ(fast.inherited, moved.elements().size() - 1);
+  expect_same(fast, certify_mesh(moved, 8, 0.0));
+  // Bounds for another number of elements are refused.
+  std::vector<InheritedBounds> short_list(inherited.begin(), inherited.end() - 1);
+  EXPECT_THROW(certify_mesh(fine, 8, 0.0, {}, &short_list), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace semimesh::ho
