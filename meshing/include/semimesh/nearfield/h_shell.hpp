@@ -64,6 +64,10 @@ struct WakeParams {
   double gap = 0.1;
   double ratio_end = 1.0;
   std::string te_base = "auto";  ///< the pipeline resolves "auto" (cad_roles) to the detected base's name
+  /// Not a key: output.target = "pyfr" sets it. The layer edges over each side's trailing edge made
+  /// one vector (translates), so the rear interfaces below the cut and the wake's outflow face are
+  /// parallelograms once split (PyFR's pyramid rule; docs/solvers.md says what is left).
+  bool translational_rear_interfaces = false;
 };
 
 /// One row per key of WakeParams (semimesh/params/table.hpp).
