@@ -188,7 +188,8 @@ class ColumnFinder {
     if (two_axes_ > 0)
       why += (why.empty() ? "" : "; ") + first_two_axes_ +
              " would have to be split into prisms along two axes (it carries pyramids whose bases are not "
-             "parallelograms on two sides; " + std::to_string(two_axes_) + " such meeting(s))";
+             "parallelograms on two sides; " +
+             std::to_string(two_axes_) + " such meeting(s))";
     if (!why.empty()) throw std::invalid_argument("split_pyramid_columns: " + why);
   }
 
@@ -250,9 +251,9 @@ class ColumnFinder {
 
   const mesh::Mesh& m_;
   double tolerance_;
-  std::size_t dead_ends_ = 0;    ///< columns that ran into a prism or tetrahedron
+  std::size_t dead_ends_ = 0;   ///< columns that ran into a prism or tetrahedron
   std::string first_dead_end_;  ///< the element the first one ran into
-  std::size_t two_axes_ = 0;     ///< hexes two columns would split along different axes
+  std::size_t two_axes_ = 0;    ///< hexes two columns would split along different axes
   std::string first_two_axes_;
   std::vector<std::array<std::size_t, 2>> users_;
   std::map<std::uint32_t, std::size_t> boundary_of_face_;

@@ -36,7 +36,8 @@ void check_elements_around(const mesh::Mesh& m, const std::set<NodeId>& moved) {
     Eigen::MatrixX3d x(n, 3);
     for (int k = 0; k < n; ++k) x.row(k) = m.node(e.vertices[k]).transpose();
     if (!ho::certify_jacobian(e.shape, 1, ho::NodeSet::Equispaced, x).valid)
-      throw NearFieldError("near field: output.target = \"pyfr\": the wing layer's prism at " + point_label(m.node(e.vertices[0])) +
+      throw NearFieldError("near field: output.target = \"pyfr\": the wing layer's prism at " +
+                           point_label(m.node(e.vertices[0])) +
                            " folds once the layer edges over the trailing edge are made one vector per side "
                            "(PyFR's parallelogram rule); use a finer trailing edge or a thinner layer");
   }

@@ -37,6 +37,10 @@
 //    faces) is given to the far field already cut, at the split's interfaces along its straight
 //    layer edges, so the pyramids and tetrahedra match the split elements' faces once the split
 //    nodes are welded to these (the paper's pyramids on "(split) quadrilaterals").
+//  - for PyFR (WakeParams::translational_rear_interfaces, output.target = "pyfr"): each side's layer
+//    edges over the trailing edge made one vector before the wake is swept (translational_rims.hpp),
+//    so its rear interfaces and the wake's outflow face are parallelograms once split, save at the
+//    tip's and the root's trailing-edge corners (docs/solvers.md).
 // Boundary orientation as for the C-type; the base quads are in group "wing".
 #pragma once
 
