@@ -168,9 +168,10 @@ params::Table<Config> output_keys() {
       params::strings("formats", &OutputConfig::formats, "each of " + params::choice_range(names),
                       "mesh files to write, each format at most once"),
       params::choice("target", &OutputConfig::target, {{"any", OutputTarget::Any}, {"pyfr", OutputTarget::Pyfr}},
-                     "\"pyfr\": meet PyFR's importer (pyramids only on parallelogram bases: the hex columns under "
-                     "the others split into prisms, their end pyramids into tetrahedra; order <= 4; an ASCII MSH "
-                     "format); \"any\": the near field's hexes as built"),
+                     "\"pyfr\": meet PyFR's importer (pyramids only on parallelogram bases: H-type, the layer "
+                     "edges over each side's trailing edge made one vector; the hex columns under the others split "
+                     "into prisms, their end pyramids into tetrahedra; order <= 4; an ASCII MSH format); \"any\": "
+                     "the near field as built"),
       params::string("directory", &OutputConfig::directory, "non-empty", "where the files go (created if needed)"),
       params::string("basename", &OutputConfig::basename, "non-empty", "mesh file names, without folder"),
       params::boolean("allow_invalid", &OutputConfig::allow_invalid, "write the mesh even when a check fails"),

@@ -192,6 +192,14 @@ nearfield::WakeParams wake_with_base(const cad::Model& model, nearfield::WakePar
   return wake;
 }
 
+// The wake's keys as the near field takes them: te_base resolved; for PyFR the rear interfaces
+// made translational (PyFR's pyramid rule; a different mesh, so only when asked for).
+nearfield::WakeParams wake_for(const Config& config, const cad::Model& model, const Roles& roles) {
+  nearfield::WakeParams wake = wake_with_base(model, config.wake, roles);
+  wake.translational_rear_interfaces = config.output.target == OutputTarget::Pyfr;
+  return wake;
+}
+
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
 surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config, const Roles& roles) {
   const SizingConfig& s = config.sizing;
@@ -393,7 +401,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
     const nearfield::BodyRoles roles{g.roles.body, g.roles.wall};
     if (junction && config.nearfield.topology == "H")
       return nearfield::build_h_shell(*g.model, surfaces, roles, config.nearfield.shell, config.nearfield.junction,
-                                      config.wall_layer.thickness, wake_with_base(*g.model, config.wake, g.roles),
+                                      config.wall_layer.thickness, wake_for(config, *g.model, g.roles),
                                       g.model->bbox(),
                                       layer_fractions(config, chord));
     return junction ? nearfield::build_c_shell(*g.model, surfaces, roles, config.nearfield.shell,

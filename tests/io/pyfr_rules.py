@@ -8,7 +8,12 @@ NodalMeshAssembler) demands of an MSH file, re-implemented (Python standard libr
   - $Elements: only the element types of _etype_map (lines, triangles, quads, tets, hexes,
     prisms, pyramids of orders 1..4; "Unsupported element type"); 4.1: every element block's
     entity carries a physical group (else PyFR's lookup fails); 2.2: every element has a tag;
-  - pyramids have parallelogram bases (_check_pyr_parallelogram, absolute tolerance 1e-10).
+  - pyramids have parallelogram bases (_check_pyr_parallelogram, absolute tolerance 1e-10);
+  - faces paired (NodalMeshAssembler.get_connectivity, "Unpaired faces in mesh"): each volume
+    element's first-order face, by its sorted vertices, is met by exactly one other volume element
+    or, once, by one boundary element; a boundary element on no such face is a KeyError there.
+    Here every surface element counts as a boundary one (semimesh writes surface elements only for
+    its named boundary groups).
 
 usage: pyfr_rules.py FILE.msh...   prints each violation, exit 1 if any
 """
@@ -71,7 +76,9 @@ def check(path):
     if not dims or 3 not in dims:
         bad.append("no volume physical group ('No volume elements in mesh')")
     nodes = read_nodes(sec["Nodes"], version)
-    for etype, conn in read_elements(sec, version, bad):
+    blocks = list(read_elements(sec, version, bad))
+    bad.extend(unpaired_faces(blocks))
+    for etype, conn in blocks:
         if etype not in ETYPES:
             bad.append(f"Unsupported element type {etype}")
         if etype in PYRAMIDS:
@@ -81,6 +88,44 @@ def check(path):
                     bad.append("Pyramids with non-parallelogram bases are currently unsupported")
                     break
     return sorted(set(bad))
+
+
+# First-order faces (Gmsh vertex order) of the volume types, by the number of vertices; the
+# surface types' own vertex counts.
+VOLUME_FACES = {
+    4: [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)],
+    5: [(0, 1, 2, 3), (0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)],
+    6: [(0, 1, 2), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)],
+    8: [(0, 1, 2, 3), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)],
+}
+VOLUME_VERTICES = {4: 4, 11: 4, 29: 4, 30: 4, 7: 5, 14: 5, 118: 5, 119: 5,
+                   6: 6, 13: 6, 90: 6, 91: 6, 5: 8, 12: 8, 92: 8, 93: 8}
+SURFACE_VERTICES = {2: 3, 9: 3, 21: 3, 23: 3, 3: 4, 10: 4, 36: 4, 37: 4}
+
+
+def unpaired_faces(blocks):
+    """PyFR's face pairing: fluid faces pair up, the rest must each meet one boundary face."""
+    resid, bad = {}, []
+    for etype, conn in blocks:
+        n = VOLUME_VERTICES.get(etype)
+        for c in conn if n else []:
+            for f in VOLUME_FACES[n]:
+                key = tuple(sorted(c[k] for k in f))
+                if key in resid:
+                    del resid[key]
+                else:
+                    resid[key] = True
+    for etype, conn in blocks:
+        n = SURFACE_VERTICES.get(etype)
+        for c in conn if n else []:
+            key = tuple(sorted(c[:n]))
+            if key in resid:
+                del resid[key]
+            else:
+                bad.append("a boundary face on no unpaired volume face (KeyError in _ident_boundary_faces)")
+    if resid:
+        bad.append(f"Unpaired faces in mesh ({len(resid)})")
+    return bad
 
 
 def read_nodes(lines, version):

@@ -142,6 +142,11 @@ def main():
                 fh.write(old)
             f.check(any("Duplicate physical entity ID" in b for b in pyfr_rules.check(path("old_tags.msh"))),
                     "PyFR's rules accept duplicate physical tags")
+            # The face rule can fail: one tetrahedron (type 4) alone, with three of its four faces
+            # (type 2 triangles) as boundary, leaves one face unpaired; all four pair it.
+            tet, faces = (4, [[1, 2, 3, 4]]), [[1, 2, 3], [1, 2, 4], [1, 3, 4], [2, 3, 4]]
+            f.check(pyfr_rules.unpaired_faces([tet, (2, faces[:3])]) == ["Unpaired faces in mesh (1)"] and
+                    not pyfr_rules.unpaired_faces([tet, (2, faces)]), "PyFR's face pairing rule does not pair")
     f.finish(f"verify_run_outputs order {a.order}")
 
 

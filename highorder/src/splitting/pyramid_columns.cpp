@@ -167,6 +167,7 @@ class ColumnFinder {
       ++stats.columns;
       walk(e, p.faces[4], diagonal);
     }
+    refuse_what_is_left();
   }
 
   std::map<std::size_t, HexCut> hex_cut;
@@ -176,6 +177,21 @@ class ColumnFinder {
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+
+  // Every column walked first, so the message says how many are left of each kind, not only the first.
+  void refuse_what_is_left() const {
+    std::string why;
+    if (dead_ends_ > 0)
+      why = "the column of hexes under a pyramid whose base is not a parallelogram runs into " + first_dead_end_ +
+            ": only hexes can be split into prisms along a column (" + std::to_string(dead_ends_) + " of the " +
+            std::to_string(stats.pyramids_refused) + " refused pyramids' columns end so)";
+    if (two_axes_ > 0)
+      why += (why.empty() ? "" : "; ") + first_two_axes_ +
+             " would have to be split into prisms along two axes (it carries pyramids whose bases are not "
+             "parallelograms on two sides; " +
+             std::to_string(two_axes_) + " such meeting(s))";
+    if (!why.empty()) throw std::invalid_argument("split_pyramid_columns: " + why);
+  }
 
   std::size_t across(std::uint32_t face, std::size_t from) const {
     const auto& u = users_[face];
@@ -200,10 +216,10 @@ class ColumnFinder {
         pyramid_cut[e] = local_vertex(el, diagonal[0]) % 2;  // base vertices 0-2 or 1-3
         return;
       }
-      if (el.shape != Shape::Hexahedron)
-        throw std::invalid_argument("split_pyramid_columns: the column of hexes under a pyramid whose base is not a "
-                                    "parallelogram runs into " + element_label(m_, e) +
-                                    ": only hexes can be split into prisms along a column");
+      if (el.shape != Shape::Hexahedron) {  // counted, the first named: the message says how many are left
+        if (dead_ends_++ == 0) first_dead_end_ = element_label(m_, e);
+        return;
+      }
       const auto [axis, side] = hex_face_axis(local_face(el, face));
       const Eigen::MatrixX3d ref = reference_vertices(Shape::Hexahedron);
       const int a = local_vertex(el, diagonal[0]);
@@ -212,9 +228,8 @@ class ColumnFinder {
       const auto [it, inserted] = hex_cut.insert({e, {axis, cut}});
       if (!inserted) {
         if (it->second.axis == axis && it->second.diagonal == cut) return;  // met the column from its other end
-        throw std::invalid_argument("split_pyramid_columns: " + element_label(m_, e) +
-                                    " would have to be split into prisms along two axes (it carries pyramids whose "
-                                    "bases are not parallelograms on two sides)");
+        if (two_axes_++ == 0) first_two_axes_ = element_label(m_, e);
+        return;
       }
       ++stats.hexes_split;
       // The same diagonal on the opposite face: each end moved along the column axis.
@@ -236,6 +251,10 @@ class ColumnFinder {
 
   const mesh::Mesh& m_;
   double tolerance_;
+  std::size_t dead_ends_ = 0;   ///< columns that ran into a prism or tetrahedron
+  std::string first_dead_end_;  ///< the element the first one ran into
+  std::size_t two_axes_ = 0;    ///< hexes two columns would split along different axes
+  std::string first_two_axes_;
   std::vector<std::array<std::size_t, 2>> users_;
   std::map<std::uint32_t, std::size_t> boundary_of_face_;
 };

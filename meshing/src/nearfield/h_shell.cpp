@@ -8,6 +8,7 @@
 
 #include "junction_shell.hpp"
 #include "labels.hpp"
+#include "translational_rims.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -718,6 +719,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const Vec3 d = wake_direction(wake);
   const TrailingEdge te = find_trailing_edge(model, meshes, roles, wake, d);
   detail::JunctionShell js = junction_shell(model, meshes, roles, params, junction, wall_thickness, te);
+  if (wake.translational_rear_interfaces) detail::make_rear_interfaces_translational(js);
   if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
   const FanLegs fan = add_fan_middle_leg(model, roles.wall_surface, js);

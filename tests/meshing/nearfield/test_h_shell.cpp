@@ -167,6 +167,63 @@ TEST(HShell, SweptCamberedBaseLeavesQuadsAPyramidFits) {
 }
 
 
+// The layer edge (offset - body node) of each wing-layer prism's body vertex on `curve` (a
+// trailing-edge corner curve), by body node; the root row's strip top (the lowest one) left out:
+// it stands on the junction's halo.
+std::map<mesh::NodeId, Vec3> trailing_edge_layer_edges(const mesh::Mesh& m, int curve) {
+  std::map<mesh::NodeId, Vec3> edges;
+  for (const mesh::Element& e : m.elements()) {
+    if (e.shape != ho::Shape::Prism) continue;
+    for (int i = 0; i < 3; ++i) {
+      const mesh::CadAttachment& at = m.cad_attachment(e.vertices[i]);
+      if (at.kind == mesh::CadAttachment::Curve && at.entity == curve)
+        edges[e.vertices[i]] = m.node(e.vertices[i + 3]) - m.node(e.vertices[i]);
+    }
+  }
+  const auto lowest = std::min_element(edges.begin(), edges.end(), [&](const auto& a, const auto& b) {
+    return m.node(a.first).z() < m.node(b.first).z();
+  });
+  if (lowest != edges.end()) edges.erase(lowest);
+  return edges;
+}
+
+// The largest difference between two of the layer edges.
+double spread(const std::map<mesh::NodeId, Vec3>& edges) {
+  double worst = 0.0;
+  for (const auto& [a, u] : edges)
+    for (const auto& [b, w] : edges) worst = std::max(worst, (u - w).cwiseAbs().maxCoeff());
+  return worst;
+}
+
+// For PyFR (its importer refuses pyramids on bases that are not parallelograms): each side's layer
+// edges over the trailing edge, the tip's corners and the root's strip tops aside, are one vector,
+// so every rear interface cut at the same fractions on both edges is a row of parallelograms (and
+// the wake's outflow face too). Without the option they differ (the normals vary towards the tip);
+// with it every element stays valid and the rest of the layer is untouched.
+TEST(HShell, PyfrTargetMakesEachSidesRearInterfacesTranslational) {
+  WakeParams wake = short_wake();
+  const Built plain = build(wake);
+  wake.translational_rear_interfaces = true;
+  const Built pyfr = build(wake);
+  for (const char* name : {"te_upper", "te_lower"}) {
+    const int curve = curve_named(*pyfr.model, name);
+    const auto before = trailing_edge_layer_edges(plain.field.mesh, curve);
+    const auto after = trailing_edge_layer_edges(pyfr.field.mesh, curve);
+    ASSERT_GT(after.size(), 5u) << name;
+    EXPECT_EQ(after.size(), before.size()) << name;
+    EXPECT_GT(spread(before), 1e-6) << name;  // the test can fail: the plain layer is not translational
+    EXPECT_LT(spread(after), 1e-12) << name;
+  }
+  EXPECT_EQ(testing::invalid_elements(pyfr.field.mesh), 0);
+  ASSERT_EQ(pyfr.field.mesh.num_nodes(), plain.field.mesh.num_nodes());
+  int moved = 0;
+  for (mesh::NodeId v = 0; v < pyfr.field.mesh.num_nodes(); ++v)
+    moved += (pyfr.field.mesh.node(v) - plain.field.mesh.node(v)).norm() > 0.0;
+  EXPECT_GT(moved, 10);
+  // The trailing edge's offsets and the wake nodes swept from them, not the layer's.
+  EXPECT_LT(moved, static_cast<int>(pyfr.field.mesh.num_nodes() / 4));
+}
+
 // Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own
 // normal (two offsets per curve node), the wake's upper and lower hexes share the swept curve (the
 // wake sheet): every sheet face is a face of exactly two wake hexes, one on each side.

@@ -11,9 +11,10 @@
 // restricted to half the hex, the tetrahedron the pyramid's), so the geometry is the original one up
 // to the interpolation of that map at order P.
 //
-// What cannot be done this way is refused (std::invalid_argument naming the element, its region and
-// a point): a column that runs into a prism or tetrahedron, or a hex that two columns would split
-// along two different axes (e.g. a block's edge where two of its faces carry such pyramids).
+// What cannot be done this way is refused once every column has been walked (std::invalid_argument
+// naming the first element of each kind, its region and a point, and how many there are): a column
+// that runs into a prism or tetrahedron, or a hex that two columns would split along two different
+// axes (e.g. a block's edge where two of its faces carry such pyramids).
 #pragma once
 
 #include "semimesh/mesh/mesh.hpp"

@@ -1,0 +1,23 @@
+// The H-type's rear interfaces made translational for PyFR (output.target = "pyfr"; docs/solvers.md).
+// PyFR refuses a pyramid whose base's corners are not a parallelogram. A rear interface (a, b, b',
+// a') cut by the wing layer's split at the same fractions f_k on both layer edges gives quads whose
+// defect a_k - b_k + b_{k+1} - a_{k+1} is (f_{k+1} - f_k) ((b' - b) - (a' - a)): they are all
+// parallelograms when the two layer edges are translates of each other, whatever a - b is. The
+// wake sweeps the rear interfaces above the cut downstream unchanged (no widening), so its outflow
+// face inherits them; those below the cut face the far field themselves.
+#pragma once
+
+#include "junction_shell.hpp"
+
+#include <cstddef>
+
+namespace semimesh::nearfield::detail {
+
+/// Moves the offset node of every rear-interface node that belongs to one side only (one CAD
+/// surface: upper, lower, tip) so all of that side's layer edges there are the side's mean one.
+/// Left as they are: the root row (pinned at the junction's halos) and the corners two sides
+/// share (e.g. the tip's trailing-edge corners), where no one vector serves both sides. A sharp
+/// trailing edge: the crack's nodes only. Returns the number of offset nodes moved.
+std::size_t make_rear_interfaces_translational(JunctionShell& js);
+
+}  // namespace semimesh::nearfield::detail
