@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/install-deps.sh
+export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"  # as scripts/test.sh, which shares build/
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)" --target semimesh
 ./build/apps/semimesh run examples/naca0012_wing.toml -o out/naca0012_wing

@@ -19,6 +19,9 @@ scripts/install-deps.sh
 # The benchmarks (bench/) print figures and are no test: built with --long only.
 bench=OFF
 if [ "$long" = 1 ]; then bench=ON; fi
+# Ninja for a new build folder (an existing one keeps its generator): it compiles any ready file
+# while Make waits for each library to be finished before starting the next.
+export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSEMIMESH_BUILD_BENCH="$bench"
 cmake --build build -j"$(nproc)"
 
