@@ -108,10 +108,12 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     // The node set's fractions of the parameter interval, or of the arc length (the spring chain's
     // optimum on a curve).
     const cad::Curve& c = model_.curve(place.id);
-    // b's parameter first on its own, then each end next to the other (a closed curve's vertex).
-    const double tb0 = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, std::nullopt);
+    // b's parameter first on its own, then each end next to the other: a closed curve's vertex
+    // takes the end nearer the edge's other node (only a vertex needs b's second look).
+    const CadAttachment& att_b = in_.cad_attachment(b);
+    const double tb0 = detail::curve_parameter(model_, place.id, att_b, xb, std::nullopt);
     const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, tb0);
-    const double tb = detail::curve_parameter(model_, place.id, in_.cad_attachment(b), xb, ta);
+    const double tb = att_b.kind == CadAttachment::Vertex ? detail::curve_parameter(model_, place.id, att_b, xb, ta) : tb0;
     const double length = springs ? c.arc_length(ta, tb) : 0.0;
     for (int i = 0; i < P - 1; ++i) {
       const double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);
