@@ -541,6 +541,32 @@ double chord_of(const Config& config, const Geometry& g, const surface::SurfaceM
   return reference_length(config.geometry, body);
 }
 
+// Twice the centroid's distance to the wall times the area, summed over flat facets with corners on
+// a curved wall: a bound on the volume between them and the wall (a parabolic bulge's mean height
+// is two thirds of its largest, and the centroid sits near the largest).
+double facet_gap(const cad::Surface& wall, const cad::Vec3& a, const cad::Vec3& b, const cad::Vec3& c) {
+  const cad::Vec3 centroid = (a + b + c) / 3.0;
+  return 2.0 * (0.5 * (b - a).cross(c - a).norm()) * wall.project(centroid).distance;
+}
+
+// How far the element volume of a mesh on a curved wall may be from the surface meshes' box minus
+// body: both stand on flat facets under the wall (the surface stage's and the far field's own), each
+// missing the volume between its facets and the wall.
+double curved_wall_volume_gap(const cad::Surface& wall, const surface::SurfaceMesh& wall_mesh, const mesh::Mesh& mesh) {
+  double gap = 0.0;
+  for (const auto& t : wall_mesh.triangles)
+    gap += facet_gap(wall, wall_mesh.points[t[0]], wall_mesh.points[t[1]], wall_mesh.points[t[2]]);
+  const auto it = std::find(mesh.group_names().begin(), mesh.group_names().end(), "wall");
+  const auto group = static_cast<std::uint16_t>(it - mesh.group_names().begin());
+  for (const mesh::BoundaryFace& f : mesh.boundary_faces()) {
+    if (f.group != group) continue;
+    gap += facet_gap(wall, mesh.node(f.vertices[0]), mesh.node(f.vertices[1]), mesh.node(f.vertices[2]));
+    if (f.shape == ho::Shape::Quadrilateral)
+      gap += facet_gap(wall, mesh.node(f.vertices[0]), mesh.node(f.vertices[2]), mesh.node(f.vertices[3]));
+  }
+  return gap;
+}
+
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
@@ -557,12 +583,16 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     // where nodes lie on its CAD curved at order > 1: the box it bounds is the mesh's own far-field
     // faces', not the surface stage's triangulation's (equal to round-off on planar faces only).
     if (curved_far_field) box.clear();
-    result.volume = checks::check_volume(result.mesh, body, box, surfaces.surfaces[g.roles.wall]);
+    const cad::Surface& wall = g.model->surface(g.roles.wall);
+    const surface::SurfaceMesh& wall_mesh = surfaces.surfaces[g.roles.wall];
+    result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh)
+                                     : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh);
     // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
     // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
-    if (result.mesh.order() > 1)
-      result.expected_volume_tolerance =
-          kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume) / result.volume.expected_volume();
+    double gap = 0.0;
+    if (result.mesh.order() > 1) gap += kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume);
+    if (!wall.is_planar()) gap += curved_wall_volume_gap(wall, wall_mesh, result.mesh);
+    if (gap > 0) result.expected_volume_tolerance = gap / result.volume.expected_volume();
     result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
                                              progress_part(report, 0.1, 0.9), &inherited);
     if (report) report(0.9, "geometric error");

@@ -16,13 +16,20 @@
 //              hemisphere of 8 chords, the far field in the file (needs naca.farfield=false);
 //   two_bodies two body-only wings side by side (bad input: needs naca.farfield=false);
 //   no_body    a box and nothing in it (bad input).
+//   fuselage   the body, sunk 0.3 chord into a circular cylinder of radius 1.5 chords whose axis
+//              runs along x through z = -1.5 chords (a fuselage), fused to it, inside a box that the
+//              fuselage crosses from end to end: the far field in the file, the wall a cylinder
+//              (needs naca.farfield=false).
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -33,6 +40,8 @@
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
 #include <ShapeFix_Face.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <TopoDS_Shell.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Trsf.hxx>
@@ -138,6 +147,30 @@ TopoDS_Shape in_hemisphere(const TopoDS_Shape& body, double chord) {
   return sewing.SewedShape();
 }
 
+// A wing-fuselage model: the box minus (wing sunk into the cylinder, fused to it). The wing is
+// capped and moved down so that its root section lies inside the cylinder: the Boolean finds the
+// root curve, the exact intersection of the skin with the cylinder.
+TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord) {
+  const double radius = 1.5 * chord, sunk = 0.3 * chord, length = 24 * chord;
+  TopoDS_Shell skin;
+  for (TopExp_Explorer shell(capped(body), TopAbs_SHELL); shell.More(); shell.Next()) skin = TopoDS::Shell(shell.Current());
+  ShapeFix_Solid solid;
+  const TopoDS_Shape wing = moved(solid.SolidFromShell(skin), gp_Vec(0, 0, -sunk));
+  // The seam at the bottom (the axis system's x direction -z), away from the root.
+  const gp_Ax2 axis(gp_Pnt(-0.5 * length + 0.5 * chord, 0, -radius), gp::DX(), -gp::DZ());
+  const TopoDS_Shape fuselage = BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
+  BRepAlgoAPI_Fuse fused(wing, fuselage);
+  if (!fused.IsDone()) throw std::runtime_error("fuselage: the Boolean fuse of wing and cylinder failed");
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(-10 * chord, -10 * chord, -radius - 10 * chord),
+                                               gp_Pnt(11 * chord, 10 * chord, 10 * chord)).Shape();
+  BRepAlgoAPI_Cut fluid(box, fused.Shape());
+  if (!fluid.IsDone()) throw std::runtime_error("fuselage: the Boolean cut of the box failed");
+  // Its shell, as a closed shell's faces are read: bounding the fluid (a solid is read as a body).
+  TopExp_Explorer shell(fluid.Shape(), TopAbs_SHELL);
+  if (!shell.More()) throw std::runtime_error("fuselage: the Boolean cut left no shell");
+  return shell.Current();
+}
+
 TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
   if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
@@ -147,8 +180,10 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "hemisphere") return in_hemisphere(wing, params.chord);
   if (name == "two_bodies") return compound_of({wing, moved(wing, gp_Vec(0, 3 * params.chord, 0))});
   if (name == "no_body") return BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), gp_Pnt(2, 1, 1)).Shape();
+  if (name == "fuselage") return on_fuselage(wing, params.chord);
   throw std::invalid_argument("unknown variant '" + name +
-                              "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body)");
+                              "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
+                              "fuselage)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

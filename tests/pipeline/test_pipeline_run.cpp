@@ -382,7 +382,7 @@ TEST(PipelineRunCType, WallRatioVaryingAlongTheWall) {
 TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{"nearfield.junction_min_angle=100"}, {"('root_", "90 degrees"}},
-      {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "not planar"}},
+      {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "no inner loop"}},
       {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
       {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"},
        {"root loop is too short", "('root_", "thickness 0.6", "wall layer thickness 0.04"}},

@@ -218,6 +218,49 @@ double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& fac
   return volume;
 }
 
+namespace {
+
+// (1/3) the flux of x - p through `faces` along their fluid normals: minus their share of the
+// fluid's volume (divergence theorem with div (x - p) / 3 = 1; exact on flat facets).
+double fluid_normal_flux(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& p) {
+  double flux = 0.0;
+  auto add = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    flux += (0.5 * (b - a).cross(c - a)).dot((a + b + c) / 3.0 - p) / 3.0;
+  };
+  for (const surface::SurfaceMesh* mesh : faces) {
+    for (const auto& t : mesh->triangles) add(mesh->points[t[0]], mesh->points[t[1]], mesh->points[t[2]]);
+    for (const auto& q : mesh->quads) {
+      add(mesh->points[q[0]], mesh->points[q[1]], mesh->points[q[2]]);
+      add(mesh->points[q[0]], mesh->points[q[2]], mesh->points[q[3]]);
+    }
+  }
+  return flux;
+}
+
+}  // namespace
+
+VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
+                                     const std::vector<const surface::SurfaceMesh*>& farfield,
+                                     const surface::SurfaceMesh& wall) {
+  const Eigen::Vector3d p = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
+  VolumeCheck result;
+  result.mesh = mesh_volume(mesh);
+  result.body_volume = fluid_normal_flux(body, p);
+  result.box_volume = -fluid_normal_flux({&wall}, p);
+  if (!farfield.empty()) {
+    result.box_volume -= fluid_normal_flux(farfield, p);
+    return result;
+  }
+  RuleCache rules(mesh.order(), mesh.node_set());
+  const auto it = std::find(mesh.group_names().begin(), mesh.group_names().end(), "farfield");
+  const int group = static_cast<int>(it - mesh.group_names().begin());
+  result.box_volume += boundary_flux(
+                           mesh, rules, [&](const mesh::BoundaryFace& f) { return f.group == group; },
+                           [&](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return area.dot(x - p); },
+                           nullptr) / 3.0;
+  return result;
+}
+
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                          const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall) {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();

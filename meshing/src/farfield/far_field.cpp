@@ -7,12 +7,14 @@
 #include "tetgen_volume.hpp"
 #include "semimesh/farfield/detail/wall_annulus.hpp"
 #include "wall_layer.hpp"
+#include "../surface/boundary_nodes.hpp"
 
 #include "semimesh/surface/curve_discretisation.hpp"
 #include "semimesh/surface/error.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 
 #include <Eigen/Geometry>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,8 +56,6 @@ void check_params(const cad::Model& model, const nearfield::NearField& nf, const
     require(s >= 0 && s < model.num_surfaces(), "box surface id " + std::to_string(s) + " is not a surface of the model");
   require(wall_surface >= 0 && wall_surface < model.num_surfaces(),
           "wall surface id " + std::to_string(wall_surface) + " is not a surface of the model");
-  require(model.surface(wall_surface).is_planar(),
-          "the wall, " + cad::surface_label(model, wall_surface) + ", is not planar");
 }
 
 // One mesh node per CAD vertex and per inner curve-mesh node, so every surface using a curve
@@ -152,9 +152,10 @@ void canonicalise_outer_loop(std::vector<NodeId>& ids, const PlaneFrame& frame, 
               ids.end());
 }
 
-// The far-field part of the wall; triangles returned with their normal out of the domain.
-std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
-                                const FarFieldParams& params, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
+// The far-field part of a planar wall, triangulated in the plane; triangles returned with their
+// normal out of the domain.
+std::vector<Triangle> mesh_planar_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
+                                       const FarFieldParams& params, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
   const cad::Surface& wall = model.surface(wall_surface);
   const PlaneFrame frame = wall_frame(wall);
 
@@ -187,6 +188,87 @@ std::vector<Triangle> mesh_wall(const cad::Model& model, int wall_surface, const
   std::vector<Triangle> triangles;
   // Counter-clockwise in (e1, e2) means along the fluid normal: reversed to face out of the domain.
   for (const auto& t : annulus.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
+  return triangles;
+}
+
+// Segments per radian of turning on a curved wall and its curves: the near field's default
+// (sizing.curvature_segments), so a far-field triangle's chord stays within 3 % of its size off
+// the wall and the tets on it keep their shape once curved onto it.
+constexpr double kCurvedWallSegments = 4.0;
+
+// The far-field part of a curved wall (a fuselage, a hub), triangulated in the wall's parameter
+// plane scaled to lengths at the root, (u |S_u|, v |S_v|), which is exact on a cylinder or cone's
+// developable chart and close to it near the root elsewhere. The outer loops come from the surface
+// mesher's boundary (a periodic wall cut open along its seam, whose nodes appear twice); the hole is
+// the near field's footprint, whose nodes the near field attached to the wall. Triangles returned
+// with their normal out of the domain.
+std::vector<Triangle> mesh_curved_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
+                                       const FarFieldParams& params, const surface::CurveMeshes& curves,
+                                       CurveNodes& curve_nodes, mesh::Mesh& mesh) {
+  const cad::Surface& wall = model.surface(wall_surface);
+  auto footprint_uv = [&](NodeId id, const cad::Vec2& guess) {
+    const CadAttachment cad = mesh.cad_attachment(id);
+    if (cad.kind == CadAttachment::Surface && cad.entity == wall_surface) return cad::Vec2(cad.u, cad.v);
+    return wall.project(mesh.node(id), guess).uv;
+  };
+  if (nf.footprint.empty()) throw FarFieldError("far field: the near field has no footprint on the wall");
+  std::vector<cad::Vec2> hole_uv;
+  cad::Vec2 guess = wall.project(mesh.node(nf.footprint.front())).uv;
+  for (NodeId id : nf.footprint) hole_uv.push_back(guess = footprint_uv(id, guess));
+
+  const cad::Vec2 root_uv = hole_uv.front();
+  const cad::SurfaceDerivatives d = wall.derivatives(root_uv);
+  const Eigen::Vector2d scale(d.du.norm(), d.dv.norm());
+  // Counter-clockwise in the chart is along S_u x S_v: into the fluid when the wall's normal agrees.
+  const bool chart_faces_fluid = d.du.cross(d.dv).dot(wall.normal(root_uv)) > 0;
+  auto to_chart = [&](const cad::Vec2& uv) { return Eigen::Vector2d(uv.x() * scale.x(), uv.y() * scale.y()); };
+
+  surface::SurfaceMesh boundary;
+  std::vector<std::vector<int>> loops;
+  try {
+    loops = surface::detail::add_boundary_nodes(model, wall_surface, curves, boundary);
+  } catch (const surface::SurfaceMeshError& e) {
+    throw FarFieldError("far field: the wall " + cad::surface_label(model, wall_surface) + ": " + e.what());
+  }
+  if (model.loops(wall_surface).size() != 2)
+    throw FarFieldError(fmt::format("far field: the curved wall {} has {} loops; the far field meshes a curved wall "
+                                    "with one outer loop and the body's root as its one hole",
+                                    cad::surface_label(model, wall_surface), model.loops(wall_surface).size()));
+  std::vector<NodeId> ids;
+  std::vector<Eigen::Vector2d> outer, hole;
+  for (int i : loops.front()) {
+    const surface::NodeOrigin& o = boundary.origin[i];
+    ids.push_back(curve_nodes.node(o.curve, o.index));
+    outer.push_back(to_chart(boundary.uv[i]));
+  }
+  const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
+  for (std::size_t i = 0; i < nf.footprint.size(); ++i) {
+    const NodeId id = nf.footprint[i];
+    const double off = (mesh.node(id) - wall.point(hole_uv[i])).norm();
+    if (off > 10 * tolerance)
+      throw FarFieldError(fmt::format("far field: footprint node {} lies {:.3g} off the wall {}", id, off,
+                                      cad::surface_label(model, wall_surface)));
+    hole.push_back(to_chart(hole_uv[i]));
+    ids.push_back(id);
+  }
+
+  // Edges turn by at most 1 / kCurvedWallSegments radians on the wall, as the curve meshes do.
+  double kappa = 0.0;
+  for (const auto* uvs : {&boundary.uv, &hole_uv})
+    for (const cad::Vec2& uv : *uvs) {
+      const cad::PrincipalCurvatures k = wall.curvatures(uv);
+      kappa = std::max({kappa, std::abs(k.k_min), std::abs(k.k_max)});
+    }
+  const double max_size = kappa > 0 ? std::min(params.wall_size, 1.0 / (kCurvedWallSegments * kappa)) : params.wall_size;
+  const Annulus annulus = triangulate_annulus(outer, hole, max_size, params.growth);
+  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
+    const cad::Vec2 uv(annulus.points[i].x() / scale.x(), annulus.points[i].y() / scale.y());
+    ids.push_back(mesh.add_node(wall.point(uv), {CadAttachment::Surface, wall_surface, uv.x(), uv.y()}));
+  }
+  std::vector<Triangle> triangles;
+  for (const auto& t : annulus.triangles)
+    triangles.push_back(chart_faces_fluid ? Triangle{ids[t[0]], ids[t[2]], ids[t[1]]}
+                                          : Triangle{ids[t[0]], ids[t[1]], ids[t[2]]});
   return triangles;
 }
 
@@ -270,11 +352,12 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   FarFieldStats stats;
   report(0.0, "box and wall");
 
-  // Box sizes are uniform: the box is planar and far from the body, so no curvature sources.
+  // Box sizes are uniform: the box is planar and far from the body, so no curvature sources; a
+  // curved wall's curves (a fuselage's ends, its seam) follow its curvature.
   surface::SizeParams size_params;
   size_params.max_size = params.box_size;
   size_params.min_size = std::min(size_params.min_size, params.box_size);
-  size_params.curvature_segments = 0.0;
+  size_params.curvature_segments = model.surface(wall_surface).is_planar() ? 0.0 : kCurvedWallSegments;
   size_params.gradation = params.growth;
   size_params.le_curves.clear();
   size_params.te_curves.clear();
@@ -283,7 +366,9 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   CurveNodes curve_nodes(model, curves, mesh);
 
   std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
-  const std::vector<Triangle> wall = mesh_wall(model, wall_surface, nf, params, curve_nodes, mesh);
+  const std::vector<Triangle> wall = model.surface(wall_surface).is_planar()
+                                         ? mesh_planar_wall(model, wall_surface, nf, params, curve_nodes, mesh)
+                                         : mesh_curved_wall(model, wall_surface, nf, params, curves, curve_nodes, mesh);
   const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
   // With a wall layer, its tops stand between the wall and the tetrahedra.
   std::vector<Triangle> wall_side = wall;

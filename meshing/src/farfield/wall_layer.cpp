@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -61,7 +62,7 @@ CadAttachment top_entity(const cad::Model& model, const CadAttachment& bottom, i
 // How far a far-field face leans from the wall's normal where it meets the wall (radians, the
 // largest over samples of the curves it shares with the wall), or nothing when it does not meet
 // the wall. A box side (plane) or a hemisphere cut at its equator: 0.
-std::optional<double> tilt_at_the_wall(const cad::Model& model, int surface, int wall, const Eigen::Vector3d& normal) {
+std::optional<double> tilt_at_the_wall(const cad::Model& model, int surface, int wall) {
   constexpr int kSamples = 8;
   std::optional<double> tilt;
   for (const cad::Loop& loop : model.loops(surface))
@@ -72,11 +73,63 @@ std::optional<double> tilt_at_the_wall(const cad::Model& model, int surface, int
       for (int k = 0; k <= kSamples; ++k) {
         const cad::Vec3 x = curve.point(t.lo + t.length() * k / kSamples);
         const auto p = model.surface(surface).project(x);
+        const Eigen::Vector3d normal = model.surface(wall).normal(model.surface(wall).project(x).uv);
         const double leaning = std::asin(std::min(1.0, std::abs(model.surface(surface).normal(p.uv).dot(normal))));
         tilt = std::max(tilt.value_or(0.0), leaning);
       }
     }
   return tilt;
+}
+
+// Heights above the wall and its normal into the fluid, where the wall layer needs them: on a plane
+// the signed distance and the one normal; on a curved wall (a fuselage) the distance to the
+// surface and the normal at the foot, found from a point's own wall parameters when it has them.
+class WallHeights {
+ public:
+  WallHeights(const cad::Model& model, int wall) : wall_(model.surface(wall)), id_(wall), planar_(wall_.is_planar()) {
+    const auto b = wall_.bounds();
+    const cad::Vec2 mid(0.5 * (b[0].lo + b[0].hi), 0.5 * (b[1].lo + b[1].hi));
+    normal_ = wall_.normal(mid);
+    origin_ = wall_.point(mid);
+  }
+  bool planar() const { return planar_; }
+  /// One normal for every point of a planar wall (the one used for all of them).
+  const Eigen::Vector3d& plane_normal() const { return normal_; }
+
+  double height(const Eigen::Vector3d& x) const {
+    if (planar_) return (x - origin_).dot(normal_);
+    const cad::SurfaceProjection p = wall_.project(x);
+    return (x - p.point).dot(wall_.normal(p.uv));
+  }
+  /// The normal under x; `cad` its attachment (the wall's parameters, when on the wall surface).
+  Eigen::Vector3d normal_under(const Eigen::Vector3d& x, const CadAttachment& cad) const {
+    if (planar_) return normal_;
+    if (cad.kind == CadAttachment::Surface && cad.entity == id_) return wall_.normal(cad::Vec2(cad.u, cad.v));
+    return wall_.normal(wall_.project(x).uv);
+  }
+
+ private:
+  const cad::Surface& wall_;
+  int id_;
+  bool planar_;
+  Eigen::Vector3d normal_, origin_;
+};
+
+// The height under which box nodes are lifted: on a plane the box's whole height (the lift fades
+// to nothing at its top); on a curved wall the reach of the box triangles touching the wall, so
+// nodes far away, whose foot on the wall may not be the nearest point of its trimmed face, stay.
+double lift_reach(const WallHeights& wall, const std::vector<Triangle>& box, const mesh::Mesh& mesh, double tolerance) {
+  double reach = 0.0;
+  for (const Triangle& t : box) {
+    double low = std::numeric_limits<double>::infinity(), high = 0.0;
+    for (NodeId v : t) {
+      const double d = wall.height(mesh.node(v));
+      low = std::min(low, d);
+      high = std::max(high, d);
+    }
+    if (wall.planar() || low <= tolerance) reach = std::max(reach, high);
+  }
+  return reach;
 }
 
 }  // namespace
@@ -86,15 +139,13 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
                            std::vector<Triangle>& box, mesh::Mesh& mesh) {
   if (near.footprint_top.size() != near.footprint.size())
     throw FarFieldError("far field: a wall layer needs the near field's halo above its footprint (C-type near field)");
-  const cad::Surface& wall_face = model.surface(wall_surface);
-  const auto b = wall_face.bounds();
-  const cad::Vec2 mid(0.5 * (b[0].lo + b[0].hi), 0.5 * (b[1].lo + b[1].hi));
-  const Eigen::Vector3d normal = wall_face.normal(mid), origin = wall_face.point(mid);
-  auto height = [&](const Eigen::Vector3d& x) { return (x - origin).dot(normal); };
+  const WallHeights wall_heights(model, wall_surface);
+  auto height = [&](const Eigen::Vector3d& x) { return wall_heights.height(x); };
+  auto normal_under = [&](NodeId v) { return wall_heights.normal_under(mesh.node(v), mesh.cad_attachment(v)); };
   const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
 
   for (int s : box_surfaces)
-    if (const std::optional<double> tilt = tilt_at_the_wall(model, s, wall_surface, normal); tilt && *tilt > kMaxTilt)
+    if (const std::optional<double> tilt = tilt_at_the_wall(model, s, wall_surface); tilt && *tilt > kMaxTilt)
       throw FarFieldError(fmt::format("far field: {} meets the wall at {:.3g} degrees from the wall's normal; the "
                                       "wall layer stands its sides on the far field's faces, which must rise "
                                       "perpendicular to the wall (within {:.3g} degrees) where they meet it",
@@ -103,17 +154,18 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   // Lift the box: nodes on the wall get a top node, the others move up.
   std::set<NodeId> box_nodes;
   for (const Triangle& t : box) box_nodes.insert(t.begin(), t.end());
-  double box_height = 0.0;
-  for (NodeId v : box_nodes) box_height = std::max(box_height, height(mesh.node(v)));
+  const double box_height = lift_reach(wall_heights, box, mesh, tolerance);
   if (!(thickness < 0.5 * box_height))
-    throw FarFieldError("far field: the wall layer's thickness " + std::to_string(thickness) +
-                        " is not below half the box height " + std::to_string(box_height));
+    throw FarFieldError("far field: the wall layer's thickness " + std::to_string(thickness) + " is not below half " +
+                        (wall_heights.planar() ? "the box height " : "the height of the box triangles on the wall ") +
+                        std::to_string(box_height));
   std::unordered_map<NodeId, NodeId> top_of;
   for (std::size_t i = 0; i < near.footprint.size(); ++i) top_of[near.footprint[i]] = near.footprint_top[i];
   for (NodeId v : box_nodes) {
     const Eigen::Vector3d x = mesh.node(v);
     const double d = height(x);
     if (d >= box_height - tolerance) continue;
+    const Eigen::Vector3d normal = normal_under(v);
     if (d <= tolerance) {
       const NodeId top = mesh.add_node(x + thickness * normal);
       place_on_entity(model, mesh, top, x + thickness * normal,
@@ -139,7 +191,7 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
     std::array<NodeId, 3> top;
     for (int k = 0; k < 3; ++k) {
       auto [it, added] = top_of.try_emplace(bottom[k], mesh::kNoNode);
-      if (added) it->second = mesh.add_node(mesh.node(bottom[k]) + thickness * normal);
+      if (added) it->second = mesh.add_node(mesh.node(bottom[k]) + thickness * normal_under(bottom[k]));
       top[k] = it->second;
     }
     layer.stacks.push_back({mesh.elements().size(), {nearfield::LayerDirection{2, nearfield::LayerFamily::Wall}}});

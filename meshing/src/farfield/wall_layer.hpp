@@ -19,10 +19,13 @@ struct WallLayer {
 };
 
 /// Adds to `mesh` the wall-layer prisms (region "wall_layer") on `wall` (triangles facing out of
-/// the domain, i.e. into the wall), their tops over the near field's footprint being
-/// near.footprint_top, the "farfield" quads where the layer meets the box, and lifts the box nodes:
-/// a node at height d above the wall (box height D) moves to delta + d (1 - delta / D) on its CAD
-/// entity; `box` triangles referring to nodes on the wall then refer to their tops. Throws
+/// the domain, i.e. into the wall), each node's top delta along the wall's normal under it (one
+/// normal on a plane, the CAD's at the node on a curved wall), their tops over the near field's
+/// footprint being near.footprint_top, the "farfield" quads where the layer meets the box, and
+/// lifts the box nodes: a node at height d above the wall moves to delta + d (1 - delta / D) on its
+/// CAD entity (D: the box's height over a plane; over a curved wall the height of the box triangles
+/// touching it, nodes higher up staying); `box` triangles referring to nodes on the wall then
+/// refer to their tops. Throws
 /// FarFieldError naming the surface when a far-field face (a box side, a hemisphere) does not rise
 /// perpendicular to the wall where it meets it,
 /// or the footprint has no halo (near.footprint_top).

@@ -34,9 +34,6 @@ void check_junction_params(const cad::Model& model, const BodyRoles& roles, cons
     fail("the wall layer's thickness must be a finite number > 0 for a C-type junction, got " +
          number_label(wall_thickness));
   if (roles.wall_surface < 0) fail("a C-type near field needs a wall surface");
-  if (!model.surface(roles.wall_surface).is_planar())
-    fail("the wall " + surface_label(model, roles.wall_surface) +
-         " is not planar; the C-type near field builds its wall layer on a planar wall only (use topology \"O\")");
 }
 
 // The root curves: every body-wall curve, each of which must be a concave corner (from the CAD,
@@ -246,8 +243,10 @@ int root_curve_of(const cad::Model& model, const CadAttachment& root, int wall) 
 // (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
 void place_wall_foot(const cad::Model& model, int wall_surface, const Vec3& outward, const Frame& wall,
                      double delta_wing, double delta_wall, JunctionNode& j) {
-  const double out = (j.halo - delta_wall * wall.normal - j.root).dot(outward);
-  const auto foot = model.surface(wall_surface).project(j.root + std::max(out, delta_wing) * outward);
+  const double out = (j.halo - delta_wall * wall.normal_at(j.root) - j.root).dot(outward);
+  const cad::Surface& face = model.surface(wall_surface);
+  const Vec3 above_foot = j.root + std::max(out, delta_wing) * outward;
+  const auto foot = wall.curved ? face.project(above_foot, wall.root_uv) : face.project(above_foot);
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
 }
@@ -259,7 +258,7 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
                                  const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall) {
   JunctionNode j;
   j.root = body.points[r];
-  j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal, delta_wing, delta_wall);
+  j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal_at(j.root), delta_wing, delta_wall);
   place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
   const CadAttachment& at = body.cad[r];
   // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
@@ -313,10 +312,11 @@ void keep_fan_halos_off_the_rear_interfaces(const cad::Model& model, int wall_su
                                             const Frame& wall, double delta_wing, double delta_wall,
                                             std::array<JunctionNode*, 2> j_side) {
   const Vec3 w = j_side[0]->strip_top;
+  const Vec3 wall_normal = wall.normal_at(w);
   const cad::Curve& edge = model.curve(crack_curve);
   Vec3 t = edge.derivatives(edge.project(w).t).d1.normalized();
-  if (t.dot(wall.normal) < 0.0) t = -t;
-  const double rise = t.dot(wall.normal);  // of the edge per unit length along it
+  if (t.dot(wall_normal) < 0.0) t = -t;
+  const double rise = t.dot(wall_normal);  // of the edge per unit length along it
   constexpr double kLeast = 0.0871557;     // sin 5 degrees
   if (!(rise > kLeast))
     throw NearFieldError("near field: the sharp trailing edge " + curve_label(model, crack_curve) +
@@ -334,11 +334,13 @@ void keep_fan_halos_off_the_rear_interfaces(const cad::Model& model, int wall_su
     Vec3 behind = t.cross(across[side]);  // the rear interface's normal, downstream
     if (behind.dot(downstream) < 0.0) behind = -behind;
     if ((j.halo - w).dot(behind) >= 0.0) continue;
-    const double along = (delta_wall - wall.height(w) - delta_wing * across[side].dot(wall.normal)) / rise;
+    const double along = (delta_wall - wall.height(w) - delta_wing * across[side].dot(wall_normal)) / rise;
     j.halo = w + delta_wing * across[side] + along * t;
-    const Vec3 below = j.halo - delta_wall * wall.normal;
+    const Vec3 below = j.halo - delta_wall * wall_normal;
     const double out = (below - j.root).dot(outward[side]);  // the wall strip keeps the width delta_wing
-    const auto foot = model.surface(wall_surface).project(below + std::max(0.0, delta_wing - out) * outward[side]);
+    const Vec3 above_foot = below + std::max(0.0, delta_wing - out) * outward[side];
+    const cad::Surface& face = model.surface(wall_surface);
+    const auto foot = wall.curved ? face.project(above_foot, wall.root_uv) : face.project(above_foot);
     j.wall_foot = foot.point;
     j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
   }
@@ -475,19 +477,11 @@ detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const Bod
 }
 
 
-// The planar wall's frame, taken at the middle of its parameter box.
-Frame wall_frame(const cad::Model& model, int wall_surface) {
-  const cad::Surface& wall_face = model.surface(wall_surface);
-  const cad::Vec2 wall_mid(0.5 * (wall_face.bounds()[0].lo + wall_face.bounds()[0].hi),
-                           0.5 * (wall_face.bounds()[1].lo + wall_face.bounds()[1].hi));
-  return {wall_face.normal(wall_mid), wall_face.point(wall_mid)};
-}
-
 // The body's triangles by their directed edges, for the root segments a -> b along the loop: which
 // triangle stands on each, its surface, and the segment's outward direction in the wall plane.
 class RootSegments {
  public:
-  RootSegments(const BodyMesh& body, const Vec3& wall_normal) : body_(body), wall_normal_(wall_normal) {
+  RootSegments(const BodyMesh& body, const Frame& wall) : body_(body), wall_(wall) {
     for (std::size_t t = 0; t < body.triangles.size(); ++t)
       for (int k = 0; k < 3; ++k)
         triangle_of_edge_[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
@@ -497,14 +491,15 @@ class RootSegments {
     const auto& t = body_.triangles[triangle_of_edge_.at({a, b})];
     const Vec3 n_tri =
         (body_.points[t[1]] - body_.points[t[0]]).cross(body_.points[t[2]] - body_.points[t[0]]).normalized();
-    return segment_outward(body_.points[a], body_.points[b], n_tri, wall_normal_);
+    return segment_outward(body_.points[a], body_.points[b], n_tri,
+                           wall_.normal_at(0.5 * (body_.points[a] + body_.points[b])));
   }
   int surface(int a, int b) const { return body_.triangle_surface[triangle_of_edge_.at({a, b})]; }
   const std::map<std::pair<int, int>, int>& triangle_of_edge() const { return triangle_of_edge_; }
 
  private:
   const BodyMesh& body_;
-  Vec3 wall_normal_;
+  const Frame& wall_;
   std::map<std::pair<int, int>, int> triangle_of_edge_;
 };
 
@@ -766,11 +761,13 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
   const double delta_wing = params.thickness, delta_wall = wall_thickness;
   BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
-  const Frame wall = wall_frame(model, roles.wall_surface);
 
   // Junction geometry per root node, then the wing mesh lifted onto the strip tops.
   const std::vector<int> loop = root_loop(model, body, open_edges(body), roles.wall_surface);
-  const RootSegments segments(body, wall.normal);
+  std::vector<Vec3> root_points;
+  for (int r : loop) root_points.push_back(body.points[r]);
+  const Frame wall = wall_frame(model, roles.wall_surface, root_points);
+  const RootSegments segments(body, wall);
   JunctionNodes j = place_junction_nodes(model, roles, root_surface, body, loop, segments, crack_curve, wall,
                                          delta_wing, delta_wall);
   if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, segments.triangle_of_edge(), j.at);
@@ -807,6 +804,20 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   return shell;
 }
 
+WallFrame wall_frame(const cad::Model& model, int wall_surface, const std::vector<Vec3>& root_points) {
+  const cad::Surface& face = model.surface(wall_surface);
+  if (face.is_planar()) {  // taken at the middle of its parameter box
+    const cad::Vec2 mid(0.5 * (face.bounds()[0].lo + face.bounds()[0].hi), 0.5 * (face.bounds()[1].lo + face.bounds()[1].hi));
+    return {face.normal(mid), face.point(mid)};
+  }
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& x : root_points) centroid += x;
+  // From a root point's parameters: the centroid lies in the root's hole, off the trimmed face.
+  const cad::Vec2 start = face.project(root_points.front()).uv;
+  const cad::SurfaceProjection foot = face.project(centroid / static_cast<double>(root_points.size()), start);
+  return {face.normal(foot.uv), foot.point, &face, foot.uv};
+}
+
 Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& x, CadAttachment& cad, double target) {
   // Newton on the height along its gradient in the entity's parameters: on a lofted wing the
   // chordwise parameter stays (the height grows with the spanwise one), so a node near a swept
@@ -818,7 +829,8 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
     if (cad.kind == CadAttachment::Surface) {
       const cad::Surface& face = model.surface(cad.entity);
       const cad::SurfaceDerivatives d = face.derivatives(cad::Vec2(cad.u, cad.v));
-      const cad::Vec2 gradient(d.du.dot(wall.normal), d.dv.dot(wall.normal));
+      const Vec3 normal = wall.normal_at(p);
+      const cad::Vec2 gradient(d.du.dot(normal), d.dv.dot(normal));
       if (!(gradient.squaredNorm() > 0.0)) break;
       const auto bounds = face.bounds();
       const cad::Vec2 uv(std::clamp(cad.u + missing * gradient.x() / gradient.squaredNorm(), bounds[0].lo, bounds[0].hi),
@@ -827,7 +839,7 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
       p = face.point(uv);
     } else {
       const cad::Curve& curve = model.curve(cad.entity);
-      const double slope = curve.derivatives(cad.u).d1.dot(wall.normal);
+      const double slope = curve.derivatives(cad.u).d1.dot(wall.normal_at(p));
       if (slope == 0.0) break;
       const auto bounds = curve.bounds();
       cad.u = std::clamp(cad.u + missing / slope, bounds.lo, bounds.hi);

@@ -84,6 +84,9 @@ using Quad = std::array<NodeId, 4>;
 
 [[noreturn]] void fail(const std::string& what) { throw NearFieldError("near field: " + what); }
 
+// The smallest share of wake.gap the block may keep above the wall layer downstream of its root.
+constexpr double kLeastGapFraction = 0.5;
+
 std::string direction_label(const WakeParams& w) {
   return "[" + number_label(w.direction[0]) + ", " + number_label(w.direction[1]) + ", " + number_label(w.direction[2]) + "]";
 }
@@ -732,6 +735,12 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   add_wake_elements(field, sweep, sections.swept, wake, d, te.base);
   add_exposed_body_faces(field.mesh, sections.exposed_base, js.bare);
   describe_wake_block(js, sweep, sections.swept, wake, d, wall_thickness, field.wake);
+  // A curved wall may rise under the block downstream (a fuselage widening): the gap must hold
+  // along the whole block, not only at its root.
+  if (!(field.wake.gap > kLeastGapFraction * wake.gap))
+    fail("the wall rises under the wake block: it comes within " + number_label(field.wake.gap) +
+         " of the wall layer's top (wake.gap = " + number_label(wake.gap) + " at the trailing edge); use a larger "
+         "wake.gap, a shorter wake.length or a wake.direction that follows the wall");
 
   InterfaceNodes interface_node;
   const auto fan_planes = fill_fan_wedge(field, js, fan, roles.wall_surface, fractions, interface_node);

@@ -14,12 +14,28 @@
 
 namespace semimesh::nearfield::detail {
 
-/// The planar wall: its normal into the fluid and a point of it.
+/// The wall under the junction: a plane (its normal into the fluid and a point of it), or a curved
+/// surface (a fuselage, a hub) with `normal` and `origin` taken at the root's centroid. Heights on a
+/// curved wall are distances to its surface along the normal at the foot, found by Newton from the
+/// root's parameters (the near field lies over the root; an unguided projection onto the trimmed
+/// face would avoid the root's hole and land on the far side of a fuselage).
 struct WallFrame {
   Vec3 normal;
   Vec3 origin;
-  double height(const Vec3& x) const { return (x - origin).dot(normal); }
+  const cad::Surface* curved = nullptr;  ///< the wall's surface when it is not planar
+  cad::Vec2 root_uv = cad::Vec2::Zero();  ///< curved: the wall's parameters at `origin`
+
+  double height(const Vec3& x) const {
+    if (!curved) return (x - origin).dot(normal);
+    const cad::SurfaceProjection p = curved->project(x, root_uv);
+    return (x - p.point).dot(curved->normal(p.uv));
+  }
+  /// The wall's normal into the fluid under x.
+  Vec3 normal_at(const Vec3& x) const { return curved ? curved->normal(curved->project(x, root_uv).uv) : normal; }
 };
+
+/// The frame of `wall_surface` under the root loop `root_points` (see WallFrame).
+WallFrame wall_frame(const cad::Model& model, int wall_surface, const std::vector<Vec3>& root_points);
 
 struct JunctionShell {
   NearField field;                   ///< wing prisms, junction hexes, their boundary faces and stacks; no footprint

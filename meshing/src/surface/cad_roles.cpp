@@ -96,10 +96,10 @@ bool uses_any(const cad::Model& model, int s, const std::set<int>& curves) {
   return false;
 }
 
-// A planar face can be the wall when faces stand on its inner loops and none of them also reaches
-// its outer loop (which would make the "hole" a passage to the outer shell, not a body's root).
+// A face, planar or curved (a fuselage, a hub), can be the wall when faces stand on its inner loops
+// and none of them also reaches its outer loop (which would make the "hole" a passage to the outer
+// shell, not a body's root: a box face the fuselage runs through).
 bool holds_a_body(const cad::Model& model, int wall) {
-  if (!model.surface(wall).is_planar()) return false;
   const std::set<int> root = root_curves(model, wall);
   if (root.empty()) return false;
   std::set<int> outer;
@@ -120,20 +120,37 @@ int find_wall(const cad::Model& model) {
   for (int s = 0; s < model.num_surfaces(); ++s)
     if (holds_a_body(model, s)) walls.push_back(s);
   if (walls.empty())
-    fail("no planar face holds a body's root loop as an inner loop: the model has no wall the body stands on "
+    fail("no face holds a body's root loop as an inner loop: the model has no wall the body stands on "
          "(name the wall with geometry.wall, or check that the body is sewn to it: cad-info lists each curve's faces; "
          "a file holding the body only gets its wall and far field from geometry.wall_plane and geometry.farfield "
          "= {box | sphere | box_chords})");
   if (walls.size() > 1)
-    fail("several planar faces hold a body's root loop (" + labels(model, walls) + "): name the wall with geometry.wall");
+    fail("several faces hold a body's root loop (" + labels(model, walls) + "): name the wall with geometry.wall");
   return walls.front();
 }
 
-// The wall's normal into the fluid and a point on it.
-std::pair<Vec3, Vec3> wall_plane(const cad::Model& model, int wall) {
-  const cad::Curve& curve = model.curve(model.loops(wall).front().uses.front().curve);
-  const Vec3 p0 = curve.point(curve.bounds().lo);
-  return {model.surface(wall).normal(model.surface(wall).project(p0).uv), p0};
+// The wall under the body's root: the root points' centroid projected on the wall's surface. It
+// lies in the root's hole, outside the trimmed face, so the projection starts from a root point's
+// parameters (an unguided one prefers points inside the face: the far side of a fuselage).
+struct WallAtRoot {
+  Vec3 point, normal;  ///< normal into the fluid: on a curved wall, the span direction
+  Vec2 uv;
+};
+
+WallAtRoot wall_at_root(const cad::Surface& wall, const std::vector<Vec3>& root_points) {
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : root_points) centroid += p;
+  const Vec2 start = wall.project(root_points.front()).uv;
+  const cad::SurfaceProjection foot = wall.project(centroid / static_cast<double>(root_points.size()), start);
+  return {foot.point, wall.normal(foot.uv), foot.uv};
+}
+
+// How far a point near the root lies behind the wall: minus its distance to the wall's untrimmed
+// surface along the normal into the fluid (> 0 behind it). Newton from the root's foot finds the
+// surface point under the body, not one on the far side.
+double depth_below(const cad::Surface& wall, const WallAtRoot& root, const Vec3& x) {
+  const cad::SurfaceProjection p = wall.project(x, root.uv);
+  return -(x - p.point).dot(wall.normal(p.uv));
 }
 
 struct Extent {
@@ -160,7 +177,6 @@ CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
   CadRoles roles;
   if (wall) {
     if (*wall < 0 || *wall >= model.num_surfaces()) fail(fmt::format("no surface {}", *wall));
-    if (!model.surface(*wall).is_planar()) fail("the wall " + cad::surface_label(model, *wall) + " is not planar");
   }
   roles.wall = wall ? *wall : find_wall(model);
   const std::set<int> root = root_curves(model, roles.wall);
@@ -187,7 +203,14 @@ CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
     fail("every face other than the wall " + cad::surface_label(model, roles.wall) +
          " belongs to the body: the model has no far field (an outer shell)");
 
-  const auto [normal, origin] = wall_plane(model, roles.wall);
+  std::vector<Vec3> root_points;
+  for (int c : root) {
+    const auto points = curve_samples(model.curve(c));
+    root_points.insert(root_points.end(), points.begin(), points.end());
+  }
+  const WallAtRoot foot = wall_at_root(model.surface(roles.wall), root_points);
+  const Vec3& normal = foot.normal;
+  const Vec3& origin = foot.point;
   roles.span_direction = normal;
   const Vec3 x_axis = Vec3::UnitX();
   const Vec3 streamwise_raw = x_axis - x_axis.dot(normal) * normal;
@@ -201,18 +224,15 @@ CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall) {
   for (int s : roles.body) {
     samples[s] = face_samples(model, s);
     const Extent e = extent(samples[s], normal, origin);
-    if (e.lo < -std::max(tolerance, 1e-6 * e.length()))
-      fail("the body " + cad::surface_label(model, s) + " reaches " + fmt::format("{:.6g}", -e.lo) +
-           " below the plane of the wall " + cad::surface_label(model, roles.wall));
+    double deepest = 0.0;
+    for (const Vec3& p : samples[s]) deepest = std::max(deepest, depth_below(model.surface(roles.wall), foot, p));
+    if (deepest > std::max(tolerance, 1e-6 * e.length()))
+      fail("the body " + cad::surface_label(model, s) + " reaches " + fmt::format("{:.6g}", deepest) +
+           " below the wall " + cad::surface_label(model, roles.wall));
     span.add(e.hi);
   }
   roles.span = span.hi;
 
-  std::vector<Vec3> root_points;
-  for (int c : root) {
-    const auto points = curve_samples(model.curve(c));
-    root_points.insert(root_points.end(), points.begin(), points.end());
-  }
   const Extent chord = extent(root_points, streamwise, origin);
   roles.chord = chord.length();
 

@@ -211,15 +211,17 @@ TEST(CShellBadInput, RootCurveOutsideTheSupportedAnglesNamesCurveAndAngle) {
   EXPECT_TRUE(contains(what, " 90 degrees")) << what;
 }
 
-TEST(CShellBadInput, NonPlanarWallNamesTheSurface) {
+// A curved wall is accepted (a fuselage); the wing's own upper skin named as the wall meets the
+// lower skin at the leading edge at 180 degrees: no concave corner for a junction.
+TEST(CShellBadInput, WallMakingNoCornerNamesTheCurve) {
   const WingCase c = wing_case(naca("0012", false));
   BodyRoles roles;
   roles.wall_surface = *c.model->find_surface("upper");
   for (const std::string name : {"lower", "te_base", "tip"})
     roles.body_surfaces.push_back(*c.model->find_surface(name));
   const std::string what = c_shell_error(c, roles, 0.06, {}, 0.04);
-  EXPECT_TRUE(contains(what, "('upper')")) << what;
-  EXPECT_TRUE(contains(what, "not planar")) << what;
+  EXPECT_TRUE(contains(what, "('leading_edge')")) << what;
+  EXPECT_TRUE(contains(what, "not a concave corner")) << what;
 }
 
 TEST(CShellBadInput, WallLayerTooThickForTheWingNamesTheValue) {

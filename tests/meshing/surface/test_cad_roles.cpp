@@ -60,9 +60,10 @@ TEST(CadRoles, BadInputIsNamed) {
   mock_cad::NacaWingParams p;
   p.farfield = false;
   const auto body_only = mock_cad::make_naca_wing(p);
-  expect_error([&] { detect_cad_roles(*body_only); }, "no planar face holds a body's root loop");
+  expect_error([&] { detect_cad_roles(*body_only); }, "no face holds a body's root loop");
   const auto model = mock_cad::make_naca_wing({});
-  expect_error([&] { detect_cad_roles(*model, *model->find_surface("upper")); }, "('upper') is not planar");
+  // A curved face may be a wall (a fuselage), but no body stands on the wing's own skin.
+  expect_error([&] { detect_cad_roles(*model, *model->find_surface("upper")); }, "('upper') has no inner loop");
   expect_error([&] { detect_cad_roles(*model, *model->find_surface("box_xmin")); }, "('box_xmin') has no inner loop");
 }
 

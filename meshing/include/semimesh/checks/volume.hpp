@@ -52,4 +52,11 @@ struct VolumeCheck {
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                          const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall);
 
+/// check_volume for a curved wall (a fuselage): no plane closes the body, so the flux of (x - p) / 3
+/// runs through the wall's surface mesh too; box_volume is then the far field's and the wall's part
+/// of the fluid's volume, body_volume the body's (its root left open onto the wall).
+VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
+                                     const std::vector<const surface::SurfaceMesh*>& farfield,
+                                     const surface::SurfaceMesh& wall);
+
 }  // namespace semimesh::checks

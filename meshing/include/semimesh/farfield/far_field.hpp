@@ -58,7 +58,9 @@ struct FarField {
 /// The near field is taken by value: pass it with std::move when it is not needed afterwards.
 ///  box_surfaces  CAD surface ids of the box faces; their curve meshes are shared with the wall's
 ///                outer loop.
-///  wall_surface  the planar wall; its outer loop bounds the wall region, nf.footprint the hole.
+///  wall_surface  the wall; its outer loop bounds the wall region, nf.footprint the hole. A planar
+///                wall is triangulated in its plane, a curved one (a fuselage) in its parameters
+///                scaled to lengths at the root, edges turning at most 1/4 radian on it.
 /// Tetrahedron sizes grow from the local skin edge length towards the box size by TetGen's quality
 /// bound alone (-q radius_edge_ratio; no background size, which over-refined about 8 times on the
 /// NACA0012 case); `growth` grades the wall region and the box curves.

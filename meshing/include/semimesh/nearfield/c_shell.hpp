@@ -4,8 +4,9 @@
 //
 // Construction, per root node R_i (the body mesh's nodes on the wall, one loop):
 //  - H_i, the medial halo point: at delta_wing (ShellParams::thickness) from the wing and
-//    delta_wall (the wall layer's thickness) from the planar wall, in the direction e_i of the
-//    wall plane that bisects the outward normals of the two root segments at R_i (medial_halo);
+//    delta_wall (the wall layer's thickness) from the wall's tangent plane at R_i, in the direction
+//    e_i of that plane that bisects the outward normals of the two root segments at R_i
+//    (medial_halo);
 //  - W_i, the top of the root strip: the foot of H_i on R_i's own wing surface (on the spanwise
 //    curve leaving R_i when R_i is a CAD vertex), so H_i - W_i is the wing's normal at W_i; where
 //    the wing leans over the fluid (angle > 90 degrees) that foot sinks below delta_wall, and W_i is
@@ -15,6 +16,8 @@
 //    e_i to delta_wing from R_i (the wall layer's prisms there lean to meet the halo).
 // So the hex R-W-H-L keeps both strips (a sliver would be folded by the curved root at high order).
 // At 90 degrees and below, W_i and L_i are the halo's feet.
+// The wall may be curved (a fuselage, a hub): n_wall is then its normal under each point, heights
+// are distances to its surface (detail::WallFrame), and L_i is projected onto it.
 // The wing's surface mesh is lifted along the wing so that its root row lands on the W line (every
 // node at height d < D above the wall moves to s + d (1 - s / D) along its CAD entity, by Newton in
 // the entity's parameters: s the strip height, D the lowest point of the surfaces that do not stand
@@ -51,9 +54,9 @@ const params::Table<JunctionParams>& junction_keys();
 /// Body surface meshes -> wing prism layer + junction hexes (order 1), the wall layer of thickness
 /// `wall_thickness` (delta_wall > 0) to be built by the far field on the footprint. Throws
 /// NearFieldError naming the parameter, or the curve/surface and the value, when the junction
-/// cannot be built: a root curve outside the supported angles or not concave, a wall that is not
-/// planar, a halo point or strip top that cannot be placed, a strip too tall for the body, a
-/// junction hex that would be inverted.
+/// cannot be built: a root curve outside the supported angles or not concave, a halo point or
+/// strip top that cannot be placed, a strip too tall for the body, a junction hex that would be
+/// inverted.
 NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params, const JunctionParams& junction, double wall_thickness);
 

@@ -1,7 +1,7 @@
 // Which surfaces of a CAD model play which role, found from its topology and geometry alone (no
 // names), so a file made elsewhere runs without naming its faces:
-//  - the wall: a planar face holding the body's root loop as an inner loop (a hole), whose curves
-//    other faces also use;
+//  - the wall: a face, planar or curved (a fuselage, a hub), holding the body's root loop as an
+//    inner loop (a hole), whose curves other faces also use;
 //  - the body: the faces reached from that root loop across shared curves without crossing the wall;
 //  - the far field: every other face (the outer shell);
 //  - the trailing-edge base: the body face on the root loop that is narrow (its root curves
@@ -11,7 +11,8 @@
 //  - the tip: the body faces, other than the base, that do not touch the root, reach the far end
 //    of the span and are flat across it (their extent along the span below a quarter of their
 //    extent along the chord).
-// The span direction is the wall's normal (into the fluid): nothing assumes an axis for it.
+// The span direction is the wall's normal (into the fluid) under the root's centroid: nothing
+// assumes an axis for it.
 #pragma once
 
 #include "semimesh/cad/model.hpp"
@@ -34,17 +35,17 @@ struct CadRoles {
   std::vector<int> farfield;  ///< ascending ids
   std::optional<int> te_base;
   std::vector<int> tip;       ///< ascending ids
-  cad::Vec3 span_direction = cad::Vec3::Zero();  ///< the wall's normal, into the fluid
-  double span = 0.0;          ///< the body's height above the wall
+  cad::Vec3 span_direction = cad::Vec3::Zero();  ///< the wall's normal under the root, into the fluid
+  double span = 0.0;          ///< the body's height above the wall (at the root, along span_direction)
   double chord = 0.0;         ///< the root loop's extent along the streamwise direction
 };
 
 /// Finds the roles. `wall` (a surface id) fixes the wall instead of searching for it. Throws
-/// CadRoleError saying what is missing or ambiguous (no planar face with a root loop, several,
-/// a body that reaches below the wall plane, no face left for the far field).
+/// CadRoleError saying what is missing or ambiguous (no face with a root loop, several, a body
+/// that reaches behind the wall, no face left for the far field).
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall = std::nullopt);
 
-/// Whether some planar face holds a body's root loop as an inner loop (detect_cad_roles can find a
+/// Whether some face holds a body's root loop as an inner loop (detect_cad_roles can find a
 /// wall); false for a file that holds the body alone.
 bool has_wall_with_root_loop(const cad::Model& model);
 
