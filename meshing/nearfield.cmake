@@ -8,6 +8,9 @@ add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/c_shell.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_block.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/root_lift.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/wing_layer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/h_shell.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/wake_block.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/fan_wedge.cpp
