@@ -8,7 +8,13 @@ add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/o_shell.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_geometry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/c_shell.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/junction_block.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/root_lift.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/wing_layer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/h_shell.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/wake_block.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/fan_wedge.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/skin_faces.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/translational_rims.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/pyramid_apex.cpp)
 add_library(semimesh::nearfield ALIAS semimesh_nearfield)

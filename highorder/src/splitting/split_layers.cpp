@@ -91,11 +91,42 @@ class Splitter {
         out_(in.order(), in.node_set()),
         stats_(families_.size()) {}
 
+  /// The steps: check the families and the list, plan each listed element, check that split
+  /// neighbours cut their shared faces alike, then the output mesh: the input's nodes, each element
+  /// copied or replaced by its pieces in input order, the boundary faces cut with their element.
   mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
                  std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                  std::vector<InheritedBounds>* inherited = nullptr);
 
  private:
+  /// [pieces of split element j, in `split`'s order] each piece's node list.
+  using Pieces = std::vector<std::vector<std::vector<NodeId>>>;
+
+  /// Throws unless there is a family and each has layers >= 1 and a constant ratio >= 1.
+  void check_families() const;
+  /// Throws naming the element when one entry of the list cannot be split as asked (index, shape,
+  /// direction, family).
+  void check_split_entry(const LayerSplit& entry) const;
+  /// Fills plans_ and the shape caches; returns [input elements] the entry's index in `split`, or -1.
+  std::vector<int> plan_elements(const std::vector<LayerSplit>& split);
+  /// The output starts as the input's nodes (with their CAD attachments), groups and regions.
+  void copy_nodes_groups_and_regions();
+  /// Every input element into the output in input order, split ones as their pieces (with their
+  /// inherited bounds when asked); returns the pieces' node lists.
+  Pieces add_elements(const std::vector<int>& position, std::size_t split_count, std::vector<std::size_t>* first_piece,
+                      const ProgressCallback& progress, std::vector<InheritedBounds>* inherited);
+  /// Input elements [from, end) copied as they are.
+  void copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece);
+  /// The pieces of one split element, with the bounds certify_pieces derived for them when asked.
+  void add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,
+                  const std::vector<std::optional<JacobianBounds>>& bounds, std::vector<InheritedBounds>* inherited);
+  /// Each input boundary face: one per piece lying on it when its element's split cuts it, else copied.
+  void add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position, const Pieces& pieces);
+  /// Does piece `piece` of `element` lie on the element's face with local vertices `local`?
+  bool piece_on_face(std::size_t element, std::size_t piece, const std::vector<int>& local) const;
+  /// [families] the figures gathered while splitting.
+  std::vector<SplitStats> split_stats() const;
+
   ShapeData& shape_data(Shape shape);
   const DirectionData& direction_data(Shape shape, int direction);
   const ShapeData& data_of(std::size_t element) const { return shapes_.at(in_.elements()[element].shape); }
@@ -471,6 +502,18 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
                          std::vector<InheritedBounds>* inherited) {
   inherit_ = inherited != nullptr;
   if (inherited) inherited->clear();
+  check_families();
+  const std::vector<int> position = plan_elements(split);  // also throws for a bad entry
+  check_side_faces(split);                                 // before any output: a crack is refused
+  if (first_piece) first_piece->assign(in_.elements().size(), 0);
+  copy_nodes_groups_and_regions();  // input node ids stay valid in the output
+  const Pieces pieces = add_elements(position, split.size(), first_piece, progress, inherited);
+  add_boundary_faces(split, position, pieces);  // the pieces made their faces: these link to them
+  if (stats) *stats = split_stats();
+  return std::move(out_);
+}
+
+void Splitter::check_families() const {
   if (families_.empty()) throw std::invalid_argument(caller_ + ": no layer distribution given");
   for (std::size_t f = 0; f < families_.size(); ++f) {
     const LayerDistribution& d = families_[f].distribution;
@@ -479,60 +522,67 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
                                   " must be >= 1");
     if (!families_[f].ratio) ratio_at(Eigen::Vector3d::Zero(), 0, static_cast<int>(f));  // checks the constant ratio
   }
+}
+
+void Splitter::check_split_entry(const LayerSplit& entry) const {
+  const std::size_t e = entry.element;
+  if (e >= in_.elements().size())
+    throw std::invalid_argument(caller_ + ": element index " + std::to_string(e) + " out of range (mesh has " +
+                                std::to_string(in_.elements().size()) + " elements)");
+  const Shape s = in_.elements()[e].shape;
+  const auto& dir = entry.direction;
+  for (int slot = 0; slot < 2; ++slot) {
+    if (slot == 1 && dir[1] < 0) break;
+    if (dir[slot] < 0 || dir[slot] > 2)
+      throw std::invalid_argument(caller_ + ": direction " + std::to_string(dir[slot]) + " of element " +
+                                  std::to_string(e) + " must be 0 (xi), 1 (eta) or 2 (zeta)");
+    if (s != Shape::Hexahedron && !(s == Shape::Prism && dir[slot] == 2 && slot == 0))
+      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is a " + to_string(s) +
+                                  (dir[slot] == 2 && slot == 0 ? "; only prisms and hexahedra" : "; only hexahedra") +
+                                  " can be split in this direction");
+    const int family = entry.family[slot];
+    if (family < 0 || family >= static_cast<int>(families_.size()))
+      throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " + std::to_string(e) +
+                                  " is not one of the " + std::to_string(families_.size()) + " given");
+  }
+  if (dir[1] == dir[0])
+    throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " lists direction " +
+                                std::to_string(dir[0]) + " twice");
+}
+
+std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
   plans_.assign(in_.elements().size(), Plan{});
-  std::vector<int> position(in_.elements().size(), -1);  // [elements] index into `split` or -1
+  std::vector<int> position(in_.elements().size(), -1);
   for (std::size_t j = 0; j < split.size(); ++j) {
+    check_split_entry(split[j]);
     const std::size_t e = split[j].element;
-    if (e >= in_.elements().size())
-      throw std::invalid_argument(caller_ + ": element index " + std::to_string(e) + " out of range (mesh has " +
-                                  std::to_string(in_.elements().size()) + " elements)");
-    const Shape s = in_.elements()[e].shape;
-    const auto& dir = split[j].direction;
-    for (int slot = 0; slot < 2; ++slot) {
-      if (slot == 1 && dir[1] < 0) break;
-      if (dir[slot] < 0 || dir[slot] > 2)
-        throw std::invalid_argument(caller_ + ": direction " + std::to_string(dir[slot]) + " of element " +
-                                    std::to_string(e) + " must be 0 (xi), 1 (eta) or 2 (zeta)");
-      if (s != Shape::Hexahedron && !(s == Shape::Prism && dir[slot] == 2 && slot == 0))
-        throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is a " + to_string(s) +
-                                    (dir[slot] == 2 && slot == 0 ? "; only prisms and hexahedra" : "; only hexahedra") +
-                                    " can be split in this direction");
-      const int family = split[j].family[slot];
-      if (family < 0 || family >= static_cast<int>(families_.size()))
-        throw std::invalid_argument(caller_ + ": family " + std::to_string(family) + " of element " +
-                                    std::to_string(e) + " is not one of the " + std::to_string(families_.size()) +
-                                    " given");
-      direction_data(s, dir[slot]);
-    }
-    if (dir[1] == dir[0])
-      throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " lists direction " +
-                                  std::to_string(dir[0]) + " twice");
     if (position[e] >= 0) throw std::invalid_argument(caller_ + ": element " + std::to_string(e) + " is listed twice");
     position[e] = static_cast<int>(j);
-    plans_[e] = {dir, split[j].family};
+    plans_[e] = {split[j].direction, split[j].family};
+    const Shape s = in_.elements()[e].shape;
+    for (int slot = 0; slot < (plans_[e].two() ? 2 : 1); ++slot) direction_data(s, plans_[e].direction[slot]);
     uniform_values(s, plans_[e]);  // also for a ratio field: elements where it is constant use them
   }
-  check_side_faces(split);
-  if (first_piece) first_piece->assign(in_.elements().size(), 0);
+  return position;
+}
 
+void Splitter::copy_nodes_groups_and_regions() {
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
+}
 
-  // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
-  // nodes' positions (the costly part) in parallel, then node creation and elements serially in a
-  // fixed order, so the output does not depend on the thread count.
+// Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
+// nodes' positions (the costly part) in parallel, then node creation and elements serially in a
+// fixed order, so the output does not depend on the thread count.
+Splitter::Pieces Splitter::add_elements(const std::vector<int>& position, std::size_t split_count,
+                                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                                        std::vector<InheritedBounds>* inherited) {
   std::vector<std::size_t> ascending;
   for (std::size_t e = 0; e < in_.elements().size(); ++e)
     if (position[e] >= 0) ascending.push_back(e);
-  std::vector<std::vector<std::vector<NodeId>>> subs(split.size());
-  std::size_t next = 0;  // next input element to emit
-  const auto copy_until = [&](std::size_t end) {
-    for (; next < end; ++next) {
-      if (first_piece) (*first_piece)[next] = out_.elements().size();
-      out_.add_element(in_.elements()[next].shape, in_.element_nodes(next), in_.elements()[next].region);
-    }
-  };
+  Pieces pieces(split_count);
+  std::size_t next = 0;                                             // next input element to emit
   ProgressCounter counter(progress, ascending.size(), "elements");  // reported per block, from this thread
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
     const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
@@ -543,30 +593,47 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
                          [&](std::size_t k) { geometry[k] = place_sub_nodes(ascending[first + k], interfaces[k]); });
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t e = ascending[first + k];
-      copy_until(e);
-      subs[position[e]] = split_element(e, geometry[k]);
+      copy_elements(next, e, first_piece);
+      std::vector<std::vector<NodeId>>& mine = pieces[position[e]];
+      mine = split_element(e, geometry[k]);
       if (first_piece) (*first_piece)[e] = out_.elements().size();
-      const std::vector<std::optional<JacobianBounds>>& bounds = geometry[k].bounds;
-      for (std::size_t piece = 0; piece < subs[position[e]].size(); ++piece) {
-        out_.add_element(in_.elements()[e].shape, subs[position[e]][piece], in_.elements()[e].region);
-        if (!inherited || piece >= bounds.size() || !bounds[piece]) continue;
-        const std::size_t made = out_.elements().size() - 1;
-        inherited->resize(made + 1);
-        // The fingerprint of the piece as made: its shared nodes may come from a neighbour's
-        // evaluation of the same point (the same up to rounding, which kPieceMargin covers).
-        (*inherited)[made] = {true, element_fingerprint(out_, made), *bounds[piece]};
-      }
+      add_pieces(e, mine, geometry[k].bounds, inherited);
       next = e + 1;
     }
     counter.add(count);
     counter.report_if_due();
   }
   counter.finish();
-  copy_until(in_.elements().size());
+  copy_elements(next, in_.elements().size(), first_piece);
   if (inherited) inherited->resize(out_.elements().size());
+  return pieces;
+}
 
-  // Boundary faces: split with the element whose face they are when its split cuts them (each
-  // piece lying on the face gives one), copied otherwise.
+void Splitter::copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece) {
+  for (std::size_t e = from; e < end; ++e) {
+    if (first_piece) (*first_piece)[e] = out_.elements().size();
+    out_.add_element(in_.elements()[e].shape, in_.element_nodes(e), in_.elements()[e].region);
+  }
+}
+
+void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,
+                          const std::vector<std::optional<JacobianBounds>>& bounds,
+                          std::vector<InheritedBounds>* inherited) {
+  for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
+    out_.add_element(in_.elements()[element].shape, pieces[piece], in_.elements()[element].region);
+    if (!inherited || piece >= bounds.size() || !bounds[piece]) continue;
+    const std::size_t made = out_.elements().size() - 1;
+    inherited->resize(made + 1);
+    // The fingerprint of the piece as made: its shared nodes may come from a neighbour's
+    // evaluation of the same point (the same up to rounding, which kPieceMargin covers).
+    (*inherited)[made] = {true, element_fingerprint(out_, made), *bounds[piece]};
+  }
+}
+
+// Boundary faces: split with the element whose face they are when its split cuts them (each
+// piece lying on the face gives one), copied otherwise.
+void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
+                                  const Pieces& pieces) {
   std::map<std::uint32_t, std::size_t> cut_face_owner;  // input face id -> split element
   for (const LayerSplit& s : split) {
     const mesh::Element& el = in_.elements()[s.element];
@@ -583,45 +650,48 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
     }
     const std::size_t e = owner->second;
     const mesh::Element& el = in_.elements()[e];
-    const ShapeData& data = data_of(e);
-    const Plan& plan = plans_[e];
-    const int nv = num_vertices(bf.shape), na = layers(e, 0);
-    std::vector<int> local(nv);
-    for (int j = 0; j < nv; ++j)
+    std::vector<int> local(num_vertices(bf.shape));
+    for (std::size_t j = 0; j < local.size(); ++j)
       local[j] =
           static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
-    const auto& pieces = subs[position[e]];
-    for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
-      // A piece lies on the face unless the face is at one end of a split direction and the piece
-      // is not the one at that end.
-      const std::array<int, 2> k{static_cast<int>(piece) % na, static_cast<int>(piece) / na};
-      bool on_face = true;
-      for (int s = 0; s < (plan.two() ? 2 : 1) && on_face; ++s) {
-        const int d = plan.direction[s];
-        const bool all_low = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] == 0; });
-        const bool all_high = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] != 0; });
-        if (all_low) on_face = k[s] == 0;
-        if (all_high) on_face = k[s] == layers(e, s) - 1;
-      }
-      if (on_face)
+    const auto& mine = pieces[position[e]];
+    for (std::size_t piece = 0; piece < mine.size(); ++piece)
+      if (piece_on_face(e, piece, local))
         out_.add_boundary_face(group, bf.shape,
-                               detail::face_nodes_of_element(el.shape, in_.order(), pieces[piece], local));
-    }
+                               detail::face_nodes_of_element(el.shape, in_.order(), mine[piece], local));
   }
+}
 
-  if (stats) {
-    stats->assign(families_.size(), SplitStats{});
-    for (std::size_t f = 0; f < families_.size(); ++f) {
-      SplitStats& s = (*stats)[f];
-      const Figures& figures = stats_[f];
-      s.elements_in = static_cast<int>(in_.elements().size());
-      s.elements_out = static_cast<int>(out_.elements().size());
-      s.first_cell_height_min = figures.vertical_edges ? figures.height_min : 0.0;
-      s.first_cell_height_max = figures.height_max;
-      s.achieved_ratio = figures.vertical_edges ? figures.ratio_sum / figures.vertical_edges : 1.0;
-    }
+// A piece lies on the face unless the face is at one end of a split direction and the piece is
+// not the one at that end.
+bool Splitter::piece_on_face(std::size_t element, std::size_t piece, const std::vector<int>& local) const {
+  const ShapeData& data = data_of(element);
+  const Plan& plan = plans_[element];
+  const int na = layers(element, 0);
+  const std::array<int, 2> k{static_cast<int>(piece) % na, static_cast<int>(piece) / na};
+  bool on_face = true;
+  for (int s = 0; s < (plan.two() ? 2 : 1) && on_face; ++s) {
+    const int d = plan.direction[s];
+    const bool all_low = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] == 0; });
+    const bool all_high = std::all_of(local.begin(), local.end(), [&](int v) { return data.lattice[v][d] != 0; });
+    if (all_low) on_face = k[s] == 0;
+    if (all_high) on_face = k[s] == layers(element, s) - 1;
   }
-  return std::move(out_);
+  return on_face;
+}
+
+std::vector<SplitStats> Splitter::split_stats() const {
+  std::vector<SplitStats> stats(families_.size());
+  for (std::size_t f = 0; f < families_.size(); ++f) {
+    SplitStats& s = stats[f];
+    const Figures& figures = stats_[f];
+    s.elements_in = static_cast<int>(in_.elements().size());
+    s.elements_out = static_cast<int>(out_.elements().size());
+    s.first_cell_height_min = figures.vertical_edges ? figures.height_min : 0.0;
+    s.first_cell_height_max = figures.height_max;
+    s.achieved_ratio = figures.vertical_edges ? figures.ratio_sum / figures.vertical_edges : 1.0;
+  }
+  return stats;
 }
 
 }  // namespace

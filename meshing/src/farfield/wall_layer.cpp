@@ -31,6 +31,11 @@ bool bounds_surface(const cad::Model& model, int curve, int surface) {
 // lift direction.
 constexpr double kMaxTilt = 1e-3;
 
+// The largest wall layer thickness times the wall's curvature: a concave wall (a duct) folds the
+// layer's normals at 1, and the junction's halo, placed over the wall's tangent plane, is off by
+// about half this fraction of the layer's thickness.
+constexpr double kMaxWallTurn = 0.25;
+
 // Re-attaches a moved node to its CAD entity (projection from its old parameters).
 void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x,
                      CadAttachment cad) {
@@ -115,6 +120,30 @@ class WallHeights {
   Eigen::Vector3d normal_, origin_;
 };
 
+// Refuses a curved wall that turns too fast for the layer's thickness somewhere under it (a
+// fuselage whose radius nears the thickness, a tight fillet), naming the place and the key.
+void require_gentle_wall(const cad::Model& model, int wall_surface, double thickness, const std::vector<Triangle>& wall,
+                         const mesh::Mesh& mesh) {
+  const cad::Surface& face = model.surface(wall_surface);
+  std::set<NodeId> nodes;
+  for (const Triangle& t : wall) nodes.insert(t.begin(), t.end());
+  for (NodeId v : nodes) {
+    const CadAttachment cad = mesh.cad_attachment(v);
+    const cad::Vec2 uv = cad.kind == CadAttachment::Surface && cad.entity == wall_surface
+                             ? cad::Vec2(cad.u, cad.v)
+                             : face.project(mesh.node(v)).uv;
+    const cad::PrincipalCurvatures k = face.curvatures(uv);
+    const double kappa = std::max(std::abs(k.k_min), std::abs(k.k_max));
+    if (thickness * kappa > kMaxWallTurn) {
+      const Eigen::Vector3d& x = mesh.node(v);
+      throw FarFieldError(fmt::format(
+          "far field: the wall {} turns with a radius of {:.4g} at ({:.6g}, {:.6g}, {:.6g}), too tight for the wall "
+          "layer's thickness {:.4g} (at most {:.3g} of the radius); use a thinner wall_layer.thickness",
+          cad::surface_label(model, wall_surface), 1.0 / kappa, x.x(), x.y(), x.z(), thickness, kMaxWallTurn));
+    }
+  }
+}
+
 // The height under which box nodes are lifted: on a plane the box's whole height (the lift fades
 // to nothing at its top); on a curved wall the reach of the box triangles touching the wall, so
 // nodes far away, whose foot on the wall may not be the nearest point of its trimmed face, stay.
@@ -179,6 +208,8 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   for (Triangle& t : box)
     for (NodeId& v : t)
       if (const auto it = top_of.find(v); it != top_of.end()) v = it->second;
+
+  if (!wall_heights.planar()) require_gentle_wall(model, wall_surface, thickness, wall, mesh);
 
   // Prisms on the wall triangles (stored facing into the wall: (A, C, B) for the prism's (A, B, C)).
   WallLayer layer;

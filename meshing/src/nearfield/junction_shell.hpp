@@ -50,7 +50,7 @@ struct JunctionShell {
   std::vector<mesh::NodeId> foot_id; ///< [chain] the wall foot L of each halo
   /// A sharp trailing edge's root (chain[index], -1: none): one wall foot and halo per side, side 0
   /// that of the root segment into it along the chain, side 1 the one out of it; the junction
-  /// leaves the wedge between them open (see h_shell.cpp's fan).
+  /// leaves the wedge between them open (see fan_wedge.cpp).
   struct Fan {
     int index = -1;
     std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};

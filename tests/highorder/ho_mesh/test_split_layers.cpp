@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <string>
 
 namespace semimesh::ho {
 namespace {
@@ -292,6 +293,83 @@ TEST(SplitLayers, RatioFieldOnTheSecondDirectionFollowsTheFootAtTheTopOfTheFirst
       }
       EXPECT_LT(best, 1e-12) << "node " << id << " at reference " << q.transpose();
     }
+  }
+}
+
+// A hex split along zeta (3 layers, r = 1.5) and eta (2 layers, r = 1) with a boundary face on
+// four of its sides, and an unsplit hex beside it with one. A face at one end of a split direction
+// keeps the pieces at that end, a face across a direction takes one face per layer, a face across
+// both one per piece: each a face of a piece, on the coarse face, cut at the layers' interfaces.
+TEST(SplitLayers, BoundaryFacesAreCutWithTheirElement) {
+  const int P = 2;
+  mesh::Mesh coarse = single_element(Shape::Hexahedron, P, NodeSet::Equispaced, hex_map);
+  {
+    const Eigen::MatrixX3d r = reference_nodes(Shape::Hexahedron, P, NodeSet::Equispaced);
+    std::vector<mesh::NodeId> ids;  // the same map shifted away: touches nothing of the first
+    for (Eigen::Index i = 0; i < r.rows(); ++i)
+      ids.push_back(coarse.add_node(hex_map(r.row(i).transpose()) + Eigen::Vector3d(5, 0, 0)));
+    coarse.add_element(Shape::Hexahedron, ids);
+  }
+  // Gmsh vertex order: 0 (-1,-1,-1) 1 (1,-1,-1) 2 (1,1,-1) 3 (-1,1,-1), 4-7 the same at zeta = 1.
+  const auto add_face = [&](const std::string& group, std::size_t element, const std::array<int, 4>& local) {
+    std::vector<mesh::NodeId> v;
+    for (int i : local) v.push_back(coarse.elements()[element].vertices[i]);
+    const long f = coarse.find_face(v);
+    ASSERT_GE(f, 0) << group;
+    coarse.add_boundary_face(group, Shape::Quadrilateral, coarse.face_nodes(f));
+  };
+  add_face("bottom", 0, {0, 1, 2, 3});  // zeta = -1: the body side of the first direction
+  add_face("top", 0, {4, 5, 6, 7});     // zeta = 1
+  add_face("front", 0, {0, 1, 5, 4});   // eta = -1: the body side of the second direction
+  add_face("left", 0, {0, 3, 7, 4});    // xi = -1: across both directions
+  add_face("other", 1, {0, 1, 2, 3});   // on the unsplit hex
+  const int Na = 3, Nb = 2;
+  const mesh::Mesh fine = split_layers(coarse, std::vector<LayerSplit>{{0, {2, 1}, {0, 1}}},
+                                       {SplitFamily{{Na, 1.5}, {}}, SplitFamily{{Nb, 1.0}, {}}}, nullptr, nullptr);
+  ASSERT_EQ(fine.elements().size(), static_cast<std::size_t>(Na * Nb + 1));
+
+  std::set<std::uint32_t> element_faces;
+  for (const mesh::Element& el : fine.elements()) element_faces.insert(el.faces.begin(), el.faces.end());
+  struct Expected {
+    int count;
+    int fixed_axis;
+    double fixed_value;
+    std::set<long> zeta, eta;  // the faces' vertices' reference zeta and eta (times 1e6, rounded)
+  };
+  const auto rounded = [](const std::vector<double>& z) {
+    std::set<long> s;
+    for (double v : z) s.insert(std::lround(v * 1e6));
+    return s;
+  };
+  const std::set<long> zeta = rounded(expected_interfaces(Na, 1.5)), eta = rounded(expected_interfaces(Nb, 1.0));
+  const std::set<long> low = rounded({-1.0}), high = rounded({1.0}), both = rounded({-1.0, 1.0});
+  const std::map<std::string, Expected> expected = {{"bottom", {Nb, 2, -1.0, low, eta}},
+                                                    {"top", {Nb, 2, 1.0, high, eta}},
+                                                    {"front", {Na, 1, -1.0, zeta, low}},
+                                                    {"left", {Na * Nb, 0, -1.0, zeta, eta}},
+                                                    {"other", {1, 2, -1.0, low, both}}};
+  std::map<std::string, int> count;
+  std::map<std::string, std::set<long>> seen_zeta, seen_eta;
+  for (std::size_t b = 0; b < fine.boundary_faces().size(); ++b) {
+    const mesh::BoundaryFace& bf = fine.boundary_faces()[b];
+    const std::string& group = fine.group_names()[bf.group];
+    ASSERT_EQ(expected.count(group), 1u) << group;
+    const Expected& want = expected.at(group);
+    ++count[group];
+    EXPECT_EQ(element_faces.count(bf.face), 1u) << "boundary face " << b << " (" << group << ") is no piece's face";
+    const Eigen::Vector3d shift = group == "other" ? Eigen::Vector3d(5, 0, 0) : Eigen::Vector3d::Zero();
+    for (mesh::NodeId id : fine.boundary_face_nodes(b))
+      EXPECT_NEAR(hex_inverse(fine.node(id) - shift)(want.fixed_axis), want.fixed_value, 1e-12) << group;
+    for (int i = 0; i < 4; ++i) {
+      const Eigen::Vector3d q = hex_inverse(fine.node(bf.vertices[i]) - shift);
+      seen_zeta[group].insert(std::lround(q(2) * 1e6));
+      seen_eta[group].insert(std::lround(q(1) * 1e6));
+    }
+  }
+  for (const auto& [group, want] : expected) {
+    EXPECT_EQ(count[group], want.count) << group;
+    EXPECT_EQ(seen_zeta[group], want.zeta) << group;
+    EXPECT_EQ(seen_eta[group], want.eta) << group;
   }
 }
 

@@ -1,5 +1,6 @@
-// Steps of the H-type near field (h_shell.cpp) with a contract of their own, here so their tests can
-// reach them: finding the trailing edge the wake is swept from, and the wake's streamwise stations.
+// Steps of the H-type near field (h_shell.cpp, wake_block.cpp) with a contract of their own, here
+// so their tests can reach them: finding the trailing edge the wake is swept from, and the wake's
+// streamwise stations.
 #pragma once
 
 #include "semimesh/cad/model.hpp"

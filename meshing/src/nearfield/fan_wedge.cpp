@@ -1,0 +1,112 @@
+// A sharp trailing edge's root: the fan of the junction between its two halos, filled with
+// prisms on the wall, cut in advance at the split's interfaces.
+#include "semimesh/ho/element_type.hpp"
+
+#include "h_shell_steps.hpp"
+#include "labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace semimesh::nearfield::h_type {
+namespace {
+
+// The fan's legs cut at the split's interfaces: per leg (side 0, middle, side 1) the nodes from
+// the root R to the foot (`low`) and from the strip top W to the halo (`high`).
+struct FanRows {
+  std::array<std::vector<NodeId>, 3> low, high;
+};
+
+FanRows cut_fan_legs(mesh::Mesh& m, NodeId r, NodeId top, const FanLegs& legs, const std::vector<double>& at_root,
+                     const std::vector<double>& at_top, InterfaceNodes& interface_node) {
+  FanRows rows;
+  for (int leg : {0, 1, 2}) {
+    const NodeId foot = legs.foot[leg], halo = legs.top[leg];
+    rows.low[leg] = {r}, rows.high[leg] = {top};
+    for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
+      rows.low[leg].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
+      rows.high[leg].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
+      interface_node[{r, foot, static_cast<int>(k)}] = rows.low[leg].back();
+      interface_node[{top, halo, static_cast<int>(k)}] = rows.high[leg].back();
+    }
+    rows.low[leg].push_back(foot), rows.high[leg].push_back(halo);
+  }
+  return rows;
+}
+
+// One piece of the fan's wedge (a prism of the junction standing on the wall, split with the wall
+// layer along R-W), its vertices in the order that makes it valid.
+void add_fan_piece(NearField& field, int wall_surface, NodeId r, ho::Shape shape, std::vector<NodeId> v) {
+  mesh::Mesh& m = field.mesh;
+  const int half = static_cast<int>(v.size()) / 2;
+  if (!element_valid(m, shape, v)) {  // the other way round
+    std::reverse(v.begin() + 1, v.begin() + half);
+    std::reverse(v.begin() + half + 1, v.end());
+    if (!element_valid(m, shape, v))
+      fail("the junction's wedge at the sharp trailing edge's root " + point_label(m.node(r)) + " would be inverted");
+  }
+  field.stacks.push_back({field.element_surface.size(), {LayerDirection{2, LayerFamily::Wall}}});
+  field.element_surface.push_back(wall_surface);
+  m.add_element(shape, v, m.region_index("junction"));
+  if (shape == ho::Shape::Prism)
+    m.add_boundary_face("wall", ho::Shape::Triangle, {v[0], v[2], v[1]});
+  else
+    m.add_boundary_face("wall", ho::Shape::Quadrilateral, {v[0], v[3], v[2], v[1]});
+}
+
+}  // namespace
+
+FanLegs add_fan_middle_leg(const cad::Model& model, int wall_surface, detail::JunctionShell& js) {
+  FanLegs legs;
+  if (js.fan.index < 0) return legs;
+  mesh::Mesh& m = js.field.mesh;
+  const Vec3 r = m.node(js.root_id[js.fan.index]);
+  const Vec3 a = m.node(js.fan.foot[0]) - r, b = m.node(js.fan.foot[1]) - r;
+  const auto foot = model.surface(wall_surface)
+                        .project(r + 0.5 * (a.norm() + b.norm()) * (a.normalized() + b.normalized()).normalized());
+  legs.foot = {js.fan.foot[0],
+               m.add_node(foot.point, {mesh::CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()}),
+               js.fan.foot[1]};
+  const Vec3 rise =
+      0.5 * (m.node(js.fan.top[0]) - m.node(js.fan.foot[0]) + m.node(js.fan.top[1]) - m.node(js.fan.foot[1]));
+  legs.top = {js.fan.top[0], m.add_node(foot.point + rise), js.fan.top[1]};
+  return legs;
+}
+
+std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::JunctionShell& js, const FanLegs& legs,
+                                             int wall_surface, const LayerFractions& fractions,
+                                             InterfaceNodes& interface_node) {
+  if (js.fan.index < 0) return {};
+  mesh::Mesh& m = field.mesh;
+  const NodeId r = js.root_id[js.fan.index], top = static_cast<NodeId>(js.chain[js.fan.index]);
+  std::vector<double> at_root{0.0, 1.0}, at_top{0.0, 1.0};
+  if (fractions) at_root = fractions(m.node(r), field.wake), at_top = fractions(m.node(top), field.wake);
+  for (std::size_t k = 0; k < at_root.size(); ++k)
+    if (std::abs(at_root[k] - at_top[k]) > 1e-12)
+      fail("the wing layer's ratio differs between the sharp trailing edge's root " + point_label(m.node(r)) +
+           " and the top of its root strip " + point_label(m.node(top)) +
+           " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
+  const FanRows rows = cut_fan_legs(m, r, top, legs, at_root, at_top, interface_node);
+  std::vector<std::set<NodeId>> planes;
+  for (int leg : {0, 2}) {  // the middle leg's plane is inside the fan
+    planes.emplace_back(rows.low[leg].begin(), rows.low[leg].end());
+    planes.back().insert(rows.high[leg].begin(), rows.high[leg].end());
+  }
+  // Each band between two interfaces as two prisms (its diagonal from side 0's inner corner):
+  // the fan opens by nearly 180 degrees, so a band is a sliver whose top, a quad, would carry a
+  // pyramid leaning over the rear interfaces beside it; triangles take tetrahedra.
+  const auto& low = rows.low;
+  const auto& high = rows.high;
+  for (const auto& [p, q] : {std::pair{0, 1}, std::pair{1, 2}}) {  // the two halves
+    add_fan_piece(field, wall_surface, r, ho::Shape::Prism, {r, low[p][1], low[q][1], top, high[p][1], high[q][1]});
+    for (std::size_t k = 1; k + 1 < low[p].size(); ++k) {
+      add_fan_piece(field, wall_surface, r, ho::Shape::Prism,
+                    {low[p][k], low[p][k + 1], low[q][k + 1], high[p][k], high[p][k + 1], high[q][k + 1]});
+      add_fan_piece(field, wall_surface, r, ho::Shape::Prism,
+                    {low[p][k], low[q][k + 1], low[q][k], high[p][k], high[q][k + 1], high[q][k]});
+    }
+  }
+  return planes;
+}
+
+}  // namespace semimesh::nearfield::h_type

@@ -1,0 +1,141 @@
+// The H-type's skin, the near field's outer faces handed to the far field, and its quads cut in
+// advance where the split will cut the elements under them.
+#include "semimesh/ho/element_type.hpp"
+
+#include "h_shell_steps.hpp"
+#include "labels.hpp"
+
+#include <algorithm>
+
+namespace semimesh::nearfield::h_type {
+namespace {
+
+// Every face by its sorted vertices: how many elements use it (a boundary face counts twice, so it
+// is never skin) and the last element face seen with its vertices in that element's order.
+std::map<std::vector<NodeId>, std::pair<int, SkinFace>> face_uses(const mesh::Mesh& m) {
+  std::map<std::vector<NodeId>, std::pair<int, SkinFace>> uses;
+  auto key = [](std::vector<NodeId> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  for (const mesh::Element& e : m.elements())
+    for (const std::vector<int>& f : ho::faces(e.shape)) {
+      SkinFace face;
+      face.count = static_cast<int>(f.size());
+      std::vector<NodeId> v;
+      for (int k = 0; k < face.count; ++k) v.push_back(face.nodes[k] = e.vertices[f[k]]);
+      if (face.count == 3) face.nodes[3] = mesh::kNoNode;
+      auto& slot = uses[key(v)];
+      ++slot.first, slot.second = face;
+    }
+  for (const mesh::BoundaryFace& b : m.boundary_faces()) {
+    const int count = b.shape == ho::Shape::Triangle ? 3 : 4;
+    uses[key(std::vector<NodeId>(b.vertices.begin(), b.vertices.begin() + count))].first += 2;
+  }
+  return uses;
+}
+
+// Vertex pairs (bottom, top) along reference axis 0, 1, 2 of a hexahedron (Gmsh order).
+constexpr int kHexAxisEdges[3][4][2] = {
+    {{0, 1}, {3, 2}, {4, 5}, {7, 6}}, {{0, 3}, {1, 2}, {4, 7}, {5, 6}}, {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+
+// Every layer edge of the near field's stacks by its sorted ends: (bottom vertex, top vertex, family).
+using LayerEdges = std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>>;
+
+LayerEdges layer_edges(const NearField& f) {
+  LayerEdges edges;
+  for (const LayerStack& s : f.stacks) {
+    const mesh::Element& e = f.mesh.elements()[s.element];
+    for (const LayerDirection& d : s.directions) {
+      auto add = [&](int a, int b) {
+        const NodeId u = e.vertices[a], w = e.vertices[b];
+        edges[{std::min(u, w), std::max(u, w)}] = {u, w, d.family};
+      };
+      if (e.shape == ho::Shape::Prism)
+        for (int i = 0; i < 3; ++i) add(i, i + 3);
+      else
+        for (const auto& pair : kHexAxisEdges[d.axis]) add(pair[0], pair[1]);
+    }
+  }
+  return edges;
+}
+
+// The split's interfaces on the wing layer's edges as nodes, made once and shared by every skin
+// quad on an edge.
+class LayerEdgeCuts {
+ public:
+  LayerEdgeCuts(NearField& field, const LayerFractions& fractions, InterfaceNodes& made)
+      : field_(field), fractions_(fractions), edges_(layer_edges(field)), made_(made) {}
+
+  bool is_layer_edge(NodeId a, NodeId b) const { return edges_.count({std::min(a, b), std::max(a, b)}) > 0; }
+
+  /// [interfaces] the nodes from -> to on a layer edge.
+  std::vector<NodeId> along(NodeId from, NodeId to) {
+    mesh::Mesh& m = field_.mesh;
+    const auto& [bottom, top, family] = edges_.at({std::min(from, to), std::max(from, to)});
+    if (family != LayerFamily::Wing)
+      fail("the skin quad at " + point_label(m.node(from)) + " is cut by the wall layer's split (not supported)");
+    const std::vector<double> f = fractions_(m.node(bottom), field_.wake);
+    std::vector<NodeId> ids;
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      NodeId id = k == 0 ? bottom : k + 1 == f.size() ? top : mesh::kNoNode;
+      if (id == mesh::kNoNode) {
+        auto [it, fresh] = made_.emplace(std::make_tuple(bottom, top, static_cast<int>(k)), mesh::kNoNode);
+        if (fresh) it->second = m.add_node(m.node(bottom) + f[k] * (m.node(top) - m.node(bottom)));
+        id = it->second;
+      }
+      ids.push_back(id);
+    }
+    if (bottom != from) std::reverse(ids.begin(), ids.end());
+    return ids;
+  }
+
+ private:
+  NearField& field_;
+  const LayerFractions& fractions_;
+  LayerEdges edges_;
+  InterfaceNodes& made_;
+};
+
+}  // namespace
+
+std::vector<SkinFace> skin_faces(const NearField& field, const std::vector<std::set<NodeId>>& fan_planes,
+                                 const std::vector<Quad>& exposed_base, const std::vector<std::array<int, 3>>& bare) {
+  std::set<NodeId> on_footprint(field.footprint.begin(), field.footprint.end());
+  on_footprint.insert(field.footprint_top.begin(), field.footprint_top.end());
+  auto all_in = [](const std::vector<NodeId>& face, const std::set<NodeId>& nodes) {
+    return std::all_of(face.begin(), face.end(), [&](NodeId v) { return nodes.count(v) > 0; });
+  };
+  std::vector<SkinFace> skin;
+  for (const auto& [k, use] : face_uses(field.mesh))
+    if (use.first == 1 && !all_in(k, on_footprint) &&
+        std::none_of(fan_planes.begin(), fan_planes.end(),
+                     [&](const std::set<NodeId>& plane) { return all_in(k, plane); }))
+      skin.push_back(use.second);
+  for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
+  for (const auto& t : bare)
+    skin.push_back(
+        {{static_cast<NodeId>(t[0]), static_cast<NodeId>(t[1]), static_cast<NodeId>(t[2]), mesh::kNoNode}, 3});
+  return skin;
+}
+
+void cut_skin_at_split_interfaces(NearField& field, const std::vector<SkinFace>& skin, const LayerFractions& fractions,
+                                  InterfaceNodes& interface_node) {
+  LayerEdgeCuts cuts(field, fractions, interface_node);
+  field.skin.clear();
+  for (SkinFace f : skin) {
+    if (f.count == 4 && fractions && !cuts.is_layer_edge(f.nodes[0], f.nodes[3]) &&
+        cuts.is_layer_edge(f.nodes[0], f.nodes[1]))
+      f.nodes = {f.nodes[1], f.nodes[2], f.nodes[3], f.nodes[0]};
+    if (f.count != 4 || !fractions || !cuts.is_layer_edge(f.nodes[0], f.nodes[3]) ||
+        !cuts.is_layer_edge(f.nodes[1], f.nodes[2])) {
+      field.skin.push_back(f);
+      continue;
+    }
+    const std::vector<NodeId> left = cuts.along(f.nodes[0], f.nodes[3]), right = cuts.along(f.nodes[1], f.nodes[2]);
+    for (std::size_t k = 0; k + 1 < left.size(); ++k)
+      field.skin.push_back({{left[k], right[k], right[k + 1], left[k + 1]}, 4});
+  }
+}
+
+}  // namespace semimesh::nearfield::h_type
