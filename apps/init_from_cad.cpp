@@ -152,10 +152,7 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   }
   // The paper's near field where the body allows it; its wall layer and wake keys are the defaults
   // scaled by the chord (as every length here).
-  // On a curved wall (a fuselage, a hub) the junction and the wall layer are not built yet: the
-  // O-type's layer stands on it alone.
-  const bool curved_wall = !model->surface(roles.wall).is_planar();
-  const bool h_type = !curved_wall && allows_h_type(*model, roles);
+  const bool h_type = allows_h_type(*model, roles);
   if (h_type) c.nearfield.topology = "H";
   out.summary = fmt::format("Written by `semimesh init --cad {}`: the roles found in the file, and the lengths of the\n"
                             "paper's case (chord 1) times the body's root chord {:.6g} {}.\n",
@@ -178,12 +175,10 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
                                "leading_edge or trailing_edge, so only the body's curvature and this size resolve the "
                                "chord.\n",
                                c.sizing.size.max_size);
-  out.summary += curved_wall ? "nearfield.topology = \"O\": the wall is curved (a fuselage, a hub); the C- and H-type "
-                               "junction and wall layer stand on planar walls only so far.\n"
-                 : h_type    ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for "
-                               "the wake block.\n"
-                             : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type "
-                               "wake block.\n";
+  out.summary += h_type ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"
+                        : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n";
+  if (!model->surface(roles.wall).is_planar())
+    out.summary += "The wall is curved (a fuselage, a hub): the junction, the wall layer and the wake's gap follow it.\n";
   if (doubt) out.summary += fmt::format("geometry.units = \"{}\", not the file's '{}': {}.\n", doubt->likelier, model->units(), doubt->why);
   out.summary += domain;
   for (const std::string& repair : model->repairs()) out.summary += "The file as loaded: " + repair + ".\n";

@@ -36,6 +36,9 @@ constexpr double kMaxTilt = 1e-3;
 // about half this fraction of the layer's thickness.
 constexpr double kMaxWallTurn = 0.25;
 
+// Over a curved wall, box nodes up to at least this many layer thicknesses above it are lifted.
+constexpr double kCurvedWallLiftReach = 4.0;
+
 // Re-attaches a moved node to its CAD entity (projection from its old parameters).
 void place_on_entity(const cad::Model& model, mesh::Mesh& mesh, NodeId id, const Eigen::Vector3d& x,
                      CadAttachment cad) {
@@ -145,9 +148,12 @@ void require_gentle_wall(const cad::Model& model, int wall_surface, double thick
 }
 
 // The height under which box nodes are lifted: on a plane the box's whole height (the lift fades
-// to nothing at its top); on a curved wall the reach of the box triangles touching the wall, so
-// nodes far away, whose foot on the wall may not be the nearest point of its trimmed face, stay.
-double lift_reach(const WallHeights& wall, const std::vector<Triangle>& box, const mesh::Mesh& mesh, double tolerance) {
+// to nothing at its top); on a curved wall the reach of the box triangles touching the wall, and at
+// least a few layer thicknesses (so a node lifted by nearly the thickness keeps its triangle's
+// height), nodes further away, whose foot on the wall may not be the nearest point of its trimmed
+// face, staying.
+double lift_reach(const WallHeights& wall, const std::vector<Triangle>& box, const mesh::Mesh& mesh, double thickness,
+                  double tolerance) {
   double reach = 0.0;
   for (const Triangle& t : box) {
     double low = std::numeric_limits<double>::infinity(), high = 0.0;
@@ -158,7 +164,7 @@ double lift_reach(const WallHeights& wall, const std::vector<Triangle>& box, con
     }
     if (wall.planar() || low <= tolerance) reach = std::max(reach, high);
   }
-  return reach;
+  return wall.planar() ? reach : std::max(reach, kCurvedWallLiftReach * thickness);
 }
 
 }  // namespace
@@ -183,7 +189,7 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   // Lift the box: nodes on the wall get a top node, the others move up.
   std::set<NodeId> box_nodes;
   for (const Triangle& t : box) box_nodes.insert(t.begin(), t.end());
-  const double box_height = lift_reach(wall_heights, box, mesh, tolerance);
+  const double box_height = lift_reach(wall_heights, box, mesh, thickness, tolerance);
   if (!(thickness < 0.5 * box_height))
     throw FarFieldError("far field: the wall layer's thickness " + std::to_string(thickness) + " is not below half " +
                         (wall_heights.planar() ? "the box height " : "the height of the box triangles on the wall ") +
