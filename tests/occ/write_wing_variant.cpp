@@ -19,7 +19,11 @@
 //   fuselage   the body, sunk 0.3 chord into a circular cylinder of radius 1.5 chords whose axis
 //              runs along x through z = -1.5 chords (a fuselage), fused to it, inside a box that the
 //              fuselage crosses from end to end: the far field in the file, the wall a cylinder
-//              (needs naca.farfield=false).
+//              (needs naca.farfield=false);
+//   fuselage_bspline  the same on a B-spline body of revolution whose radius swells from 1.1 chords
+//              at the box's ends to 1.5 at the wing (the wall falls away under the wake);
+//   fuselage_dihedral the wing leaning 10 degrees sideways (dihedral) on the cylinder: the wall's
+//              normal turns along the root and the junction's angles differ on each side.
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
@@ -30,6 +34,10 @@
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -147,19 +155,54 @@ TopoDS_Shape in_hemisphere(const TopoDS_Shape& body, double chord) {
   return sewing.SewedShape();
 }
 
-// A wing-fuselage model: the box minus (wing sunk into the cylinder, fused to it). The wing is
-// capped and moved down so that its root section lies inside the cylinder: the Boolean finds the
-// root curve, the exact intersection of the skin with the cylinder.
-TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord) {
-  const double radius = 1.5 * chord, sunk = 0.3 * chord, length = 24 * chord;
+enum class Fuselage { Cylinder, BSpline, Dihedral };
+
+// A fuselage of radius 1.5 chords at the wing, its axis along x through z = -1.5 chords, running
+// 24 chords (through the box): a cylinder, or a B-spline body of revolution swelling from 1.1
+// chords at its ends to 1.5 at the wing. The seam at the bottom (the axis system's x direction
+// -z), away from the root.
+TopoDS_Shape fuselage_solid(Fuselage kind, double chord) {
+  const double radius = 1.5 * chord, length = 24 * chord, start = -0.5 * length + 0.5 * chord;
+  const gp_Ax2 axis(gp_Pnt(start, 0, -radius), gp::DX(), -gp::DZ());
+  if (kind != Fuselage::BSpline) return BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
+  // The profile in the plane y = 0 below the axis (the revolution's seam), parallel to the axis at
+  // its ends (the box's faces there meet the wall square, as the wall layer needs), revolved a
+  // full turn, then made a B-spline.
+  const double xs[] = {start, -5 * chord, 0.0, chord, 5 * chord, start + length};
+  const double rs[] = {1.1, 1.4, 1.5, 1.5, 1.4, 1.1};
+  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, 6);
+  for (int i = 0; i < 6; ++i) points->SetValue(i + 1, gp_Pnt(xs[i], 0, -radius - rs[i] * chord));
+  GeomAPI_Interpolate interpolate(points, /*PeriodicFlag=*/false, 1e-9);
+  interpolate.Load(gp_Vec(1, 0, 0), gp_Vec(1, 0, 0));
+  interpolate.Perform();
+  const Handle(Geom_BSplineCurve) profile = interpolate.Curve();
+  const gp_Pnt a(start, 0, -radius), b(start + length, 0, -radius);
+  BRepBuilderAPI_MakeWire wire;
+  wire.Add(BRepBuilderAPI_MakeEdge(a, profile->StartPoint()).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(profile).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(profile->EndPoint(), b).Edge());
+  wire.Add(BRepBuilderAPI_MakeEdge(b, a).Edge());
+  const TopoDS_Face section = BRepBuilderAPI_MakeFace(wire.Wire(), /*OnlyPlane=*/true).Face();
+  gp_Ax1 turn(a, gp::DX());
+  const TopoDS_Shape revolved = BRepPrimAPI_MakeRevol(section, turn, 2 * M_PI).Shape();
+  return BRepBuilderAPI_NurbsConvert(revolved, /*Copy=*/true).Shape();
+}
+
+// A wing-fuselage model: the box minus (wing sunk into the fuselage, fused to it). The wing is
+// capped and moved down so that its root section lies inside the fuselage: the Boolean finds the
+// root curve, the exact intersection of the skin with the fuselage.
+TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord, Fuselage kind) {
+  const double radius = 1.5 * chord, sunk = 0.3 * chord;
   TopoDS_Shell skin;
   for (TopExp_Explorer shell(capped(body), TopAbs_SHELL); shell.More(); shell.Next()) skin = TopoDS::Shell(shell.Current());
   ShapeFix_Solid solid;
-  const TopoDS_Shape wing = moved(solid.SolidFromShell(skin), gp_Vec(0, 0, -sunk));
-  // The seam at the bottom (the axis system's x direction -z), away from the root.
-  const gp_Ax2 axis(gp_Pnt(-0.5 * length + 0.5 * chord, 0, -radius), gp::DX(), -gp::DZ());
-  const TopoDS_Shape fuselage = BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
-  BRepAlgoAPI_Fuse fused(wing, fuselage);
+  TopoDS_Shape wing = moved(solid.SolidFromShell(skin), gp_Vec(0, 0, -sunk));
+  if (kind == Fuselage::Dihedral) {  // leaning about the root's line on the crest
+    gp_Trsf lean;
+    lean.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp::DX()), 10 * M_PI / 180);
+    wing = BRepBuilderAPI_Transform(wing, lean, /*copy=*/true).Shape();
+  }
+  BRepAlgoAPI_Fuse fused(wing, fuselage_solid(kind, chord));
   if (!fused.IsDone()) throw std::runtime_error("fuselage: the Boolean fuse of wing and cylinder failed");
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(-10 * chord, -10 * chord, -radius - 10 * chord),
                                                gp_Pnt(11 * chord, 10 * chord, 10 * chord)).Shape();
@@ -180,10 +223,12 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "hemisphere") return in_hemisphere(wing, params.chord);
   if (name == "two_bodies") return compound_of({wing, moved(wing, gp_Vec(0, 3 * params.chord, 0))});
   if (name == "no_body") return BRepPrimAPI_MakeBox(gp_Pnt(-1, -1, 0), gp_Pnt(2, 1, 1)).Shape();
-  if (name == "fuselage") return on_fuselage(wing, params.chord);
+  if (name == "fuselage") return on_fuselage(wing, params.chord, Fuselage::Cylinder);
+  if (name == "fuselage_bspline") return on_fuselage(wing, params.chord, Fuselage::BSpline);
+  if (name == "fuselage_dihedral") return on_fuselage(wing, params.chord, Fuselage::Dihedral);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage)");
+                              "fuselage, fuselage_bspline, fuselage_dihedral)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

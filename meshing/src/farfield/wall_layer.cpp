@@ -26,10 +26,10 @@ bool bounds_surface(const cad::Model& model, int curve, int surface) {
 }
 
 // The largest lean of a far-field face from the wall's normal where they meet: its nodes are lifted
-// along the normal and projected back onto it, which keeps the layer's side quads on the face
-// when it rises perpendicular; a face leaning more (a cone, a slanted box) would need its own
-// lift direction.
-constexpr double kMaxTilt = 1e-3;
+// along the normal and projected back onto it, so the layer's side prisms lean with the face (a
+// box side cutting a fuselage whose radius changes there: 2 degrees); a face leaning more (a cone,
+// a slanted box) would need its own lift direction.
+constexpr double kMaxTilt = 0.1;
 
 // The largest wall layer thickness times the wall's curvature: a concave wall (a duct) folds the
 // layer's normals at 1, and the junction's halo, placed over the wall's tangent plane, is off by

@@ -207,7 +207,9 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const TrailingEdge te = find_trailing_edge(model, meshes, roles, wake, d);
   detail::JunctionShell js = junction_shell(model, meshes, roles, params, junction, wall_thickness, te);
   if (wake.translational_rear_interfaces) detail::make_rear_interfaces_translational(js);
-  if (d.dot(js.wall.normal) < -1e-12) fail("wake.direction = " + direction_label(wake) + " points into the wall");
+  // Over a curved wall the normal turns under the block: the gap measured along it decides.
+  if (!js.wall.curved && d.dot(js.wall.normal) < -1e-12)
+    fail("wake.direction = " + direction_label(wake) + " points into the wall");
   NearField& field = js.field;
   const FanLegs fan = add_fan_middle_leg(model, roles.wall_surface, js);
   record_footprint(js, fan, field);
