@@ -313,6 +313,68 @@ TEST(Volume, BoxMinusBodyFromSurfaceMeshes) {
   EXPECT_NEAR(check.expected_relative_error(), std::abs(1.0 / 3.0 - 47.0) / 47.0, 1e-12);
 }
 
+surface::SurfaceMesh triangle_surface(std::vector<Eigen::Vector3d> points, std::vector<std::array<int, 3>> triangles) {
+  surface::SurfaceMesh s;
+  s.points = std::move(points);
+  s.triangles = std::move(triangles);
+  return s;
+}
+
+// A curved wall: no plane closes the fluid, so the wall's own flux counts. The box [-2,2]^2 x [0,3]
+// stands on a roof z = 0.5 (1 - |x| / 2) (two planar quads, the ridge along y at x = 0): the fluid
+// is 48 minus the roof's prism, 4 x (4 x 0.5 / 2) = 4. Faces counter-clockwise seen from the fluid.
+TEST(Volume, CurvedWallBoundsTheFluidWithItsOwnFlux) {
+  using V = Eigen::Vector3d;
+  std::vector<surface::SurfaceMesh> box = {
+      quad_surface({V(-2, -2, 3), V(-2, 2, 3), V(2, 2, 3), V(2, -2, 3)}),    // top, normal -z
+      quad_surface({V(-2, 2, 0), V(-2, 2, 3), V(-2, -2, 3), V(-2, -2, 0)}),  // x = -2, normal +x
+      quad_surface({V(2, -2, 0), V(2, -2, 3), V(2, 2, 3), V(2, 2, 0)}),      // x = 2, normal -x
+      // y = -2 and y = 2: pentagons over the roof's gable, normals +y and -y
+      triangle_surface({V(-2, -2, 0), V(0, -2, 0.5), V(2, -2, 0), V(2, -2, 3), V(-2, -2, 3)}, {{0, 4, 3}, {0, 3, 1}, {1, 3, 2}}),
+      triangle_surface({V(-2, 2, 0), V(0, 2, 0.5), V(2, 2, 0), V(2, 2, 3), V(-2, 2, 3)}, {{0, 3, 4}, {0, 1, 3}, {1, 2, 3}}),
+  };
+  const surface::SurfaceMesh roof =
+      triangle_surface({V(-2, -2, 0), V(0, -2, 0.5), V(0, 2, 0.5), V(-2, 2, 0), V(2, -2, 0), V(2, 2, 0)},
+                       {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}});
+  std::vector<const surface::SurfaceMesh*> box_ptr;
+  for (const auto& s : box) box_ptr.push_back(&s);
+  const VolumeCheck check = check_volume_curved_wall(TwoTets().mesh, {}, box_ptr, roof);
+  EXPECT_NEAR(check.body_volume, 0.0, 1e-14);
+  EXPECT_NEAR(check.expected_volume(), 44.0, 1e-12);
+  // The planar formula, closing the fluid by the wall's mean plane, misses the roof.
+  EXPECT_GT(std::abs(check_volume(TwoTets().mesh, {}, box_ptr, roof).expected_volume() - 44.0), 1.0);
+}
+
+// On a planar wall (with the body's footprint as its hole) both formulas agree.
+TEST(Volume, CurvedWallFormulaAgreesWithThePlanarOneOnAPlane) {
+  using V = Eigen::Vector3d;
+  std::vector<surface::SurfaceMesh> body = {
+      quad_surface({V(0, 0, 1), V(1, 0, 1), V(1, 1, 1), V(0, 1, 1)}),
+      quad_surface({V(0, 0, 0), V(1, 0, 0), V(1, 0, 1), V(0, 0, 1)}),
+      quad_surface({V(1, 1, 0), V(0, 1, 0), V(0, 1, 1), V(1, 1, 1)}),
+      quad_surface({V(0, 1, 0), V(0, 0, 0), V(0, 0, 1), V(0, 1, 1)}),
+      quad_surface({V(1, 0, 0), V(1, 1, 0), V(1, 1, 1), V(1, 0, 1)}),
+  };
+  std::vector<surface::SurfaceMesh> box = {
+      quad_surface({V(-2, -2, 3), V(-2, 2, 3), V(2, 2, 3), V(2, -2, 3)}),
+      quad_surface({V(-2, -2, 0), V(-2, -2, 3), V(2, -2, 3), V(2, -2, 0)}),
+      quad_surface({V(2, 2, 0), V(2, 2, 3), V(-2, 2, 3), V(-2, 2, 0)}),
+      quad_surface({V(-2, 2, 0), V(-2, 2, 3), V(-2, -2, 3), V(-2, -2, 0)}),
+      quad_surface({V(2, -2, 0), V(2, -2, 3), V(2, 2, 3), V(2, 2, 0)}),
+  };
+  // The wall z = 0 around the body's square [0,1]^2: four quads, normal +z.
+  const surface::SurfaceMesh wall = triangle_surface(
+      {V(-2, -2, 0), V(2, -2, 0), V(2, 2, 0), V(-2, 2, 0), V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)},
+      {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}});
+  std::vector<const surface::SurfaceMesh*> body_ptr, box_ptr;
+  for (const auto& s : body) body_ptr.push_back(&s);
+  for (const auto& s : box) box_ptr.push_back(&s);
+  const VolumeCheck planar = check_volume(TwoTets().mesh, body_ptr, box_ptr, wall);
+  const VolumeCheck curved = check_volume_curved_wall(TwoTets().mesh, body_ptr, box_ptr, wall);
+  EXPECT_NEAR(planar.expected_volume(), 47.0, 1e-12);
+  EXPECT_NEAR(curved.expected_volume(), 47.0, 1e-12);
+}
+
 TEST(Validity, InvertedElementIsCountedAndLocated) {
   TwoTets t;
   ValidityResult ok = check_validity(t.mesh);
