@@ -34,9 +34,14 @@ std::array<double, 6> parse_box(const std::string& text) {
 
 }  // namespace
 
+std::array<double, 6> cylinder_default_box(double wall_radius) {
+  const double r = wall_radius;
+  return {-10.0, -r - 10.0, -2.0 * r - 10.0, 11.0, r + 10.0, 10.0};
+}
+
 NacaWingParams naca_params_from(const cad::Params& p) {
   p.require_known({"naca.code", "naca.chord", "naca.span", "naca.taper", "naca.sweep", "naca.te", "naca.farfield",
-                   "naca.box", "naca.units", "naca.shape", "naca.tip"},
+                   "naca.box", "naca.units", "naca.shape", "naca.tip", "naca.wall", "naca.wall_radius"},
                   "naca");
   NacaWingParams out;
   out.code = p.get_string("naca.code", out.code);
@@ -48,6 +53,14 @@ NacaWingParams naca_params_from(const cad::Params& p) {
   if (te != "blunt" && te != "sharp") reject("naca.te", te, "blunt (squared-off trailing edge) or sharp");
   out.sharp_te = te == "sharp";
   out.farfield = p.get_bool("naca.farfield", out.farfield);
+  const std::string wall = p.get_string("naca.wall", "plane");
+  if (wall != "plane" && wall != "cylinder")
+    reject("naca.wall", wall, "plane (the wall z = 0) or cylinder (a streamwise circular cylinder, a fuselage, crest at z = 0)");
+  out.cylinder_wall = wall == "cylinder";
+  out.wall_radius = p.get_double("naca.wall_radius", 1.5 * out.chord);
+  if (!out.cylinder_wall && p.has("naca.wall_radius"))
+    reject("naca.wall_radius", p.get_string("naca.wall_radius", ""), "unset unless naca.wall = cylinder (the plane has no radius)");
+  if (out.cylinder_wall) out.box = cylinder_default_box(out.wall_radius);
   if (p.has("naca.box")) out.box = parse_box(p.get_string("naca.box", ""));
   out.units = p.get_string("naca.units", out.units);
   const std::string shape = p.get_string("naca.shape", "wing");

@@ -1,5 +1,6 @@
 #include "naca_validation.hpp"
 
+#include "cylinder_root.hpp"
 #include "naca_wing.hpp"
 #include "round_tip.hpp"
 
@@ -16,6 +17,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kCapSamples = 200;  // per parameter of the rounded tip, for its extent
+constexpr int kRootSamples = 200;  // per root curve on a cylinder, for its lowest point
+// On a cylinder of radius R: R above this many root half thicknesses, the root no lower than this
+// fraction of R under the crest, the box this fraction of R clear of the cylinder.
+constexpr double kRadiusOverThickness = 4.0;
+constexpr double kLowestRoot = 0.25;
+constexpr double kBoxMargin = 0.1;
 
 [[noreturn]] void reject(const std::string& key, const std::string& value, const std::string& expected) {
   throw cad::CadError(cad::CadError::Kind::BadParameter, key + " = '" + value + "': expected " + expected);
@@ -31,6 +38,39 @@ std::string box_text(const std::array<double, 6>& box) {
   std::string out;
   for (double v : box) out += (out.empty() ? "" : ",") + number(v);
   return out;
+}
+
+// The wing on the cylinder naca.wall_radius: the root must sit near the crest, where it is the graph
+// of a height over the section (cylinder_root.hpp) and the wall's trim test applies
+// (cylinder_wall.cpp). Returns the lowest root height.
+double check_cylinder(const NacaWingParams& p, const std::shared_ptr<const NacaWing>& wing) {
+  const double r = p.wall_radius;
+  if (!(r > 0.0 && std::isfinite(r))) reject("naca.wall_radius", number(r), "a cylinder radius > 0");
+  if (p.round_tip) reject("naca.tip", "round", "flat with naca.wall = cylinder (the rounded tip is built on a plane wall only)");
+  const Vec2 lo = wing->section().extent_lo(), hi = wing->section().extent_hi();
+  const double half = p.chord * std::max(std::abs(lo.y()), std::abs(hi.y()));
+  if (!(r > kRadiusOverThickness * half))
+    reject("naca.wall_radius", number(r),
+           "a radius above " + number(kRadiusOverThickness) + " times the root section's half thickness, i.e. > " +
+               number(kRadiusOverThickness * half) + " for naca.code = " + p.code + " and naca.chord = " + number(p.chord) +
+               " (the root must sit near the cylinder's crest)");
+  // A taper above 1 narrows the planform below z = 0, down towards the cylinder's axis.
+  const double taper_max = 1.0 + 0.5 * p.span / r;
+  if (!(p.taper < taper_max))
+    reject("naca.taper", number(p.taper),
+           "a taper below 1 + 0.5 naca.span / naca.wall_radius = " + number(taper_max) +
+               " on a cylinder (the planform extended down to the cylinder's axis must keep half the root chord)");
+  const CylinderRoot root(wing, r);
+  double lowest = 0.0;
+  for (RootPart part : {RootPart::Upper, RootPart::Lower, RootPart::Base}) {
+    if (part == RootPart::Base && p.sharp_te) continue;
+    for (int i = 0; i <= kRootSamples; ++i) lowest = std::min(lowest, root.root_height(part, static_cast<double>(i) / kRootSamples).f);
+  }
+  if (!(lowest > -kLowestRoot * r))
+    reject("naca.wall_radius", number(r),
+           "a radius on which the root stays within " + number(kLowestRoot) + " R of the crest (it reaches " + number(lowest) +
+               "); a larger radius or a thinner section");
+  return lowest;
 }
 
 }  // namespace
@@ -63,17 +103,30 @@ void validate(const NacaWingParams& p) {
     if (!p.sharp_te) reject("naca.te", "blunt", "sharp " + what + " (the tail is a pole)");
     if (p.farfield) reject("naca.farfield", "true", "false " + what + " (the body has no wall)");
     if (p.round_tip) reject("naca.tip", "round", "flat " + what + " (the body has no tip)");
+    if (p.cylinder_wall) reject("naca.wall", "cylinder", "plane " + what + " (the body has no wall)");
     return;
   }
+  const auto shared_wing =
+      std::make_shared<const NacaWing>(NacaSection(digits, p.sharp_te), p.chord, p.span, p.taper, p.sweep_deg);
+  const double root_low = p.cylinder_wall ? check_cylinder(p, shared_wing) : 0.0;
   if (!p.farfield) return;
 
   const auto& b = p.box;
-  if (b[2] != 0.0) reject("naca.box", box_text(b), "zmin = 0 (the wall is the plane z = 0), got zmin = " + number(b[2]));
-  // The wing is the ruled hull of its root and tip sections (linear planform).
-  const NacaWing wing(NacaSection(digits, p.sharp_te), p.chord, p.span, p.taper, p.sweep_deg);
+  if (p.cylinder_wall) {
+    const double r = p.wall_radius, m = kBoxMargin * r;
+    if (!(b[2] < -2.0 * r - m && b[1] < -r - m && b[4] > r + m))
+      reject("naca.box", box_text(b),
+             "ymin < " + number(-r - m) + ", ymax > " + number(r + m) + " and zmin < " + number(-2.0 * r - m) +
+                 ": the box must hold the cylinder of naca.wall_radius = " + number(r) +
+                 " (axis y = 0, z = -R) with a margin of 0.1 R; its default is " + box_text(cylinder_default_box(r)));
+  } else if (b[2] != 0.0) {
+    reject("naca.box", box_text(b), "zmin = 0 (the wall is the plane z = 0), got zmin = " + number(b[2]));
+  }
+  // The wing is the ruled hull of its lowest (root) and tip sections (linear planform).
+  const NacaWing& wing = *shared_wing;
   const Vec2 lo = wing.section().extent_lo(), hi = wing.section().extent_hi();
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-  for (double v : {0.0, p.span}) {
+  for (double v : {root_low, p.span}) {
     const double c = wing.chord_at(v), x0 = wing.leading_edge_x(v);
     xmin = std::min(xmin, x0 + c * lo.x());
     xmax = std::max(xmax, x0 + c * hi.x());
@@ -93,7 +146,7 @@ void validate(const NacaWingParams& p) {
   if (!(b[0] < xmin && b[3] > xmax && b[1] < ymin && b[4] > ymax && b[5] > zmax))
     reject("naca.box", box_text(b),
            "xmin,ymin,zmin,xmax,ymax,zmax strictly enclosing the wing, which spans x [" + number(xmin) + ", " + number(xmax) +
-               "], y [" + number(ymin) + ", " + number(ymax) + "], z [0, " + number(zmax) + "]");
+               "], y [" + number(ymin) + ", " + number(ymax) + "], z [" + number(root_low) + ", " + number(zmax) + "]");
 }
 
 }  // namespace semimesh::mock_cad::detail

@@ -28,6 +28,18 @@ SurfaceDerivatives NacaWing::eval(Side side, double u, double v) const {
   return d;
 }
 
+SurfaceDerivatives NacaWing::eval_base(double s, double v) const {
+  const SurfaceDerivatives lower = eval(Side::Lower, 1.0, v), upper = eval(Side::Upper, 1.0, v);
+  SurfaceDerivatives d;
+  d.p = lower.p + s * (upper.p - lower.p);
+  d.du = upper.p - lower.p;
+  d.dv = lower.dv + s * (upper.dv - lower.dv);
+  d.duu = Vec3::Zero();
+  d.duv = upper.dv - lower.dv;
+  d.dvv = Vec3::Zero();  // the trailing-edge lines are straight
+  return d;
+}
+
 Vec3 NacaWing::point(Side side, double u, double v) const {
   const Vec2 p = section_.point(side, u);
   const double c = chord_at(v);

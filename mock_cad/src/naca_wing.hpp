@@ -40,6 +40,9 @@ class NacaWing {
   /// S(u, v) on one side and its first and second partial derivatives.
   SurfaceDerivatives eval(Side side, double u, double v) const;
   Vec3 point(Side side, double u, double v) const;
+  /// The ruled map between the lower (s = 0) and upper (s = 1) trailing edges at height v (the
+  /// squared-off base), L(v) + s (U(v) - L(v)), and its derivatives in (s, v).
+  SurfaceDerivatives eval_base(double s, double v) const;
 
   /// (X, Y) of x in the chord-normalised frame of the section at height v.
   Vec2 to_section(const Vec3& x, double v) const;

@@ -163,6 +163,59 @@ struct NacaRoundTipCamberedTaperedSweptSharp {
   static Expectations expect() { return rounded_tip(2); }
 };
 
+/// A wing on a fuselage (naca.wall = cylinder): the wall is periodic about the fuselage's axis,
+/// with one seam (its bottom line) and no pole.
+inline Expectations on_cylinder(Expectations e = {}) {
+  e.seams = 1;
+  e.poles = 0;
+  return e;
+}
+
+struct NacaOnCylinderBlunt {
+  static constexpr const char* kName = "naca on cylinder (0012 blunt)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"", {{"naca.wall", "cylinder"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.le_radius = NacaDefault::expect().le_radius;
+    return on_cylinder(e);
+  }
+};
+
+struct NacaOnCylinderCamberedTaperedSweptSharp {
+  static constexpr const char* kName = "naca on cylinder (2412 sharp TE, taper 0.5, sweep 25 deg, radius 0.8)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "0.8"},
+                                                      {"naca.code", "2412"},
+                                                      {"naca.te", "sharp"},
+                                                      {"naca.taper", "0.5"},
+                                                      {"naca.sweep", "25"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// A cambered blunt base: its lower and upper root corners sit at different heights on the cylinder.
+struct NacaOnCylinderCamberedTaperedSweptBlunt {
+  static constexpr const char* kName = "naca on cylinder (4415 blunt TE, taper 1.4, sweep -15 deg, radius 0.5)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "0.5"},
+                                                      {"naca.code", "4415"},
+                                                      {"naca.taper", "1.4"},
+                                                      {"naca.sweep", "-15"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
 #ifdef SEMIMESH_HAVE_OCC
 struct OccNaca {
   static constexpr const char* kName = "occ B-spline NACA 0012 wing";

@@ -72,7 +72,13 @@ struct NacaWingParams {
   std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
   bool revolution = false;  ///< naca.shape = revolution: a body of revolution, not a wing (naca.shape)
   bool round_tip = false;   ///< naca.tip = round: the tip section revolved about its camber line (naca.tip)
+  bool cylinder_wall = false;  ///< naca.wall = cylinder: the wall is a streamwise circular cylinder (naca.wall)
+  double wall_radius = 1.5;    ///< its radius; naca_params_from's default is 1.5 naca.chord (naca.wall_radius)
 };
+
+/// The far-field box of naca.wall = cylinder when naca.box is not given: x as the plane's default,
+/// y and z 10 beyond the cylinder, {-10, -R - 10, -2R - 10, 11, R + 10, 10}.
+std::array<double, 6> cylinder_default_box(double wall_radius);
 
 /// Reads the naca.* keys of `p` (unknown keys are errors) over the defaults and validates them.
 /// Throws cad::CadError(BadParameter) naming the key, its value and what was expected.
