@@ -3,7 +3,8 @@
 // finite differences). It is the reference model for every test of the pipeline.
 //
 // Frame: x streamwise (root leading edge at x = 0), y cross-flow (thickness), z spanwise. The wall
-// is the plane z = 0; the wing goes from z = 0 to z = span. Local chord and leading edge:
+// is the plane z = 0 (naca.wall = plane, the default; naca.wall = cylinder: below); the wing goes
+// from z = 0 to z = span. Local chord and leading edge:
 //   c(z) = chord (1 - (1 - taper) z / span),   x_le(z) = z tan(sweep).
 // Section (Abbott & von Doenhoff 1959, sec. 6.4), with the chordwise station x = u^2 so that
 // sqrt(x) = u and the skins are smooth at the leading edge:
@@ -43,6 +44,31 @@
 // NekMesh test wing). Curves in id order: as above with tip_te the arc, then tip_le_pole and,
 // sharp, tip_te_pole. A swept or tapered wing tilts the half turn along its span (round_tip.hpp).
 //
+// naca.wall = cylinder stands the wing on a fuselage (src/cylinder_root.hpp, src/cylinder_wall.hpp):
+// the circular cylinder y^2 + (z + R)^2 = R^2, R = naca.wall_radius, about the streamwise axis
+// (y = 0, z = -R), its crest line z = 0 under the root. The root curves root_upper, root_lower
+// (t = u) and, blunt, root_te (t = s, lower -> upper) are the exact intersections of the skins and
+// the base with the cylinder (Newton on the closed forms, machine precision), at heights z_r <= 0;
+// the leading edge and a sharp trailing edge stand on the crest (z_r = 0). The skins and the base
+// keep their parameter rectangles [0,1] x [0,span], with the height
+//   z(u, v) = v + z_r(u) (1 - v / span)
+// (v = 0 the root, v = span the tip; affine in v, so te_upper, te_lower, trailing_edge and
+// leading_edge stay straight lines with t = v). With farfield the fuselage runs through the box:
+//   wall  (x, phi) in [xmin, xmax] x [0, 2 pi], W = (x, -R sin phi, -R (1 + cos phi)), period 2 pi
+//         in phi: phi = 0 and 2 pi the bottom line (the seam, the side pointing -z), pi / 2 the -y
+//         side, pi the crest; normal out of the fuselage; outer loop: seam, circle at xmax, seam
+//         back, circle at xmin; the root section as a hole
+//   box_xmin, box_xmax  hold the fuselage's circle as a hole; the box's bottom is a face, box_zmin
+// Surfaces in id order: the wing's, wall, box_xmin, box_xmax, box_ymin, box_ymax, box_zmin,
+// box_zmax. Curves: the wing's, the 12 box edges, then wall_seam (t = x, along the bottom line),
+// wall_xmin and wall_xmax (the circles, t = phi, closed at the seam). Vertices: the wing's, the box's,
+// wall_xmin and wall_xmax (the seam's ends). Watertight: the seam bounds the wall twice.
+// Checked: R > 4 times the root section's half thickness, the root within R / 4 of the crest,
+// taper < 1 + span / (2 R) (the planform extended down to the axis keeps half the root chord),
+// naca.tip = flat; the box holds the cylinder with 0.1 R to spare (zmin < -2.1 R, |y| > 1.1 R) and
+// the wing; default box {-10, -R - 10, -2R - 10, 11, R + 10, 10}. Without farfield: the wing alone,
+// open at its root on the cylinder.
+//
 // naca.shape = revolution builds instead a body of revolution: the section's thickness (a
 // symmetric code, sharp TE) revolved a full turn about the chord line on the x axis, no wall and
 // no box. One periodic surface "body" (u, w) in [0,1] x [0,2 pi], w the angle from +y towards +z,
@@ -68,7 +94,7 @@ struct NacaWingParams {
   double sweep_deg = 0.0;     ///< leading-edge sweep angle in degrees, |sweep| < 80         (naca.sweep)
   bool sharp_te = false;      ///< false: squared-off TE with a te_base face; true: closed TE (naca.te)
   bool farfield = true;       ///< add the wall (root section as a hole) and the far-field box (naca.farfield)
-  std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 (naca.box)
+  std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 on the plane (naca.box)
   std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
   bool revolution = false;  ///< naca.shape = revolution: a body of revolution, not a wing (naca.shape)
   bool round_tip = false;   ///< naca.tip = round: the tip section revolved about its camber line (naca.tip)
