@@ -92,8 +92,13 @@ params::Table<Config> naca_keys() {
                      "squared-off trailing edge (with a te_base face) or closed"),
       params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",
                      "flat tip cap, or round: the tip section revolved about its camber line (backend naca)"),
+      params::string("wall", &NacaConfig::wall, "\"plane\" | \"cylinder\"",
+                     "the wall z = 0, or cylinder: a fuselage of radius wall_radius along x, crest at z = 0 (backend naca)"),
+      params::real("wall_radius", &NacaConfig::wall_radius, "> 0",
+                   "the cylinder's radius (wall = \"cylinder\"); unset: 1.5 chords"),
       params::reals("box", &NacaConfig::box, "",
-                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0"),
+                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a cylinder: "
+                    "below it; unchanged, the backend's default around the cylinder)"),
   };
   params::Table<GeometryConfig> g;
   append(g, &GeometryConfig::naca, n);

@@ -42,6 +42,8 @@ struct NacaConfig {
   double sweep = 0.0;         ///< degrees
   std::string te = "blunt";   ///< "blunt" | "sharp"
   std::string tip = "flat";   ///< "flat" | "round"
+  std::string wall = "plane";  ///< "plane" | "cylinder" (backend naca: a streamwise fuselage)
+  std::optional<double> wall_radius;  ///< the cylinder's radius; unset: 1.5 chords
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin, ymin, zmin, xmax, ymax, zmax
 };
 
