@@ -10,14 +10,17 @@ namespace {
 constexpr int kRootIterations = 30;
 constexpr double kRootStep = 1e-15;  // relative to |z|
 
-// z (z + 2R) + c(z)^2 Y^2 = 0 for z near 0, from the closed form with the chord at z = 0.
+// y(z) = y_le(z) + c(z) Y: the ordinate at height z of the surface point whose section ordinate is Y.
+double ordinate_at(const NacaWing& wing, double z, double Y) { return wing.tan_dihedral() * z + wing.chord_at(z) * Y; }
+
+// y(z)^2 + z (z + 2R) = 0 for z near 0, from the closed form with the chord at z = 0.
 double solve_root_z(const NacaWing& wing, double radius, double Y) {
   const double y0 = wing.root_chord() * Y;
   double z = -y0 * y0 / (radius + std::sqrt(radius * radius - y0 * y0));
   for (int it = 0; it < kRootIterations; ++it) {
-    const double c = wing.chord_at(z), cy = c * Y;
-    const double f = cy * cy + z * (z + 2.0 * radius);
-    const double fz = 2.0 * (c * wing.chord_slope() * Y * Y + z + radius);
+    const double y = ordinate_at(wing, z, Y);
+    const double f = y * y + z * (z + 2.0 * radius);
+    const double fz = 2.0 * (y * (wing.tan_dihedral() + wing.chord_slope() * Y) + z + radius);
     const double step = f / fz;
     z -= step;
     if (!(std::abs(step) > kRootStep * std::abs(z))) break;
@@ -35,13 +38,15 @@ CylinderRoot::CylinderRoot(std::shared_ptr<const NacaWing> wing, double radius)
 
 ScalarPoint CylinderRoot::height(const ScalarPoint& Y) const {
   const double z = solve_root_z(*wing_, radius_, Y.f);
-  const double c = wing_->chord_at(z), dc = wing_->chord_slope();
-  // Partial derivatives of F(s, z) = c(z)^2 Y(s)^2 + z (z + 2R) (c'' = 0).
-  const double f_z = 2.0 * (c * dc * Y.f * Y.f + z + radius_);
-  const double f_s = 2.0 * c * c * Y.f * Y.d1;
-  const double f_ss = 2.0 * c * c * (Y.d1 * Y.d1 + Y.f * Y.d2);
-  const double f_sz = 4.0 * c * dc * Y.f * Y.d1;
-  const double f_zz = 2.0 * (dc * dc * Y.f * Y.f + 1.0);
+  // Partial derivatives of F(s, z) = y(s, z)^2 + z (z + 2R), y = y_le(z) + c(z) Y(s), linear in z.
+  const double c = wing_->chord_at(z), y = ordinate_at(*wing_, z, Y.f);
+  const double y_s = c * Y.d1, y_z = wing_->tan_dihedral() + wing_->chord_slope() * Y.f;
+  const double y_ss = c * Y.d2, y_sz = wing_->chord_slope() * Y.d1;
+  const double f_z = 2.0 * (y * y_z + z + radius_);
+  const double f_s = 2.0 * y * y_s;
+  const double f_ss = 2.0 * (y_s * y_s + y * y_ss);
+  const double f_sz = 2.0 * (y_z * y_s + y * y_sz);
+  const double f_zz = 2.0 * (y_z * y_z + 1.0);
   ScalarPoint out;
   out.f = z;
   out.d1 = -f_s / f_z;

@@ -2,10 +2,10 @@
 // curves where the skins and the trailing-edge base meet the cylinder y^2 + (z + R)^2 = R^2, and
 // those surfaces reparametrised so that their parameter box stays a rectangle with v = 0 on the root.
 //
-// Each of these surfaces is S(s, z) with y = c(z) Y(s) (a skin: Y the section's ordinate at u = s;
-// the base: Y(s) = Y_L + s (Y_U - Y_L) between the lower and upper trailing edges). Its root height
-// z_r(s) solves
-//   F(s, z) = c(z)^2 Y(s)^2 + z (z + 2R) = 0
+// Each of these surfaces is S(s, z) with y = y_le(z) + c(z) Y(s) (a skin: Y the section's ordinate
+// at u = s; the base: Y(s) = Y_L + s (Y_U - Y_L) between the lower and upper trailing edges; y_le
+// the dihedral's shift, naca_wing.hpp). Its root height z_r(s) solves
+//   F(s, z) = y(s, z)^2 + z (z + 2R) = 0
 // (the cylinder's equation, written without the cancellation of (z + R)^2 - R^2) on the sheet near
 // the crest, z > -R, by Newton from the untapered closed form z = -y^2 / (R + sqrt(R^2 - y^2)), to
 // machine precision. Its derivatives follow by implicit differentiation:

@@ -37,7 +37,7 @@ class Builder {
   explicit Builder(const NacaWingParams& p)
       : p_(p),
         wing_(std::make_shared<const detail::NacaWing>(detail::NacaSection(detail::parse_naca_code(p.code), p.sharp_te),
-                                                       p.chord, p.span, p.taper, p.sweep_deg)),
+                                                       p.chord, p.span, p.taper, p.sweep_deg, p.dihedral_deg)),
         tip_(p.round_tip ? std::make_shared<const detail::RoundTipMap>(wing_) : nullptr),
         root_(p.cylinder_wall ? std::make_shared<const detail::CylinderRoot>(wing_, p.wall_radius) : nullptr),
         model_(std::make_unique<cad::Model>("naca")),
@@ -206,10 +206,11 @@ class Builder {
     }
 
     const double span = p_.span, chord = wing_->chord_at(span), x_le = wing_->leading_edge_x(span);
+    const double y_le = wing_->leading_edge_y(span);
     const cad::Vec2 lo = wing_->section().extent_lo(), hi = wing_->section().extent_hi();
     const double pad = 1e-3 * chord;  // keeps the sampled section extents clear of the outline
     const std::array<Interval, 2> tip_box = {Interval{x_le + chord * lo.x() - pad, x_le + chord * hi.x() + pad},
-                                             Interval{chord * lo.y() - pad, chord * hi.y() + pad}};
+                                             Interval{y_le + chord * lo.y() - pad, y_le + chord * hi.y() + pad}};
     Loop tip_loop = sharp ? Loop{{fwd(c("tip_lower")), rev(c("tip_upper"))}}
                           : Loop{{fwd(c("tip_lower")), fwd(c("tip_te")), rev(c("tip_upper"))}};
     surface(std::make_unique<detail::PlaneFace>(next_surface(), "tip", +1, Vec3(0, 0, span), Vec3::UnitX(), Vec3::UnitY(),

@@ -41,7 +41,7 @@ std::array<double, 6> cylinder_default_box(double wall_radius) {
 
 NacaWingParams naca_params_from(const cad::Params& p) {
   p.require_known({"naca.code", "naca.chord", "naca.span", "naca.taper", "naca.sweep", "naca.te", "naca.farfield",
-                   "naca.box", "naca.units", "naca.shape", "naca.tip", "naca.wall", "naca.wall_radius"},
+                   "naca.box", "naca.units", "naca.shape", "naca.tip", "naca.wall", "naca.wall_radius", "naca.dihedral"},
                   "naca");
   NacaWingParams out;
   out.code = p.get_string("naca.code", out.code);
@@ -49,6 +49,7 @@ NacaWingParams naca_params_from(const cad::Params& p) {
   out.span = p.get_double("naca.span", out.span);
   out.taper = p.get_double("naca.taper", out.taper);
   out.sweep_deg = p.get_double("naca.sweep", out.sweep_deg);
+  out.dihedral_deg = p.get_double("naca.dihedral", out.dihedral_deg);
   const std::string te = p.get_string("naca.te", "blunt");
   if (te != "blunt" && te != "sharp") reject("naca.te", te, "blunt (squared-off trailing edge) or sharp");
   out.sharp_te = te == "sharp";

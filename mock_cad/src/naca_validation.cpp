@@ -96,6 +96,8 @@ void validate(const NacaWingParams& p) {
   if (!(p.span > 0.0)) reject("naca.span", number(p.span), "a semi-span > 0 (the wing height above the wall z = 0)");
   if (!(p.taper > 0.0)) reject("naca.taper", number(p.taper), "a taper ratio (tip chord / root chord) > 0");
   if (!(std::abs(p.sweep_deg) < 80.0)) reject("naca.sweep", number(p.sweep_deg), "a sweep angle in degrees with |sweep| < 80");
+  if (!(std::abs(p.dihedral_deg) < 45.0))
+    reject("naca.dihedral", number(p.dihedral_deg), "a dihedral angle in degrees with |dihedral| < 45");
   if (p.units.empty()) reject("naca.units", p.units, "a unit name (e.g. chord, m, mm)");
   if (p.revolution) {
     const std::string what = "for naca.shape = revolution";
@@ -104,10 +106,14 @@ void validate(const NacaWingParams& p) {
     if (p.farfield) reject("naca.farfield", "true", "false " + what + " (the body has no wall)");
     if (p.round_tip) reject("naca.tip", "round", "flat " + what + " (the body has no tip)");
     if (p.cylinder_wall) reject("naca.wall", "cylinder", "plane " + what + " (the body has no wall)");
+    if (p.dihedral_deg != 0.0) reject("naca.dihedral", number(p.dihedral_deg), "0 " + what + " (the body has no span)");
     return;
   }
-  const auto shared_wing =
-      std::make_shared<const NacaWing>(NacaSection(digits, p.sharp_te), p.chord, p.span, p.taper, p.sweep_deg);
+  // The rounded tip is built on a wing without dihedral (round_tip.hpp).
+  if (p.round_tip && p.dihedral_deg != 0.0)
+    reject("naca.dihedral", number(p.dihedral_deg), "0 with naca.tip = round (the rounded tip is built on a wing without dihedral)");
+  const auto shared_wing = std::make_shared<const NacaWing>(NacaSection(digits, p.sharp_te), p.chord, p.span, p.taper,
+                                                            p.sweep_deg, p.dihedral_deg);
   const double root_low = p.cylinder_wall ? check_cylinder(p, shared_wing) : 0.0;
   if (!p.farfield) return;
 
@@ -127,11 +133,11 @@ void validate(const NacaWingParams& p) {
   const Vec2 lo = wing.section().extent_lo(), hi = wing.section().extent_hi();
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   for (double v : {root_low, p.span}) {
-    const double c = wing.chord_at(v), x0 = wing.leading_edge_x(v);
+    const double c = wing.chord_at(v), x0 = wing.leading_edge_x(v), y0 = wing.leading_edge_y(v);
     xmin = std::min(xmin, x0 + c * lo.x());
     xmax = std::max(xmax, x0 + c * hi.x());
-    ymin = std::min(ymin, c * lo.y());
-    ymax = std::max(ymax, c * hi.y());
+    ymin = std::min(ymin, y0 + c * lo.y());
+    ymax = std::max(ymax, y0 + c * hi.y());
   }
   double zmax = p.span;
   if (p.round_tip) {  // the rounded cap above z = span, sampled (it leans with sweep and taper)

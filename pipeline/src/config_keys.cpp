@@ -88,6 +88,8 @@ params::Table<Config> naca_keys() {
       params::real("span", &NacaConfig::span, "> 0", "wing height above the wall z = 0"),
       params::real("taper", &NacaConfig::taper, "> 0", "tip chord / root chord"),
       params::real("sweep", &NacaConfig::sweep, "(-80, 80)", "leading-edge sweep, degrees"),
+      params::real("dihedral", &NacaConfig::dihedral, "(-45, 45)",
+                   "dihedral, degrees: the sections shifted sideways by z tan(dihedral) (backend naca)"),
       params::string("te", &NacaConfig::te, "\"blunt\" | \"sharp\"",
                      "squared-off trailing edge (with a te_base face) or closed"),
       params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",

@@ -157,6 +157,7 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.span", fmt::format("{}", g.naca.span));
     source.params.set("naca.taper", fmt::format("{}", g.naca.taper));
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
+    if (g.naca.dihedral != 0.0) source.params.set("naca.dihedral", fmt::format("{}", g.naca.dihedral));
     source.params.set("naca.te", g.naca.te);
     if (g.naca.tip != "flat") source.params.set("naca.tip", g.naca.tip);
     if (g.naca.wall != "plane") source.params.set("naca.wall", g.naca.wall);

@@ -216,6 +216,32 @@ struct NacaOnCylinderCamberedTaperedSweptBlunt {
   static Expectations expect() { return on_cylinder(); }
 };
 
+/// Dihedral (naca.dihedral) shears the wing sideways: the junction angle differs on its two sides.
+struct NacaOnCylinderDihedral {
+  static constexpr const char* kName = "naca on cylinder (2412 blunt TE, dihedral 15 deg, taper 0.7, radius 1)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "1"},
+                                                      {"naca.code", "2412"},
+                                                      {"naca.dihedral", "15"},
+                                                      {"naca.taper", "0.7"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+struct NacaDihedralSharp {
+  static constexpr const char* kName = "naca 0012 sharp TE, dihedral -8 deg";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(
+        cad::Source{"", {{"naca.te", "sharp"}, {"naca.dihedral", "-8"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return smooth_wing(); }
+};
+
 #ifdef SEMIMESH_HAVE_OCC
 struct OccNaca {
   static constexpr const char* kName = "occ B-spline NACA 0012 wing";

@@ -18,8 +18,10 @@ using semimesh::mock_cad::NacaWingParams;
 
 constexpr double kPi = 3.14159265358979323846;
 
-NacaWingParams on_cylinder(const std::string& code, bool sharp, double taper, double sweep, double radius) {
+NacaWingParams on_cylinder(const std::string& code, bool sharp, double taper, double sweep, double radius,
+                           double dihedral = 0.0) {
   NacaWingParams p;
+  p.dihedral_deg = dihedral;
   p.code = code;
   p.sharp_te = sharp;
   p.taper = taper;
@@ -33,19 +35,21 @@ NacaWingParams on_cylinder(const std::string& code, bool sharp, double taper, do
 }
 
 // The variants the checks run on: symmetric and cambered, blunt and sharp, tapered both ways, swept
-// both ways, radii from 0.6 to 15 root chords.
+// both ways, with dihedral both ways, radii from 0.6 to 15 root chords.
 std::vector<NacaWingParams> variants() {
-  return {on_cylinder("0012", false, 1.0, 0.0, 1.5), on_cylinder("2412", true, 0.5, 25.0, 0.8),
-          on_cylinder("4415", false, 1.4, -15.0, 0.8), on_cylinder("0009", true, 0.3, 40.0, 20.0)};
+  return {on_cylinder("0012", false, 1.0, 0.0, 1.5),          on_cylinder("2412", true, 0.5, 25.0, 0.8),
+          on_cylinder("4415", false, 1.4, -15.0, 0.8),        on_cylinder("0009", true, 0.3, 40.0, 20.0),
+          on_cylinder("2412", false, 0.7, 10.0, 0.9, 20.0),   on_cylinder("0015", true, 1.0, 0.0, 1.2, -30.0)};
 }
 
 std::string describe(const NacaWingParams& p) {
   return p.code + (p.sharp_te ? " sharp" : " blunt") + " taper " + std::to_string(p.taper) + " sweep " +
-         std::to_string(p.sweep_deg) + " R " + std::to_string(p.wall_radius);
+         std::to_string(p.sweep_deg) + " dihedral " + std::to_string(p.dihedral_deg) + " R " + std::to_string(p.wall_radius);
 }
 
 double chord_at(const NacaWingParams& p, double z) { return p.chord * (1.0 - (1.0 - p.taper) * z / p.span); }
 double le_x_at(const NacaWingParams& p, double z) { return z * std::tan(p.sweep_deg * kPi / 180.0); }
+double le_y_at(const NacaWingParams& p, double z) { return z * std::tan(p.dihedral_deg * kPi / 180.0); }
 
 // Distance of x from the cylinder y^2 + (z + R)^2 = R^2.
 double off_cylinder(const Vec3& x, double radius) { return std::abs(std::hypot(x.y(), x.z() + radius) - radius); }
@@ -56,7 +60,7 @@ double off_skin(const NacaWingParams& p, double u, bool upper, const Vec3& x) {
   const double m = (p.code[0] - '0') / 100.0, pos = (p.code[1] - '0') / 10.0, t = std::stoi(p.code.substr(2)) / 100.0;
   const naca_test::Point2 s = naca_test::surface_point(m, pos, t, u * u, upper, p.sharp_te);
   const double c = chord_at(p, x.z());
-  return std::hypot(x.x() - (le_x_at(p, x.z()) + c * s.x), x.y() - c * s.y);
+  return std::hypot(x.x() - (le_x_at(p, x.z()) + c * s.x), x.y() - (le_y_at(p, x.z()) + c * s.y));
 }
 
 TEST(CylinderRoot, RootCurvesLieOnTheCylinderAndOnTheSkins) {
@@ -118,7 +122,8 @@ TEST(CylinderRoot, UntaperedRootHeightIsTheClosedForm) {
   }
 }
 
-// The leading edge and, sharp, the trailing edge stand on the crest line, where y = 0.
+// The leading edge and, sharp, the trailing edge stand on the crest line, where y = 0 (the dihedral
+// shifts the sections by y_le(z) = z tan(dihedral), zero at the crest).
 TEST(CylinderRoot, EdgesStandOnTheCrest) {
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
@@ -128,6 +133,26 @@ TEST(CylinderRoot, EdgesStandOnTheCrest) {
       const Vec3 te = model->curve(naca_test::curve_id(*model, "trailing_edge")).point(0.0);
       EXPECT_NEAR(te.z(), 0.0, 1e-16) << describe(p);
     }
+  }
+}
+
+// The dihedral shears the wing sideways: the tip section is the root's shifted by span tan(dihedral),
+// on a plane wall as on the cylinder; and it is the wing's own shift, not a tilt of the root.
+TEST(CylinderRoot, DihedralShiftsTheSectionsSideways) {
+  for (const bool cylinder : {false, true}) {
+    NacaWingParams p = on_cylinder("0012", false, 1.0, 0.0, 1.5, 25.0);
+    p.cylinder_wall = cylinder;
+    if (!cylinder) p.box = NacaWingParams{}.box;
+    auto model = naca_test::wing(p);
+    const auto& le = model->curve(naca_test::curve_id(*model, "leading_edge"));
+    EXPECT_LE((le.point(p.span) - Vec3(0.0, p.span * std::tan(25.0 * kPi / 180.0), p.span)).norm(), 1e-14) << cylinder;
+    const auto& tip = model->curve(naca_test::curve_id(*model, "tip_upper"));
+    for (double u : {0.1, 0.5, 0.9}) EXPECT_LE(off_skin(p, u, true, tip.point(u)), 1e-14) << cylinder << " u = " << u;
+    const auto& cap = model->surface(naca_test::surface_id(*model, "tip"));
+    const Vec3 inside = 0.5 * (tip.point(0.5) + model->curve(naca_test::curve_id(*model, "tip_lower")).point(0.5));
+    EXPECT_TRUE(cap.project(inside).inside) << cylinder;
+    const Vec3 unshifted = inside - Vec3(0.0, p.span * std::tan(25.0 * kPi / 180.0), 0.0);
+    EXPECT_FALSE(cap.project(unshifted).inside) << cylinder << ": the section without dihedral";
   }
 }
 

@@ -90,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"naca.box", "-10,-10,0,11,10,10,4", "6 comma-separated"},
                       BadCase{"naca.box", "-10;-10;0;11;10;10", "6 comma-separated"}, BadCase{"naca.units", "", "unit"},
                       BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.tip", "rounded", "flat"}, BadCase{"naca.cord", "1", "unknown parameter"},
-                      BadCase{"naca.wall", "cone", "plane"}, BadCase{"naca.wall_radius", "2", "unset unless naca.wall = cylinder"}));
+                      BadCase{"naca.wall", "cone", "plane"}, BadCase{"naca.dihedral", "45", "|dihedral| < 45"},
+                      BadCase{"naca.dihedral", "-60", "|dihedral| < 45"}, BadCase{"naca.wall_radius", "2", "unset unless naca.wall = cylinder"}));
 
 // On a cylinder (naca.wall = cylinder, radius 1.5 by default): each conflict names its key, its
 // value and what was expected.
@@ -173,6 +174,20 @@ TEST(NacaParams, RoundTipNeedsRoomAboveTheSpanAndAWing) {
     const std::string msg = e.what();
     EXPECT_NE(msg.find("naca.tip"), std::string::npos) << msg;
     EXPECT_NE(msg.find("revolution"), std::string::npos) << msg;
+  }
+}
+
+TEST(NacaParams, DihedralIsReadAndNotForRoundTipsOrBodies) {
+  EXPECT_EQ(naca_params_from(Params{{"naca.dihedral", "-7.5"}}).dihedral_deg, -7.5);
+  EXPECT_EQ(naca_params_from(Params{}).dihedral_deg, 0.0);
+  for (const Params& p : {Params{{"naca.dihedral", "5"}, {"naca.tip", "round"}},
+                          Params{{"naca.dihedral", "5"}, {"naca.shape", "revolution"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}}}) {
+    try {
+      naca_params_from(p);
+      FAIL() << "a dihedral was accepted with a rounded tip or a body of revolution";
+    } catch (const CadError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("naca.dihedral = '5': expected 0 ", 0), 0u) << e.what();
+    }
   }
 }
 

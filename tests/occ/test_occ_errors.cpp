@@ -138,5 +138,11 @@ TEST(OccErrors, CylinderWallOfTheGeneratedWingIsRefused) {
   EXPECT_NE(std::string(error.what()).find("plane"), std::string::npos) << error.what();
 }
 
+TEST(OccErrors, DihedralOfTheGeneratedWingIsRefused) {
+  const CadError error = load_error("", {{"naca.dihedral", "5"}});
+  EXPECT_EQ(error.kind(), CadError::Kind::BadParameter);
+  EXPECT_NE(std::string(error.what()).find("naca.dihedral"), std::string::npos) << error.what();
+}
+
 }  // namespace
 }  // namespace semimesh::occ

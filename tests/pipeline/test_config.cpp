@@ -189,6 +189,15 @@ TEST(Config, CylinderWallIsTheAnalyticBackendsAndHasARadius) {
             std::string::npos);
 }
 
+TEST(Config, DihedralIsTheAnalyticBackends) {
+  EXPECT_EQ(parse_config("[geometry.naca]\ndihedral = -6.0\n", "case.toml").geometry.naca.dihedral, -6.0);
+  EXPECT_NE(error_of("[geometry.naca]\ndihedral = 50.0\n").find("geometry.naca.dihedral = 50: expected (-45, 45)"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbackend = \"occ\"\n[geometry.naca]\ndihedral = 5.0\n")
+                .find("geometry.naca.dihedral = 5: expected 0 for backend \"occ\""),
+            std::string::npos);
+}
+
 TEST(Config, ABareStringIsAListOfOne) {
   EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
   EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,

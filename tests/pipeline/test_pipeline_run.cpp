@@ -437,7 +437,7 @@ TEST(PipelineRun, AGeneratedWingTakesTheWallPlaneAndFarFieldBox) {
   fs::remove_all(dir);
 }
 
-// geometry.naca.wall = "cylinder" reaches the analytic backend with its radius; a box left at the
+// geometry.naca.wall = "cylinder" reaches the analytic backend with its radius (and a dihedral with it); a box left at the
 // plane's default (zmin = 0, inside the fuselage) is not passed, so the backend's box around the
 // cylinder applies; a box given is passed as it is.
 TEST(PipelineRun, ACylinderWallReachesTheBackend) {
@@ -452,6 +452,9 @@ TEST(PipelineRun, ACylinderWallReachesTheBackend) {
   EXPECT_FALSE(fuselage.has("naca.box"));
   g.naca.box = {-5, -4, -6, 6, 4, 5};
   EXPECT_EQ(cad_source(g).params.get_string("naca.box", ""), "-5,-4,-6,6,4,5");
+  EXPECT_FALSE(cad_source(g).params.has("naca.dihedral"));
+  g.naca.dihedral = 12.5;
+  EXPECT_EQ(cad_source(g).params.get_double("naca.dihedral", 0.0), 12.5);
 }
 
 }  // namespace

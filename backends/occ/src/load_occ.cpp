@@ -205,6 +205,10 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
     throw CadError(CadError::Kind::BadParameter,
                    "parameter 'naca.tip' = 'round': the generated B-spline wing of backend 'occ' has a flat tip "
                    "(the rounded tip is backend 'naca''s)");
+  if (wing.dihedral_deg != 0.0)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'naca.dihedral': the generated B-spline wing of backend 'occ' has no dihedral "
+                   "(the dihedral is backend 'naca''s)");
   if (wing.cylinder_wall)
     throw CadError(CadError::Kind::BadParameter,
                    "parameter 'naca.wall' = 'cylinder': the generated B-spline wing of backend 'occ' stands on the plane "

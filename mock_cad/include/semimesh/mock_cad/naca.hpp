@@ -4,8 +4,9 @@
 //
 // Frame: x streamwise (root leading edge at x = 0), y cross-flow (thickness), z spanwise. The wall
 // is the plane z = 0 (naca.wall = plane, the default; naca.wall = cylinder: below); the wing goes
-// from z = 0 to z = span. Local chord and leading edge:
-//   c(z) = chord (1 - (1 - taper) z / span),   x_le(z) = z tan(sweep).
+// from z = 0 to z = span. Local chord and leading edge (sweep and dihedral shear the wing: its
+// sections stay parallel to the wall):
+//   c(z) = chord (1 - (1 - taper) z / span),   x_le(z) = z tan(sweep),   y_le(z) = z tan(dihedral).
 // Section (Abbott & von Doenhoff 1959, sec. 6.4), with the chordwise station x = u^2 so that
 // sqrt(x) = u and the skins are smooth at the leading edge:
 //   y_t = 5 t (0.2969 u - 0.1260 u^2 - 0.3516 u^4 + 0.2843 u^6 + a4 u^8),
@@ -17,7 +18,7 @@
 // 3e-4 rad for 2412). Derivatives there are the aft-side limits; projections handle the crease.
 //
 // Surfaces, in id order (normals point out of the solid into the fluid):
-//   upper    (u, v) in [0,1] x [0,span]: S = (x_le(v) + c(v) X(u), c(v) Y(u), v), u = 0 at the LE
+//   upper    (u, v) in [0,1] x [0,span]: S = (x_le(v) + c(v) X(u), y_le(v) + c(v) Y(u), v), u = 0 at the LE
 //   lower    same parameters, lower side
 //   te_base  (blunt only) (s, v) in [0,1] x [0,span]: lower TE line (s = 0) to upper TE line (s = 1)
 //   tip      plane z = span, (u, v) = (x, y), trimmed to the tip section (normal +z)
@@ -92,6 +93,7 @@ struct NacaWingParams {
   double span = 3.0;          ///< semi-span: wing height above the wall z = 0              (naca.span)
   double taper = 1.0;         ///< tip chord / root chord, > 0                               (naca.taper)
   double sweep_deg = 0.0;     ///< leading-edge sweep angle in degrees, |sweep| < 80         (naca.sweep)
+  double dihedral_deg = 0.0;  ///< dihedral in degrees, |dihedral| < 45: sections shifted by z tan  (naca.dihedral)
   bool sharp_te = false;      ///< false: squared-off TE with a te_base face; true: closed TE (naca.te)
   bool farfield = true;       ///< add the wall (root section as a hole) and the far-field box (naca.farfield)
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin,ymin,zmin,xmax,ymax,zmax; zmin = 0 on the plane (naca.box)

@@ -40,6 +40,7 @@ struct NacaConfig {
   double span = 3.0;
   double taper = 1.0;
   double sweep = 0.0;         ///< degrees
+  double dihedral = 0.0;      ///< degrees (backend naca)
   std::string te = "blunt";   ///< "blunt" | "sharp"
   std::string tip = "flat";   ///< "flat" | "round"
   std::string wall = "plane";  ///< "plane" | "cylinder" (backend naca: a streamwise fuselage)
