@@ -1,7 +1,7 @@
 // Assembles the wing, wall and box entities into a cad::Model (topology and loop orientation:
 // see the comment at the top of naca.hpp and the contract in cadapi/model.hpp).
-#include "cylinder_root.hpp"
-#include "cylinder_wall.hpp"
+#include "fuselage_root.hpp"
+#include "fuselage_wall.hpp"
 #include "naca_validation.hpp"
 #include "naca_wing.hpp"
 #include "plane_entities.hpp"
@@ -39,7 +39,8 @@ class Builder {
         wing_(std::make_shared<const detail::NacaWing>(detail::NacaSection(detail::parse_naca_code(p.code), p.sharp_te),
                                                        p.chord, p.span, p.taper, p.sweep_deg, p.dihedral_deg)),
         tip_(p.round_tip ? std::make_shared<const detail::RoundTipMap>(wing_) : nullptr),
-        root_(p.cylinder_wall ? std::make_shared<const detail::CylinderRoot>(wing_, p.wall_radius) : nullptr),
+        slope_(std::tan(p.wall_angle_deg * M_PI / 180.0)),
+        root_(p.fuselage ? std::make_shared<const detail::FuselageRoot>(wing_, p.wall_radius, slope_) : nullptr),
         model_(std::make_unique<cad::Model>("naca")),
         tol_(kSolverTolerance * p.chord),
         band_(kBoundaryBand * p.chord) {}
@@ -47,9 +48,9 @@ class Builder {
   std::unique_ptr<cad::Model> build() {
     add_wing_curves();
     if (p_.farfield) add_box_curves();
-    if (p_.farfield && root_) add_cylinder_curves();
+    if (p_.farfield && root_) add_fuselage_curves();
     add_wing_surfaces();
-    if (p_.farfield && root_) add_cylinder_farfield_surfaces();
+    if (p_.farfield && root_) add_fuselage_farfield_surfaces();
     else if (p_.farfield) add_farfield_surfaces();
     model_->set_units(p_.units, 1.0);
     model_->set_units_origin("naca.units (the generated wing's lengths; its chord is naca.chord)");
@@ -165,14 +166,14 @@ class Builder {
   }
 
   // The fuselage: its bottom line (the wall's seam, t = x) and its circles at the box's ends (t = phi),
-  // which start and end on that line (cylinder_wall.hpp).
-  void add_cylinder_curves() {
+  // which start and end on that line (fuselage_wall.hpp).
+  void add_fuselage_curves() {
     const double r = p_.wall_radius, x0 = p_.box[0], x1 = p_.box[3];
-    vertex("wall_xmin", Vec3(x0, 0.0, -2.0 * r));
-    vertex("wall_xmax", Vec3(x1, 0.0, -2.0 * r));
+    for (const auto& [name, x] : {std::pair<std::string, double>{"wall_xmin", x0}, {"wall_xmax", x1}})
+      vertex(name, Vec3(x, 0.0, -r - (r + slope_ * x)));
     line("wall_seam", "wall_xmin", "wall_xmax", Interval{x0, x1});
     for (const auto& [name, x] : {std::pair<std::string, double>{"wall_xmin", x0}, {"wall_xmax", x1}})
-      curves_[name] = model_->add_curve(std::make_unique<detail::WallCircle>(model_->num_curves(), name, x, r),
+      curves_[name] = model_->add_curve(std::make_unique<detail::FuselageCircle>(model_->num_curves(), name, x, r + slope_ * x, r),
                                         vertices_.at(name), vertices_.at(name));
   }
 
@@ -251,16 +252,16 @@ class Builder {
                        : Loop{{fwd(c("root_upper")), rev(c("root_te")), rev(c("root_lower"))}};
   }
 
-  // naca.wall = cylinder: the fuselage runs through the box, whose ends hold its circles as holes
-  // and whose bottom is a face of its own.
-  void add_cylinder_farfield_surfaces() {
+  // naca.wall = cylinder or cone: the fuselage runs through the box, whose ends hold its circles as
+  // holes and whose bottom is a face of its own.
+  void add_fuselage_farfield_surfaces() {
     const auto& b = p_.box;
     const double r = p_.wall_radius;
     const Interval x{b[0], b[3]}, y{b[1], b[4]}, z{b[2], b[5]};
     const Vec3 ex = Vec3::UnitX(), ey = Vec3::UnitY(), ez = Vec3::UnitZ();
     // Counter-clockwise in (x, phi): along the seam at phi = 0, up the circle at xmax, back along
     // the seam at phi = 2 pi, down the circle at xmin.
-    surface(std::make_unique<detail::CylinderWall>(next_surface(), "wall", wing_, r, x, band_),
+    surface(std::make_unique<detail::FuselageWall>(next_surface(), "wall", wing_, r, slope_, x, band_),
             {Loop{{fwd(c("wall_seam")), fwd(c("wall_xmax")), rev(c("wall_seam")), rev(c("wall_xmin"))}}, root_hole()});
     auto plane = [&](const std::string& name, int orientation, const Vec3& origin, const Vec3& e1, const Vec3& e2,
                      Interval i1, Interval i2, std::vector<Loop> loops, std::optional<detail::DiscHole> hole = {}) {
@@ -268,17 +269,17 @@ class Builder {
                                                   std::array<Interval, 2>{i1, i2}, band_, std::nullopt, hole),
               std::move(loops));
     };
-    // Box faces: normals point into the box. A circle runs clockwise around +x (cylinder_wall.hpp):
+    // Box faces: normals point into the box. A circle runs clockwise around +x (fuselage_wall.hpp):
     // a hole of box_xmin (normal +x) forward, of box_xmax (normal -x) reversed.
-    const detail::DiscHole disc{cad::Vec2(0.0, -r), r};  // in (y, z)
+    auto disc = [&](double x_end) { return detail::DiscHole{cad::Vec2(0.0, -r), r + slope_ * x_end}; };  // in (y, z)
     plane("box_xmin", +1, Vec3(b[0], 0, 0), ey, ez, y, z,
           {Loop{{fwd(c("box_xmin_zmin")), fwd(c("box_xmin_ymax")), rev(c("box_xmin_zmax")), rev(c("box_xmin_ymin"))}},
            Loop{{fwd(c("wall_xmin"))}}},
-          disc);
+          disc(b[0]));
     plane("box_xmax", -1, Vec3(b[3], 0, 0), ey, ez, y, z,
           {Loop{{fwd(c("box_xmax_ymin")), fwd(c("box_xmax_zmax")), rev(c("box_xmax_ymax")), rev(c("box_xmax_zmin"))}},
            Loop{{rev(c("wall_xmax"))}}},
-          disc);
+          disc(b[3]));
     plane("box_ymin", -1, Vec3(0, b[1], 0), ex, ez, x, z,
           {Loop{{fwd(c("box_xmin_ymin")), fwd(c("box_ymin_zmax")), rev(c("box_xmax_ymin")), rev(c("box_ymin_zmin"))}}});
     plane("box_ymax", +1, Vec3(0, b[4], 0), ex, ez, x, z,
@@ -292,7 +293,8 @@ class Builder {
   const NacaWingParams& p_;
   std::shared_ptr<const detail::NacaWing> wing_;
   std::shared_ptr<const detail::RoundTipMap> tip_;      // naca.tip = round only
-  std::shared_ptr<const detail::CylinderRoot> root_;    // naca.wall = cylinder only
+  double slope_;                                        // the cone's dr/dx (0: a cylinder or the plane)
+  std::shared_ptr<const detail::FuselageRoot> root_;    // naca.wall = cylinder only
   std::unique_ptr<cad::Model> model_;
   double tol_, band_;
   std::map<std::string, int> vertices_, curves_;

@@ -10,7 +10,7 @@ constexpr double kNoCrease = -1.0;  // outside every parameter range
 }  // namespace
 
 WingSkin::WingSkin(int id, std::string name, std::shared_ptr<const NacaWing> wing, Side side, double tol,
-                   std::shared_ptr<const CylinderRoot> root)
+                   std::shared_ptr<const FuselageRoot> root)
     : cad::Surface(id, std::move(name), side == Side::Upper ? -1 : +1),
       wing_(std::move(wing)),
       side_(side),
@@ -54,7 +54,7 @@ SurfaceProjection WingSkin::project(const Vec3& x, std::optional<Vec2> guess) co
 }
 
 TrailingEdgeBase::TrailingEdgeBase(int id, std::string name, std::shared_ptr<const NacaWing> wing, double tol,
-                                   std::shared_ptr<const CylinderRoot> root)
+                                   std::shared_ptr<const FuselageRoot> root)
     : cad::Surface(id, std::move(name), +1), wing_(std::move(wing)), tol_(tol), root_(std::move(root)) {}
 
 SurfaceDerivatives TrailingEdgeBase::derivatives(const Vec2& uv) const {
@@ -104,7 +104,7 @@ CurveProjection SectionCurve::project(const Vec3& x, std::optional<double> guess
                               start, bounds(), tol_, wing_->root_chord(), wing_->section().crease_u());
 }
 
-RootCurve::RootCurve(int id, std::string name, std::shared_ptr<const CylinderRoot> root, RootPart part, double tol)
+RootCurve::RootCurve(int id, std::string name, std::shared_ptr<const FuselageRoot> root, RootPart part, double tol)
     : cad::Curve(id, std::move(name)), root_(std::move(root)), part_(part), tol_(tol) {}
 
 CurveDerivatives RootCurve::derivatives(double t) const {

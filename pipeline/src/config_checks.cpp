@@ -96,10 +96,12 @@ void check_geometry(Config& c, const std::map<std::string, Section*>& sections, 
   Section& naca = *sections.at("geometry.naca");
   naca.require(geo.naca.wall == "plane" || (geo.source.empty() && geo.backend == "naca"), "wall",
                "\"plane\" for backend \"" + geo.backend + "\"" + (geo.source.empty() ? "" : " with a source file") +
-                   " (the cylinder wall is the analytic backend's: backend = \"naca\", no source)");
+                   " (the fuselage walls are the analytic backend's: backend = \"naca\", no source)");
   naca.require(geo.naca.wall == "plane" || !geo.wall_plane.given(), "wall",
-               "\"plane\" with [geometry.wall_plane] (the cylinder is the wall)");
-  naca.require(!geo.naca.wall_radius || geo.naca.wall == "cylinder", "wall_radius", "unset unless wall = \"cylinder\"");
+               "\"plane\" with [geometry.wall_plane] (the fuselage is the wall)");
+  naca.require(!geo.naca.wall_radius || geo.naca.wall != "plane", "wall_radius",
+               "unset unless wall = \"cylinder\" or \"cone\"");
+  naca.require(!geo.naca.wall_angle || geo.naca.wall == "cone", "wall_angle", "unset unless wall = \"cone\"");
   naca.require(geo.naca.dihedral == 0.0 || (geo.source.empty() && geo.backend == "naca"), "dihedral",
                "0 for backend \"" + geo.backend + "\"" + (geo.source.empty() ? "" : " with a source file") +
                    " (the dihedral is the analytic backend's: backend = \"naca\", no source)");

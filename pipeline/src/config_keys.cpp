@@ -94,10 +94,13 @@ params::Table<Config> naca_keys() {
                      "squared-off trailing edge (with a te_base face) or closed"),
       params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",
                      "flat tip cap, or round: the tip section revolved about its camber line (backend naca)"),
-      params::string("wall", &NacaConfig::wall, "\"plane\" | \"cylinder\"",
-                     "the wall z = 0, or cylinder: a fuselage of radius wall_radius along x, crest at z = 0 (backend naca)"),
+      params::string("wall", &NacaConfig::wall, "\"plane\" | \"cylinder\" | \"cone\"",
+                     "the wall z = 0, or a fuselage along x of radius wall_radius (cone: widening by wall_angle), crest "
+                     "through the root's leading edge (backend naca)"),
       params::real("wall_radius", &NacaConfig::wall_radius, "> 0",
-                   "the cylinder's radius (wall = \"cylinder\"); unset: 1.5 chords"),
+                   "the fuselage's radius at x = 0 (wall = \"cylinder\" or \"cone\"); unset: 1.5 chords"),
+      params::real("wall_angle", &NacaConfig::wall_angle, "(-30, 30)",
+                   "the cone's half angle, degrees, its radius growing downstream (wall = \"cone\"); unset: 5"),
       params::reals("box", &NacaConfig::box, "",
                     "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a cylinder: "
                     "below it; unchanged, the backend's default around the cylinder)"),

@@ -162,7 +162,8 @@ cad::Source cad_source(const GeometryConfig& g) {
     if (g.naca.tip != "flat") source.params.set("naca.tip", g.naca.tip);
     if (g.naca.wall != "plane") source.params.set("naca.wall", g.naca.wall);
     if (g.naca.wall_radius) source.params.set("naca.wall_radius", fmt::format("{}", *g.naca.wall_radius));
-    // On a cylinder a box left at the plane's default gives way to the backend's, around the cylinder.
+    if (g.naca.wall_angle) source.params.set("naca.wall_angle", fmt::format("{}", *g.naca.wall_angle));
+    // On a fuselage a box left at the plane's default gives way to the backend's, around the fuselage.
     if (g.naca.wall == "plane" || g.naca.box != NacaConfig{}.box)
       source.params.set("naca.box", box_text(g.wall_plane.given() ? generated_box(g) : g.naca.box));
     if (g.units != "auto") source.params.set("naca.units", g.units);

@@ -163,7 +163,7 @@ struct NacaRoundTipCamberedTaperedSweptSharp {
   static Expectations expect() { return rounded_tip(2); }
 };
 
-/// A wing on a fuselage (naca.wall = cylinder): the wall is periodic about the fuselage's axis,
+/// A wing on a fuselage (naca.wall = cylinder or cone): the wall is periodic about the fuselage's axis,
 /// with one seam (its bottom line) and no pole.
 inline Expectations on_cylinder(Expectations e = {}) {
   e.seams = 1;
@@ -228,6 +228,34 @@ struct NacaOnCylinderDihedral {
                                                       {"naca.dihedral", "15"},
                                                       {"naca.taper", "0.7"},
                                                       {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// A cone (naca.wall = cone) narrowing downstream under a swept, tapered sharp wing.
+struct NacaOnConeSweptSharp {
+  static constexpr const char* kName = "naca on cone (0012 sharp TE, sweep 20 deg, taper 0.6, half angle -3 deg)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cone"},
+                                                      {"naca.wall_angle", "-3"},
+                                                      {"naca.te", "sharp"},
+                                                      {"naca.sweep", "20"},
+                                                      {"naca.taper", "0.6"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// ... and widening downstream under a cambered blunt wing.
+struct NacaOnConeCamberedBlunt {
+  static constexpr const char* kName = "naca on cone (2412 blunt TE, half angle 6 deg, radius 1.2)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{
+        "", {{"naca.wall", "cone"}, {"naca.wall_angle", "6"}, {"naca.wall_radius", "1.2"}, {"naca.code", "2412"}, {"naca.span", "2"},
+             {"naca.box", "-6,-9,-12,7,9,8"}}});
   }
   static Expectations expect() { return on_cylinder(); }
 };

@@ -48,7 +48,8 @@ class Conformance : public ::testing::Test {
 using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution,
                                 NacaRoundTipBlunt, NacaRoundTipBluntTaperedSwept, NacaRoundTipCamberedTaperedSweptSharp,
                                 NacaOnCylinderBlunt, NacaOnCylinderCamberedTaperedSweptSharp,
-                                NacaOnCylinderCamberedTaperedSweptBlunt, NacaOnCylinderDihedral, NacaDihedralSharp
+                                NacaOnCylinderCamberedTaperedSweptBlunt, NacaOnCylinderDihedral, NacaDihedralSharp,
+                                NacaOnConeSweptSharp, NacaOnConeCamberedBlunt
 #ifdef SEMIMESH_HAVE_OCC
                                 ,
                                 OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6, OccStepOneraM6OnWall,

@@ -175,9 +175,14 @@ TEST(Config, CylinderWallIsTheAnalyticBackendsAndHasARadius) {
   EXPECT_EQ(c.geometry.naca.wall, "cylinder");
   EXPECT_EQ(c.geometry.naca.wall_radius, 2.5);
   EXPECT_FALSE(parse_config("", "case.toml").geometry.naca.wall_radius.has_value());
-  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cone\"\n").find("geometry.naca.wall = \"cone\": expected \"plane\" or \"cylinder\""),
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"sphere\"\n").find("geometry.naca.wall = \"sphere\": expected"),
             std::string::npos);
   EXPECT_NE(error_of("[geometry.naca]\nwall_radius = 2.0\n").find("geometry.naca.wall_radius = 2: expected unset unless wall = \"cylinder\""),
+            std::string::npos);
+  EXPECT_EQ(parse_config("[geometry.naca]\nwall = \"cone\"\nwall_angle = -4.0\n", "case.toml").geometry.naca.wall_angle, -4.0);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cylinder\"\nwall_angle = 3.0\n").find("geometry.naca.wall_angle = 3: expected unset unless wall = \"cone\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cone\"\nwall_angle = 31.0\n").find("geometry.naca.wall_angle = 31: expected (-30, 30)"),
             std::string::npos);
   EXPECT_NE(error_of("[geometry.naca]\nwall = \"cylinder\"\nwall_radius = -1.0\n").find("geometry.naca.wall_radius = -1: expected > 0"),
             std::string::npos);

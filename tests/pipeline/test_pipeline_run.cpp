@@ -452,6 +452,10 @@ TEST(PipelineRun, ACylinderWallReachesTheBackend) {
   EXPECT_FALSE(fuselage.has("naca.box"));
   g.naca.box = {-5, -4, -6, 6, 4, 5};
   EXPECT_EQ(cad_source(g).params.get_string("naca.box", ""), "-5,-4,-6,6,4,5");
+  EXPECT_FALSE(cad_source(g).params.has("naca.wall_angle"));
+  g.naca.wall = "cone";
+  g.naca.wall_angle = -2.5;
+  EXPECT_EQ(cad_source(g).params.get_double("naca.wall_angle", 0.0), -2.5);
   EXPECT_FALSE(cad_source(g).params.has("naca.dihedral"));
   g.naca.dihedral = 12.5;
   EXPECT_EQ(cad_source(g).params.get_double("naca.dihedral", 0.0), 12.5);

@@ -45,30 +45,34 @@
 // NekMesh test wing). Curves in id order: as above with tip_te the arc, then tip_le_pole and,
 // sharp, tip_te_pole. A swept or tapered wing tilts the half turn along its span (round_tip.hpp).
 //
-// naca.wall = cylinder stands the wing on a fuselage (src/cylinder_root.hpp, src/cylinder_wall.hpp):
-// the circular cylinder y^2 + (z + R)^2 = R^2, R = naca.wall_radius, about the streamwise axis
-// (y = 0, z = -R), its crest line z = 0 under the root. The root curves root_upper, root_lower
-// (t = u) and, blunt, root_te (t = s, lower -> upper) are the exact intersections of the skins and
-// the base with the cylinder (Newton on the closed forms, machine precision), at heights z_r <= 0;
-// the leading edge and a sharp trailing edge stand on the crest (z_r = 0). The skins and the base
-// keep their parameter rectangles [0,1] x [0,span], with the height
-//   z(u, v) = v + z_r(u) (1 - v / span)
+// naca.wall = cylinder or cone stands the wing on a fuselage (src/fuselage_root.hpp,
+// src/fuselage_wall.hpp): the body of revolution y^2 + (z + R)^2 = r(x)^2 about the streamwise axis
+// (y = 0, z = -R), R = naca.wall_radius, r(x) = R + k x with k = tan(naca.wall_angle), the cone's
+// half angle (k = 0: the circular cylinder); its crest line (y = 0, z = k x) passes through the
+// root's leading edge at the origin. The root curves root_upper, root_lower (t = u) and, blunt,
+// root_te (t = s, lower -> upper) are the exact intersections of the skins and the base with the
+// fuselage (Newton on the closed forms, machine precision); the leading edge stands on the crest at
+// z = 0. The skins and the base keep their parameter rectangles [0,1] x [0,span], with the height
+//   z(u, v) = v + z_r(u) (1 - v / span),   z_r(u) the root's height
 // (v = 0 the root, v = span the tip; affine in v, so te_upper, te_lower, trailing_edge and
 // leading_edge stay straight lines with t = v). With farfield the fuselage runs through the box:
-//   wall  (x, phi) in [xmin, xmax] x [0, 2 pi], W = (x, -R sin phi, -R (1 + cos phi)), period 2 pi
-//         in phi: phi = 0 and 2 pi the bottom line (the seam, the side pointing -z), pi / 2 the -y
-//         side, pi the crest; normal out of the fuselage; outer loop: seam, circle at xmax, seam
-//         back, circle at xmin; the root section as a hole
-//   box_xmin, box_xmax  hold the fuselage's circle as a hole; the box's bottom is a face, box_zmin
+//   wall  (x, phi) in [xmin, xmax] x [0, 2 pi], W = (x, -r(x) sin phi, -R - r(x) cos phi), period
+//         2 pi in phi: phi = 0 and 2 pi the bottom line (the seam, the side pointing -z), pi / 2
+//         the -y side, pi the crest; normal out of the fuselage; outer loop: seam, circle at xmax,
+//         seam back, circle at xmin; the root section as a hole
+//   box_xmin, box_xmax  hold the fuselage's circle (radius r(xmin), r(xmax)) as a hole; the box's
+//         bottom is a face, box_zmin
 // Surfaces in id order: the wing's, wall, box_xmin, box_xmax, box_ymin, box_ymax, box_zmin,
 // box_zmax. Curves: the wing's, the 12 box edges, then wall_seam (t = x, along the bottom line),
 // wall_xmin and wall_xmax (the circles, t = phi, closed at the seam). Vertices: the wing's, the box's,
 // wall_xmin and wall_xmax (the seam's ends). Watertight: the seam bounds the wall twice.
-// Checked: R > 4 times the root section's half thickness, the root within R / 4 of the crest,
-// taper < 1 + span / (2 R) (the planform extended down to the axis keeps half the root chord),
-// naca.tip = flat; the box holds the cylinder with 0.1 R to spare (zmin < -2.1 R, |y| > 1.1 R) and
-// the wing; default box {-10, -R - 10, -2R - 10, 11, R + 10, 10}. Without farfield: the wing alone,
-// open at its root on the cylinder.
+// Checked: R > 4 times the root section's half thickness; the root within 1 - cos = 1/4 of the crest
+// round the fuselage (R / 4 under it on a cylinder); taper < 1 + span / (2 R) (the planform extended
+// down to the axis keeps half the root chord); naca.tip = flat; a cone: 0 < |angle| < 30 degrees
+// (default 5) and a radius above R / 10 at the box's ends (its apex outside); the box holds the
+// fuselage with 0.1 of its largest radius r_max to spare (zmin < -R - 1.1 r_max, |y| > 1.1 r_max) and
+// the wing; default box {-10, -r_max - 10, -R - r_max - 10, 11, r_max + 10, 10}. Without farfield:
+// the wing alone, open at its root on the fuselage.
 //
 // naca.shape = revolution builds instead a body of revolution: the section's thickness (a
 // symmetric code, sharp TE) revolved a full turn about the chord line on the x axis, no wall and
@@ -100,13 +104,15 @@ struct NacaWingParams {
   std::string units = "chord";                            ///< unit label of all coordinates (naca.units)
   bool revolution = false;  ///< naca.shape = revolution: a body of revolution, not a wing (naca.shape)
   bool round_tip = false;   ///< naca.tip = round: the tip section revolved about its camber line (naca.tip)
-  bool cylinder_wall = false;  ///< naca.wall = cylinder: the wall is a streamwise circular cylinder (naca.wall)
-  double wall_radius = 1.5;    ///< its radius; naca_params_from's default is 1.5 naca.chord (naca.wall_radius)
+  bool fuselage = false;       ///< naca.wall = cylinder or cone: a fuselage about the streamwise axis (naca.wall)
+  double wall_radius = 1.5;    ///< its radius at x = 0; naca_params_from's default is 1.5 naca.chord (naca.wall_radius)
+  double wall_angle_deg = 0.0; ///< the cone's half angle, radius growing downstream; 0: the cylinder (naca.wall_angle)
 };
 
-/// The far-field box of naca.wall = cylinder when naca.box is not given: x as the plane's default,
-/// y and z 10 beyond the cylinder, {-10, -R - 10, -2R - 10, 11, R + 10, 10}.
-std::array<double, 6> cylinder_default_box(double wall_radius);
+/// The far-field box of a fuselage when naca.box is not given: x as the plane's default, y and z
+/// 10 beyond the fuselage's largest radius r_max in that x range,
+/// {-10, -r_max - 10, -R - r_max - 10, 11, r_max + 10, 10} (a cylinder: r_max = R).
+std::array<double, 6> fuselage_default_box(double wall_radius, double wall_angle_deg);
 
 /// Reads the naca.* keys of `p` (unknown keys are errors) over the defaults and validates them.
 /// Throws cad::CadError(BadParameter) naming the key, its value and what was expected.

@@ -43,8 +43,9 @@ struct NacaConfig {
   double dihedral = 0.0;      ///< degrees (backend naca)
   std::string te = "blunt";   ///< "blunt" | "sharp"
   std::string tip = "flat";   ///< "flat" | "round"
-  std::string wall = "plane";  ///< "plane" | "cylinder" (backend naca: a streamwise fuselage)
-  std::optional<double> wall_radius;  ///< the cylinder's radius; unset: 1.5 chords
+  std::string wall = "plane";  ///< "plane" | "cylinder" | "cone" (backend naca: a streamwise fuselage)
+  std::optional<double> wall_radius;  ///< the fuselage's radius at x = 0; unset: 1.5 chords
+  std::optional<double> wall_angle;   ///< the cone's half angle, degrees; unset: 5
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin, ymin, zmin, xmax, ymax, zmax
 };
 

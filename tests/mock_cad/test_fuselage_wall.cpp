@@ -1,4 +1,4 @@
-// The fuselage of naca.wall = cylinder (src/cylinder_wall.hpp): the model's faces and curves, its
+// The fuselage of naca.wall = cylinder (src/fuselage_wall.hpp): the model's faces and curves, its
 // watertightness, the wall's periodic parameters, normals, trim and projections, and the box with
 // the fuselage's circles as holes.
 #include "naca_reference.hpp"
@@ -31,7 +31,7 @@ std::vector<std::string> surface_names(const Model& m) {
   return out;
 }
 
-TEST(CylinderWall, FacesInTheDocumentedOrder) {
+TEST(FuselageWall, FacesInTheDocumentedOrder) {
   const std::vector<std::string> blunt = {"upper",    "lower",    "te_base",  "tip",      "wall",    "box_xmin",
                                           "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"};
   EXPECT_EQ(surface_names(*default_on_cylinder()), blunt);
@@ -40,9 +40,9 @@ TEST(CylinderWall, FacesInTheDocumentedOrder) {
   EXPECT_EQ(surface_names(*default_on_cylinder("sharp")), sharp);
 }
 
-TEST(CylinderWall, DefaultsAndBox) {
+TEST(FuselageWall, DefaultsAndBox) {
   const auto p = semimesh::mock_cad::naca_params_from(Params{{"naca.wall", "cylinder"}, {"naca.chord", "2"}});
-  EXPECT_TRUE(p.cylinder_wall);
+  EXPECT_TRUE(p.fuselage);
   EXPECT_EQ(p.wall_radius, 3.0);  // 1.5 root chords
   EXPECT_EQ(p.box, (std::array<double, 6>{-10, -13, -16, 11, 13, 10}));
   auto model = default_on_cylinder();
@@ -52,7 +52,7 @@ TEST(CylinderWall, DefaultsAndBox) {
 }
 
 // Every curve bounds two faces once each way; the seam bounds the wall twice.
-TEST(CylinderWall, ModelIsWatertight) {
+TEST(FuselageWall, ModelIsWatertight) {
   for (const char* te : {"blunt", "sharp"}) {
     auto model = default_on_cylinder(te);
     EXPECT_TRUE(model->is_closed()) << te;
@@ -77,7 +77,7 @@ TEST(CylinderWall, ModelIsWatertight) {
   }
 }
 
-TEST(CylinderWall, WallIsAPeriodicCylinderWithOutwardNormals) {
+TEST(FuselageWall, WallIsAPeriodicCylinderWithOutwardNormals) {
   auto model = default_on_cylinder();
   const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
   EXPECT_FALSE(wall.is_planar());
@@ -103,7 +103,7 @@ TEST(CylinderWall, WallIsAPeriodicCylinderWithOutwardNormals) {
 }
 
 // The root section is a hole of the wall; the rest of the cylinder is in the face.
-TEST(CylinderWall, TrimHoldsTheRootSectionAsAHole) {
+TEST(FuselageWall, TrimHoldsTheRootSectionAsAHole) {
   for (const char* te : {"blunt", "sharp"}) {
     auto model = default_on_cylinder(te);
     const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
@@ -127,7 +127,7 @@ TEST(CylinderWall, TrimHoldsTheRootSectionAsAHole) {
 }
 
 // Exact projections: off the wall along the normal and back; on the seam, the guess picks its side.
-TEST(CylinderWall, Projections) {
+TEST(FuselageWall, Projections) {
   auto model = default_on_cylinder();
   const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
   for (double phi : {0.4, 2.0, 3.5, 5.9})
@@ -156,7 +156,7 @@ TEST(CylinderWall, Projections) {
 
 // The box's ends hold the fuselage's section as a hole; its bottom is a face of its own below the
 // fuselage.
-TEST(CylinderWall, BoxEndsHaveTheFuselageAsAHole) {
+TEST(FuselageWall, BoxEndsHaveTheFuselageAsAHole) {
   auto model = default_on_cylinder();
   for (const char* end : {"box_xmin", "box_xmax"}) {
     const int id = naca_test::surface_id(*model, end);
@@ -174,7 +174,7 @@ TEST(CylinderWall, BoxEndsHaveTheFuselageAsAHole) {
 }
 
 // Without the far field the wing alone, its root open on the cylinder.
-TEST(CylinderWall, WithoutFarFieldTheWingAlone) {
+TEST(FuselageWall, WithoutFarFieldTheWingAlone) {
   auto model = load_naca(Source{"", Params{{"naca.wall", "cylinder"}, {"naca.farfield", "false"}}});
   EXPECT_EQ(surface_names(*model), (std::vector<std::string>{"upper", "lower", "te_base", "tip"}));
   EXPECT_FALSE(model->is_closed());
@@ -182,7 +182,7 @@ TEST(CylinderWall, WithoutFarFieldTheWingAlone) {
 }
 
 // naca.wall = plane is today's model: the same faces and the same numbers.
-TEST(CylinderWall, PlaneWallIsUnchanged) {
+TEST(FuselageWall, PlaneWallIsUnchanged) {
   auto plain = load_naca(Source{}), explicit_plane = load_naca(Source{"", Params{{"naca.wall", "plane"}}});
   ASSERT_EQ(plain->num_surfaces(), explicit_plane->num_surfaces());
   ASSERT_EQ(plain->num_curves(), explicit_plane->num_curves());
@@ -192,6 +192,43 @@ TEST(CylinderWall, PlaneWallIsUnchanged) {
   }
   const auto& root = plain->curve(naca_test::curve_id(*plain, "root_upper"));
   EXPECT_EQ(root.point(0.5).z(), 0.0);
+}
+
+// The cone: radius R + x tan(angle) about the same axis, its crest through the root's leading edge;
+// normals tilted by the half angle; exact projections; the box's end holes of the local radius.
+TEST(FuselageWall, ConeWidensDownstream) {
+  const double angle = 4.0, k = std::tan(angle * kPi / 180.0);
+  auto model = load_naca(Source{"", Params{{"naca.wall", "cone"}, {"naca.wall_angle", "4"}}});
+  EXPECT_TRUE(model->is_closed());
+  const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
+  EXPECT_EQ(wall.kind(), semimesh::cad::SurfaceKind::Cone);
+  EXPECT_FALSE(wall.is_planar());
+  EXPECT_LE(wall.point(Vec2(0.0, kPi)).norm(), 1e-15);  // the crest through the origin
+  for (double x : {-8.0, 0.5, 9.0})
+    for (double phi : {0.2, 2.0, kPi, 5.0}) {
+      const Vec2 uv(x, phi);
+      const Vec3 p = wall.point(uv);
+      EXPECT_NEAR(std::hypot(p.y(), p.z() + kRadius), kRadius + k * x, 1e-14) << x << " " << phi;
+      const Vec3 expected = Vec3(-k, -std::sin(phi), -std::cos(phi)) / std::sqrt(1.0 + k * k);
+      EXPECT_LE((wall.normal(uv) - expected).norm(), 1e-15) << x << " " << phi;
+      for (double d : {0.0, 0.05, 1.0}) {
+        const auto r = wall.project(p + d * wall.normal(uv));
+        EXPECT_NEAR(r.distance, d, 1e-14) << x << " " << phi << " " << d;
+        EXPECT_LE((r.uv - uv).norm(), 1e-13) << x << " " << phi << " " << d;
+      }
+    }
+  const auto box = semimesh::mock_cad::naca_params_from(Params{{"naca.wall", "cone"}}).box;  // 5 degrees by default
+  const double r_max = kRadius + 11.0 * std::tan(5.0 * kPi / 180.0);
+  EXPECT_NEAR(box[4], r_max + 10.0, 1e-14);
+  EXPECT_NEAR(box[2], -kRadius - r_max - 10.0, 1e-14);
+  for (const char* end : {"box_xmin", "box_xmax"}) {
+    const double x = std::string(end) == "box_xmin" ? -10.0 : 11.0, r = kRadius + k * x;
+    const auto& face = model->surface(naca_test::surface_id(*model, end));
+    EXPECT_FALSE(face.contains(Vec2(0.0, -kRadius + r - 0.01))) << end;
+    EXPECT_TRUE(face.contains(Vec2(0.0, -kRadius + r + 0.01))) << end;
+    const auto& circle = model->curve(naca_test::curve_id(*model, std::string("wall_") + (end + 4)));
+    EXPECT_NEAR(circle.length(), 2 * kPi * r, 1e-12) << end;
+  }
 }
 
 }  // namespace

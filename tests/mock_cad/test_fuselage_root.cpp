@@ -1,4 +1,4 @@
-// The wing's root on a streamwise cylinder (naca.wall = cylinder, src/cylinder_root.hpp): the root
+// The wing's root on a streamwise cylinder (naca.wall = cylinder, src/fuselage_root.hpp): the root
 // curves lie on the cylinder and on the wing's skins, checked against the independent textbook
 // section (naca_reference.hpp) and the closed form of the untapered, unswept case; exact derivatives
 // of the root curves and of the reparametrised surfaces against central differences; projections.
@@ -19,40 +19,55 @@ using semimesh::mock_cad::NacaWingParams;
 constexpr double kPi = 3.14159265358979323846;
 
 NacaWingParams on_cylinder(const std::string& code, bool sharp, double taper, double sweep, double radius,
-                           double dihedral = 0.0) {
+                           double dihedral = 0.0, double cone_angle = 0.0) {
   NacaWingParams p;
   p.dihedral_deg = dihedral;
+  p.wall_angle_deg = cone_angle;
   p.code = code;
   p.sharp_te = sharp;
   p.taper = taper;
   p.sweep_deg = sweep;
   p.span = 2.0;
   p.chord = 1.3;
-  p.cylinder_wall = true;
+  p.fuselage = true;
   p.wall_radius = radius;
-  p.box = semimesh::mock_cad::cylinder_default_box(radius);
+  p.box = semimesh::mock_cad::fuselage_default_box(radius, cone_angle);
+  return p;
+}
+
+// A cone of 12 degrees reaches its apex inside the default box: a short box.
+NacaWingParams steep_cone() {
+  NacaWingParams p = on_cylinder("4415", false, 0.8, -10.0, 2.0, 0.0, 12.0);
+  p.box = {-2, -6, -10, 4, 6, 6};
   return p;
 }
 
 // The variants the checks run on: symmetric and cambered, blunt and sharp, tapered both ways, swept
-// both ways, with dihedral both ways, radii from 0.6 to 15 root chords.
+// both ways, with dihedral both ways, radii from 0.6 to 15 root chords; cylinders and cones
+// widening and narrowing downstream.
 std::vector<NacaWingParams> variants() {
-  return {on_cylinder("0012", false, 1.0, 0.0, 1.5),          on_cylinder("2412", true, 0.5, 25.0, 0.8),
-          on_cylinder("4415", false, 1.4, -15.0, 0.8),        on_cylinder("0009", true, 0.3, 40.0, 20.0),
-          on_cylinder("2412", false, 0.7, 10.0, 0.9, 20.0),   on_cylinder("0015", true, 1.0, 0.0, 1.2, -30.0)};
+  return {on_cylinder("0012", false, 1.0, 0.0, 1.5),           on_cylinder("2412", true, 0.5, 25.0, 0.8),
+          on_cylinder("4415", false, 1.4, -15.0, 0.8),         on_cylinder("0009", true, 0.3, 40.0, 20.0),
+          on_cylinder("2412", false, 0.7, 10.0, 0.9, 20.0),    on_cylinder("0015", true, 1.0, 0.0, 1.2, -30.0),
+          on_cylinder("0012", false, 1.0, 0.0, 1.5, 0.0, 4.0), on_cylinder("2412", true, 0.6, 20.0, 1.3, 10.0, -3.0),
+          steep_cone()};
 }
 
 std::string describe(const NacaWingParams& p) {
   return p.code + (p.sharp_te ? " sharp" : " blunt") + " taper " + std::to_string(p.taper) + " sweep " +
-         std::to_string(p.sweep_deg) + " dihedral " + std::to_string(p.dihedral_deg) + " R " + std::to_string(p.wall_radius);
+         std::to_string(p.sweep_deg) + " dihedral " + std::to_string(p.dihedral_deg) + " R " + std::to_string(p.wall_radius) +
+         " cone " + std::to_string(p.wall_angle_deg);
 }
 
 double chord_at(const NacaWingParams& p, double z) { return p.chord * (1.0 - (1.0 - p.taper) * z / p.span); }
 double le_x_at(const NacaWingParams& p, double z) { return z * std::tan(p.sweep_deg * kPi / 180.0); }
 double le_y_at(const NacaWingParams& p, double z) { return z * std::tan(p.dihedral_deg * kPi / 180.0); }
 
-// Distance of x from the cylinder y^2 + (z + R)^2 = R^2.
-double off_cylinder(const Vec3& x, double radius) { return std::abs(std::hypot(x.y(), x.z() + radius) - radius); }
+// Distance (radially) of x from the fuselage y^2 + (z + R)^2 = r(x)^2, r(x) = R + x tan(cone angle).
+double off_fuselage(const NacaWingParams& p, const Vec3& x) {
+  const double r = p.wall_radius + x.x() * std::tan(p.wall_angle_deg * kPi / 180.0);
+  return std::abs(std::hypot(x.y(), x.z() + p.wall_radius) - r);
+}
 
 // Distance of x, a point of the skin at chordwise station u^2, from the textbook section scaled and
 // shifted to the height of x.
@@ -63,7 +78,7 @@ double off_skin(const NacaWingParams& p, double u, bool upper, const Vec3& x) {
   return std::hypot(x.x() - (le_x_at(p, x.z()) + c * s.x), x.y() - (le_y_at(p, x.z()) + c * s.y));
 }
 
-TEST(CylinderRoot, RootCurvesLieOnTheCylinderAndOnTheSkins) {
+TEST(FuselageRoot, RootCurvesLieOnTheFuselageAndOnTheSkins) {
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
     for (const bool upper : {true, false}) {
@@ -72,17 +87,17 @@ TEST(CylinderRoot, RootCurvesLieOnTheCylinderAndOnTheSkins) {
         const double u = k / 200.0;
         const Vec3 x = curve.point(u);
         const std::string at = describe(p) + ", " + curve.name() + " at u = " + std::to_string(u);
-        EXPECT_LE(off_cylinder(x, p.wall_radius), 1e-13 * p.chord) << at;
+        EXPECT_LE(off_fuselage(p, x), 1e-13 * p.chord) << at;
         EXPECT_LE(off_skin(p, u, upper, x), 1e-13 * p.chord) << at;
-        EXPECT_LE(x.z(), 0.0) << at << ": the root is under the crest";
+        if (p.wall_angle_deg == 0.0) EXPECT_LE(x.z(), 0.0) << at << ": the root is under the crest";
         EXPECT_LE((curve.derivatives(u).p - x).norm(), 1e-15) << at;
       }
     }
   }
 }
 
-// The blunt base's root runs across the base plane between the trailing-edge corners, on the cylinder.
-TEST(CylinderRoot, BaseRootLiesOnTheCylinderAndTheBase) {
+// The blunt base's root runs across the base plane between the trailing-edge corners, on the fuselage.
+TEST(FuselageRoot, BaseRootLiesOnTheFuselageAndTheBase) {
   for (const NacaWingParams& p : variants()) {
     if (p.sharp_te) continue;
     auto model = naca_test::wing(p);
@@ -99,7 +114,7 @@ TEST(CylinderRoot, BaseRootLiesOnTheCylinderAndTheBase) {
     for (int k = 0; k <= 50; ++k) {
       const double s = k / 50.0;
       const Vec3 x = curve.point(s);
-      EXPECT_LE(off_cylinder(x, p.wall_radius), 1e-13 * p.chord) << describe(p) << " s = " << s;
+      EXPECT_LE(off_fuselage(p, x), 1e-13 * p.chord) << describe(p) << " s = " << s;
       EXPECT_LE(std::abs((x - tip_lower).dot(n)), 1e-13 * p.chord) << describe(p) << " s = " << s;
       EXPECT_LE((base.point(Vec2(s, 0.0)) - x).norm(), 1e-15) << describe(p) << " s = " << s;
     }
@@ -107,7 +122,7 @@ TEST(CylinderRoot, BaseRootLiesOnTheCylinderAndTheBase) {
 }
 
 // Untapered and unswept, the section does not change with height: z_root = sqrt(R^2 - y^2) - R.
-TEST(CylinderRoot, UntaperedRootHeightIsTheClosedForm) {
+TEST(FuselageRoot, UntaperedRootHeightIsTheClosedForm) {
   for (double radius : {0.35, 1.5, 7.0}) {
     auto p = on_cylinder("0012", false, 1.0, 0.0, radius);
     auto model = naca_test::wing(p);
@@ -122,26 +137,27 @@ TEST(CylinderRoot, UntaperedRootHeightIsTheClosedForm) {
   }
 }
 
-// The leading edge and, sharp, the trailing edge stand on the crest line, where y = 0 (the dihedral
-// shifts the sections by y_le(z) = z tan(dihedral), zero at the crest).
-TEST(CylinderRoot, EdgesStandOnTheCrest) {
+// The leading edge and, sharp and without dihedral, the trailing edge stand on the crest line, where
+// y = 0 (the dihedral shifts the sections by y_le(z) = z tan(dihedral), zero at the leading edge's z = 0).
+TEST(FuselageRoot, EdgesStandOnTheCrest) {
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
     const auto& le = model->curve(naca_test::curve_id(*model, "leading_edge"));
     EXPECT_EQ(le.point(0.0), Vec3::Zero()) << describe(p);
-    if (p.sharp_te) {
+    if (p.sharp_te && p.dihedral_deg == 0.0) {  // on the crest line, which a cone lifts by x tan(angle)
       const Vec3 te = model->curve(naca_test::curve_id(*model, "trailing_edge")).point(0.0);
-      EXPECT_NEAR(te.z(), 0.0, 1e-16) << describe(p);
+      EXPECT_NEAR(te.y(), 0.0, 1e-16) << describe(p);
+      EXPECT_NEAR(te.z(), te.x() * std::tan(p.wall_angle_deg * kPi / 180.0), 1e-15) << describe(p);
     }
   }
 }
 
 // The dihedral shears the wing sideways: the tip section is the root's shifted by span tan(dihedral),
 // on a plane wall as on the cylinder; and it is the wing's own shift, not a tilt of the root.
-TEST(CylinderRoot, DihedralShiftsTheSectionsSideways) {
+TEST(FuselageRoot, DihedralShiftsTheSectionsSideways) {
   for (const bool cylinder : {false, true}) {
     NacaWingParams p = on_cylinder("0012", false, 1.0, 0.0, 1.5, 25.0);
-    p.cylinder_wall = cylinder;
+    p.fuselage = cylinder;
     if (!cylinder) p.box = NacaWingParams{}.box;
     auto model = naca_test::wing(p);
     const auto& le = model->curve(naca_test::curve_id(*model, "leading_edge"));
@@ -162,7 +178,7 @@ void expect_close(const Vec3& exact, const Vec3& fd, double tol, const std::stri
 }
 
 // Away from the camber crease (u^2 = p); a wrong implicit derivative is off by O(1).
-TEST(CylinderRoot, RootCurveDerivativesMatchCentralDifferences) {
+TEST(FuselageRoot, RootCurveDerivativesMatchCentralDifferences) {
   constexpr double h = 1e-5;
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
@@ -179,7 +195,7 @@ TEST(CylinderRoot, RootCurveDerivativesMatchCentralDifferences) {
   }
 }
 
-TEST(CylinderRoot, ReparametrisedSurfacesMatchCentralDifferences) {
+TEST(FuselageRoot, ReparametrisedSurfacesMatchCentralDifferences) {
   constexpr double kStep = 1e-5;
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
@@ -210,7 +226,7 @@ TEST(CylinderRoot, ReparametrisedSurfacesMatchCentralDifferences) {
 }
 
 // v = 0 is the root curve and v = span the tip section, at every chordwise station.
-TEST(CylinderRoot, SkinsRunFromTheRootToTheTip) {
+TEST(FuselageRoot, SkinsRunFromTheRootToTheTip) {
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
     for (const bool upper : {true, false}) {
@@ -228,7 +244,7 @@ TEST(CylinderRoot, SkinsRunFromTheRootToTheTip) {
 
 // Points on and off the root curves and the skins near the root come back to their parameters,
 // with and without a guess.
-TEST(CylinderRoot, ProjectionsNearTheRoot) {
+TEST(FuselageRoot, ProjectionsNearTheRoot) {
   for (const NacaWingParams& p : variants()) {
     auto model = naca_test::wing(p);
     for (const bool upper : {true, false}) {
