@@ -5,8 +5,9 @@
 namespace semimesh::mock_cad::detail {
 namespace {
 
-// Newton converges quadratically from the closed form (exact for a cylinder under an untapered,
-// unswept wing without dihedral); it stops when the step is at the round-off of z.
+// Newton converges quadratically from the closed form at the section's point at z = 0 (exact when
+// the section does not move with height: untapered, unswept, no dihedral); it stops when the step
+// is at the round-off of z.
 constexpr int kRootIterations = 30;
 constexpr double kRootStep = 1e-15;  // relative to |z|
 

@@ -33,11 +33,7 @@ class FuselageRoot {
   FuselageRoot(std::shared_ptr<const NacaWing> wing, double radius, double slope);
 
   const NacaWing& wing() const { return *wing_; }
-  double radius() const { return radius_; }
-  double slope() const { return slope_; }
 
-  /// z_r and its s-derivatives for a surface whose section point is `q` (X, Y and their s-derivatives).
-  ScalarPoint height(const ProfilePoint& q) const;
   /// z_r(s) of one part (s = u on a skin, s across the base from its lower edge).
   ScalarPoint root_height(RootPart part, double s) const;
 
@@ -53,7 +49,9 @@ class FuselageRoot {
   // The part's S(s, z) with derivatives in (s, z) (dv, duv, dvv hold the z-derivatives).
   SurfaceDerivatives unlifted(RootPart part, double s, double z) const;
   ProfilePoint section_point(RootPart part, double s) const;
+  // z_r of the section point q (chord units), and with its s-derivatives from q's.
   double solve(const Vec2& q) const;
+  ScalarPoint height(const ProfilePoint& q) const;
 
   std::shared_ptr<const NacaWing> wing_;
   double radius_, slope_;
