@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kCapSamples = 200;  // per parameter of the rounded tip, for its extent
-constexpr int kRootSamples = 200;  // per root curve on a cylinder, for its lowest point
+constexpr int kRootSamples = 200;  // per root curve on a fuselage, for its extremes
 // On a fuselage of radius R: R above this many root half thicknesses, the root no further round
 // than 1 - cos(angle) = this from the crest (R / 4 under it on a cylinder), the box this fraction of
 // the fuselage's radius clear of it.
@@ -26,6 +26,7 @@ constexpr double kLowestRoot = 0.25;
 constexpr double kBoxMargin = 0.1;
 constexpr double kMaxConeAngle = 30.0;  // degrees
 constexpr double kSmallestEnd = 0.1;    // of R: the cone's radius at the box's ends, its apex outside
+constexpr double kHighestRoot = 0.5;    // of the span: the highest root point on a cone
 
 [[noreturn]] void reject(const std::string& key, const std::string& value, const std::string& expected) {
   throw cad::CadError(cad::CadError::Kind::BadParameter, key + " = '" + value + "': expected " + expected);
@@ -70,12 +71,13 @@ double check_fuselage(const NacaWingParams& p, const std::shared_ptr<const NacaW
                " (the planform extended down to the fuselage's axis must keep half the root chord)");
   const double slope = std::tan(angle * kPi / 180.0);
   const FuselageRoot root(wing, r, slope);
-  double lowest = 0.0, widest = 0.0;  // height, and angle from the crest (as 1 - cos)
+  double lowest = 0.0, highest = 0.0, widest = 0.0;  // heights, and angle from the crest (as 1 - cos)
   for (RootPart part : {RootPart::Upper, RootPart::Lower, RootPart::Base}) {
     if (part == RootPart::Base && p.sharp_te) continue;
     for (int i = 0; i <= kRootSamples; ++i) {
       const Vec3 x = root.point(part, static_cast<double>(i) / kRootSamples, 0.0);
       lowest = std::min(lowest, x.z());
+      highest = std::max(highest, x.z());
       widest = std::max(widest, 1.0 - (x.z() + r) / (r + slope * x.x()));
     }
   }
@@ -83,6 +85,12 @@ double check_fuselage(const NacaWingParams& p, const std::shared_ptr<const NacaW
     reject("naca.wall_radius", number(r),
            "a radius on which the root stays near the crest (cos of its angle round the fuselage above " +
                number(1.0 - kLowestRoot) + ", it reaches " + number(1.0 - widest) + "); a larger radius or a thinner section");
+  // The skins run from the root up to z = span (fuselage_root.hpp): a cone's crest must not lift
+  // the root near the tip.
+  if (!(highest < kHighestRoot * p.span))
+    reject("naca.span", number(p.span),
+           "a span above " + number(highest / kHighestRoot) + " on this cone, whose crest lifts the root to z = " +
+               number(highest) + " (the root must stay below " + number(kHighestRoot) + " span); or a smaller naca.wall_angle");
   return lowest;
 }
 

@@ -132,6 +132,8 @@ TEST(NacaParams, FuselageWallRadiusAndBoxAreChecked) {
       {{{"naca.wall", "cone"}, {"naca.wall_angle", "0"}}, "naca.wall_angle", "0", "0 is naca.wall = cylinder"},
       {{{"naca.wall", "cone"}, {"naca.wall_angle", "30"}}, "naca.wall_angle", "30", "|angle| < 30"},
       {{{"naca.wall", "cone"}, {"naca.wall_angle", "-9"}}, "naca.wall_angle", "-9", "over the box's x range [-10, 11]"},
+      {{{"naca.wall", "cone"}, {"naca.wall_angle", "20"}, {"naca.span", "0.5"}, {"naca.box", "-2,-5,-6,3,5,2"}}, "naca.span", "0.5",
+       "whose crest lifts the root to z = 0.36"},
   };
   for (const Case& c : cone_cases) {
     Params p;
