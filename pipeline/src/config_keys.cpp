@@ -102,8 +102,8 @@ params::Table<Config> naca_keys() {
       params::real("wall_angle", &NacaConfig::wall_angle, "(-30, 30)",
                    "the cone's half angle, degrees, its radius growing downstream (wall = \"cone\"); unset: 5"),
       params::reals("box", &NacaConfig::box, "",
-                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a cylinder: "
-                    "below it; unchanged, the backend's default around the cylinder)"),
+                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a fuselage: "
+                    "below it; unchanged, the backend's default around the fuselage)"),
   };
   params::Table<GeometryConfig> g;
   append(g, &GeometryConfig::naca, n);
