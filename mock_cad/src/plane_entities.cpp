@@ -23,14 +23,16 @@ double LineCurve::parameter_at_length(double t_start, double s) const {
 }
 
 PlaneFace::PlaneFace(int id, std::string name, int orientation, const Vec3& origin, const Vec3& e1, const Vec3& e2,
-                     std::array<Interval, 2> box, double tol, std::optional<SectionTrim> trim)
+                     std::array<Interval, 2> box, double tol, std::optional<SectionTrim> trim,
+                     std::optional<DiscHole> hole)
     : cad::Surface(id, std::move(name), orientation),
       origin_(origin),
       e1_(e1),
       e2_(e2),
       box_(box),
       tol_(tol),
-      trim_(std::move(trim)) {}
+      trim_(std::move(trim)),
+      hole_(hole) {}
 
 SurfaceDerivatives PlaneFace::derivatives(const Vec2& uv) const {
   return SurfaceDerivatives{point(uv), e1_, e2_, Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
@@ -38,6 +40,7 @@ SurfaceDerivatives PlaneFace::derivatives(const Vec2& uv) const {
 
 bool PlaneFace::contains(const Vec2& uv) const {
   if (!box_[0].contains(uv.x(), tol_) || !box_[1].contains(uv.y(), tol_)) return false;
+  if (hole_ && (uv - hole_->centre).norm() < hole_->radius - tol_) return false;
   if (!trim_) return true;
   const NacaWing& wing = *trim_->wing;
   const double chord = wing.chord_at(trim_->level);

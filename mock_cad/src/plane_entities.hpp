@@ -1,6 +1,7 @@
 // Flat entities: straight-line curves and planar faces with orthonormal, affine parameters,
 // optionally trimmed by a wing section (the tip cap keeps the inside of the tip section, the wall
-// keeps the outside of the root section).
+// keeps the outside of the root section) or with a round hole (where the fuselage of
+// naca.wall = cylinder passes through the box's ends).
 #pragma once
 
 #include "naca_wing.hpp"
@@ -47,18 +48,25 @@ struct SectionTrim {
   bool keep_inside = true;   ///< true: the face is the section; false: the section is a hole
 };
 
+/// A disc cut out of a plane, in the plane's (u, v) parameters.
+struct DiscHole {
+  Vec2 centre;
+  double radius = 0.0;
+};
+
 /// S(u, v) = origin + u e1 + v e2 with e1, e2 orthonormal, on the parameter box `box`.
 class PlaneFace final : public cad::Surface {
  public:
   PlaneFace(int id, std::string name, int orientation, const Vec3& origin, const Vec3& e1, const Vec3& e2,
-            std::array<Interval, 2> box, double tol, std::optional<SectionTrim> trim = std::nullopt);
+            std::array<Interval, 2> box, double tol, std::optional<SectionTrim> trim = std::nullopt,
+            std::optional<DiscHole> hole = std::nullopt);
 
   SurfaceKind kind() const override { return SurfaceKind::Plane; }
   std::array<Interval, 2> bounds() const override { return box_; }
   SurfaceDerivatives derivatives(const Vec2& uv) const override;
   Vec3 point(const Vec2& uv) const override { return origin_ + uv.x() * e1_ + uv.y() * e2_; }
-  /// Inside the box and, when trimmed, inside (tip) or outside (wall) the section; within the
-  /// tolerance of a boundary counts as inside.
+  /// Inside the box, outside the hole and, when trimmed, inside (tip) or outside (wall) the
+  /// section; within the tolerance of a boundary counts as inside.
   bool contains(const Vec2& uv) const override;
   /// Exact: the orthogonal foot, clamped to the parameter box.
   SurfaceProjection project(const Vec3& x, std::optional<Vec2> guess = std::nullopt) const override;
@@ -68,6 +76,7 @@ class PlaneFace final : public cad::Surface {
   std::array<Interval, 2> box_;
   double tol_;
   std::optional<SectionTrim> trim_;
+  std::optional<DiscHole> hole_;
 };
 
 }  // namespace semimesh::mock_cad::detail

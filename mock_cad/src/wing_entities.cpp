@@ -9,32 +9,43 @@ namespace {
 constexpr double kNoCrease = -1.0;  // outside every parameter range
 }  // namespace
 
-WingSkin::WingSkin(int id, std::string name, std::shared_ptr<const NacaWing> wing, Side side, double tol)
-    : cad::Surface(id, std::move(name), side == Side::Upper ? -1 : +1), wing_(std::move(wing)), side_(side), tol_(tol) {}
+WingSkin::WingSkin(int id, std::string name, std::shared_ptr<const NacaWing> wing, Side side, double tol,
+                   std::shared_ptr<const FuselageRoot> root)
+    : cad::Surface(id, std::move(name), side == Side::Upper ? -1 : +1),
+      wing_(std::move(wing)),
+      side_(side),
+      tol_(tol),
+      root_(std::move(root)) {}
 
 bool WingSkin::contains(const Vec2& uv) const {
   const auto box = bounds();
   return box[0].contains(uv.x(), tol_) && box[1].contains(uv.y(), tol_);
 }
 
+double WingSkin::v_at(double u, double z) const {
+  const Interval along = bounds()[1];
+  return along.clamp(root_ ? root_->v_at(root_->root_height(part(), u).f, z) : z);
+}
+
 SurfaceProjection WingSkin::project(const Vec3& x, std::optional<Vec2> guess) const {
   const auto box = bounds();
   auto solve = [&](const Vec2& start) {
-    return newton_project_surface([this](const Vec2& uv) { return wing_->eval(side_, uv.x(), uv.y()); },
-                                  [this](const Vec2& uv) { return wing_->point(side_, uv.x(), uv.y()); }, x, start, box, tol_,
+    return newton_project_surface([this](const Vec2& uv) { return derivatives(uv); },
+                                  [this](const Vec2& uv) { return point(uv); }, x, start, box, tol_,
                                   wing_->root_chord(), wing_->section().crease_u());
   };
-  SurfaceProjection best = solve(guess ? *guess : wing_->initial_guess(side_, x));
+  Vec2 start = guess ? *guess : wing_->initial_guess(side_, x);
+  if (!guess && root_) start.y() = v_at(start.x(), x.z());
+  SurfaceProjection best = solve(start);
   // Deeper on the solid side of the skin than half the leading-edge radius (its smallest radius
   // of curvature), the distance can have several local minima: without a caller's guess, also
   // start from the other candidates and both edges, and keep the closest. Points on the fluid
   // side or near the skin (the usual case) pay nothing.
   if (!guess && best.distance > 0.5 * wing_->leading_edge_radius(best.uv.y()) &&
       (x - best.point).dot(normal(best.uv)) < 0.0) {
-    const double v = box[1].clamp(x.z());
-    const auto starts = wing_->start_candidates(side_, wing_->to_section(x, v));
+    const auto starts = wing_->start_candidates(side_, wing_->to_section(x, box[1].clamp(x.z())));
     for (double u : {starts[0], starts[1], 0.0, 1.0}) {
-      SurfaceProjection other = solve(Vec2(u, v));
+      SurfaceProjection other = solve(Vec2(u, v_at(u, x.z())));
       if (other.distance < best.distance) best = other;
     }
   }
@@ -42,23 +53,17 @@ SurfaceProjection WingSkin::project(const Vec3& x, std::optional<Vec2> guess) co
   return best;
 }
 
-TrailingEdgeBase::TrailingEdgeBase(int id, std::string name, std::shared_ptr<const NacaWing> wing, double tol)
-    : cad::Surface(id, std::move(name), +1), wing_(std::move(wing)), tol_(tol) {}
+TrailingEdgeBase::TrailingEdgeBase(int id, std::string name, std::shared_ptr<const NacaWing> wing, double tol,
+                                   std::shared_ptr<const FuselageRoot> root)
+    : cad::Surface(id, std::move(name), +1), wing_(std::move(wing)), tol_(tol), root_(std::move(root)) {}
 
 SurfaceDerivatives TrailingEdgeBase::derivatives(const Vec2& uv) const {
-  const double s = uv.x(), v = uv.y();
-  const SurfaceDerivatives lower = wing_->eval(Side::Lower, 1.0, v), upper = wing_->eval(Side::Upper, 1.0, v);
-  SurfaceDerivatives d;
-  d.p = lower.p + s * (upper.p - lower.p);
-  d.du = upper.p - lower.p;
-  d.dv = lower.dv + s * (upper.dv - lower.dv);
-  d.duu = Vec3::Zero();
-  d.duv = upper.dv - lower.dv;
-  d.dvv = Vec3::Zero();  // the trailing-edge lines are straight
-  return d;
+  if (root_) return root_->eval(RootPart::Base, uv.x(), uv.y());
+  return wing_->eval_base(uv.x(), uv.y());
 }
 
 Vec3 TrailingEdgeBase::point(const Vec2& uv) const {
+  if (root_) return root_->point(RootPart::Base, uv.x(), uv.y());
   const Vec3 lower = wing_->point(Side::Lower, 1.0, uv.y()), upper = wing_->point(Side::Upper, 1.0, uv.y());
   return lower + uv.x() * (upper - lower);
 }
@@ -76,6 +81,7 @@ SurfaceProjection TrailingEdgeBase::project(const Vec3& x, std::optional<Vec2> g
     const double v = std::clamp(x.z(), 0.0, wing_->span());
     const Vec3 lower = wing_->point(Side::Lower, 1.0, v), across = wing_->point(Side::Upper, 1.0, v) - lower;
     start = Vec2(std::clamp((x - lower).dot(across) / across.squaredNorm(), 0.0, 1.0), v);
+    if (root_) start.y() = bounds()[1].clamp(root_->v_at(root_->root_height(RootPart::Base, start.x()).f, x.z()));
   }
   SurfaceProjection out = newton_project_surface([this](const Vec2& uv) { return derivatives(uv); },
                                                  [this](const Vec2& uv) { return point(uv); }, x, start, bounds(), tol_,
@@ -96,6 +102,30 @@ CurveProjection SectionCurve::project(const Vec3& x, std::optional<double> guess
   const double start = guess ? *guess : wing_->initial_u(side_, wing_->to_section(x, v_));
   return newton_project_curve([this](double t) { return derivatives(t); }, [this](double t) { return point(t); }, x,
                               start, bounds(), tol_, wing_->root_chord(), wing_->section().crease_u());
+}
+
+RootCurve::RootCurve(int id, std::string name, std::shared_ptr<const FuselageRoot> root, RootPart part, double tol)
+    : cad::Curve(id, std::move(name)), root_(std::move(root)), part_(part), tol_(tol) {}
+
+CurveDerivatives RootCurve::derivatives(double t) const {
+  const SurfaceDerivatives d = root_->eval(part_, t, 0.0);
+  return CurveDerivatives{d.p, d.du, d.duu};
+}
+
+CurveProjection RootCurve::project(const Vec3& x, std::optional<double> guess) const {
+  const NacaWing& wing = root_->wing();
+  double start = 0.0, crease = kNoCrease;
+  if (guess) {
+    start = *guess;
+  } else if (part_ == RootPart::Base) {  // the foot on the trailing-edge segment at z = 0
+    const Vec3 lower = wing.point(Side::Lower, 1.0, 0.0), across = wing.point(Side::Upper, 1.0, 0.0) - lower;
+    start = (x - lower).dot(across) / across.squaredNorm();
+  } else {
+    start = wing.initial_u(part_ == RootPart::Upper ? Side::Upper : Side::Lower, wing.to_section(x, 0.0));
+  }
+  if (part_ != RootPart::Base) crease = wing.section().crease_u();
+  return newton_project_curve([this](double t) { return derivatives(t); }, [this](double t) { return point(t); }, x,
+                              start, bounds(), tol_, wing.root_chord(), crease);
 }
 
 }  // namespace semimesh::mock_cad::detail

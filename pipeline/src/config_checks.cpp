@@ -91,6 +91,21 @@ void check_geometry(Config& c, const std::map<std::string, Section*>& sections, 
                 "\"flat\" with te = \"sharp\" at highorder.order > 1 (a sharp trailing edge closes the rounded tip "
                 "to a conical point where curved prisms fold), or te = \"blunt\", or highorder.order = 1");
 
+  // The fuselage and the dihedral are the analytic backend's; the fuselage is the wall, so no wall
+  // plane goes with it.
+  Section& naca = *sections.at("geometry.naca");
+  naca.require(geo.naca.wall == "plane" || (geo.source.empty() && geo.backend == "naca"), "wall",
+               "\"plane\" for backend \"" + geo.backend + "\"" + (geo.source.empty() ? "" : " with a source file") +
+                   " (the fuselage walls are the analytic backend's: backend = \"naca\", no source)");
+  naca.require(geo.naca.wall == "plane" || !geo.wall_plane.given(), "wall",
+               "\"plane\" with [geometry.wall_plane] (the fuselage is the wall)");
+  naca.require(!geo.naca.wall_radius || geo.naca.wall != "plane", "wall_radius",
+               "unset unless wall = \"cylinder\" or \"cone\"");
+  naca.require(!geo.naca.wall_angle || geo.naca.wall == "cone", "wall_angle", "unset unless wall = \"cone\"");
+  naca.require(geo.naca.dihedral == 0.0 || (geo.source.empty() && geo.backend == "naca"), "dihedral",
+               "0 for backend \"" + geo.backend + "\"" + (geo.source.empty() ? "" : " with a source file") +
+                   " (the dihedral is the analytic backend's: backend = \"naca\", no source)");
+
   check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.farfield"),
                          *sections.at("geometry.farfield.sphere"));
 }

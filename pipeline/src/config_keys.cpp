@@ -88,12 +88,22 @@ params::Table<Config> naca_keys() {
       params::real("span", &NacaConfig::span, "> 0", "wing height above the wall z = 0"),
       params::real("taper", &NacaConfig::taper, "> 0", "tip chord / root chord"),
       params::real("sweep", &NacaConfig::sweep, "(-80, 80)", "leading-edge sweep, degrees"),
+      params::real("dihedral", &NacaConfig::dihedral, "(-45, 45)",
+                   "dihedral, degrees: the sections shifted sideways by z tan(dihedral) (backend naca)"),
       params::string("te", &NacaConfig::te, "\"blunt\" | \"sharp\"",
                      "squared-off trailing edge (with a te_base face) or closed"),
       params::string("tip", &NacaConfig::tip, "\"flat\" | \"round\"",
                      "flat tip cap, or round: the tip section revolved about its camber line (backend naca)"),
+      params::string("wall", &NacaConfig::wall, "\"plane\" | \"cylinder\" | \"cone\"",
+                     "the wall z = 0, or a fuselage along x of radius wall_radius (cone: widening by wall_angle), crest "
+                     "through the root's leading edge (backend naca)"),
+      params::real("wall_radius", &NacaConfig::wall_radius, "> 0",
+                   "the fuselage's radius at x = 0 (wall = \"cylinder\" or \"cone\"); unset: 1.5 chords"),
+      params::real("wall_angle", &NacaConfig::wall_angle, "(-30, 30)",
+                   "the cone's half angle, degrees, its radius growing downstream (wall = \"cone\"); unset: 5"),
       params::reals("box", &NacaConfig::box, "",
-                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0"),
+                    "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a fuselage: "
+                    "below it; unchanged, the backend's default around the fuselage)"),
   };
   params::Table<GeometryConfig> g;
   append(g, &GeometryConfig::naca, n);

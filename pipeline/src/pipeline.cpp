@@ -157,9 +157,15 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("naca.span", fmt::format("{}", g.naca.span));
     source.params.set("naca.taper", fmt::format("{}", g.naca.taper));
     source.params.set("naca.sweep", fmt::format("{}", g.naca.sweep));
+    if (g.naca.dihedral != 0.0) source.params.set("naca.dihedral", fmt::format("{}", g.naca.dihedral));
     source.params.set("naca.te", g.naca.te);
     if (g.naca.tip != "flat") source.params.set("naca.tip", g.naca.tip);
-    source.params.set("naca.box", box_text(g.wall_plane.given() ? generated_box(g) : g.naca.box));
+    if (g.naca.wall != "plane") source.params.set("naca.wall", g.naca.wall);
+    if (g.naca.wall_radius) source.params.set("naca.wall_radius", fmt::format("{}", *g.naca.wall_radius));
+    if (g.naca.wall_angle) source.params.set("naca.wall_angle", fmt::format("{}", *g.naca.wall_angle));
+    // On a fuselage a box left at the plane's default gives way to the backend's, around the fuselage.
+    if (g.naca.wall == "plane" || g.naca.box != NacaConfig{}.box)
+      source.params.set("naca.box", box_text(g.wall_plane.given() ? generated_box(g) : g.naca.box));
     if (g.units != "auto") source.params.set("naca.units", g.units);
     if (g.scale != 1.0)
       throw ConfigError("config error: geometry.scale = " + fmt::format("{}", g.scale) +

@@ -163,6 +163,113 @@ struct NacaRoundTipCamberedTaperedSweptSharp {
   static Expectations expect() { return rounded_tip(2); }
 };
 
+/// A wing on a fuselage (naca.wall = cylinder or cone): the wall is periodic about the fuselage's axis,
+/// with one seam (its bottom line) and no pole.
+inline Expectations on_cylinder(Expectations e = {}) {
+  e.seams = 1;
+  e.poles = 0;
+  return e;
+}
+
+struct NacaOnCylinderBlunt {
+  static constexpr const char* kName = "naca on cylinder (0012 blunt)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"", {{"naca.wall", "cylinder"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() {
+    Expectations e;
+    e.le_radius = NacaDefault::expect().le_radius;
+    return on_cylinder(e);
+  }
+};
+
+struct NacaOnCylinderCamberedTaperedSweptSharp {
+  static constexpr const char* kName = "naca on cylinder (2412 sharp TE, taper 0.5, sweep 25 deg, radius 0.8)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "0.8"},
+                                                      {"naca.code", "2412"},
+                                                      {"naca.te", "sharp"},
+                                                      {"naca.taper", "0.5"},
+                                                      {"naca.sweep", "25"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// A cambered blunt base: its lower and upper root corners sit at different heights on the cylinder.
+struct NacaOnCylinderCamberedTaperedSweptBlunt {
+  static constexpr const char* kName = "naca on cylinder (4415 blunt TE, taper 1.4, sweep -15 deg, radius 0.5)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "0.5"},
+                                                      {"naca.code", "4415"},
+                                                      {"naca.taper", "1.4"},
+                                                      {"naca.sweep", "-15"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// Dihedral (naca.dihedral) shears the wing sideways: the junction angle differs on its two sides.
+struct NacaOnCylinderDihedral {
+  static constexpr const char* kName = "naca on cylinder (2412 blunt TE, dihedral 15 deg, taper 0.7, radius 1)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cylinder"},
+                                                      {"naca.wall_radius", "1"},
+                                                      {"naca.code", "2412"},
+                                                      {"naca.dihedral", "15"},
+                                                      {"naca.taper", "0.7"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// A cone (naca.wall = cone) narrowing downstream under a swept, tapered sharp wing.
+struct NacaOnConeSweptSharp {
+  static constexpr const char* kName = "naca on cone (0012 sharp TE, sweep 20 deg, taper 0.6, half angle -3 deg)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{"",
+                                                     {{"naca.wall", "cone"},
+                                                      {"naca.wall_angle", "-3"},
+                                                      {"naca.te", "sharp"},
+                                                      {"naca.sweep", "20"},
+                                                      {"naca.taper", "0.6"},
+                                                      {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+/// ... and widening downstream under a cambered blunt wing.
+struct NacaOnConeCamberedBlunt {
+  static constexpr const char* kName = "naca on cone (2412 blunt TE, half angle 6 deg, radius 1.2)";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(cad::Source{
+        "", {{"naca.wall", "cone"}, {"naca.wall_angle", "6"}, {"naca.wall_radius", "1.2"}, {"naca.code", "2412"}, {"naca.span", "2"},
+             {"naca.box", "-6,-9,-12,7,9,8"}}});
+  }
+  static Expectations expect() { return on_cylinder(); }
+};
+
+struct NacaDihedralSharp {
+  static constexpr const char* kName = "naca 0012 sharp TE, dihedral -8 deg";
+  static std::string skip_reason() { return {}; }
+  static std::unique_ptr<cad::Model> load() {
+    return semimesh::mock_cad::load_naca(
+        cad::Source{"", {{"naca.te", "sharp"}, {"naca.dihedral", "-8"}, {"naca.span", "2"}}});
+  }
+  static Expectations expect() { return smooth_wing(); }
+};
+
 #ifdef SEMIMESH_HAVE_OCC
 struct OccNaca {
   static constexpr const char* kName = "occ B-spline NACA 0012 wing";

@@ -46,7 +46,10 @@ class Conformance : public ::testing::Test {
 };
 
 using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution,
-                                NacaRoundTipBlunt, NacaRoundTipBluntTaperedSwept, NacaRoundTipCamberedTaperedSweptSharp
+                                NacaRoundTipBlunt, NacaRoundTipBluntTaperedSwept, NacaRoundTipCamberedTaperedSweptSharp,
+                                NacaOnCylinderBlunt, NacaOnCylinderCamberedTaperedSweptSharp,
+                                NacaOnCylinderCamberedTaperedSweptBlunt, NacaOnCylinderDihedral, NacaDihedralSharp,
+                                NacaOnConeSweptSharp, NacaOnConeCamberedBlunt
 #ifdef SEMIMESH_HAVE_OCC
                                 ,
                                 OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6, OccStepOneraM6OnWall,

@@ -89,7 +89,71 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"naca.box", "-10,-10,0,11,10,2", "enclos"}, BadCase{"naca.box", "1,2,3", "6 comma-separated"},
                       BadCase{"naca.box", "-10,-10,0,11,10,10,4", "6 comma-separated"},
                       BadCase{"naca.box", "-10;-10;0;11;10;10", "6 comma-separated"}, BadCase{"naca.units", "", "unit"},
-                      BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.tip", "rounded", "flat"}, BadCase{"naca.cord", "1", "unknown parameter"}));
+                      BadCase{"naca.shape", "sphere", "revolution"}, BadCase{"naca.tip", "rounded", "flat"}, BadCase{"naca.cord", "1", "unknown parameter"},
+                      BadCase{"naca.wall", "sphere", "plane"}, BadCase{"naca.dihedral", "45", "|dihedral| < 45"},
+                      BadCase{"naca.dihedral", "-60", "|dihedral| < 45"}, BadCase{"naca.wall_radius", "2", "unset unless naca.wall = cylinder"}));
+
+// On a cylinder (naca.wall = cylinder, radius 1.5 by default): each conflict names its key, its
+// value and what was expected.
+TEST(NacaParams, FuselageWallRadiusAndBoxAreChecked) {
+  struct Case {
+    Params changes;
+    std::string key, value, expected;
+  };
+  const std::vector<Case> cases = {
+      {{{"naca.wall_radius", "0"}}, "naca.wall_radius", "0", "radius > 0"},
+      {{{"naca.wall_radius", "-1"}}, "naca.wall_radius", "-1", "radius > 0"},
+      {{{"naca.wall_radius", "0.2"}}, "naca.wall_radius", "0.2", "half thickness"},
+      {{{"naca.box", "-10,-10,0,11,10,10"}}, "naca.box", "-10,-10,0,11,10,10", "zmin < -3.15"},
+      {{{"naca.box", "-10,-1.6,-20,11,10,10"}}, "naca.box", "-10,-1.6,-20,11,10,10", "ymin < -1.65"},
+      {{{"naca.box", "0.5,-12,-14,11,12,10"}}, "naca.box", "0.5,-12,-14,11,12,10", "enclosing the wing"},
+      {{{"naca.tip", "round"}}, "naca.tip", "round", "flat on naca.wall = cylinder"},
+      {{{"naca.taper", "2.5"}}, "naca.taper", "2.5", "below 1 + 0.5 naca.span / naca.wall_radius = 2"},
+      {{{"naca.shape", "revolution"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}}, "naca.wall", "cylinder",
+       "plane for naca.shape = revolution"},
+  };
+  for (const Case& c : cases) {
+    Params p{{"naca.wall", "cylinder"}};
+    for (const auto& [key, value] : c.changes.all()) p.set(key, value);
+    try {
+      naca_params_from(p);
+      FAIL() << c.key << " = " << c.value << " was accepted on a cylinder";
+    } catch (const CadError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(e.kind(), CadError::Kind::BadParameter);
+      EXPECT_EQ(msg.rfind(c.key + " = '" + c.value + "': expected ", 0), 0u) << msg;
+      EXPECT_NE(msg.find(c.expected), std::string::npos) << msg;
+    }
+  }
+  // The cone's half angle: only for naca.wall = cone, not 0 there, below 30 degrees, and its apex
+  // outside the box.
+  const std::vector<Case> cone_cases = {
+      {{{"naca.wall", "cylinder"}, {"naca.wall_angle", "3"}}, "naca.wall_angle", "3", "unset unless naca.wall = cone"},
+      {{{"naca.wall", "cone"}, {"naca.wall_angle", "0"}}, "naca.wall_angle", "0", "0 is naca.wall = cylinder"},
+      {{{"naca.wall", "cone"}, {"naca.wall_angle", "30"}}, "naca.wall_angle", "30", "|angle| < 30"},
+      {{{"naca.wall", "cone"}, {"naca.wall_angle", "-9"}}, "naca.wall_angle", "-9", "over the box's x range [-10, 11]"},
+      {{{"naca.wall", "cone"}, {"naca.wall_angle", "20"}, {"naca.span", "0.5"}, {"naca.box", "-2,-5,-6,3,5,2"}}, "naca.span", "0.5",
+       "whose crest lifts the root to z = 0.36"},
+  };
+  for (const Case& c : cone_cases) {
+    Params p;
+    for (const auto& [key, value] : c.changes.all()) p.set(key, value);
+    try {
+      naca_params_from(p);
+      FAIL() << c.key << " = " << c.value << " was accepted";
+    } catch (const CadError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(c.key + " = '" + c.value + "': expected ", 0), 0u) << msg;
+      EXPECT_NE(msg.find(c.expected), std::string::npos) << msg;
+    }
+  }
+  // The defaults, a thin fuselage and a given box are fine.
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.wall", "cylinder"}}));
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.wall", "cylinder"}, {"naca.wall_radius", "0.25"}}));
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.wall", "cylinder"}, {"naca.box", "-5,-2,-4,6,2,4"}}));
+  EXPECT_EQ(naca_params_from(Params{{"naca.wall", "cone"}}).wall_angle_deg, 5.0);
+  EXPECT_NO_THROW(naca_params_from(Params{{"naca.wall", "cone"}, {"naca.wall_angle", "-4"}}));
+}
 
 // The body of revolution has no wall, a pole at the tail and no camber: each conflict is named.
 TEST(NacaParams, RevolutionNeedsSymmetricSharpAndNoWall) {
@@ -134,6 +198,20 @@ TEST(NacaParams, RoundTipNeedsRoomAboveTheSpanAndAWing) {
     const std::string msg = e.what();
     EXPECT_NE(msg.find("naca.tip"), std::string::npos) << msg;
     EXPECT_NE(msg.find("revolution"), std::string::npos) << msg;
+  }
+}
+
+TEST(NacaParams, DihedralIsReadAndNotForRoundTipsOrBodies) {
+  EXPECT_EQ(naca_params_from(Params{{"naca.dihedral", "-7.5"}}).dihedral_deg, -7.5);
+  EXPECT_EQ(naca_params_from(Params{}).dihedral_deg, 0.0);
+  for (const Params& p : {Params{{"naca.dihedral", "5"}, {"naca.tip", "round"}},
+                          Params{{"naca.dihedral", "5"}, {"naca.shape", "revolution"}, {"naca.te", "sharp"}, {"naca.farfield", "false"}}}) {
+    try {
+      naca_params_from(p);
+      FAIL() << "a dihedral was accepted with a rounded tip or a body of revolution";
+    } catch (const CadError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("naca.dihedral = '5': expected 0 ", 0), 0u) << e.what();
+    }
   }
 }
 

@@ -130,5 +130,19 @@ TEST(OccErrors, RoundTipOfTheGeneratedWingIsRefused) {
   EXPECT_NE(std::string(error.what()).find("flat tip"), std::string::npos) << error.what();
 }
 
+// ... and so is the analytic backend's fuselage.
+TEST(OccErrors, CylinderWallOfTheGeneratedWingIsRefused) {
+  const CadError error = load_error("", {{"naca.wall", "cylinder"}});
+  EXPECT_EQ(error.kind(), CadError::Kind::BadParameter);
+  EXPECT_NE(std::string(error.what()).find("naca.wall"), std::string::npos) << error.what();
+  EXPECT_NE(std::string(error.what()).find("plane"), std::string::npos) << error.what();
+}
+
+TEST(OccErrors, DihedralOfTheGeneratedWingIsRefused) {
+  const CadError error = load_error("", {{"naca.dihedral", "5"}});
+  EXPECT_EQ(error.kind(), CadError::Kind::BadParameter);
+  EXPECT_NE(std::string(error.what()).find("naca.dihedral"), std::string::npos) << error.what();
+}
+
 }  // namespace
 }  // namespace semimesh::occ

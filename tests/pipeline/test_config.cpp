@@ -169,6 +169,40 @@ TEST(Config, RoundTipIsTheAnalyticBackendsAndSharpAtOrderOneOnly) {
   EXPECT_EQ(parse_config(sharp + "[highorder]\norder = 1\n", "case.toml").highorder.order, 1);
 }
 
+// The fuselage (geometry.naca.wall = "cylinder") is the analytic backend's and is the wall itself.
+TEST(Config, CylinderWallIsTheAnalyticBackendsAndHasARadius) {
+  const Config c = parse_config("[geometry.naca]\nwall = \"cylinder\"\nwall_radius = 2.5\n", "case.toml");
+  EXPECT_EQ(c.geometry.naca.wall, "cylinder");
+  EXPECT_EQ(c.geometry.naca.wall_radius, 2.5);
+  EXPECT_FALSE(parse_config("", "case.toml").geometry.naca.wall_radius.has_value());
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"sphere\"\n").find("geometry.naca.wall = \"sphere\": expected"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nwall_radius = 2.0\n").find("geometry.naca.wall_radius = 2: expected unset unless wall = \"cylinder\""),
+            std::string::npos);
+  EXPECT_EQ(parse_config("[geometry.naca]\nwall = \"cone\"\nwall_angle = -4.0\n", "case.toml").geometry.naca.wall_angle, -4.0);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cylinder\"\nwall_angle = 3.0\n").find("geometry.naca.wall_angle = 3: expected unset unless wall = \"cone\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cone\"\nwall_angle = 31.0\n").find("geometry.naca.wall_angle = 31: expected (-30, 30)"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cylinder\"\nwall_radius = -1.0\n").find("geometry.naca.wall_radius = -1: expected > 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbackend = \"occ\"\n[geometry.naca]\nwall = \"cylinder\"\n")
+                .find("geometry.naca.wall = \"cylinder\": expected \"plane\" for backend \"occ\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry.naca]\nwall = \"cylinder\"\n[geometry.wall_plane]\npoint = [0, 0, 0]\nnormal = [0, 0, 1]\n")
+                .find("geometry.naca.wall = \"cylinder\": expected \"plane\" with [geometry.wall_plane]"),
+            std::string::npos);
+}
+
+TEST(Config, DihedralIsTheAnalyticBackends) {
+  EXPECT_EQ(parse_config("[geometry.naca]\ndihedral = -6.0\n", "case.toml").geometry.naca.dihedral, -6.0);
+  EXPECT_NE(error_of("[geometry.naca]\ndihedral = 50.0\n").find("geometry.naca.dihedral = 50: expected (-45, 45)"),
+            std::string::npos);
+  EXPECT_NE(error_of("[geometry]\nbackend = \"occ\"\n[geometry.naca]\ndihedral = 5.0\n")
+                .find("geometry.naca.dihedral = 5: expected 0 for backend \"occ\""),
+            std::string::npos);
+}
+
 TEST(Config, ABareStringIsAListOfOne) {
   EXPECT_EQ(parse_config("[geometry]\nbody = \"upper\"\n", "case.toml").geometry.body, (std::vector<std::string>{"upper"}));
   EXPECT_EQ(parse_config("[geometry]\nbody = [\"upper\", \"#3\"]\n", "case.toml").geometry.body,

@@ -437,5 +437,29 @@ TEST(PipelineRun, AGeneratedWingTakesTheWallPlaneAndFarFieldBox) {
   fs::remove_all(dir);
 }
 
+// geometry.naca.wall = "cylinder" reaches the analytic backend with its radius (and a dihedral with it); a box left at the
+// plane's default (zmin = 0, inside the fuselage) is not passed, so the backend's box around the
+// cylinder applies; a box given is passed as it is.
+TEST(PipelineRun, ACylinderWallReachesTheBackend) {
+  GeometryConfig g;
+  EXPECT_FALSE(cad_source(g).params.has("naca.wall"));
+  EXPECT_TRUE(cad_source(g).params.has("naca.box"));
+  g.naca.wall = "cylinder";
+  g.naca.wall_radius = 2.0;
+  const cad::Params fuselage = cad_source(g).params;
+  EXPECT_EQ(fuselage.get_string("naca.wall", ""), "cylinder");
+  EXPECT_EQ(fuselage.get_double("naca.wall_radius", 0.0), 2.0);
+  EXPECT_FALSE(fuselage.has("naca.box"));
+  g.naca.box = {-5, -4, -6, 6, 4, 5};
+  EXPECT_EQ(cad_source(g).params.get_string("naca.box", ""), "-5,-4,-6,6,4,5");
+  EXPECT_FALSE(cad_source(g).params.has("naca.wall_angle"));
+  g.naca.wall = "cone";
+  g.naca.wall_angle = -2.5;
+  EXPECT_EQ(cad_source(g).params.get_double("naca.wall_angle", 0.0), -2.5);
+  EXPECT_FALSE(cad_source(g).params.has("naca.dihedral"));
+  g.naca.dihedral = 12.5;
+  EXPECT_EQ(cad_source(g).params.get_double("naca.dihedral", 0.0), 12.5);
+}
+
 }  // namespace
 }  // namespace semimesh::pipeline

@@ -205,6 +205,14 @@ std::unique_ptr<cad::Model> generate_wing(const cad::Source& source) {
     throw CadError(CadError::Kind::BadParameter,
                    "parameter 'naca.tip' = 'round': the generated B-spline wing of backend 'occ' has a flat tip "
                    "(the rounded tip is backend 'naca''s)");
+  if (wing.dihedral_deg != 0.0)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'naca.dihedral': the generated B-spline wing of backend 'occ' has no dihedral "
+                   "(the dihedral is backend 'naca''s)");
+  if (wing.fuselage)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameter 'naca.wall': the generated B-spline wing of backend 'occ' stands on the plane z = 0 (the "
+                   "cylinder and cone walls are backend 'naca''s)");
   const double scale = source.params.get_double("occ.scale", 1.0);
   if (!(scale > 0.0))
     throw CadError(CadError::Kind::BadParameter, "parameter 'occ.scale' = " + number_label(scale) + ": expected a positive number");

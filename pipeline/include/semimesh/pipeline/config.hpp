@@ -40,8 +40,12 @@ struct NacaConfig {
   double span = 3.0;
   double taper = 1.0;
   double sweep = 0.0;         ///< degrees
+  double dihedral = 0.0;      ///< degrees (backend naca)
   std::string te = "blunt";   ///< "blunt" | "sharp"
   std::string tip = "flat";   ///< "flat" | "round"
+  std::string wall = "plane";  ///< "plane" | "cylinder" | "cone" (backend naca: a streamwise fuselage)
+  std::optional<double> wall_radius;  ///< the fuselage's radius at x = 0; unset: 1.5 chords
+  std::optional<double> wall_angle;   ///< the cone's half angle, degrees; unset: 5
   std::array<double, 6> box = {-10, -10, 0, 11, 10, 10};  ///< xmin, ymin, zmin, xmax, ymax, zmax
 };
 
