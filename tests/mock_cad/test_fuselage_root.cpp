@@ -89,7 +89,9 @@ TEST(FuselageRoot, RootCurvesLieOnTheFuselageAndOnTheSkins) {
         const std::string at = describe(p) + ", " + curve.name() + " at u = " + std::to_string(u);
         EXPECT_LE(off_fuselage(p, x), 1e-13 * p.chord) << at;
         EXPECT_LE(off_skin(p, u, upper, x), 1e-13 * p.chord) << at;
-        if (p.wall_angle_deg == 0.0) EXPECT_LE(x.z(), 0.0) << at << ": the root is under the crest";
+        if (p.wall_angle_deg == 0.0) {
+          EXPECT_LE(x.z(), 0.0) << at << ": the root is under the crest";
+        }
         EXPECT_LE((curve.derivatives(u).p - x).norm(), 1e-15) << at;
       }
     }

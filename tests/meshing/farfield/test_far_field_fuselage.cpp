@@ -1,0 +1,106 @@
+// The far field on a curved wall: the NACA 0012 wing on the analytic circular fuselage
+// (naca.wall = cylinder, radius R = 1.5, axis along x through z = -R), its O-type shell and the far
+// field meshing the fuselage in its parameters. Checked against the closed form of the cylinder.
+#include "semimesh/farfield/far_field.hpp"
+#include "semimesh/mock_cad/naca.hpp"
+#include "semimesh/nearfield/o_shell.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace semimesh::farfield {
+namespace {
+
+constexpr double kRadius = 1.5;
+
+double off_the_cylinder(const Eigen::Vector3d& x) { return std::hypot(x.y(), x.z() + kRadius) - kRadius; }
+
+struct FuselageCase {
+  std::unique_ptr<cad::Model> model;
+  FarField far;
+  std::size_t prisms = 0;
+};
+
+FuselageCase fuselage_far_field() {
+  mock_cad::NacaWingParams wing;
+  wing.span = 1.0;
+  wing.fuselage = true;
+  wing.wall_radius = kRadius;
+  wing.box = {-2, -3, -5, 3, 3, 2};
+  FuselageCase c;
+  c.model = mock_cad::make_naca_wing(wing);
+  surface::SizeParams size;
+  size.max_size = 0.3;
+  size.min_size = 0.01;
+  size.curvature_segments = 2.0;
+  size.gradation = 1.3;
+  size.le_size = 0.04;
+  size.te_size = 0.04;
+  const surface::SurfaceMeshes meshes = surface::mesh_model_surfaces(*c.model, surface::SizeField(*c.model, size));
+  nearfield::BodyRoles roles;
+  for (const char* name : {"upper", "lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
+  roles.wall_surface = *c.model->find_surface("wall");
+  nearfield::ShellParams shell;
+  shell.thickness = 0.03;
+  nearfield::NearField nf = nearfield::build_o_shell(*c.model, meshes, roles, shell);
+  c.prisms = nf.mesh.elements().size();
+  std::vector<int> box;
+  for (const char* name : {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"})
+    box.push_back(*c.model->find_surface(name));
+  FarFieldParams params;
+  params.box_size = 1.0;
+  params.wall_size = 1.0;  // above R / 4: the wall's curvature caps the size
+  c.far = build_far_field(*c.model, std::move(nf), params, box, roles.wall_surface);
+  return c;
+}
+
+TEST(FarFieldOnAFuselage, WallTrianglesLieOnTheCylinderFacingIntoItAndTurnAQuarterRadianAtMost) {
+  const FuselageCase c = fuselage_far_field();
+  const mesh::Mesh& m = c.far.mesh;
+  const auto it = std::find(m.group_names().begin(), m.group_names().end(), "wall");
+  ASSERT_NE(it, m.group_names().end());
+  const auto wall_group = static_cast<std::uint16_t>(it - m.group_names().begin());
+  int wall_triangles = 0;
+  double longest = 0.0;
+  for (const mesh::BoundaryFace& f : m.boundary_faces()) {
+    if (f.group != wall_group || f.shape != ho::Shape::Triangle) continue;
+    ++wall_triangles;
+    const Eigen::Vector3d a = m.node(f.vertices[0]), b = m.node(f.vertices[1]), d = m.node(f.vertices[2]);
+    for (const Eigen::Vector3d& x : {a, b, d}) EXPECT_NEAR(off_the_cylinder(x), 0.0, 1e-9) << x.transpose();
+    // Out of the domain is into the fuselage: towards its axis.
+    const Eigen::Vector3d centre = (a + b + d) / 3.0;
+    const Eigen::Vector3d outward_radial = Eigen::Vector3d(0, centre.y(), centre.z() + kRadius).normalized();
+    EXPECT_LT((b - a).cross(d - a).normalized().dot(outward_radial), -0.9) << centre.transpose();
+    longest = std::max({longest, (b - a).norm(), (d - b).norm(), (a - d).norm()});
+  }
+  EXPECT_GT(wall_triangles, 100);
+  // The chart is exact on a cylinder: edges stay near the curvature cap R / 4 (the annulus' own
+  // Delaunay slack), far below wall_size = 1.
+  EXPECT_LT(longest, 1.5 * kRadius / 4.0);
+}
+
+TEST(FarFieldOnAFuselage, TetsArePositiveAndFillTheBoxAroundTheFuselage) {
+  const FuselageCase c = fuselage_far_field();
+  const mesh::Mesh& m = c.far.mesh;
+  EXPECT_EQ(m.elements().size(), c.prisms + c.far.stats.tets);
+  double tets = 0.0;
+  for (std::size_t e = 0; e < m.elements().size(); ++e) {
+    if (m.elements()[e].shape != ho::Shape::Tetrahedron) continue;
+    const auto x = m.element_coordinates(e);
+    const double volume = (x.row(1) - x.row(0)).cross(x.row(2) - x.row(0)).dot(x.row(3) - x.row(0)) / 6.0;
+    EXPECT_GT(volume, 0.0) << "tet " << e;
+    tets += volume;
+    // No tet reaches into the fuselage (its nodes on or outside the cylinder).
+    for (int k = 0; k < 4; ++k) EXPECT_GT(off_the_cylinder(x.row(k).transpose()), -1e-9) << "tet " << e;
+  }
+  // The box less the fuselage's length in it; the wing with its layer (~0.15) and the gap of the
+  // flat facets under the cylinder stay within the 1 % band (0.35).
+  const double box = 5.0 * 6.0 * 7.0, fuselage = M_PI * kRadius * kRadius * 5.0;
+  EXPECT_NEAR(tets, box - fuselage, 0.01 * fuselage);
+}
+
+}  // namespace
+}  // namespace semimesh::farfield
