@@ -197,47 +197,43 @@ MeshVolume mesh_volume(const mesh::Mesh& mesh) {
   return result;
 }
 
+namespace {
+
+// The sum of term(a, b, c) over the flat facets of `faces` (each quad as the triangles 012, 023).
+template <typename Term>
+double sum_over_facets(const std::vector<const surface::SurfaceMesh*>& faces, Term term) {
+  double sum = 0.0;
+  for (const surface::SurfaceMesh* mesh : faces) {
+    for (const auto& t : mesh->triangles) sum += term(mesh->points[t[0]], mesh->points[t[1]], mesh->points[t[2]]);
+    for (const auto& q : mesh->quads) {
+      sum += term(mesh->points[q[0]], mesh->points[q[1]], mesh->points[q[2]]);
+      sum += term(mesh->points[q[0]], mesh->points[q[2]], mesh->points[q[3]]);
+    }
+  }
+  return sum;
+}
+
+// (1/3) the flux of x - p through `faces` along their fluid normals: minus their share of the
+// fluid's volume (divergence theorem with div (x - p) / 3 = 1; exact on flat facets).
+double fluid_normal_flux(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& p) {
+  return sum_over_facets(faces, [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    return (0.5 * (b - a).cross(c - a)).dot((a + b + c) / 3.0 - p) / 3.0;
+  });
+}
+
+}  // namespace
+
 double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& plane_point,
                              const Eigen::Vector3d& plane_normal) {
   // Divergence theorem with F = ((x - p) . n) n: div F = 1 and F . n = 0 on the plane, so the plane
   // part of the boundary adds nothing. On a flat triangle F . N is linear: its integral is the
   // value at the centroid times the area.
   const Eigen::Vector3d n = plane_normal.normalized();
-  double volume = 0.0;
-  auto add = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return sum_over_facets(faces, [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
     const Eigen::Vector3d area = 0.5 * (b - a).cross(c - a);
-    volume += n.dot(area) * n.dot((a + b + c) / 3.0 - plane_point);
-  };
-  for (const surface::SurfaceMesh* mesh : faces) {
-    for (const auto& t : mesh->triangles) add(mesh->points[t[0]], mesh->points[t[1]], mesh->points[t[2]]);
-    for (const auto& q : mesh->quads) {
-      add(mesh->points[q[0]], mesh->points[q[1]], mesh->points[q[2]]);
-      add(mesh->points[q[0]], mesh->points[q[2]], mesh->points[q[3]]);
-    }
-  }
-  return volume;
+    return n.dot(area) * n.dot((a + b + c) / 3.0 - plane_point);
+  });
 }
-
-namespace {
-
-// (1/3) the flux of x - p through `faces` along their fluid normals: minus their share of the
-// fluid's volume (divergence theorem with div (x - p) / 3 = 1; exact on flat facets).
-double fluid_normal_flux(const std::vector<const surface::SurfaceMesh*>& faces, const Eigen::Vector3d& p) {
-  double flux = 0.0;
-  auto add = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-    flux += (0.5 * (b - a).cross(c - a)).dot((a + b + c) / 3.0 - p) / 3.0;
-  };
-  for (const surface::SurfaceMesh* mesh : faces) {
-    for (const auto& t : mesh->triangles) add(mesh->points[t[0]], mesh->points[t[1]], mesh->points[t[2]]);
-    for (const auto& q : mesh->quads) {
-      add(mesh->points[q[0]], mesh->points[q[1]], mesh->points[q[2]]);
-      add(mesh->points[q[0]], mesh->points[q[2]], mesh->points[q[3]]);
-    }
-  }
-  return flux;
-}
-
-}  // namespace
 
 VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                                      const std::vector<const surface::SurfaceMesh*>& farfield,
