@@ -115,7 +115,9 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   std::string domain;
   if (!surface::has_wall_with_root_loop(*model)) {
     // The body alone (no wall sewn to it): its root plane becomes geometry.wall_plane and a box
-    // around it the far field, both built at load as `run` will.
+    // around it the far field, both built at load as `run` will. Unless a wall is there whose seam
+    // hides the root (its planar faces would be taken for root caps).
+    surface::refuse_seam_through_root(*model);
     const std::optional<surface::RootPlane> root = surface::find_root_plane(*model);
     if (!root) surface::detect_cad_roles(*model);  // throws, saying what is missing
     c.geometry.wall_plane.point = rounded(root->point);

@@ -23,7 +23,9 @@
 //   fuselage_bspline  the same on a B-spline body of revolution whose radius swells from 1.1 chords
 //              at the box's ends to 1.5 at the wing (the wall falls away under the wake);
 //   fuselage_dihedral the wing leaning 10 degrees sideways (dihedral) on the cylinder: the wall's
-//              normal turns along the root and the junction's angles differ on each side.
+//              normal turns along the root and the junction's angles differ on each side;
+//   fuselage_seam_on_crest the cylinder with its seam along its top, through the wing's root (bad
+//              input: the root is then no hole of the wall).
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
@@ -155,15 +157,15 @@ TopoDS_Shape in_hemisphere(const TopoDS_Shape& body, double chord) {
   return sewing.SewedShape();
 }
 
-enum class Fuselage { Cylinder, BSpline, Dihedral };
+enum class Fuselage { Cylinder, BSpline, Dihedral, SeamOnCrest };
 
 // A fuselage of radius 1.5 chords at the wing, its axis along x through z = -1.5 chords, running
 // 24 chords (through the box): a cylinder, or a B-spline body of revolution swelling from 1.1
 // chords at its ends to 1.5 at the wing. The seam at the bottom (the axis system's x direction
-// -z), away from the root.
+// -z), away from the root, unless asked on the crest.
 TopoDS_Shape fuselage_solid(Fuselage kind, double chord) {
   const double radius = 1.5 * chord, length = 24 * chord, start = -0.5 * length + 0.5 * chord;
-  const gp_Ax2 axis(gp_Pnt(start, 0, -radius), gp::DX(), -gp::DZ());
+  const gp_Ax2 axis(gp_Pnt(start, 0, -radius), gp::DX(), kind == Fuselage::SeamOnCrest ? gp::DZ() : -gp::DZ());
   if (kind != Fuselage::BSpline) return BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
   // The profile in the plane y = 0 below the axis (the revolution's seam), parallel to the axis at
   // its ends (the box's faces there meet the wall square, as the wall layer needs), revolved a
@@ -226,9 +228,10 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage") return on_fuselage(wing, params.chord, Fuselage::Cylinder);
   if (name == "fuselage_bspline") return on_fuselage(wing, params.chord, Fuselage::BSpline);
   if (name == "fuselage_dihedral") return on_fuselage(wing, params.chord, Fuselage::Dihedral);
+  if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral)");
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

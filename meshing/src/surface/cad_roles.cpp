@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <iterator>
 #include <limits>
+#include <map>
+#include <optional>
 #include <set>
 
 namespace semimesh::surface {
@@ -115,10 +117,30 @@ std::string labels(const cad::Model& model, const std::vector<int>& surfaces) {
   return text.empty() ? "none" : text;
 }
 
+// A periodic face whose seam (a curve it uses twice) shares a vertex with a curve it shares with a
+// curved face: a fuselage whose seam runs through the wing's root, which joins the root loop to
+// the face's outer boundary instead of leaving it a hole. Returns the seam, or nothing.
+std::optional<int> seam_through_root(const cad::Model& model, int s) {
+  std::map<int, int> uses;
+  for (const cad::Loop& loop : model.loops(s))
+    for (const cad::CurveUse& use : loop.uses) ++uses[use.curve];
+  std::set<int> root_vertices;
+  for (const auto& [curve, count] : uses)
+    for (const cad::SurfaceUse& u : model.surfaces_of_curve(curve))
+      if (count == 1 && u.surface != s && !model.surface(u.surface).is_planar())
+        for (int v : model.curve_vertices(curve)) root_vertices.insert(v);
+  for (const auto& [curve, count] : uses)
+    if (count == 2)
+      for (int v : model.curve_vertices(curve))
+        if (root_vertices.count(v)) return curve;
+  return std::nullopt;
+}
+
 int find_wall(const cad::Model& model) {
   std::vector<int> walls;
   for (int s = 0; s < model.num_surfaces(); ++s)
     if (holds_a_body(model, s)) walls.push_back(s);
+  if (walls.empty()) refuse_seam_through_root(model);
   if (walls.empty())
     fail("no face holds a body's root loop as an inner loop: the model has no wall the body stands on "
          "(name the wall with geometry.wall, or check that the body is sewn to it: cad-info lists each curve's faces; "
@@ -166,6 +188,16 @@ Extent extent(const std::vector<Vec3>& points, const Vec3& direction, const Vec3
 }
 
 }  // namespace
+
+void refuse_seam_through_root(const cad::Model& model) {
+  for (int s = 0; s < model.num_surfaces(); ++s)
+    if (const std::optional<int> seam = seam_through_root(model, s))
+      fail(fmt::format("{} looks like the wall a body stands on, but its seam, {}, runs into the body's root: "
+                       "the root loop is joined to the face's outer boundary instead of being a hole in it; "
+                       "export the wall (a fuselage, a hub) with its seam away from the body (e.g. at its "
+                       "bottom), or split it there",
+                       cad::surface_label(model, s), cad::curve_label(model, *seam)));
+}
 
 bool has_wall_with_root_loop(const cad::Model& model) {
   for (int s = 0; s < model.num_surfaces(); ++s)

@@ -45,6 +45,11 @@ struct CadRoles {
 /// that reaches behind the wall, no face left for the far field).
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall = std::nullopt);
 
+/// Throws CadRoleError when a periodic face's seam runs into a body's root (a fuselage exported with
+/// its seam along its crest): the root is then no hole of the wall, and neither the wall nor the
+/// body-only route (a root plane) can be found; the message names the face, the seam and the remedy.
+void refuse_seam_through_root(const cad::Model& model);
+
 /// Whether some face holds a body's root loop as an inner loop (detect_cad_roles can find a
 /// wall); false for a file that holds the body alone.
 bool has_wall_with_root_loop(const cad::Model& model);
