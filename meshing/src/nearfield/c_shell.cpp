@@ -12,8 +12,7 @@ namespace semimesh::nearfield {
 namespace c_type {
 namespace {
 
-void check_junction_params(const cad::Model& model, const BodyRoles& roles, const JunctionParams& j,
-                           double wall_thickness) {
+void check_junction_params(const BodyRoles& roles, const JunctionParams& j, double wall_thickness) {
   auto fail = [](const std::string& what) { throw NearFieldError("near field: " + what); };
   if (const auto bad = params::violation(j, junction_keys(), "nearfield")) fail(*bad);
   if (!(j.min_angle_deg < j.max_angle_deg && j.max_angle_deg <= j.concave_below_deg))
@@ -132,7 +131,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
                                    int bare_surface, int crack_curve) {
   using namespace c_type;  // the steps, c_shell_steps.hpp
   detail::check_shell_params(model, roles, params);
-  check_junction_params(model, roles, junction, wall_thickness);
+  check_junction_params(roles, junction, wall_thickness);
   const std::map<int, int> root_surface = root_curve_surfaces(model, roles, junction, params.thickness, wall_thickness);
   const double delta_wing = params.thickness, delta_wall = wall_thickness;
   BodyMesh body = merge_body_meshes(model, meshes, roles.body_surfaces);
