@@ -2,6 +2,7 @@
 // curves lie on the cylinder and on the wing's skins, checked against the independent textbook
 // section (naca_reference.hpp) and the closed form of the untapered, unswept case; exact derivatives
 // of the root curves and of the reparametrised surfaces against central differences; projections.
+#include "central_differences.hpp"
 #include "naca_reference.hpp"
 
 #include <gtest/gtest.h>
@@ -174,11 +175,6 @@ TEST(FuselageRoot, DihedralShiftsTheSectionsSideways) {
   }
 }
 
-void expect_close(const Vec3& exact, const Vec3& fd, double tol, const std::string& what) {
-  EXPECT_LT((exact - fd).norm(), tol * std::max(1.0, exact.norm())) << what << "\n exact " << exact.transpose()
-                                                                   << "\n fd    " << fd.transpose();
-}
-
 // Away from the camber crease (u^2 = p); a wrong implicit derivative is off by O(1).
 TEST(FuselageRoot, RootCurveDerivativesMatchCentralDifferences) {
   constexpr double h = 1e-5;
@@ -190,8 +186,8 @@ TEST(FuselageRoot, RootCurveDerivativesMatchCentralDifferences) {
       for (double t : {0.02, 0.13, 0.37, 0.5, 0.81, 0.98}) {
         const auto d = curve.derivatives(t), plus = curve.derivatives(t + h), minus = curve.derivatives(t - h);
         const std::string at = describe(p) + ", " + name + " at t = " + std::to_string(t);
-        expect_close(d.d1, (plus.p - minus.p) / (2 * h), 1e-8, "d1 " + at);
-        expect_close(d.d2, (plus.d1 - minus.d1) / (2 * h), 1e-6, "d2 " + at);
+        naca_test::expect_close(d.d1, (plus.p - minus.p) / (2 * h), 1e-8, "d1 " + at);
+        naca_test::expect_close(d.d2, (plus.d1 - minus.d1) / (2 * h), 1e-6, "d2 " + at);
       }
     }
   }
@@ -211,17 +207,8 @@ TEST(FuselageRoot, ReparametrisedSurfacesMatchCentralDifferences) {
           const double hu = kStep * box[0].length(), hv = kStep * box[1].length();
           // One-sided stations stay inside the box: shift them inwards by one step.
           const Vec2 uv(box[0].lo + a * box[0].length(), std::clamp(box[1].lo + b * box[1].length(), box[1].lo + hv, box[1].hi - hv));
-          const auto d = surf.derivatives(uv);
-          const auto pu = surf.derivatives(uv + Vec2(hu, 0)), mu = surf.derivatives(uv - Vec2(hu, 0));
-          const auto pv = surf.derivatives(uv + Vec2(0, hv)), mv = surf.derivatives(uv - Vec2(0, hv));
           const std::string at = describe(p) + ", " + name + " at (" + std::to_string(uv.x()) + ", " + std::to_string(uv.y()) + ")";
-          EXPECT_LT((d.p - surf.point(uv)).norm(), 1e-15) << at;
-          expect_close(d.du, (pu.p - mu.p) / (2 * hu), 1e-8, "du " + at);
-          expect_close(d.dv, (pv.p - mv.p) / (2 * hv), 1e-8, "dv " + at);
-          expect_close(d.duu, (pu.du - mu.du) / (2 * hu), 1e-6, "duu " + at);
-          expect_close(d.duv, (pv.du - mv.du) / (2 * hv), 1e-6, "duv " + at);
-          expect_close(d.duv, (pu.dv - mu.dv) / (2 * hu), 1e-6, "dvu " + at);
-          expect_close(d.dvv, (pv.dv - mv.dv) / (2 * hv), 1e-6, "dvv " + at);
+          naca_test::expect_surface_derivatives_match_differences(surf, uv, hu, hv, at);
         }
     }
   }

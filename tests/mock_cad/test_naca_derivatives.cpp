@@ -1,5 +1,6 @@
 // Exact first and second derivatives against central finite differences, on every entity of a
 // cambered, tapered, swept wing; and normals pointing into the fluid.
+#include "central_differences.hpp"
 #include "naca_reference.hpp"
 
 #include <gtest/gtest.h>
@@ -25,11 +26,6 @@ NacaWingParams cambered_tapered_swept(bool sharp) {
 
 constexpr double kStep = 1e-5;
 
-void expect_close(const Vec3& exact, const Vec3& fd, double tol, const std::string& what) {
-  EXPECT_LT((exact - fd).norm(), tol * std::max(1.0, exact.norm())) << what << "\n exact " << exact.transpose()
-                                                                   << "\n fd    " << fd.transpose();
-}
-
 TEST(NacaDerivatives, SurfacesMatchCentralDifferences) {
   for (bool sharp : {false, true}) {
     auto model = naca_test::wing(cambered_tapered_swept(sharp));
@@ -41,17 +37,8 @@ TEST(NacaDerivatives, SurfacesMatchCentralDifferences) {
         for (double b : {0.1, 0.5, 0.9}) {
           const Vec2 uv(box[0].lo + a * box[0].length(), box[1].lo + b * box[1].length());
           const double hu = kStep * box[0].length(), hv = kStep * box[1].length();
-          const auto d = surf.derivatives(uv);
-          const auto pu = surf.derivatives(uv + Vec2(hu, 0)), mu = surf.derivatives(uv - Vec2(hu, 0));
-          const auto pv = surf.derivatives(uv + Vec2(0, hv)), mv = surf.derivatives(uv - Vec2(0, hv));
           const std::string at = surf.name() + " at (" + std::to_string(uv.x()) + ", " + std::to_string(uv.y()) + ")";
-          EXPECT_LT((d.p - surf.point(uv)).norm(), 1e-15) << at;
-          expect_close(d.du, (pu.p - mu.p) / (2 * hu), 1e-8, "du " + at);
-          expect_close(d.dv, (pv.p - mv.p) / (2 * hv), 1e-8, "dv " + at);
-          expect_close(d.duu, (pu.du - mu.du) / (2 * hu), 1e-6, "duu " + at);
-          expect_close(d.duv, (pv.du - mv.du) / (2 * hv), 1e-6, "duv " + at);
-          expect_close(d.duv, (pu.dv - mu.dv) / (2 * hu), 1e-6, "dvu " + at);
-          expect_close(d.dvv, (pv.dv - mv.dv) / (2 * hv), 1e-6, "dvv " + at);
+          naca_test::expect_surface_derivatives_match_differences(surf, uv, hu, hv, at);
         }
     }
   }
@@ -64,7 +51,7 @@ TEST(NacaDerivatives, SkinsAreSmoothAtTheLeadingEdge) {
     const auto& surf = model->surface(naca_test::surface_id(*model, name));
     const auto d = surf.derivatives(Vec2(0.0, 1.0));
     const Vec3 fd = (-3 * surf.point(Vec2(0, 1)) + 4 * surf.point(Vec2(kStep, 1)) - surf.point(Vec2(2 * kStep, 1))) / (2 * kStep);
-    expect_close(d.du, fd, 1e-8, name);
+    naca_test::expect_close(d.du, fd, 1e-8, name);
     EXPECT_GT(d.du.norm(), 0.1);  // regular: no vanishing tangent at the leading edge
   }
 }
@@ -80,8 +67,8 @@ TEST(NacaDerivatives, CurvesMatchCentralDifferences) {
         const auto d = curve.derivatives(t), p = curve.derivatives(t + h), m = curve.derivatives(t - h);
         const std::string at = curve.name() + " at " + std::to_string(t);
         EXPECT_LT((d.p - curve.point(t)).norm(), 1e-14) << at;
-        expect_close(d.d1, (p.p - m.p) / (2 * h), 1e-8, "d1 " + at);
-        expect_close(d.d2, (p.d1 - m.d1) / (2 * h), 1e-6, "d2 " + at);
+        naca_test::expect_close(d.d1, (p.p - m.p) / (2 * h), 1e-8, "d1 " + at);
+        naca_test::expect_close(d.d2, (p.d1 - m.d1) / (2 * h), 1e-6, "d2 " + at);
       }
     }
   }

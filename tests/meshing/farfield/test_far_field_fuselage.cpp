@@ -5,6 +5,8 @@
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 
+#include "wing_case.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -30,22 +32,12 @@ FuselageCase fuselage_far_field() {
   wing.fuselage = true;
   wing.wall_radius = kRadius;
   wing.box = {-2, -3, -5, 3, 3, 2};
-  FuselageCase c;
-  c.model = mock_cad::make_naca_wing(wing);
-  surface::SizeParams size;
-  size.max_size = 0.3;
-  size.min_size = 0.01;
-  size.curvature_segments = 2.0;
-  size.gradation = 1.3;
-  size.le_size = 0.04;
-  size.te_size = 0.04;
-  const surface::SurfaceMeshes meshes = surface::mesh_model_surfaces(*c.model, surface::SizeField(*c.model, size));
-  nearfield::BodyRoles roles;
-  for (const char* name : {"upper", "lower", "te_base", "tip"}) roles.body_surfaces.push_back(*c.model->find_surface(name));
-  roles.wall_surface = *c.model->find_surface("wall");
+  nearfield::testing::WingCase wc = nearfield::testing::wing_case(wing, /*max_size=*/0.3);
   nearfield::ShellParams shell;
   shell.thickness = 0.03;
-  nearfield::NearField nf = nearfield::build_o_shell(*c.model, meshes, roles, shell);
+  nearfield::NearField nf = nearfield::build_o_shell(*wc.model, wc.meshes, wc.roles, shell);
+  FuselageCase c;
+  c.model = std::move(wc.model);
   c.prisms = nf.mesh.elements().size();
   std::vector<int> box;
   for (const char* name : {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"})
@@ -53,7 +45,7 @@ FuselageCase fuselage_far_field() {
   FarFieldParams params;
   params.box_size = 1.0;
   params.wall_size = 1.0;  // above R / 4: the wall's curvature caps the size
-  c.far = build_far_field(*c.model, std::move(nf), params, box, roles.wall_surface);
+  c.far = build_far_field(*c.model, std::move(nf), params, box, wc.roles.wall_surface);
   return c;
 }
 

@@ -6,8 +6,6 @@
 #include "semimesh/cad/model.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
-#include "semimesh/surface/model_surfaces.hpp"
-#include "semimesh/surface/size_field.hpp"
 
 #include "junction_shell.hpp"
 #include "wing_case.hpp"
@@ -23,13 +21,13 @@ using cad::Vec3;
 
 constexpr double kRadius = 1.5;
 
-std::unique_ptr<cad::Model> wing_on_fuselage() {
+mock_cad::NacaWingParams wing_on_fuselage() {
   mock_cad::NacaWingParams wing;
   wing.span = 1.0;
   wing.fuselage = true;
   wing.wall_radius = kRadius;
   wing.box = {-2, -3, -5, 3, 3, 2};
-  return mock_cad::make_naca_wing(wing);
+  return wing;
 }
 
 std::vector<Vec3> root_points(const cad::Model& model) {
@@ -42,7 +40,7 @@ std::vector<Vec3> root_points(const cad::Model& model) {
 }
 
 TEST(WallFrame, OnACylinderHeightsAreDistancesAndNormalsRadial) {
-  const auto model = wing_on_fuselage();
+  const auto model = mock_cad::make_naca_wing(wing_on_fuselage());
   const detail::WallFrame wall = detail::wall_frame(*model, *model->find_surface("wall"), root_points(*model));
   ASSERT_NE(wall.curved, nullptr);
   for (const Vec3& x : {Vec3(0.0, 0.0, 0.3), Vec3(0.5, 0.2, 0.05), Vec3(1.2, -0.4, 0.0), Vec3(0.8, 0.05, -0.02)}) {
@@ -63,21 +61,11 @@ TEST(WallFrame, OnAPlaneOneNormalAndSignedDistances) {
 }
 
 TEST(CShellOnAFuselage, WallFeetOnTheCylinderAndHalosTheWallLayerAboveIt) {
-  const auto model = wing_on_fuselage();
-  surface::SizeParams size;
-  size.max_size = 0.3;
-  size.min_size = 0.01;
-  size.curvature_segments = 2.0;
-  size.le_size = 0.04;
-  size.te_size = 0.04;
-  const surface::SurfaceMeshes meshes = surface::mesh_model_surfaces(*model, surface::SizeField(*model, size));
-  BodyRoles roles;
-  for (const char* name : {"upper", "lower", "te_base", "tip"}) roles.body_surfaces.push_back(*model->find_surface(name));
-  roles.wall_surface = *model->find_surface("wall");
+  const testing::WingCase c = testing::wing_case(wing_on_fuselage(), /*max_size=*/0.3);
   ShellParams shell;
   shell.thickness = 0.05;
   const double wall_layer = 0.04;
-  const NearField field = build_c_shell(*model, meshes, roles, shell, {}, wall_layer);
+  const NearField field = build_c_shell(*c.model, c.meshes, c.roles, shell, {}, wall_layer);
   ASSERT_EQ(field.footprint.size(), field.footprint_top.size());
   ASSERT_GT(field.footprint.size(), 20u);
   for (std::size_t i = 0; i < field.footprint.size(); ++i) {
