@@ -25,13 +25,19 @@ struct WallFrame {
   const cad::Surface* curved = nullptr;  ///< the wall's surface when it is not planar
   cad::Vec2 root_uv = cad::Vec2::Zero();  ///< curved: the wall's parameters at `origin`
 
-  double height(const Vec3& x) const {
-    if (!curved) return (x - origin).dot(normal);
+  /// x's height above the wall and the wall's normal into the fluid under it (one projection).
+  struct Above {
+    double height;
+    Vec3 normal;
+  };
+  Above above(const Vec3& x) const {
+    if (!curved) return {(x - origin).dot(normal), normal};
     const cad::SurfaceProjection p = curved->project(x, root_uv);
-    return (x - p.point).dot(curved->normal(p.uv));
+    const Vec3 n = curved->normal(p.uv);
+    return {(x - p.point).dot(n), n};
   }
-  /// The wall's normal into the fluid under x.
-  Vec3 normal_at(const Vec3& x) const { return curved ? curved->normal(curved->project(x, root_uv).uv) : normal; }
+  double height(const Vec3& x) const { return above(x).height; }
+  Vec3 normal_at(const Vec3& x) const { return curved ? above(x).normal : normal; }
 };
 
 /// The frame of `wall_surface` under the root loop `root_points` (see WallFrame).

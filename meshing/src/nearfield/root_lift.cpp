@@ -88,11 +88,12 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
   // steepest ascent on the surface) drifts to the closest point, onto the edge itself.
   Vec3 p = x;
   for (int iteration = 0; iteration < 12; ++iteration) {
-    const double missing = target - wall.height(p);
+    const detail::WallFrame::Above here = wall.above(p);
+    const double missing = target - here.height;
+    const Vec3& normal = here.normal;
     if (cad.kind == CadAttachment::Surface) {
       const cad::Surface& face = model.surface(cad.entity);
       const cad::SurfaceDerivatives d = face.derivatives(cad::Vec2(cad.u, cad.v));
-      const Vec3 normal = wall.normal_at(p);
       const cad::Vec2 gradient(d.du.dot(normal), d.dv.dot(normal));
       if (!(gradient.squaredNorm() > 0.0)) break;
       const auto bounds = face.bounds();
@@ -103,7 +104,7 @@ Vec3 move_to_height(const cad::Model& model, const WallFrame& wall, const Vec3& 
       p = face.point(uv);
     } else {
       const cad::Curve& curve = model.curve(cad.entity);
-      const double slope = curve.derivatives(cad.u).d1.dot(wall.normal_at(p));
+      const double slope = curve.derivatives(cad.u).d1.dot(normal);
       if (slope == 0.0) break;
       const auto bounds = curve.bounds();
       cad.u = std::clamp(cad.u + missing / slope, bounds.lo, bounds.hi);
