@@ -8,74 +8,99 @@
 
 #include <cctype>
 #include <iostream>
+#include <map>
 #include <set>
 #include <cmath>
 
 namespace conformance {
 namespace {
 
+// One model of fixtures.hpp as a value: the suite is value-parameterised (TEST_P) rather than typed,
+// so each check is compiled once for every model, not once per model.
+struct ModelCase {
+  std::string name;
+  std::string (*skip_reason)();
+  std::unique_ptr<cad::Model> (*load)();
+  Expectations (*expect)();
+};
+
+// gtest prints a parameter in test listings; the name, not the struct's bytes.
+void PrintTo(const ModelCase& c, std::ostream* os) { *os << c.name; }
+
 template <class F>
-class Conformance : public ::testing::Test {
+ModelCase model_case() {
+  return {F::kName, &F::skip_reason, &F::load, &F::expect};
+}
+
+std::vector<ModelCase> all_models() {
+  return {model_case<NacaDefault>(), model_case<NacaBluntNoBox>(), model_case<NacaCamberedTaperedSweptSharp>(),
+          model_case<NacaRevolution>(), model_case<NacaRoundTipBlunt>(), model_case<NacaRoundTipBluntTaperedSwept>(),
+          model_case<NacaRoundTipCamberedTaperedSweptSharp>(), model_case<NacaOnCylinderBlunt>(),
+          model_case<NacaOnCylinderCamberedTaperedSweptSharp>(), model_case<NacaOnCylinderCamberedTaperedSweptBlunt>(),
+          model_case<NacaOnCylinderDihedral>(), model_case<NacaDihedralSharp>(), model_case<NacaOnConeSweptSharp>(),
+          model_case<NacaOnConeCamberedBlunt>(),
+#ifdef SEMIMESH_HAVE_OCC
+          model_case<OccNaca>(), model_case<OccSphere>(), model_case<OccStepNektarWing>(),
+          model_case<OccStepOneraM6>(), model_case<OccStepOneraM6OnWall>(), model_case<OccStepOneraM6InSphere>(),
+#endif
+#ifdef SEMIMESH_HAVE_VENDOR_FAKE
+          model_case<VendorFake>(), model_case<VendorFakeRevolution>(),
+#endif
+  };
+}
+
+// Each model is loaded once per process and kept until the suite ends (CTest runs one check per
+// process; a plain gtest run goes through every check of every model).
+class Conformance : public ::testing::TestWithParam<ModelCase> {
  protected:
-  static void SetUpTestSuite() {
-    skip_ = F::skip_reason();
-    if (!skip_.empty()) return;
-    try {
-      model_ = F::load();
-    } catch (const std::exception& e) {
-      load_error_ = e.what();
-    } catch (...) {
-      // An exception escaping here would make gtest skip the suite, which CTest counts as passed.
-      load_error_ = "an exception that is not a std::exception (an OCC Standard_Failure?)";
-    }
-  }
-  static void TearDownTestSuite() { model_.reset(); }
+  static void TearDownTestSuite() { loaded().clear(); }
   void SetUp() override {
-    if (!skip_.empty()) GTEST_SKIP() << F::kName << ": " << skip_;
-    ASSERT_TRUE(model_) << F::kName << " failed to load: " << load_error_;
+    const ModelCase& c = GetParam();
+    const std::string skip = c.skip_reason();
+    if (!skip.empty()) GTEST_SKIP() << c.name << ": " << skip;
+    Loaded& slot = loaded()[c.name];
+    if (!slot.model && slot.error.empty()) {
+      try {
+        slot.model = c.load();
+      } catch (const std::exception& e) {
+        slot.error = e.what();
+      } catch (...) {
+        // An exception escaping here would make gtest skip the test, which CTest counts as passed.
+        slot.error = "an exception that is not a std::exception (an OCC Standard_Failure?)";
+      }
+    }
+    ASSERT_TRUE(slot.model) << c.name << " failed to load: " << slot.error;
+    model_ = slot.model.get();
   }
 
   const cad::Model& model() const { return *model_; }
-  static Expectations expect() { return F::expect(); }
+  Expectations expect() const { return GetParam().expect(); }
   double diagonal() const { return model_->bbox().diagonal(); }
 
  private:
-  static inline std::unique_ptr<cad::Model> model_;
-  static inline std::string skip_;
-  static inline std::string load_error_;
-};
-
-using Models = ::testing::Types<NacaDefault, NacaBluntNoBox, NacaCamberedTaperedSweptSharp, NacaRevolution,
-                                NacaRoundTipBlunt, NacaRoundTipBluntTaperedSwept, NacaRoundTipCamberedTaperedSweptSharp,
-                                NacaOnCylinderBlunt, NacaOnCylinderCamberedTaperedSweptSharp,
-                                NacaOnCylinderCamberedTaperedSweptBlunt, NacaOnCylinderDihedral, NacaDihedralSharp,
-                                NacaOnConeSweptSharp, NacaOnConeCamberedBlunt
-#ifdef SEMIMESH_HAVE_OCC
-                                ,
-                                OccNaca, OccSphere, OccStepNektarWing, OccStepOneraM6, OccStepOneraM6OnWall,
-                                OccStepOneraM6InSphere
-#endif
-#ifdef SEMIMESH_HAVE_VENDOR_FAKE
-                                ,
-                                VendorFake, VendorFakeRevolution
-#endif
-                                >;
-
-struct ModelNames {
-  template <class F>
-  static std::string GetName(int) {
-    std::string name = F::kName, out;
-    for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    return out;
+  struct Loaded {
+    std::unique_ptr<cad::Model> model;
+    std::string error;
+  };
+  static std::map<std::string, Loaded>& loaded() {
+    static std::map<std::string, Loaded> models;
+    return models;
   }
+  const cad::Model* model_ = nullptr;
 };
 
-TYPED_TEST_SUITE(Conformance, Models, ModelNames);
+std::string model_name(const ::testing::TestParamInfo<ModelCase>& info) {
+  std::string out;
+  for (char c : info.param.name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, Conformance, ::testing::ValuesIn(all_models()), model_name);
 
 // Central differences of P give dP/dt; of dP/dt give d2P/dt2. Tolerances relative to the size of
 // the derivatives: 1e-5 for first, 1e-3 for second derivatives (spline knots limit the latter);
 // a wrong formula is off by O(1).
-TYPED_TEST(Conformance, CurveDerivativesMatchFiniteDifferences) {
+TEST_P(Conformance, CurveDerivativesMatchFiniteDifferences) {
   const cad::Model& m = this->model();
   for (int c = 0; c < m.num_curves(); ++c) {
     const cad::Curve& curve = m.curve(c);
@@ -93,7 +118,7 @@ TYPED_TEST(Conformance, CurveDerivativesMatchFiniteDifferences) {
   }
 }
 
-TYPED_TEST(Conformance, SurfaceDerivativesMatchFiniteDifferences) {
+TEST_P(Conformance, SurfaceDerivativesMatchFiniteDifferences) {
   const cad::Model& m = this->model();
   for (int s = 0; s < m.num_surfaces(); ++s) {
     const cad::Surface& surface = m.surface(s);
@@ -128,7 +153,7 @@ TYPED_TEST(Conformance, SurfaceDerivativesMatchFiniteDifferences) {
 // 2. The winding number of the model (a surface integral of the geometry, sampling.hpp) at
 //    q = P + eps n is the fluid's value (-1 when the model encloses the fluid, 0 around a body)
 //    and one more at P - eps n. A flipped face or a flipped model changes these values.
-TYPED_TEST(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
+TEST_P(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
   const cad::Model& m = this->model();
   for (int s = 0; s < m.num_surfaces(); ++s) {
     const cad::Surface& surface = m.surface(s);
@@ -169,7 +194,7 @@ TYPED_TEST(Conformance, LoopsRunCounterClockwiseAroundTheNormal) {
   }
 }
 
-TYPED_TEST(Conformance, NormalsPointIntoTheFluid) {
+TEST_P(Conformance, NormalsPointIntoTheFluid) {
   if (!this->expect().closed) GTEST_SKIP() << "the winding number needs a closed model: " << this->expect().open_reason;
   const cad::Model& m = this->model();
   const double fluid = this->expect().fluid_encloses ? -1.0 : 0.0;
@@ -190,7 +215,7 @@ TYPED_TEST(Conformance, NormalsPointIntoTheFluid) {
 
 // Points on each face (inside the trim) project back onto themselves: distance ~0, the same
 // point (parameters may differ across a periodic seam, so points are compared), inside = true.
-TYPED_TEST(Conformance, ProjectionOfPointsOnTheSurface) {
+TEST_P(Conformance, ProjectionOfPointsOnTheSurface) {
   const cad::Model& m = this->model();
   const double tol = 1e-9 * this->diagonal();
   for (int s = 0; s < m.num_surfaces(); ++s) {
@@ -207,7 +232,7 @@ TYPED_TEST(Conformance, ProjectionOfPointsOnTheSurface) {
 
 // P + d n projects back to P with distance d (d = 1e-3 of the model size, small against every
 // radius of curvature on the fluid side of these models).
-TYPED_TEST(Conformance, ProjectionOfPointsOffTheSurface) {
+TEST_P(Conformance, ProjectionOfPointsOffTheSurface) {
   const cad::Model& m = this->model();
   const double d = 1e-3 * this->diagonal(), tol = 1e-8 * this->diagonal();
   for (int s = 0; s < m.num_surfaces(); ++s) {
@@ -223,7 +248,7 @@ TYPED_TEST(Conformance, ProjectionOfPointsOffTheSurface) {
 }
 
 // A guess near the answer converges to it; curves likewise.
-TYPED_TEST(Conformance, ProjectionWithInitialGuess) {
+TEST_P(Conformance, ProjectionWithInitialGuess) {
   const cad::Model& m = this->model();
   const double tol = 1e-8 * this->diagonal();
   for (int s = 0; s < m.num_surfaces(); ++s) {
@@ -254,7 +279,7 @@ TYPED_TEST(Conformance, ProjectionWithInitialGuess) {
 
 // Planar faces have zero curvature; where the LE radius is known, the upper skin's chordwise
 // curvature at the LE is its inverse (convex: positive against the fluid normal).
-TYPED_TEST(Conformance, CurvaturesOnKnownCases) {
+TEST_P(Conformance, CurvaturesOnKnownCases) {
   const cad::Model& m = this->model();
   int planes = 0;
   for (int s = 0; s < m.num_surfaces(); ++s) {
@@ -285,7 +310,7 @@ TYPED_TEST(Conformance, CurvaturesOnKnownCases) {
 
 // Topology: loops are closed chains whose end points meet geometrically; each curve lies on the
 // surfaces it bounds; on a closed model each curve is used once forward and once reversed.
-TYPED_TEST(Conformance, AdjacencyAndOrientation) {
+TEST_P(Conformance, AdjacencyAndOrientation) {
   const cad::Model& m = this->model();
   const double tol = std::max(1e3 * m.tolerance(), 1e-7 * this->diagonal());
   for (int c = 0; c < m.num_curves(); ++c) {
@@ -334,7 +359,7 @@ TYPED_TEST(Conformance, AdjacencyAndOrientation) {
 // Simpson's error is O(h^4) for smooth |C'|, but O(h) where |C'| jumps (NACA camber lines have a
 // curvature jump at the maximum-camber station; STEP splines may have C0 knots), hence the fine
 // step and the 1e-5 tolerance; a wrong arc length is off by far more.
-TYPED_TEST(Conformance, ArcLengthMatchesSimpson) {
+TEST_P(Conformance, ArcLengthMatchesSimpson) {
   const cad::Model& m = this->model();
   for (int c = 0; c < m.num_curves(); ++c) {
     const cad::Curve& curve = m.curve(c);
@@ -361,7 +386,7 @@ TYPED_TEST(Conformance, ArcLengthMatchesSimpson) {
 //  - a degenerate curve is one point (zero derivatives, the same vertex at both ends, zero
 //    length), used once by one face, and that face is singular there: du or dv vanishes at the
 //    pole (relative to the other), so a whole side of the box maps onto it.
-TYPED_TEST(Conformance, PeriodicFacesSeamsAndPoles) {
+TEST_P(Conformance, PeriodicFacesSeamsAndPoles) {
   const cad::Model& m = this->model();
   const double tol = 1e-9 * this->diagonal();
   int seams = 0, poles = 0;
@@ -442,7 +467,7 @@ TYPED_TEST(Conformance, PeriodicFacesSeamsAndPoles) {
 // Near a pole, a projection started at the pole itself (the guess the curving of a pole's elements
 // hands in) or without a guess reaches the point: a local solver stopped at the pole, where the
 // surface does not move along one parameter, cannot turn towards it by itself.
-TYPED_TEST(Conformance, ProjectionLeavesAPole) {
+TEST_P(Conformance, ProjectionLeavesAPole) {
   const cad::Model& m = this->model();
   const double tol = 1e-8 * this->diagonal();
   int checked = 0;
@@ -470,7 +495,7 @@ TYPED_TEST(Conformance, ProjectionLeavesAPole) {
   std::cout << "[ info ] " << checked << " point(s) near poles projected\n";
 }
 
-TYPED_TEST(Conformance, BoundingBoxContainsAllSamples) {
+TEST_P(Conformance, BoundingBoxContainsAllSamples) {
   const cad::Model& m = this->model();
   const cad::BBox& box = m.bbox();
   ASSERT_FALSE(box.empty());
