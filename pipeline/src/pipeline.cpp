@@ -465,7 +465,7 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
-mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMesh& linear, double chord,
+mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& linear, double chord,
                  Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& inherited) {
   const std::vector<nearfield::LayerStack>& stacks = linear.stacks;
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
@@ -491,6 +491,7 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
     if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
     return fine;
   });
+  coarse = mesh::Mesh();  // not needed any more: the weld then holds two meshes at once, not three
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
       return weld_coincident_nodes(split.mesh, kWeldTolerance * chord, report).mesh;
@@ -713,7 +714,7 @@ RunResult run(const Config& config, Progress& progress) {
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
-    result.mesh = split(config, result.mesh, linear, chord, progress, result, inherited);
+    result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
   if (config.output.target == OutputTarget::Pyfr) {
     result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
     inherited.clear();  // elements renumbered: every one is certified on its own

@@ -167,6 +167,8 @@ class Splitter {
   NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
                  const std::array<int, 2>& g) const;
   NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
+  /// Where the node of this key is kept (kNoNode until made).
+  NodeId& slot_of(const NodeKey& key);
   double ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const;
 
   const mesh::Mesh& in_;
@@ -176,7 +178,12 @@ class Splitter {
   std::vector<Plan> plans_;  // [input elements]
   std::map<Shape, ShapeData> shapes_;
   std::map<std::tuple<Shape, int, int, int, int>, Eigen::MatrixXd> uniform_;
-  std::map<NodeKey, NodeId> created_;
+  // The nodes made so far, by where they are (key_of): on a coarse edge or face shared with
+  // neighbours, in slots of that entity (4 bytes a node: a map of every key held ~1 GB on the
+  // paper's case); inside the element, only while it is split; the rare rest by key.
+  std::vector<std::vector<NodeId>> edge_slots_, face_slots_;  // [input edges], [input faces]
+  std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
+  std::vector<NodeId> face_vertices_;                          // scratch of node_for
   struct Figures {
     double height_min = 1e300, height_max = 0.0, ratio_sum = 0.0;
     int vertical_edges = 0, elements = 0;
@@ -256,11 +263,30 @@ double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int fam
   return r;
 }
 
+// Kinds of key_of: 1 on a coarse edge (its ends, level), 2 on a coarse face (bottom edge, top
+// edge, place along, level), 3 inside the element, 4 on a face cut both ways.
+NodeId& Splitter::slot_of(const NodeKey& key) {
+  auto slot = [](std::vector<NodeId>& slots, std::size_t i) -> NodeId& {
+    if (slots.size() <= i) slots.resize(i + 1, mesh::kNoNode);
+    return slots[i];
+  };
+  if (key[0] == 1) {
+    const long edge = in_.find_edge(static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]));
+    if (edge >= 0) return slot(edge_slots_[edge], static_cast<std::size_t>(key[3]));
+  } else if (key[0] == 2) {
+    face_vertices_.assign({static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]), static_cast<NodeId>(key[4]),
+                           static_cast<NodeId>(key[3])});
+    const long face = in_.find_face(face_vertices_);
+    if (face >= 0) return slot(face_slots_[face], static_cast<std::size_t>(key[6] * in_.order() + key[5]));
+  } else if (key[0] == 3) {
+    return element_nodes_.try_emplace(key, mesh::kNoNode).first->second;
+  }
+  return other_nodes_.try_emplace(key, mesh::kNoNode).first->second;
+}
+
 NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
-  const auto it = created_.find(key);
-  if (it != created_.end()) return it->second;
-  const NodeId id = out_.add_node(x);
-  created_.emplace(key, id);
+  NodeId& id = slot_of(key);
+  if (id == mesh::kNoNode) id = out_.add_node(x);
   return id;
 }
 
@@ -416,6 +442,7 @@ std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, co
   const std::vector<NodeId> coarse = in_.element_nodes(element);
   const int nn = static_cast<int>(coarse.size());
   const Eigen::MatrixX3d& x = geometry.x;
+  element_nodes_.clear();  // the last element's inner nodes: no other element names them
 
   std::vector<std::vector<NodeId>> subs(na * nb, std::vector<NodeId>(nn));
   for (int kb = 0; kb < nb; ++kb)
@@ -567,6 +594,8 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
 }
 
 void Splitter::copy_nodes_groups_and_regions() {
+  edge_slots_.resize(in_.edges().size());
+  face_slots_.resize(in_.faces().size());
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
