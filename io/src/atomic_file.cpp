@@ -1,4 +1,5 @@
 #include "semimesh/io/atomic_file.hpp"
+#include "os_error.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -18,10 +19,6 @@ std::string directory_of(const std::string& path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-std::runtime_error os_error(const std::string& what, const std::string& path) {
-  return std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
-}
-
 }  // namespace
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path) {
@@ -30,7 +27,7 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw os_error("cannot create a temporary file in directory", directory_of(path));
+  if (fd < 0) throw detail::os_error("cannot create a temporary file in directory", directory_of(path));
   temp_path_ = name.data();
   // mkstemp creates the file 0600; a mesh file should get the usual 0666 less the umask (umask has
   // no read-only query, so it is set and restored; files are written by several threads at once,
@@ -47,7 +44,7 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path) {
   if (!file_) {
     ::close(fd);
     ::unlink(temp_path_.c_str());
-    throw os_error("cannot open temporary file", temp_path_);
+    throw detail::os_error("cannot open temporary file", temp_path_);
   }
 }
 
@@ -77,12 +74,12 @@ void AtomicFile::overwrite(std::size_t position, const void* data, std::size_t b
   flush_buffer();
   if (std::fflush(file_) != 0 ||
       ::pwrite(::fileno(file_), data, bytes, static_cast<off_t>(position)) != static_cast<ssize_t>(bytes))
-    throw os_error("cannot write to", temp_path_);
+    throw detail::os_error("cannot write to", temp_path_);
 }
 
 void AtomicFile::flush_buffer() {
   if (buffer_.size() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size())
-    throw os_error("cannot write to", temp_path_);
+    throw detail::os_error("cannot write to", temp_path_);
   written_ += buffer_.size();
   buffer_.clear();
   // The disk is the slowest part of a large write (~180 MB/s here against ~1 GB/s of formatting):
@@ -97,11 +94,11 @@ void AtomicFile::flush_buffer() {
 
 void AtomicFile::commit() {
   flush_buffer();
-  if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) throw os_error("cannot flush", temp_path_);
+  if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) throw detail::os_error("cannot flush", temp_path_);
   const int closed = std::fclose(file_);
   file_ = nullptr;
-  if (closed != 0) throw os_error("cannot close", temp_path_);
-  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) throw os_error("cannot rename the temporary file to", path_);
+  if (closed != 0) throw detail::os_error("cannot close", temp_path_);
+  if (::rename(temp_path_.c_str(), path_.c_str()) != 0) throw detail::os_error("cannot rename the temporary file to", path_);
   committed_ = true;
   // Make the rename itself durable.
   const int dir = ::open(directory_of(path_).c_str(), O_RDONLY | O_DIRECTORY);

@@ -1,4 +1,5 @@
 #include "atomic_folder.hpp"
+#include "os_error.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -12,17 +13,13 @@
 namespace semimesh::io {
 namespace {
 
-std::runtime_error os_error(const std::string& what, const std::string& path) {
-  return std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
-}
-
 // A new empty folder `prefix` + random suffix; its path.
 std::string make_temporary_folder(const std::string& prefix) {
   std::vector<char> name(prefix.begin(), prefix.end());
   const std::string suffix = "XXXXXX";
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
-  if (!::mkdtemp(name.data())) throw os_error("cannot create a temporary folder", prefix + suffix);
+  if (!::mkdtemp(name.data())) throw detail::os_error("cannot create a temporary folder", prefix + suffix);
   // mkdtemp makes it 0700; a mesh folder gets the usual 0777 less the umask (see AtomicFile).
   const mode_t mask = ::umask(0);
   ::umask(mask);
@@ -52,7 +49,7 @@ void AtomicFolder::commit(AtomicFile& index) {
   if (fs::exists(path_)) {
     old = make_temporary_folder(path_ + ".old-");
     if (std::rename(path_.c_str(), old.c_str()) != 0) {
-      const std::runtime_error error = os_error("cannot move aside the folder", path_);
+      const std::runtime_error error = detail::os_error("cannot move aside the folder", path_);
       fs::remove(old, ignored);
       throw error;
     }
@@ -61,7 +58,7 @@ void AtomicFolder::commit(AtomicFile& index) {
     if (!old.empty()) std::rename(old.c_str(), path_.c_str());
   };
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    const std::runtime_error error = os_error("cannot rename the temporary folder to", path_);
+    const std::runtime_error error = detail::os_error("cannot rename the temporary folder to", path_);
     restore();
     throw error;
   }

@@ -1,4 +1,5 @@
 #include "semimesh/io/output_set.hpp"
+#include "os_error.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -13,10 +14,6 @@ namespace semimesh::io {
 namespace fs = std::filesystem;
 namespace {
 
-std::runtime_error os_error(const std::string& what, const std::string& path) {
-  return std::runtime_error(what + " '" + path + "': " + std::strerror(errno));
-}
-
 // A rename and the directory entries it changed survive a crash once the folder is synced.
 void sync_folder(const std::string& folder) {
   const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
@@ -29,7 +26,7 @@ void sync_folder(const std::string& folder) {
 
 OutputSet::OutputSet(std::string directory) : directory_(std::move(directory)) {
   std::string name = (fs::path(directory_) / ".semimesh-staging-XXXXXX").string();
-  if (!::mkdtemp(name.data())) throw os_error("cannot create a staging folder in", directory_);
+  if (!::mkdtemp(name.data())) throw detail::os_error("cannot create a staging folder in", directory_);
   staging_ = name;
 }
 
@@ -58,7 +55,7 @@ void OutputSet::commit() {
   std::vector<Move> done;  // renames made so far, undone in reverse on failure
   const auto move = [&](const fs::path& from, const fs::path& to) {
     if (std::rename(from.c_str(), to.c_str()) != 0)
-      throw os_error("cannot move '" + from.string() + "' to", to.string());
+      throw detail::os_error("cannot move '" + from.string() + "' to", to.string());
     done.push_back({from, to});
   };
   std::vector<fs::path> staged_entries;  // listed first: the loop below empties the folder

@@ -1,12 +1,11 @@
 #include "fuselage_wall.hpp"
+#include "constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace semimesh::mock_cad::detail {
 namespace {
-
-constexpr double kTwoPi = 2.0 * M_PI;
 
 // The point at angle phi on the circle of radius r about the axis at depth R, at station x.
 cad::Vec3 on_circle(double x, double phi, double r, double R) {

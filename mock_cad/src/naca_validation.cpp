@@ -1,4 +1,5 @@
 #include "naca_validation.hpp"
+#include "constants.hpp"
 
 #include "fuselage_root.hpp"
 #include "naca_wing.hpp"
@@ -15,7 +16,6 @@
 namespace semimesh::mock_cad::detail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kCapSamples = 200;  // per parameter of the rounded tip, for its extent
 constexpr int kRootSamples = 200;  // per root curve on a fuselage, for its extremes
 // On a fuselage of radius R: R above this many root half thicknesses, the root no further round

@@ -1,12 +1,10 @@
 #include "naca_wing.hpp"
+#include "constants.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace semimesh::mock_cad::detail {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
 
 NacaWing::NacaWing(const NacaSection& section, double chord, double span, double taper, double sweep_deg,
                    double dihedral_deg)

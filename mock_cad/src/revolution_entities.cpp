@@ -1,4 +1,5 @@
 #include "revolution_entities.hpp"
+#include "constants.hpp"
 
 #include "newton_projection.hpp"
 
@@ -6,10 +7,6 @@
 #include <cmath>
 
 namespace semimesh::mock_cad::detail {
-namespace {
-constexpr double kTwoPi = 2.0 * M_PI;
-constexpr double kNoCrease = -1.0;  // symmetric section: smooth everywhere
-}  // namespace
 
 RevolutionBody::RevolutionBody(int id, std::string name, std::shared_ptr<const NacaSection> section, double chord,
                                double tol)

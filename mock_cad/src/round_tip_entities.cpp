@@ -1,4 +1,5 @@
 #include "round_tip_entities.hpp"
+#include "constants.hpp"
 
 #include "newton_projection.hpp"
 
@@ -6,10 +7,6 @@
 #include <cmath>
 
 namespace semimesh::mock_cad::detail {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kNoCrease = -1.0;
-}  // namespace
 
 RoundTipFace::RoundTipFace(int id, std::string name, std::shared_ptr<const RoundTipMap> tip, double tol)
     : cad::Surface(id, std::move(name), -1), tip_(std::move(tip)), tol_(tol) {}

@@ -1,13 +1,11 @@
 #include "wing_entities.hpp"
+#include "constants.hpp"
 
 #include "newton_projection.hpp"
 
 #include <algorithm>
 
 namespace semimesh::mock_cad::detail {
-namespace {
-constexpr double kNoCrease = -1.0;  // outside every parameter range
-}  // namespace
 
 WingSkin::WingSkin(int id, std::string name, std::shared_ptr<const NacaWing> wing, Side side, double tol,
                    std::shared_ptr<const FuselageRoot> root)

@@ -9,7 +9,6 @@
 namespace {
 
 namespace cad = semimesh::cad;
-constexpr double kPi = 3.14159265358979323846;
 
 // Plane z = 0 with (u, v) = (x, y) on a box, trimmed by `inside`.
 class TrimmedPlane : public cad::Surface {
@@ -63,15 +62,15 @@ TEST(TrimmedArea, UntrimmedSphereBandIsExactToQuadrature) {
 TEST(TrimmedArea, DiscIsWithinItsErrorEstimate) {
   TrimmedPlane disc({cad::Interval{-1.5, 1.5}, cad::Interval{-1.5, 1.5}}, [](const cad::Vec2& uv) { return uv.squaredNorm() <= 1.0; });
   auto a = cad::trimmed_area(disc);
-  EXPECT_NEAR(a.area, kPi, 3 * a.error_estimate);
-  EXPECT_LE(a.error_estimate, 3e-3 * kPi);
-  EXPECT_NEAR(a.area, kPi, 1e-3 * kPi);
+  EXPECT_NEAR(a.area, M_PI, 3 * a.error_estimate);
+  EXPECT_LE(a.error_estimate, 3e-3 * M_PI);
+  EXPECT_NEAR(a.area, M_PI, 1e-3 * M_PI);
 }
 
 TEST(TrimmedArea, SquareWithRoundHole) {
   TrimmedPlane plate({cad::Interval{0, 4}, cad::Interval{0, 4}},
                      [](const cad::Vec2& uv) { return (uv - cad::Vec2(2.2, 1.9)).norm() >= 0.5; });
-  const double expected = 16.0 - kPi * 0.25;
+  const double expected = 16.0 - M_PI * 0.25;
   auto a = cad::trimmed_area(plate);
   EXPECT_NEAR(a.area, expected, 3 * a.error_estimate);
   EXPECT_NEAR(a.area, expected, 1e-4 * expected);
@@ -82,6 +81,6 @@ TEST(TrimmedArea, LooseToleranceStopsEarlier) {
   auto loose = cad::trimmed_area(disc, 3e-2);
   auto tight = cad::trimmed_area(disc);
   EXPECT_LT(tight.error_estimate, loose.error_estimate);
-  EXPECT_NEAR(loose.area, kPi, 3e-2 * kPi);
-  EXPECT_NEAR(tight.area, kPi, 1e-3 * kPi);
+  EXPECT_NEAR(loose.area, M_PI, 3e-2 * M_PI);
+  EXPECT_NEAR(tight.area, M_PI, 1e-3 * M_PI);
 }

@@ -1,6 +1,7 @@
 // Lagrange bases: Kronecker property, exact interpolation of the element's space, gradients,
 // partition of unity, conditioning, element map and Jacobians.
 #include "semimesh/ho/basis.hpp"
+#include "all_shapes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +15,8 @@
 namespace semimesh::ho {
 namespace {
 
-const Shape kAllShapes[] = {Shape::Segment, Shape::Triangle, Shape::Quadrilateral, Shape::Tetrahedron,
-                            Shape::Pyramid,  Shape::Prism,    Shape::Hexahedron};
-const NodeSet kSets[] = {NodeSet::Equispaced, NodeSet::GLL};
+using testing::kAllShapes;
+using testing::kSets;
 
 std::string describe(Shape shape, int p, NodeSet set) {
   return to_string(shape) + " P=" + std::to_string(p) + (set == NodeSet::GLL ? " GLL" : " equispaced");

@@ -1,5 +1,6 @@
 // Element sizes and Gmsh's edge/face tables.
 #include "semimesh/ho/element_type.hpp"
+#include "all_shapes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +12,7 @@
 namespace semimesh::ho {
 namespace {
 
-const Shape kAllShapes[] = {Shape::Segment, Shape::Triangle, Shape::Quadrilateral, Shape::Tetrahedron,
-                            Shape::Pyramid,  Shape::Prism,    Shape::Hexahedron};
+using testing::kAllShapes;
 
 TEST(ElementType, DimensionsAndVertexCounts) {
   EXPECT_EQ(dimension(Shape::Segment), 1);

@@ -1,5 +1,6 @@
 // Reference node sets: counts, distinctness, vertices first, edge/face layout, GLL positions.
 #include "semimesh/ho/element_type.hpp"
+#include "all_shapes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +10,8 @@
 namespace semimesh::ho {
 namespace {
 
-const Shape kAllShapes[] = {Shape::Segment, Shape::Triangle, Shape::Quadrilateral, Shape::Tetrahedron,
-                            Shape::Pyramid,  Shape::Prism,    Shape::Hexahedron};
-const NodeSet kSets[] = {NodeSet::Equispaced, NodeSet::GLL};
+using testing::kAllShapes;
+using testing::kSets;
 
 const char* name(NodeSet set) { return set == NodeSet::GLL ? "GLL" : "equispaced"; }
 

@@ -1,6 +1,7 @@
 // Certified det J bounds checked against closed-form maps (exact det J known by hand) and against
 // dense sampling through the Lagrange basis (an independent implementation).
 #include "semimesh/ho/basis.hpp"
+#include "mapped_nodes.hpp"
 #include "semimesh/ho/quality.hpp"
 #include "semimesh/ho/validity.hpp"
 
@@ -18,14 +19,8 @@ namespace {
 
 const Shape kShapes[] = {Shape::Tetrahedron, Shape::Pyramid, Shape::Prism, Shape::Hexahedron};
 
-using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
-
-/// Nodes of the element whose map is `map` applied to the reference nodes; (num_nodes, 3).
-Eigen::MatrixX3d mapped_nodes(Shape shape, int order, NodeSet set, const Map& map) {
-  Eigen::MatrixX3d nodes = reference_nodes(shape, order, set);
-  for (int i = 0; i < nodes.rows(); ++i) nodes.row(i) = map(nodes.row(i).transpose()).transpose();
-  return nodes;
-}
+using testing::Map;
+using testing::mapped_nodes;
 
 std::string label(Shape shape, int order) { return to_string(shape) + " P" + std::to_string(order); }
 

@@ -4,6 +4,7 @@
 // (prism, hexahedron), orders 1-4, both node sets; a well-shaped element, a barely valid one, one
 // whose bottom pieces are inverted, one whose pieces fall under the margin.
 #include "semimesh/ho/basis.hpp"
+#include "mapped_nodes.hpp"
 #include "semimesh/ho/bernstein.hpp"
 #include "semimesh/ho/validity.hpp"
 
@@ -19,13 +20,8 @@
 namespace semimesh::ho {
 namespace {
 
-using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
-
-Eigen::MatrixX3d mapped_nodes(Shape shape, int order, NodeSet set, const Map& map) {
-  Eigen::MatrixX3d nodes = reference_nodes(shape, order, set);
-  for (int i = 0; i < nodes.rows(); ++i) nodes.row(i) = map(nodes.row(i).transpose()).transpose();
-  return nodes;
-}
+using testing::Map;
+using testing::mapped_nodes;
 
 /// The piece's nodes as split_layers makes them: the element's map at the box's reference nodes.
 Eigen::MatrixX3d piece_nodes(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element,

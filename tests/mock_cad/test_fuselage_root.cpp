@@ -17,7 +17,6 @@ using semimesh::cad::Vec2;
 using semimesh::cad::Vec3;
 using semimesh::mock_cad::NacaWingParams;
 
-constexpr double kPi = 3.14159265358979323846;
 
 NacaWingParams on_cylinder(const std::string& code, bool sharp, double taper, double sweep, double radius,
                            double dihedral = 0.0, double cone_angle = 0.0) {
@@ -61,12 +60,12 @@ std::string describe(const NacaWingParams& p) {
 }
 
 double chord_at(const NacaWingParams& p, double z) { return p.chord * (1.0 - (1.0 - p.taper) * z / p.span); }
-double le_x_at(const NacaWingParams& p, double z) { return z * std::tan(p.sweep_deg * kPi / 180.0); }
-double le_y_at(const NacaWingParams& p, double z) { return z * std::tan(p.dihedral_deg * kPi / 180.0); }
+double le_x_at(const NacaWingParams& p, double z) { return z * std::tan(p.sweep_deg * M_PI / 180.0); }
+double le_y_at(const NacaWingParams& p, double z) { return z * std::tan(p.dihedral_deg * M_PI / 180.0); }
 
 // Distance (radially) of x from the fuselage y^2 + (z + R)^2 = r(x)^2, r(x) = R + x tan(cone angle).
 double off_fuselage(const NacaWingParams& p, const Vec3& x) {
-  const double r = p.wall_radius + x.x() * std::tan(p.wall_angle_deg * kPi / 180.0);
+  const double r = p.wall_radius + x.x() * std::tan(p.wall_angle_deg * M_PI / 180.0);
   return std::abs(std::hypot(x.y(), x.z() + p.wall_radius) - r);
 }
 
@@ -150,7 +149,7 @@ TEST(FuselageRoot, EdgesStandOnTheCrest) {
     if (p.sharp_te && p.dihedral_deg == 0.0) {  // on the crest line, which a cone lifts by x tan(angle)
       const Vec3 te = model->curve(naca_test::curve_id(*model, "trailing_edge")).point(0.0);
       EXPECT_NEAR(te.y(), 0.0, 1e-16) << describe(p);
-      EXPECT_NEAR(te.z(), te.x() * std::tan(p.wall_angle_deg * kPi / 180.0), 1e-15) << describe(p);
+      EXPECT_NEAR(te.z(), te.x() * std::tan(p.wall_angle_deg * M_PI / 180.0), 1e-15) << describe(p);
     }
   }
 }
@@ -164,13 +163,13 @@ TEST(FuselageRoot, DihedralShiftsTheSectionsSideways) {
     if (!cylinder) p.box = NacaWingParams{}.box;
     auto model = naca_test::wing(p);
     const auto& le = model->curve(naca_test::curve_id(*model, "leading_edge"));
-    EXPECT_LE((le.point(p.span) - Vec3(0.0, p.span * std::tan(25.0 * kPi / 180.0), p.span)).norm(), 1e-14) << cylinder;
+    EXPECT_LE((le.point(p.span) - Vec3(0.0, p.span * std::tan(25.0 * M_PI / 180.0), p.span)).norm(), 1e-14) << cylinder;
     const auto& tip = model->curve(naca_test::curve_id(*model, "tip_upper"));
     for (double u : {0.1, 0.5, 0.9}) EXPECT_LE(off_skin(p, u, true, tip.point(u)), 1e-14) << cylinder << " u = " << u;
     const auto& cap = model->surface(naca_test::surface_id(*model, "tip"));
     const Vec3 inside = 0.5 * (tip.point(0.5) + model->curve(naca_test::curve_id(*model, "tip_lower")).point(0.5));
     EXPECT_TRUE(cap.project(inside).inside) << cylinder;
-    const Vec3 unshifted = inside - Vec3(0.0, p.span * std::tan(25.0 * kPi / 180.0), 0.0);
+    const Vec3 unshifted = inside - Vec3(0.0, p.span * std::tan(25.0 * M_PI / 180.0), 0.0);
     EXPECT_FALSE(cap.project(unshifted).inside) << cylinder << ": the section without dihedral";
   }
 }

@@ -1,6 +1,7 @@
 // The fuselage of naca.wall = cylinder (src/fuselage_wall.hpp): the model's faces and curves, its
 // watertightness, the wall's periodic parameters, normals, trim and projections, and the box with
 // the fuselage's circles as holes.
+#include "surface_names.hpp"
 #include "naca_reference.hpp"
 
 #include <gtest/gtest.h>
@@ -18,18 +19,13 @@ using semimesh::cad::Vec2;
 using semimesh::cad::Vec3;
 using semimesh::mock_cad::load_naca;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRadius = 1.5;  // the default: 1.5 root chords
 
 std::unique_ptr<Model> default_on_cylinder(const std::string& te = "blunt") {
   return load_naca(Source{"", Params{{"naca.wall", "cylinder"}, {"naca.te", te}}});
 }
 
-std::vector<std::string> surface_names(const Model& m) {
-  std::vector<std::string> out;
-  for (int s = 0; s < m.num_surfaces(); ++s) out.push_back(m.surface(s).name());
-  return out;
-}
+using naca_test::surface_names;
 
 TEST(FuselageWall, FacesInTheDocumentedOrder) {
   const std::vector<std::string> blunt = {"upper",    "lower",    "te_base",  "tip",      "wall",    "box_xmin",
@@ -82,12 +78,12 @@ TEST(FuselageWall, WallIsAPeriodicCylinderWithOutwardNormals) {
   const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
   EXPECT_FALSE(wall.is_planar());
   ASSERT_TRUE(wall.period(1).has_value());
-  EXPECT_EQ(*wall.period(1), 2 * kPi);
+  EXPECT_EQ(*wall.period(1), 2 * M_PI);
   EXPECT_FALSE(wall.period(0).has_value());
   EXPECT_EQ(wall.bounds()[0].lo, -10.0);
   EXPECT_EQ(wall.bounds()[0].hi, 11.0);
   // Crest (phi = pi), -y side (pi / 2), bottom seam (0): on the cylinder, normal away from the axis.
-  for (double phi : {0.0, 0.3, kPi / 2, kPi, 4.0, 2 * kPi})
+  for (double phi : {0.0, 0.3, M_PI / 2, M_PI, 4.0, 2 * M_PI})
     for (double x : {-7.0, 5.0}) {
       const Vec3 p = wall.point(Vec2(x, phi));
       const Vec3 radial = Vec3(0, p.y(), p.z() + kRadius) / kRadius;
@@ -97,8 +93,8 @@ TEST(FuselageWall, WallIsAPeriodicCylinderWithOutwardNormals) {
       EXPECT_NEAR(k.k_max, 1.0 / kRadius, 1e-13);  // convex fuselage: positive against the fluid normal
       EXPECT_NEAR(k.k_min, 0.0, 1e-13);
     }
-  EXPECT_LE((wall.point(Vec2(1.0, kPi)) - Vec3(1.0, 0.0, 0.0)).norm(), 1e-15);              // the crest
-  EXPECT_LE((wall.point(Vec2(1.0, kPi / 2)) - Vec3(1.0, -kRadius, -kRadius)).norm(), 1e-15);  // -y first
+  EXPECT_LE((wall.point(Vec2(1.0, M_PI)) - Vec3(1.0, 0.0, 0.0)).norm(), 1e-15);              // the crest
+  EXPECT_LE((wall.point(Vec2(1.0, M_PI / 2)) - Vec3(1.0, -kRadius, -kRadius)).norm(), 1e-15);  // -y first
   EXPECT_LE((wall.point(Vec2(1.0, 0.0)) - Vec3(1.0, 0.0, -2 * kRadius)).norm(), 1e-15);      // the seam
 }
 
@@ -107,11 +103,11 @@ TEST(FuselageWall, TrimHoldsTheRootSectionAsAHole) {
   for (const char* te : {"blunt", "sharp"}) {
     auto model = default_on_cylinder(te);
     const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
-    EXPECT_FALSE(wall.contains(Vec2(0.3, kPi))) << te;   // under the wing's thickest part
-    EXPECT_FALSE(wall.contains(Vec2(0.95, kPi))) << te;  // near the trailing edge, inside
-    EXPECT_TRUE(wall.contains(Vec2(-0.01, kPi))) << te;  // ahead of the leading edge
-    EXPECT_TRUE(wall.contains(Vec2(1.02, kPi))) << te;   // behind the trailing edge
-    EXPECT_TRUE(wall.contains(Vec2(0.3, kPi + 0.1))) << te;  // beside the section (y = 0.15 > 0.06)
+    EXPECT_FALSE(wall.contains(Vec2(0.3, M_PI))) << te;   // under the wing's thickest part
+    EXPECT_FALSE(wall.contains(Vec2(0.95, M_PI))) << te;  // near the trailing edge, inside
+    EXPECT_TRUE(wall.contains(Vec2(-0.01, M_PI))) << te;  // ahead of the leading edge
+    EXPECT_TRUE(wall.contains(Vec2(1.02, M_PI))) << te;   // behind the trailing edge
+    EXPECT_TRUE(wall.contains(Vec2(0.3, M_PI + 0.1))) << te;  // beside the section (y = 0.15 > 0.06)
     EXPECT_TRUE(wall.contains(Vec2(0.3, 0.2))) << te;    // the far side of the fuselage
     EXPECT_FALSE(wall.contains(Vec2(11.5, 1.0))) << te;  // beyond the box
     // Points of the root curves are on the boundary, which counts as inside.
@@ -142,11 +138,11 @@ TEST(FuselageWall, Projections) {
     }
   const Vec3 bottom(2.0, 0.0, -2 * kRadius - 1.0);
   EXPECT_EQ(wall.project(bottom).uv.y(), 0.0);
-  EXPECT_EQ(wall.project(bottom, Vec2(2.0, 6.1)).uv.y(), 2 * kPi);
+  EXPECT_EQ(wall.project(bottom, Vec2(2.0, 6.1)).uv.y(), 2 * M_PI);
   EXPECT_NEAR(wall.project(Vec3(15.0, 0.0, 0.5)).uv.x(), 11.0, 0);  // beyond the box: clamped
   for (const char* circle : {"wall_xmin", "wall_xmax"}) {
     const auto& c = model->curve(naca_test::curve_id(*model, circle));
-    EXPECT_NEAR(c.length(), 2 * kPi * kRadius, 1e-12);
+    EXPECT_NEAR(c.length(), 2 * M_PI * kRadius, 1e-12);
     for (double t : {0.5, 3.0, 6.0}) {  // 10% out from the axis
       const Vec3 x = c.point(t), axis(x.x(), 0.0, -kRadius);
       EXPECT_NEAR(c.project(axis + 1.1 * (x - axis)).t, t, 1e-14) << circle;
@@ -197,15 +193,15 @@ TEST(FuselageWall, PlaneWallIsUnchanged) {
 // The cone: radius R + x tan(angle) about the same axis, its crest through the root's leading edge;
 // normals tilted by the half angle; exact projections; the box's end holes of the local radius.
 TEST(FuselageWall, ConeWidensDownstream) {
-  const double angle = 4.0, k = std::tan(angle * kPi / 180.0);
+  const double angle = 4.0, k = std::tan(angle * M_PI / 180.0);
   auto model = load_naca(Source{"", Params{{"naca.wall", "cone"}, {"naca.wall_angle", "4"}}});
   EXPECT_TRUE(model->is_closed());
   const auto& wall = model->surface(naca_test::surface_id(*model, "wall"));
   EXPECT_EQ(wall.kind(), semimesh::cad::SurfaceKind::Cone);
   EXPECT_FALSE(wall.is_planar());
-  EXPECT_LE(wall.point(Vec2(0.0, kPi)).norm(), 1e-15);  // the crest through the origin
+  EXPECT_LE(wall.point(Vec2(0.0, M_PI)).norm(), 1e-15);  // the crest through the origin
   for (double x : {-8.0, 0.5, 9.0})
-    for (double phi : {0.2, 2.0, kPi, 5.0}) {
+    for (double phi : {0.2, 2.0, M_PI, 5.0}) {
       const Vec2 uv(x, phi);
       const Vec3 p = wall.point(uv);
       EXPECT_NEAR(std::hypot(p.y(), p.z() + kRadius), kRadius + k * x, 1e-14) << x << " " << phi;
@@ -218,7 +214,7 @@ TEST(FuselageWall, ConeWidensDownstream) {
       }
     }
   const auto box = semimesh::mock_cad::naca_params_from(Params{{"naca.wall", "cone"}}).box;  // 5 degrees by default
-  const double r_max = kRadius + 11.0 * std::tan(5.0 * kPi / 180.0);
+  const double r_max = kRadius + 11.0 * std::tan(5.0 * M_PI / 180.0);
   EXPECT_NEAR(box[4], r_max + 10.0, 1e-14);
   EXPECT_NEAR(box[2], -kRadius - r_max - 10.0, 1e-14);
   for (const char* end : {"box_xmin", "box_xmax"}) {
@@ -227,7 +223,7 @@ TEST(FuselageWall, ConeWidensDownstream) {
     EXPECT_FALSE(face.contains(Vec2(0.0, -kRadius + r - 0.01))) << end;
     EXPECT_TRUE(face.contains(Vec2(0.0, -kRadius + r + 0.01))) << end;
     const auto& circle = model->curve(naca_test::curve_id(*model, std::string("wall_") + (end + 4)));
-    EXPECT_NEAR(circle.length(), 2 * kPi * r, 1e-12) << end;
+    EXPECT_NEAR(circle.length(), 2 * M_PI * r, 1e-12) << end;
   }
 }
 

@@ -1,4 +1,5 @@
 // Names, ids, watertightness and loop orientation (material on the left seen from the fluid).
+#include "surface_names.hpp"
 #include "naca_reference.hpp"
 
 #include <gtest/gtest.h>
@@ -21,11 +22,7 @@ NacaWingParams variant(bool sharp, bool farfield) {
   return p;
 }
 
-std::vector<std::string> surface_names(const semimesh::cad::Model& m) {
-  std::vector<std::string> out;
-  for (int s = 0; s < m.num_surfaces(); ++s) out.push_back(m.surface(s).name());
-  return out;
-}
+using naca_test::surface_names;
 
 TEST(NacaTopology, SurfacesInTheDocumentedOrder) {
   using V = std::vector<std::string>;

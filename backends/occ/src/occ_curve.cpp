@@ -1,4 +1,5 @@
 #include "occ_curve.hpp"
+#include "to_vec.hpp"
 
 #include "semimesh/cad/error.hpp"
 
@@ -13,8 +14,6 @@
 
 namespace semimesh::occ {
 namespace {
-
-cad::Vec3 to_vec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 
 cad::CurveKind kind_of(GeomAbs_CurveType type) {
   switch (type) {

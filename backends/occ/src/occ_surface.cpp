@@ -1,4 +1,5 @@
 #include "occ_surface.hpp"
+#include "to_vec.hpp"
 
 #include "semimesh/cad/error.hpp"
 
@@ -29,8 +30,6 @@
 
 namespace semimesh::occ {
 namespace {
-
-cad::Vec3 to_vec(const gp_XYZ& p) { return {p.X(), p.Y(), p.Z()}; }
 
 // Planar by geometry, whatever the surface's type: within 1e-7 of the face's bounding-box diagonal
 // over the parameter box (the trimmed face lies inside it).

@@ -16,7 +16,7 @@
 namespace semimesh::ho::detail {
 namespace {
 
-HarmonicExtension build(Shape shape, int order, NodeSet set) {
+HarmonicExtension build_extension(Shape shape, int order, NodeSet set) {
   HarmonicExtension h;
   const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
   const auto inside = dimension(shape) == 3 ? mesh::NodeSlot::Interior : mesh::NodeSlot::Face;
@@ -50,7 +50,7 @@ const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set)
   static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<HarmonicExtension>(build(shape, order, set));
+  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set));
   return *slot;
 }
 

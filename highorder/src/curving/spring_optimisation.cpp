@@ -33,7 +33,7 @@ bool on_lattice_boundary(Shape shape, const LatticePoint& l, int order) {
 // Weights w_n: the smallest-norm solution of sum w_n r_n = r_j, sum w_n = 1 (r: reference positions
 // of the node set): forces w_n (x_n - x_j) balance exactly when x is an affine image of r, so an
 // affine face keeps the node set's own spacing.
-SpringNetwork build(Shape shape, int order, NodeSet set) {
+SpringNetwork build_network(Shape shape, int order, NodeSet set) {
   static const std::vector<std::array<int, 2>> segment{{1, 0}, {-1, 0}};
   static const std::vector<std::array<int, 2>> quad{{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   static const std::vector<std::array<int, 2>> triangle{{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, -1}, {-1, 1}};
@@ -70,7 +70,7 @@ const SpringNetwork& spring_network(Shape shape, int order, NodeSet set) {
   static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<SpringNetwork>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<SpringNetwork>(build(shape, order, set));
+  if (!slot) slot = std::make_unique<SpringNetwork>(build_network(shape, order, set));
   return *slot;
 }
 

@@ -1,4 +1,5 @@
 #include "flat_corners.hpp"
+#include "uv_triangle.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +9,6 @@
 
 namespace semimesh::surface::detail {
 namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
-double signed_area_uv(const SurfaceMesh& m, int a, int b, int c) {
-  const Vec2 e1 = m.uv[b] - m.uv[a], e2 = m.uv[c] - m.uv[a];
-  return e1.x() * e2.y() - e1.y() * e2.x();
-}
 
 // Whether the boundary of `surface` is smooth at CAD vertex v: the (exactly two) curve ends of the
 // surface's loops that meet there leave v in nearly opposite directions.

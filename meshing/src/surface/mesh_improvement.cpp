@@ -1,4 +1,5 @@
 #include "mesh_improvement.hpp"
+#include "uv_triangle.hpp"
 
 #include "semimesh/surface/mesh_quality.hpp"
 
@@ -26,16 +27,6 @@ constexpr double kMinGain = 1e-6;  // in sine of the minimum angle: ignore chang
 constexpr double kQualityNoise = 1e-10;
 // Relative area below which a (u, v) triangle counts as flat (not valid).
 constexpr double kMinRelativeArea = 1e-12;
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b);
-}
-
-double signed_area_uv(const SurfaceMesh& m, int a, int b, int c) {
-  const Vec2 e1 = m.uv[b] - m.uv[a], e2 = m.uv[c] - m.uv[a];
-  return 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-}
 
 bool positive_uv(const SurfaceMesh& m, int a, int b, int c) {
   const double scale = std::max({(m.uv[b] - m.uv[a]).squaredNorm(), (m.uv[c] - m.uv[b]).squaredNorm(),

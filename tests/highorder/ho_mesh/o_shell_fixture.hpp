@@ -45,6 +45,12 @@ inline OShellCase naca_o_shell(double max_size, double thickness) {
   return c;
 }
 
+/// The coarse shell most tests share (max size 0.6, thickness 0.05), built once per process.
+inline const OShellCase& coarse_o_shell() {
+  static const OShellCase c = naca_o_shell(0.6, 0.05);
+  return c;
+}
+
 inline std::vector<std::size_t> all_elements(const mesh::Mesh& m) {
   std::vector<std::size_t> all(m.elements().size());
   std::iota(all.begin(), all.end(), std::size_t{0});

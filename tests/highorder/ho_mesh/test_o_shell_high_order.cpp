@@ -15,11 +15,6 @@
 namespace semimesh::ho {
 namespace {
 
-const testing::OShellCase& shell() {
-  static const testing::OShellCase c = testing::naca_o_shell(0.6, 0.05);
-  return c;
-}
-
 // Ratio r with delta (r - 1) / (r^N - 1) = height (bisection; the left side falls as r grows).
 double ratio_for_first_cell(double delta, int layers, double height) {
   double lo = 1.0 + 1e-9, hi = 4.0;
@@ -46,14 +41,14 @@ double largest_aspect_ratio(const mesh::Mesh& m) {
 }
 
 TEST(OShellHighOrder, CurvedAndSplitShellIsValidAtOrders2To4) {
-  const mesh::Mesh& linear = shell().field.mesh;
+  const mesh::Mesh& linear = testing::coarse_o_shell().field.mesh;
   ASSERT_GE(linear.elements().size(), 200u);
   ASSERT_LE(linear.elements().size(), 3000u);  // coarse, but the LE radius must be resolved
   for (int P = 2; P <= 4; ++P) {
     CurvingStats curving;
-    mesh::Mesh curved = curve_mesh(linear, *shell().model, {P, NodeSet::GLL, 50, 1e-10}, &curving);
+    mesh::Mesh curved = curve_mesh(linear, *testing::coarse_o_shell().model, {P, NodeSet::GLL, 50, 1e-10}, &curving);
     // The pipeline's order: certify the one-layer shell, repair what curving folded, then split.
-    const RepairStats repair = repair_in_place(curved, *shell().model, certify_mesh(curved).invalid_elements);
+    const RepairStats repair = repair_in_place(curved, *testing::coarse_o_shell().model, certify_mesh(curved).invalid_elements);
     EXPECT_TRUE(repair.failures.empty()) << "P = " << P << ": " << repair.failures.front().reason;
     const MeshValidity coarse = certify_mesh(curved);
     EXPECT_TRUE(coarse.all_valid()) << "P = " << P << ": " << coarse.invalid << " invalid one-layer prisms";
@@ -76,16 +71,16 @@ TEST(OShellHighOrder, FirstCellOf1e5ChordIsValid) {
   const double delta = 0.05, first_cell = 1e-5;
   const double r = ratio_for_first_cell(delta, layers, first_cell);
   ASSERT_LE(r, 2.5);
-  mesh::Mesh curved = curve_mesh(shell().field.mesh, *shell().model, {P, NodeSet::GLL, 50, 1e-10});
-  const RepairStats repair = repair_in_place(curved, *shell().model, certify_mesh(curved).invalid_elements);
+  mesh::Mesh curved = curve_mesh(testing::coarse_o_shell().field.mesh, *testing::coarse_o_shell().model, {P, NodeSet::GLL, 50, 1e-10});
+  const RepairStats repair = repair_in_place(curved, *testing::coarse_o_shell().model, certify_mesh(curved).invalid_elements);
   EXPECT_TRUE(repair.failures.empty());
   SplitStats split;
   const mesh::Mesh fine = split_layers(curved, testing::all_elements(curved), {layers, r}, {}, &split);
   // Vertical edges are straight: the first cell is delta_x (r - 1) / (r^N - 1) with delta_x the local
   // thickness, at most the nominal delta.
   const double scale = (r - 1.0) / (std::pow(r, layers) - 1.0);
-  EXPECT_NEAR(split.first_cell_height_max, shell().field.thickness_max * scale, 1e-3 * first_cell);
-  EXPECT_NEAR(split.first_cell_height_min, shell().field.thickness_min * scale, 1e-3 * first_cell);
+  EXPECT_NEAR(split.first_cell_height_max, testing::coarse_o_shell().field.thickness_max * scale, 1e-3 * first_cell);
+  EXPECT_NEAR(split.first_cell_height_min, testing::coarse_o_shell().field.thickness_min * scale, 1e-3 * first_cell);
   EXPECT_NEAR(split.achieved_ratio, r, 1e-6);
   const MeshValidity v = certify_mesh(fine);
   EXPECT_TRUE(v.all_valid()) << v.invalid << " invalid, first at element " << (v.invalid ? v.invalid_elements[0] : 0);

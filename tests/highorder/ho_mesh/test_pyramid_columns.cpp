@@ -238,9 +238,9 @@ TEST(PyramidColumns, ColumnRunningIntoAPrismIsRefusedByName) {
                        Eigen::Vector3d(0.7, 1.2, 2.0)});
   const mesh::Mesh in = b.build();
   EXPECT_THAT([&] { split_pyramid_columns(in, 1e-11); },
-              testing::ThrowsMessage<std::invalid_argument>(testing::AllOf(
-                  testing::HasSubstr("runs into"), testing::HasSubstr("prism 2"),
-                  testing::HasSubstr("1 of the 1 refused pyramids' columns end so"))));
+              ::testing::ThrowsMessage<std::invalid_argument>(::testing::AllOf(
+                  ::testing::HasSubstr("runs into"), ::testing::HasSubstr("prism 2"),
+                  ::testing::HasSubstr("1 of the 1 refused pyramids' columns end so"))));
 }
 
 TEST(PyramidColumns, HexNeedingPrismsAlongTwoAxesIsRefusedByName) {
@@ -254,8 +254,8 @@ TEST(PyramidColumns, HexNeedingPrismsAlongTwoAxesIsRefusedByName) {
   const mesh::Mesh in = b.build();
   ASSERT_EQ(refused_pyramids(in), 2u);
   EXPECT_THAT([&] { split_pyramid_columns(in, 1e-11); },
-              testing::ThrowsMessage<std::invalid_argument>(testing::AllOf(testing::HasSubstr("two axes"),
-                                                                             testing::HasSubstr("hexahedron 0"))));
+              ::testing::ThrowsMessage<std::invalid_argument>(::testing::AllOf(::testing::HasSubstr("two axes"),
+                                                                             ::testing::HasSubstr("hexahedron 0"))));
 }
 
 }  // namespace

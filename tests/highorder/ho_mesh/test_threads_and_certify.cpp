@@ -20,11 +20,6 @@
 namespace semimesh::ho {
 namespace {
 
-const testing::OShellCase& shell() {
-  static const testing::OShellCase c = testing::naca_o_shell(0.6, 0.05);
-  return c;
-}
-
 struct ThreadedRun {
   mesh::Mesh curved, split;
   MeshValidity validity;
@@ -32,7 +27,7 @@ struct ThreadedRun {
 
 ThreadedRun run_with_threads(int threads) {
   omp_set_num_threads(threads);
-  ThreadedRun r{curve_mesh(shell().field.mesh, *shell().model, {3, NodeSet::GLL, 50, 1e-10}), mesh::Mesh(1), {}};
+  ThreadedRun r{curve_mesh(testing::coarse_o_shell().field.mesh, *testing::coarse_o_shell().model, {3, NodeSet::GLL, 50, 1e-10}), mesh::Mesh(1), {}};
   r.split = split_layers(r.curved, testing::all_elements(r.curved), {5, 2.0});
   r.validity = certify_mesh(r.split);
   omp_set_num_threads(omp_get_num_procs());
@@ -101,7 +96,7 @@ TEST(HoMeshThreads, ProgressIsReportedFromTheCallerAndDoesNotChangeTheResult) {
   omp_set_num_threads(2);
   ProgressLog curving, splitting, certifying;
   const mesh::Mesh curved =
-      curve_mesh(shell().field.mesh, *shell().model, {3, NodeSet::GLL, 50, 1e-10}, nullptr, curving.callback());
+      curve_mesh(testing::coarse_o_shell().field.mesh, *testing::coarse_o_shell().model, {3, NodeSet::GLL, 50, 1e-10}, nullptr, curving.callback());
   std::vector<LayerSplit> all;
   for (std::size_t e : testing::all_elements(curved)) all.push_back({e, {2, -1}, {0, 0}});
   const mesh::Mesh split = split_layers(curved, all, {{{5, 2.0}, {}}}, nullptr, nullptr, splitting.callback());
@@ -120,7 +115,7 @@ TEST(HoMeshThreads, ProgressIsReportedFromTheCallerAndDoesNotChangeTheResult) {
 }
 
 TEST(CertifyMesh, AgreesWithASerialLoopAndLocatesInvalidElements) {
-  mesh::Mesh curved = curve_mesh(shell().field.mesh, *shell().model, {2, NodeSet::GLL, 50, 1e-10});
+  mesh::Mesh curved = curve_mesh(testing::coarse_o_shell().field.mesh, *testing::coarse_o_shell().model, {2, NodeSet::GLL, 50, 1e-10});
   // Make two elements invalid for certain: the midnode m of the layer edge from body vertex 0 to
   // skin vertex 3 (not on the CAD) goes to 2 x0 - x3, which reverses dx/dzeta at vertex 0
   // ((-3 x0 + 4 m - x3) / 2 = -5/2 (x3 - x0)) while the body-face derivatives there stay: det J < 0
@@ -165,7 +160,7 @@ TEST(CertifyMesh, AgreesWithASerialLoopAndLocatesInvalidElements) {
 }
 
 TEST(CertifyMesh, RejectsBadInput) {
-  EXPECT_THROW(certify_mesh(shell().field.mesh, -1), std::invalid_argument);
+  EXPECT_THROW(certify_mesh(testing::coarse_o_shell().field.mesh, -1), std::invalid_argument);
   const MeshValidity empty = certify_mesh(mesh::Mesh(2));
   EXPECT_TRUE(empty.all_valid());
   EXPECT_EQ(empty.min_scaled_jacobian, 1.0);

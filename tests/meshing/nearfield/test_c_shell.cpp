@@ -70,13 +70,13 @@ double sampled_wing_distance(const WingCase& c, const Vec3& x) {
   return best;
 }
 
-struct Built {
+struct CShellBuilt {
   WingCase c;
   NearField f;
 };
 
-Built build(const mock_cad::NacaWingParams& wing, double thickness, double wall_thickness) {
-  Built b{wing_case(wing), {}};
+CShellBuilt build(const mock_cad::NacaWingParams& wing, double thickness, double wall_thickness) {
+  CShellBuilt b{wing_case(wing), {}};
   b.f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(thickness), JunctionParams{}, wall_thickness);
   return b;
 }
@@ -91,7 +91,7 @@ void expect_valid_linear_elements(const NearField& f) {
 
 TEST(CShell, HaloPointsLieAtBothThicknessesFromTheCad) {
   const double delta_wing = 0.06, delta_wall = 0.04;
-  const Built b = build(naca("0012", false), delta_wing, delta_wall);
+  const CShellBuilt b = build(naca("0012", false), delta_wing, delta_wall);
   ASSERT_EQ(b.f.footprint.size(), b.f.footprint_top.size());
   ASSERT_GT(b.f.junction_hexes, 10);
   for (NodeId h : b.f.footprint_top) {
@@ -120,7 +120,7 @@ TEST(CShell, HaloPointsLieAtBothThicknessesFromTheCad) {
 // JunctionHexesKeepBothStripsWhereTheWingLeans), L is straight below H and W at delta_wing from H.
 TEST(CShell, HaloPointsLieAtBothThicknessesOnASweptTaperedWing) {
   const double delta_wing = 0.06, delta_wall = 0.04;
-  const Built b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
+  const CShellBuilt b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
   ASSERT_GT(b.f.junction_hexes, 10);
   for (std::size_t i = 0; i < b.f.footprint_top.size(); ++i) {
     const Vec3 h = b.f.mesh.node(b.f.footprint_top[i]);
@@ -151,7 +151,7 @@ TEST(CShell, HaloPointsLieAtBothThicknessesOnASweptTaperedWing) {
 }
 
 TEST(CShell, ElementsAreValidAndHexesShareTheirFacesWithThePrisms) {
-  const Built b = build(naca("0012", false), 0.06, 0.04);
+  const CShellBuilt b = build(naca("0012", false), 0.06, 0.04);
   const mesh::Mesh& m = b.f.mesh;
   expect_valid_linear_elements(b.f);
   std::map<long, int> face_uses;
@@ -247,7 +247,7 @@ TEST(CShell, AShortRootLoopUnderAThickShellIsValid) {
 TEST(CShell, SweptTaperedAndCamberedWingsGiveValidJunctions) {
   for (const auto& wing :
        {naca("0012", true), naca("2412", false), naca("2412", true), naca("0012", false, 0.5, 30.0)}) {
-    const Built b{wing_case(wing), {}};
+    const CShellBuilt b{wing_case(wing), {}};
     const NearField f = build_c_shell(*b.c.model, b.c.meshes, b.c.roles, shell(0.05), JunctionParams{}, 0.03);
     expect_valid_linear_elements(f);
     EXPECT_EQ(static_cast<std::size_t>(f.junction_hexes), f.footprint.size());
@@ -337,7 +337,7 @@ namespace {
 // (robustness sweep, C-type seed 2 run 11: a junction hex at scaled Jacobian -0.048 at order 5).
 TEST(CShell, JunctionHexesKeepBothStripsWhereTheWingLeans) {
   const double delta_wing = 0.05, delta_wall = 0.09;  // near the 0.05 / -cos(120 degrees) = 0.1 bound
-  const Built b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
+  const CShellBuilt b = build(naca("0012", false, 0.5, 30.0), delta_wing, delta_wall);
   const mesh::Mesh& m = b.f.mesh;
   int leaning = 0;
   for (const auto& el : m.elements()) {
@@ -361,7 +361,7 @@ TEST(CShell, JunctionHexesKeepBothStripsWhereTheWingLeans) {
 // run 10: a lower-surface node projected onto the leading edge made a flat triangle, a prism with
 // scaled Jacobian -3e-13 after curving).
 TEST(CShell, LiftedWingTrianglesStayOpenNearASweptLeadingEdge) {
-  const Built b = build(naca("4412", false, 0.97, 22.6), 0.178, 0.1);
+  const CShellBuilt b = build(naca("4412", false, 0.97, 22.6), 0.178, 0.1);
   const mesh::Mesh& m = b.f.mesh;
   double flattest = 1.0;
   for (const auto& el : m.elements()) {

@@ -26,7 +26,7 @@ namespace {
 using cad::Vec3;
 using testing::curve_named;
 
-struct Built {
+struct HShellBuilt {
   std::unique_ptr<cad::Model> model;
   NearField field;
 };
@@ -39,9 +39,9 @@ mock_cad::NacaWingParams naca0012(bool sharp) {
   return wing;
 }
 
-Built build(const WakeParams& wake, bool sharp = false, const mock_cad::NacaWingParams& wing = naca0012(false),
+HShellBuilt build(const WakeParams& wake, bool sharp = false, const mock_cad::NacaWingParams& wing = naca0012(false),
             double thickness = 0.05, double wall_thickness = 0.04) {
-  Built b;
+  HShellBuilt b;
   mock_cad::NacaWingParams shape = wing;
   shape.sharp_te = shape.sharp_te || sharp;
   b.model = mock_cad::make_naca_wing(shape);
@@ -74,7 +74,7 @@ WakeParams short_wake() {
 }
 
 TEST(HShell, LayersEndAtTheTrailingEdgeWithTheirOwnNormals) {
-  const Built b = build(short_wake());
+  const HShellBuilt b = build(short_wake());
   const mesh::Mesh& m = b.field.mesh;
   const int upper = *b.model->find_surface("upper"), lower = *b.model->find_surface("lower");
   const int te_upper = curve_named(*b.model, "te_upper"), te_lower = curve_named(*b.model, "te_lower");
@@ -100,7 +100,7 @@ TEST(HShell, LayersEndAtTheTrailingEdgeWithTheirOwnNormals) {
 
 TEST(HShell, WakeHexesAreValidContinueTheLayerAndStandAboveTheGap) {
   const WakeParams wake = short_wake();
-  const Built b = build(wake);
+  const HShellBuilt b = build(wake);
   const mesh::Mesh& m = b.field.mesh;
   const int region = static_cast<int>(std::find(m.region_names().begin(), m.region_names().end(), "wake") -
                                       m.region_names().begin());
@@ -139,7 +139,7 @@ TEST(HShell, SweptCamberedBaseLeavesQuadsAPyramidFits) {
   wing.sweep_deg = 28.6;
   wing.taper = 0.948;
   wing.span = 1.0;
-  const Built b = build(short_wake(), false, wing, /*thickness=*/0.14, /*wall_thickness=*/0.1);
+  const HShellBuilt b = build(short_wake(), false, wing, /*thickness=*/0.14, /*wall_thickness=*/0.1);
   const mesh::Mesh& m = b.field.mesh;
   int quads = 0;
   for (const SkinFace& f : b.field.skin) {
@@ -202,9 +202,9 @@ double spread(const std::map<mesh::NodeId, Vec3>& edges) {
 // with it every element stays valid and the rest of the layer is untouched.
 TEST(HShell, PyfrTargetMakesEachSidesRearInterfacesTranslational) {
   WakeParams wake = short_wake();
-  const Built plain = build(wake);
+  const HShellBuilt plain = build(wake);
   wake.translational_rear_interfaces = true;
-  const Built pyfr = build(wake);
+  const HShellBuilt pyfr = build(wake);
   for (const char* name : {"te_upper", "te_lower"}) {
     const int curve = curve_named(*pyfr.model, name);
     const auto before = trailing_edge_layer_edges(plain.field.mesh, curve);
@@ -230,7 +230,7 @@ TEST(HShell, PyfrTargetMakesEachSidesRearInterfacesTranslational) {
 TEST(HShellSharp, SidesEndWithTheirOwnNormalsAndShareTheWakeSheet) {
   WakeParams wake = short_wake();
   wake.te_base = "auto";
-  const Built b = build(wake, /*sharp=*/true);
+  const HShellBuilt b = build(wake, /*sharp=*/true);
   const mesh::Mesh& m = b.field.mesh;
   const int te = curve_named(*b.model, "trailing_edge");
   ASSERT_GE(te, 0);
@@ -314,7 +314,7 @@ TEST(HShellSharp, SidesEndWithTheirOwnNormalsAndShareTheWakeSheet) {
 TEST(HShellSharp, TheTipKeepsItsPrismsAtTheTrailingEdgesEnd) {
   WakeParams wake = short_wake();
   wake.te_base = "auto";
-  const Built b = build(wake, /*sharp=*/true);
+  const HShellBuilt b = build(wake, /*sharp=*/true);
   const mesh::Mesh& m = b.field.mesh;
   Vec3 end = Vec3::Constant(1e300);
   for (int v = 0; v < b.model->num_vertices(); ++v)
@@ -352,7 +352,7 @@ TEST(HShellSharp, SweptEdgesLowestRearInterfacesStandSteeplyOverTheFanTop) {
   WakeParams wake = short_wake();
   wake.te_base = "auto";
   const double wall_thickness = 0.1;
-  const Built b = build(wake, /*sharp=*/true, wing, /*thickness=*/0.111, wall_thickness);
+  const HShellBuilt b = build(wake, /*sharp=*/true, wing, /*thickness=*/0.111, wall_thickness);
   const mesh::Mesh& m = b.field.mesh;
   auto on_wall_layer_top = [&](mesh::NodeId v) { return std::abs(m.node(v).z() - wall_thickness) < 1e-9; };
   std::map<std::pair<mesh::NodeId, mesh::NodeId>, const SkinFace*> fan_top_edges;  // edge -> its fan-top triangle

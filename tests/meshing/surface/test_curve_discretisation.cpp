@@ -12,7 +12,7 @@ namespace {
 using testing::curve_named;
 using testing::naca_model;
 
-SizeParams wing_sizes() {
+SizeParams curve_sizes() {
   SizeParams p;
   p.max_size = 0.5;
   p.min_size = 0.005;
@@ -29,7 +29,7 @@ std::vector<double> segment_lengths(const CurveMesh& m) {
 
 TEST(CurveMesh, EveryCurveEndsExactlyAtItsVertices) {
   auto model = naca_model();
-  SizeField size(*model, wing_sizes());
+  SizeField size(*model, curve_sizes());
   const CurveMeshes meshes = discretise_all_curves(*model, size);
   ASSERT_EQ(meshes.size(), model->num_curves());
   for (int c = 0; c < model->num_curves(); ++c) {
@@ -48,7 +48,7 @@ TEST(CurveMesh, EveryCurveEndsExactlyAtItsVertices) {
 
 TEST(CurveMesh, SegmentsFollowTheSizeField) {
   auto model = naca_model();
-  SizeField size(*model, wing_sizes());
+  SizeField size(*model, curve_sizes());
   for (const char* name : {"root_upper", "root_lower", "leading_edge", "box_ymin_zmin", "te_upper"}) {
     const int c = curve_named(*model, name);
     const CurveMesh m = discretise_curve(*model, c, size);
