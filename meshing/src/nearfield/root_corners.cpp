@@ -46,6 +46,15 @@ void open_root_corners(const cad::Model& model, int wall_surface, double delta_w
                        const detail::TranslationalRims& rims, detail::JunctionShell& js) {
   mesh::Mesh& m = js.field.mesh;
   const cad::Surface& face = model.surface(wall_surface);
+  // The wedge's pieces are cut in advance on straight legs; the junction hexes beside it are cut
+  // after curving, on their curved faces: on a curved wall the two miss each other (the sharp
+  // edge's fan does too), which would leave the mesh open there.
+  if (js.wall.curved && !rims.root_corner.empty())
+    fail("output.target = \"pyfr\": the trailing edge's root corner " +
+         point_label(m.node(js.layer_body[rims.root_corner.begin()->first])) + " stands on the curved wall " +
+         surface_label(model, wall_surface) +
+         ", where the junction's wedge between its two halos is not cut like the junction beside it yet; for PyFR "
+         "use nearfield.topology = \"C\" on a curved wall");
   for (const auto& [layer_node, side] : rims.root_corner) {
     const NodeId halo = static_cast<NodeId>(layer_node) + js.offset;
     const auto [foot, root] = corner_foot(js, halo);

@@ -298,6 +298,24 @@ TEST(HShell, PyfrTargetGivesTheRootCornersTheSidesLayerEdge) {
   }
 }
 
+// On a curved wall (a fuselage) the root corners' wedge would not match the junction's split (cut
+// after curving): refused naming the key and the wall, not left open.
+TEST(HShell, PyfrTargetRefusesTheRootCornersOnACurvedWall) {
+  mock_cad::NacaWingParams wing = naca0012(false);
+  wing.fuselage = true;
+  wing.box = mock_cad::fuselage_default_box(wing.wall_radius, 0.0);
+  WakeParams wake = short_wake();
+  EXPECT_NO_THROW(build(wake, false, wing));
+  wake.translational_rear_interfaces = true;
+  try {
+    build(wake, false, wing);
+    ADD_FAILURE() << "expected a NearFieldError";
+  } catch (const NearFieldError& e) {
+    for (const char* expected : {"output.target = \"pyfr\"", "curved wall", "nearfield.topology"})
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
 // Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own
 // normal (two offsets per curve node), the wake's upper and lower hexes share the swept curve (the
 // wake sheet): every sheet face is a face of exactly two wake hexes, one on each side.
