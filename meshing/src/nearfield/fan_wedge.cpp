@@ -1,5 +1,6 @@
 // A sharp trailing edge's root: the fan of the junction between its two halos, filled with
-// prisms on the wall, cut in advance at the split's interfaces.
+// prisms on the wall, cut in advance at the split's interfaces; for PyFR a blunt edge's root
+// corners' wedges the same way (JunctionShell::corners).
 #include "semimesh/ho/element_type.hpp"
 
 #include "h_shell_steps.hpp"

@@ -128,8 +128,8 @@ surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, i
 }
 
 // The C-type wing layer and junction with the base bare (lifted, no prisms) or the layer cracked
-// open along the sharp edge; a blunt
-// open edge with two halos at its root corners for PyFR (JunctionShell::corners).
+// open along the sharp edge; for PyFR the base's root corners with two halos each
+// (JunctionShell::corners).
 detail::JunctionShell junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes,
                                      const BodyRoles& roles, const ShellParams& params, const JunctionParams& junction,
                                      double wall_thickness, const TrailingEdge& te, bool for_pyfr) {
