@@ -16,6 +16,7 @@ add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/fan_wedge.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/skin_faces.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/translational_rims.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/root_corners.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/pyramid_apex.cpp)
 add_library(semimesh::nearfield ALIAS semimesh_nearfield)
 target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)

@@ -128,7 +128,7 @@ WallFrame wall_frame(const cad::Model& model, int wall_surface, const std::vecto
 // then the mesh: the layer's prisms and the junction's hexes.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface, int crack_curve) {
+                                   int bare_surface, int crack_curve, bool split_bare_corners) {
   using namespace c_type;  // the steps, c_shell_steps.hpp
   detail::check_shell_params(model, roles, params);
   check_junction_params(roles, junction, wall_thickness);
@@ -161,6 +161,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   shell.field.mesh.reserve(ho::Shape::Prism, body.triangles.size() + loop.size());
   add_wing_layer(body, layer, offsets, bare_surface, shell);
   add_junction_wall_nodes(loop, root_cad, j, shell);
+  if (split_bare_corners && bare_surface >= 0) split_bare_root_corners(loop, bare_surface, segments, shell);
   add_junction_hexes(model, body, loop, j, start.fan_layer, delta_wing, delta_wall, shell);
   record_thickness_range(offsets, layer.neighbours, params.thickness, shell.field);
   shell.body = std::move(body);

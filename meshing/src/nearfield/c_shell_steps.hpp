@@ -143,9 +143,15 @@ void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::Laye
 void add_junction_wall_nodes(const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
                              const JunctionNodes& j, detail::JunctionShell& shell);
 
+// output.target = "pyfr": the bare surface's root corners (JunctionShell::corners), where one root
+// segment is on the bare surface and the other is not; each corner's bare side gets a copy of the
+// wall foot and of the halo (the strip top's layer node), at the same places.
+void split_bare_root_corners(const std::vector<int>& loop, int bare_surface, const RootSegments& segments,
+                             detail::JunctionShell& shell);
+
 // Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a on every root segment (region junction, stacks
 // of both families); a -> b along the loop or against it, whichever gives a positive volume. At
-// the fan node each segment takes its own side's foot and halo.
+// the fan node and the split corners each segment takes its own side's foot and halo.
 void add_junction_hexes(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop,
                         const JunctionNodes& j, const std::array<int, 2>& fan_layer, double delta_wing,
                         double delta_wall, detail::JunctionShell& shell);

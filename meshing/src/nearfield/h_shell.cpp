@@ -128,19 +128,27 @@ surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, i
 }
 
 // The C-type wing layer and junction with the base bare (lifted, no prisms) or the layer cracked
-// open along the sharp edge.
+// open along the sharp edge; for PyFR the base's root corners with two halos each
+// (JunctionShell::corners).
 detail::JunctionShell junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes,
                                      const BodyRoles& roles, const ShellParams& params, const JunctionParams& junction,
-                                     double wall_thickness, const TrailingEdge& te) {
+                                     double wall_thickness, const TrailingEdge& te, bool for_pyfr) {
   return detail::build_junction_shell(model, te.base >= 0 ? base_as_triangles(meshes, te.base, te.flat) : meshes, roles,
-                                      params, junction, wall_thickness, te.base, te.crack);
+                                      params, junction, wall_thickness, te.base, te.crack, for_pyfr);
 }
 
 // The footprint (wall feet) and its tops (strip tops' offsets, the halos) along the root loop, the
-// fan's three legs in place of its root's one.
+// fan's three legs in place of its root's one, a split corner's two (JunctionShell::corners).
 void record_footprint(const detail::JunctionShell& js, const FanLegs& fan, NearField& field) {
+  std::map<int, const detail::JunctionShell::Corner*> corner;
+  for (const auto& c : js.corners) corner[c.index] = &c;
   for (std::size_t i = 0; i < js.chain.size(); ++i) {
     const bool at_fan = static_cast<int>(i) == js.fan.index;
+    if (const auto it = corner.find(static_cast<int>(i)); it != corner.end()) {
+      for (int side : {0, 1})
+        field.footprint.push_back(it->second->foot[side]), field.footprint_top.push_back(it->second->top[side]);
+      continue;
+    }
     field.footprint.push_back(js.foot_id[i]);
     field.footprint_top.push_back(at_fan ? js.fan.top[0] : static_cast<NodeId>(js.chain[i]) + js.offset);
     if (at_fan)
@@ -205,8 +213,12 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   using namespace h_type;  // the steps, h_shell_steps.hpp
   const Vec3 d = wake_direction(wake);
   const TrailingEdge te = find_trailing_edge(model, meshes, roles, wake, d);
-  detail::JunctionShell js = junction_shell(model, meshes, roles, params, junction, wall_thickness, te);
-  if (wake.translational_rear_interfaces) detail::make_rear_interfaces_translational(js);
+  detail::JunctionShell js =
+      junction_shell(model, meshes, roles, params, junction, wall_thickness, te, wake.translational_rear_interfaces);
+  if (wake.translational_rear_interfaces) {
+    const detail::TranslationalRims rims = detail::make_rear_interfaces_translational(js);
+    open_root_corners(model, roles.wall_surface, params.thickness, wall_thickness, rims, js);
+  }
   // Over a curved wall the normal turns under the block: the gap measured along it decides.
   if (!js.wall.curved && d.dot(js.wall.normal) < -1e-12)
     fail("wake.direction = " + direction_label(wake) + " points into the wall");
@@ -229,7 +241,9 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
          "wake.gap, a shorter wake.length or a wake.direction that follows the wall");
 
   InterfaceNodes interface_node;
-  const auto fan_planes = fill_fan_wedge(field, js, fan, roles.wall_surface, fractions, interface_node);
+  auto fan_planes = fill_fan_wedge(field, js, fan, roles.wall_surface, fractions, interface_node);
+  for (auto& plane : fill_corner_wedges(field, js, roles.wall_surface, fractions, interface_node))
+    fan_planes.push_back(std::move(plane));
   cut_skin_at_split_interfaces(field, skin_faces(field, fan_planes, sections.exposed_base, js.bare), fractions,
                                interface_node);
   check_wake_faces_carry_pyramids(field, sweep, wake);

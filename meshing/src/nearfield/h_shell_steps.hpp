@@ -8,6 +8,7 @@
 #include "semimesh/nearfield/h_shell.hpp"
 
 #include "junction_shell.hpp"
+#include "translational_rims.hpp"
 
 #include <array>
 #include <map>
@@ -148,6 +149,20 @@ using InterfaceNodes = std::map<std::tuple<NodeId, NodeId, int>, NodeId>;
 std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::JunctionShell& js, const FanLegs& legs,
                                              int wall_surface, const LayerFractions& fractions,
                                              InterfaceNodes& interface_node);
+
+// output.target = "pyfr": the wedge at each of a blunt trailing edge's root corners (between the
+// corner's two halos, JunctionShell::corners) filled as the sharp edge's fan (fill_fan_wedge),
+// in one part. Returns the nodes on each face R-W-H-L a wedge shares with a junction hex.
+std::vector<std::set<NodeId>> fill_corner_wedges(NearField& field, const detail::JunctionShell& js, int wall_surface,
+                                                 const LayerFractions& fractions, InterfaceNodes& interface_node);
+
+// output.target = "pyfr": the halo of each trailing-edge root corner (a blunt edge's corners, a
+// sharp edge's fan sides: TranslationalRims::root_corner) moved onto its side's rear-interface layer
+// edge and its wall foot below it, keeping the wall strip's width delta_wing, so the lowest rear
+// interface of each side is a parallelogram too (docs/solvers.md, PyFR). Throws NearFieldError,
+// naming the corner, if an element using a moved node would fold.
+void open_root_corners(const cad::Model& model, int wall_surface, double delta_wing, double delta_wall,
+                       const detail::TranslationalRims& rims, detail::JunctionShell& js);
 
 // The skin: faces used by one element that are not body or wall faces and do not stand on the
 // footprint (those the wall layer's prisms share) or on a face the fan shares with a junction

@@ -256,6 +256,25 @@ void add_junction_wall_nodes(const std::vector<int>& loop, const std::vector<Cad
   if (j.fan >= 0) shell.fan.foot = {shell.foot_id[j.fan], m.add_node(j.fan_side1.wall_foot, j.fan_side1.wall_foot_cad)};
 }
 
+void split_bare_root_corners(const std::vector<int>& loop, int bare_surface, const RootSegments& segments,
+                             detail::JunctionShell& shell) {
+  mesh::Mesh& m = shell.field.mesh;
+  const int n = static_cast<int>(loop.size());
+  for (int i = 0; i < n; ++i) {
+    const std::array<bool, 2> on_bare{segments.surface(loop[(i + n - 1) % n], loop[i]) == bare_surface,
+                                      segments.surface(loop[i], loop[(i + 1) % n]) == bare_surface};
+    if (on_bare[0] == on_bare[1]) continue;
+    detail::JunctionShell::Corner c;
+    c.index = i;
+    c.bare = on_bare[0] ? 0 : 1;
+    const NodeId foot = shell.foot_id[i], halo = static_cast<NodeId>(loop[i]) + shell.offset;
+    c.foot[1 - c.bare] = foot, c.top[1 - c.bare] = halo;
+    c.foot[c.bare] = m.add_node(m.node(foot), m.cad_attachment(foot));
+    c.top[c.bare] = m.add_node(m.node(halo));
+    shell.corners.push_back(c);
+  }
+}
+
 void add_junction_hexes(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop,
                         const JunctionNodes& j, const std::array<int, 2>& fan_layer, double delta_wing,
                         double delta_wall, detail::JunctionShell& shell) {
@@ -264,9 +283,17 @@ void add_junction_hexes(const cad::Model& model, const BodyMesh& body, const std
   const int n = static_cast<int>(loop.size()), fan = j.fan;
   const int junction_region = m.region_index("junction");
   auto id = [](int v) { return static_cast<NodeId>(v); };
-  auto side_of = [&](int other) { return other == (fan + n - 1) % n ? 0 : 1; };
-  auto foot = [&](int i, int other) { return i == fan ? shell.fan.foot[side_of(other)] : shell.foot_id[i]; };
-  auto top = [&](int i, int other) { return id(i == fan ? fan_layer[side_of(other)] : loop[i]) + shell.offset; };
+  auto side_of = [&](int i, int other) { return other == (i + n - 1) % n ? 0 : 1; };
+  std::map<int, const detail::JunctionShell::Corner*> corner;
+  for (const auto& c : shell.corners) corner[c.index] = &c;
+  auto foot = [&](int i, int other) {
+    if (corner.count(i)) return corner.at(i)->foot[side_of(i, other)];
+    return i == fan ? shell.fan.foot[side_of(i, other)] : shell.foot_id[i];
+  };
+  auto top = [&](int i, int other) {
+    if (corner.count(i)) return corner.at(i)->top[side_of(i, other)];
+    return id(i == fan ? fan_layer[side_of(i, other)] : loop[i]) + shell.offset;
+  };
   auto hex_of = [&](int a, int b) {
     return std::array<NodeId, 8>{shell.root_id[a], shell.root_id[b], id(loop[b]), id(loop[a]),
                                  foot(a, b),       foot(b, a),       top(b, a),   top(a, b)};

@@ -61,6 +61,18 @@ struct JunctionShell {
     int index = -1;
     std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};
   } fan;
+  /// output.target = "pyfr" (split_bare_corners): a bare surface's root corner (chain[index], where
+  /// one root segment is on the bare surface, the blunt trailing edge's base): one wall foot and
+  /// halo per side, as the fan's (side 0 the root segment into it along the chain). The side with
+  /// the wing layer keeps the strip top's layer node and foot_id, the bare side gets copies of
+  /// them, so the layer side's halo can move onto its rear interfaces' layer edge (one vector, a
+  /// parallelogram for PyFR) and a wedge between the two halos fill the gap (fan_wedge.cpp).
+  struct Corner {
+    int index = -1;
+    int bare = 0;  ///< the side whose root segment lies on the bare surface
+    std::array<mesh::NodeId, 2> foot{mesh::kNoNode, mesh::kNoNode}, top{mesh::kNoNode, mesh::kNoNode};
+  };
+  std::vector<Corner> corners;
   WallFrame wall;
   double strip = 0.0, tip = 0.0;     ///< the lift's strip height; the body's top height
 };
@@ -72,10 +84,11 @@ struct JunctionShell {
 /// side's normal, so the layer ends there with two rear interfaces; the triangles touching the
 /// curve's tip end stay bare (JunctionShell::bare), so the crack ends on the layer's edge instead of
 /// closing to a zero-angle wedge; at its root the junction gets two halos (JunctionShell::fan).
-/// Throws NearFieldError.
+/// With `split_bare_corners` the bare surface's root corners get two halos too, both where the
+/// one would be (JunctionShell::corners). Throws NearFieldError.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface, int crack_curve);
+                                   int bare_surface, int crack_curve, bool split_bare_corners = false);
 
 /// x moved along its CAD entity (a surface or curve) to `target` height above the wall, along the
 /// entity's steepest ascent; updates the attachment.

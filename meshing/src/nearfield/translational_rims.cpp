@@ -45,7 +45,7 @@ void check_elements_around(const mesh::Mesh& m, const std::set<NodeId>& moved) {
 
 }  // namespace
 
-std::size_t make_rear_interfaces_translational(JunctionShell& js) {
+TranslationalRims make_rear_interfaces_translational(JunctionShell& js) {
   mesh::Mesh& m = js.field.mesh;
   const std::set<int> chain(js.chain.begin(), js.chain.end());
   const bool sharp = std::any_of(js.crack.begin(), js.crack.end(), [](char c) { return c != 0; });
@@ -58,9 +58,15 @@ std::size_t make_rear_interfaces_translational(JunctionShell& js) {
     const int side = surface_of.at({std::min(a, b), std::max(a, b)});
     sides_of[a].insert(side), sides_of[b].insert(side);
   }
+  TranslationalRims rims;
   std::map<int, std::vector<int>> nodes_of;  // side -> its own nodes (no corner, no strip top)
-  for (const auto& [v, sides] : sides_of)
-    if (sides.size() == 1 && !chain.count(static_cast<int>(js.layer_body[v]))) nodes_of[*sides.begin()].push_back(v);
+  for (const auto& [v, sides] : sides_of) {
+    if (sides.size() != 1) continue;
+    if (chain.count(static_cast<int>(js.layer_body[v])))
+      rims.root_corner[v] = *sides.begin();
+    else
+      nodes_of[*sides.begin()].push_back(v);
+  }
   std::set<NodeId> moved;
   for (const auto& [side, nodes] : nodes_of) {
     Vec3 mean = Vec3::Zero();
@@ -70,9 +76,11 @@ std::size_t make_rear_interfaces_translational(JunctionShell& js) {
       m.place_node(static_cast<NodeId>(v) + js.offset, m.node(js.layer_body[v]) + mean);
       moved.insert(static_cast<NodeId>(v) + js.offset);
     }
+    rims.side_edge[side] = mean;
   }
   check_elements_around(m, moved);
-  return moved.size();
+  rims.moved = moved.size();
+  return rims;
 }
 
 }  // namespace semimesh::nearfield::detail

@@ -10,14 +10,25 @@
 #include "junction_shell.hpp"
 
 #include <cstddef>
+#include <map>
 
 namespace semimesh::nearfield::detail {
 
+// What make_rear_interfaces_translational did: how many offset nodes it moved, each side's layer
+// edge (its mean one, by CAD surface) and the root row's layer nodes on a rear interface (the
+// strip tops at the trailing edge's root corners), by the side whose rear interface they bound.
+struct TranslationalRims {
+  std::size_t moved = 0;
+  std::map<int, Vec3> side_edge;  ///< side surface -> the layer edge of its rear interfaces
+  std::map<int, int> root_corner;  ///< layer node of a strip top -> its side surface
+};
+
 /// Moves the offset node of every rear-interface node that belongs to one side only (one CAD
 /// surface: upper, lower, tip) so all of that side's layer edges there are the side's mean one.
-/// Left as they are: the root row (pinned at the junction's halos) and the corners two sides
-/// share (e.g. the tip's trailing-edge corners), where no one vector serves both sides. A sharp
-/// trailing edge: the crack's nodes only. Returns the number of offset nodes moved.
-std::size_t make_rear_interfaces_translational(JunctionShell& js);
+/// Left as they are: the root row (pinned at the junction's halos: open_root_corners moves
+/// those of the trailing edge's root corners) and the corners two sides share (e.g. the tip's
+/// trailing-edge corners), where no one vector serves both sides. A sharp trailing edge: the
+/// crack's nodes only.
+TranslationalRims make_rear_interfaces_translational(JunctionShell& js);
 
 }  // namespace semimesh::nearfield::detail

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <memory>
 #include <set>
@@ -215,13 +216,104 @@ TEST(HShell, PyfrTargetMakesEachSidesRearInterfacesTranslational) {
     EXPECT_LT(spread(after), 1e-12) << name;
   }
   EXPECT_EQ(testing::invalid_elements(pyfr.field.mesh), 0);
-  ASSERT_EQ(pyfr.field.mesh.num_nodes(), plain.field.mesh.num_nodes());
+  // Two more nodes at each of the base's two root corners (the base side's halo and foot).
+  ASSERT_EQ(pyfr.field.mesh.num_nodes(), plain.field.mesh.num_nodes() + 4);
+  std::set<std::array<double, 3>> placed;  // the pyfr mesh's node positions
+  for (const Vec3& x : pyfr.field.mesh.nodes()) placed.insert({x.x(), x.y(), x.z()});
   int moved = 0;
-  for (mesh::NodeId v = 0; v < pyfr.field.mesh.num_nodes(); ++v)
-    moved += (pyfr.field.mesh.node(v) - plain.field.mesh.node(v)).norm() > 0.0;
+  for (const Vec3& x : plain.field.mesh.nodes()) moved += placed.count({x.x(), x.y(), x.z()}) == 0;
   EXPECT_GT(moved, 10);
   // The trailing edge's offsets and the wake nodes swept from them, not the layer's.
   EXPECT_LT(moved, static_cast<int>(pyfr.field.mesh.num_nodes() / 4));
+}
+
+// The layer edges of the wing-layer prisms' body vertices on `curve`, by side (the sign of y at the
+// prism's body triangle's centroid: a sharp edge's curve has two) and body node, the root row's
+// strip top included.
+std::map<int, std::map<mesh::NodeId, Vec3>> layer_edges_by_side(const mesh::Mesh& m, int curve) {
+  std::map<int, std::map<mesh::NodeId, Vec3>> edges;
+  const auto& names = m.region_names();
+  const auto region = static_cast<int>(std::find(names.begin(), names.end(), "wing_layer") - names.begin());
+  for (const mesh::Element& e : m.elements()) {
+    if (e.shape != ho::Shape::Prism || e.region != region) continue;
+    const Vec3 c = (m.node(e.vertices[0]) + m.node(e.vertices[1]) + m.node(e.vertices[2])) / 3.0;
+    for (int i = 0; i < 3; ++i) {
+      const mesh::CadAttachment& at = m.cad_attachment(e.vertices[i]);
+      if (at.kind == mesh::CadAttachment::Curve && at.entity == curve)
+        edges[c.y() > 0.0 ? 1 : -1][e.vertices[i]] = m.node(e.vertices[i + 3]) - m.node(e.vertices[i]);
+    }
+  }
+  return edges;
+}
+
+// How many elements use each face of the mesh (by its sorted vertices), the most of them.
+int most_uses_of_a_face(const mesh::Mesh& m) {
+  std::map<std::vector<mesh::NodeId>, int> uses;
+  int most = 0;
+  for (const mesh::Element& e : m.elements())
+    for (const std::vector<int>& f : ho::faces(e.shape)) {
+      std::vector<mesh::NodeId> v;
+      for (int k : f) v.push_back(e.vertices[k]);
+      std::sort(v.begin(), v.end());
+      most = std::max(most, ++uses[v]);
+    }
+  return most;
+}
+
+// For PyFR the trailing edge's root corners too: each side's lowest rear interface (its layer edge
+// at the strip top is the junction's halo) has the side's one layer edge, so it is a row of
+// parallelograms like the others. The junction there has a halo per side (a blunt edge's corners
+// are split as a sharp edge's root is), a wedge of prisms on the wall between them: one more
+// footprint node per blunt corner, every element valid, no face used by three elements. Without
+// the option the lowest edge (the halo bisecting the side's and the base's normals) is far off.
+TEST(HShell, PyfrTargetGivesTheRootCornersTheSidesLayerEdge) {
+  for (const bool sharp : {false, true}) {
+    WakeParams wake = short_wake();
+    if (sharp) wake.te_base = "auto";
+    const Built plain = build(wake, sharp);
+    wake.translational_rear_interfaces = true;
+    const Built pyfr = build(wake, sharp);
+    const std::vector<const char*> curves = sharp ? std::vector<const char*>{"trailing_edge"}
+                                                  : std::vector<const char*>{"te_upper", "te_lower"};
+    int sides = 0;
+    for (const char* name : curves) {
+      const int curve = curve_named(*pyfr.model, name);
+      const auto before = layer_edges_by_side(plain.field.mesh, curve);
+      for (const auto& [side, edges] : layer_edges_by_side(pyfr.field.mesh, curve)) {
+        ASSERT_GT(edges.size(), 5u) << name;
+        EXPECT_LT(spread(edges), 1e-12) << name << " side " << side << (sharp ? " sharp" : " blunt");
+        const auto& old = before.at(side);
+        const auto lowest = std::min_element(old.begin(), old.end(), [&](const auto& a, const auto& b) {
+          return plain.field.mesh.node(a.first).z() < plain.field.mesh.node(b.first).z();
+        });
+        EXPECT_GT((lowest->second - edges.begin()->second).norm(), 1e-5) << name;  // the test can fail
+        ++sides;
+      }
+    }
+    EXPECT_EQ(sides, 2);
+    EXPECT_EQ(testing::invalid_elements(pyfr.field.mesh), 0) << (sharp ? "sharp" : "blunt");
+    EXPECT_LE(most_uses_of_a_face(pyfr.field.mesh), 2) << (sharp ? "sharp" : "blunt");
+    EXPECT_EQ(pyfr.field.footprint.size(), plain.field.footprint.size() + (sharp ? 0 : 2));
+    EXPECT_EQ(pyfr.field.footprint_top.size(), pyfr.field.footprint.size());
+  }
+}
+
+// On a curved wall (a fuselage) the root corners' wedge would not match the junction's split (cut
+// after curving): refused naming the key and the wall, not left open.
+TEST(HShell, PyfrTargetRefusesTheRootCornersOnACurvedWall) {
+  mock_cad::NacaWingParams wing = naca0012(false);
+  wing.fuselage = true;
+  wing.box = mock_cad::fuselage_default_box(wing.wall_radius, 0.0);
+  WakeParams wake = short_wake();
+  EXPECT_NO_THROW(build(wake, false, wing));
+  wake.translational_rear_interfaces = true;
+  try {
+    build(wake, false, wing);
+    ADD_FAILURE() << "expected a NearFieldError";
+  } catch (const NearFieldError& e) {
+    for (const char* expected : {"output.target = \"pyfr\"", "curved wall", "nearfield.topology"})
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
 }
 
 // Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own

@@ -39,8 +39,10 @@
 //    nodes are welded to these (the paper's pyramids on "(split) quadrilaterals").
 //  - for PyFR (WakeParams::translational_rear_interfaces, output.target = "pyfr"): each side's layer
 //    edges over the trailing edge made one vector before the wake is swept (translational_rims.hpp),
-//    so its rear interfaces and the wake's outflow face are parallelograms once split, save at the
-//    tip's and the root's trailing-edge corners (docs/solvers.md).
+//    so its rear interfaces and the wake's outflow face are parallelograms once split; the
+//    trailing edge's root corners too, each with one halo per side (a wedge between them, as a
+//    sharp edge's fan; root_corners.cpp), save on a curved wall; not yet the tip's trailing-edge
+//    corners (docs/solvers.md).
 // Boundary orientation as for the C-type; the base quads are in group "wing".
 #pragma once
 
@@ -69,8 +71,9 @@ struct WakeParams {
   double ratio_end = 1.0;
   std::string te_base = "auto";  ///< the pipeline resolves "auto" (cad_roles) to the detected base's name
   /// Not a key: output.target = "pyfr" sets it. The layer edges over each side's trailing edge made
-  /// one vector (translates), so the rear interfaces below the cut and the wake's outflow face are
-  /// parallelograms once split (PyFR's pyramid rule; docs/solvers.md says what is left).
+  /// one vector (translates), the root corners' halos included (the junction split in two halos
+  /// there), so the rear interfaces below the cut and the wake's outflow face are parallelograms
+  /// once split (PyFR's pyramid rule; docs/solvers.md says what is left).
   bool translational_rear_interfaces = false;
 };
 
