@@ -270,9 +270,9 @@ TEST(HShell, PyfrTargetGivesTheRootCornersTheSidesLayerEdge) {
   for (const bool sharp : {false, true}) {
     WakeParams wake = short_wake();
     if (sharp) wake.te_base = "auto";
-    const Built plain = build(wake, sharp);
+    const HShellBuilt plain = build(wake, sharp);
     wake.translational_rear_interfaces = true;
-    const Built pyfr = build(wake, sharp);
+    const HShellBuilt pyfr = build(wake, sharp);
     const std::vector<const char*> curves = sharp ? std::vector<const char*>{"trailing_edge"}
                                                   : std::vector<const char*>{"te_upper", "te_lower"};
     int sides = 0;
