@@ -22,7 +22,11 @@ if [ "$long" = 1 ]; then bench=ON; fi
 # Ninja for a new build folder (an existing one keeps its generator): it compiles any ready file
 # while Make waits for each library to be finished before starting the next.
 export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSEMIMESH_BUILD_BENCH="$bench"
+# Unity builds (CMake compiles a target's files in batches of 8): each batch parses the shared
+# headers (Eigen, GoogleTest, OpenCASCADE) once instead of once per file, about a third less
+# compile CPU from a clean tree (docs/testing.md). Every target must therefore compile both ways:
+# no two files of one target may define the same name in an anonymous namespace.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DSEMIMESH_BUILD_BENCH="$bench"
 cmake --build build -j"$(nproc)"
 
 # CTest starts the longest tests first when it knows their times: from the last run in this build
