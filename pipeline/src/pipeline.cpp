@@ -18,6 +18,7 @@
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/pyfr_limits.hpp"
+#include "semimesh/ho/splitting/precut_faces.hpp"
 #include "semimesh/ho/splitting/pyramid_columns.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/roles.hpp"
@@ -51,6 +52,8 @@ constexpr double kCurvedBodyVolumeFraction = 0.02;
 // Nodes closer than this (relative to the chord) are one node after the H-type split: the split and
 // the pre-cut skin compute the same points up to round-off.
 constexpr double kWeldTolerance = 1e-9;
+// A fan's cut node this close to the curved face (times the chord) stays: far inside the weld's reach.
+constexpr double kPrecutTolerance = 1e-12;
 
 // The stage's progress callback: forwards to `progress`, never letting the fraction go back (the
 // parts of a stage report at their own start; a part may end below where the next starts).
@@ -369,6 +372,7 @@ struct LinearMesh {
   mesh::Mesh mesh;
   std::vector<nearfield::LayerStack> stacks;  ///< every layer element, with its direction(s)
   nearfield::WakeBlock wake;                  ///< H-type: the wake block (no hexes otherwise)
+  std::vector<ho::PrecutFace> precut_faces;   ///< H-type: the fan's cuts on the junction hexes' faces
 };
 
 // The wing layer's ratio and its field along the body (from boundary_layer, y+ resolved).
@@ -420,6 +424,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   result.wake.streamwise_cells = near.wake.streamwise_cells;
   result.wake.gap = near.wake.gap;
   nearfield::WakeBlock wake = near.wake;
+  std::vector<ho::PrecutFace> precut_faces = near.precut_faces;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
@@ -430,7 +435,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
                                      junction ? config.wall_layer.thickness : 0.0, report);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh), std::move(far.stacks), std::move(wake)};
+  return {std::move(far.mesh), std::move(far.stacks), std::move(wake), std::move(precut_faces)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -482,7 +487,14 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
+    // A sharp trailing edge's fan: its cuts, straight, must be where the split puts the hexes'
+    // nodes on their curved faces (a curved wall), or the weld misses them.
+    mesh::Mesh followed;
+    if (weld && coarse.order() > 1 && !linear.precut_faces.empty()) {
+      followed = coarse;
+      ho::follow_precut_faces(followed, linear.precut_faces, kPrecutTolerance * chord);
+    }
+    StackSplit fine = split_stacks(followed.elements().empty() ? coarse : followed, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);

@@ -91,6 +91,7 @@ std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::Jun
   for (int leg : {0, 2}) {  // the middle leg's plane is inside the fan
     planes.emplace_back(rows.low[leg].begin(), rows.low[leg].end());
     planes.back().insert(rows.high[leg].begin(), rows.high[leg].end());
+    if (fractions) field.precut_faces.push_back({rows.low[leg], rows.high[leg], at_root});
   }
   // Each band between two interfaces as two prisms (its diagonal from side 0's inner corner):
   // the fan opens by nearly 180 degrees, so a band is a sliver whose top, a quad, would carry a
