@@ -487,10 +487,10 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    // A sharp trailing edge's fan: its cuts, straight, must be where the split puts the hexes'
-    // nodes on their curved faces (a curved wall), or the weld misses them.
+    // A sharp trailing edge's fan: its cuts must be where the split puts the hexes' nodes on their
+    // faces (curved at order P on a curved wall, on the chord at order 1), or the weld misses them.
     mesh::Mesh followed;
-    if (weld && coarse.order() > 1 && !linear.precut_faces.empty()) {
+    if (weld && !linear.precut_faces.empty()) {
       followed = coarse;
       ho::follow_precut_faces(followed, linear.precut_faces, kPrecutTolerance * chord);
     }

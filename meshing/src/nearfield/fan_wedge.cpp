@@ -17,14 +17,25 @@ struct FanRows {
   std::array<std::vector<NodeId>, 3> low, high;
 };
 
-FanRows cut_fan_legs(mesh::Mesh& m, NodeId r, NodeId top, const FanLegs& legs, const std::vector<double>& at_root,
-                     const std::vector<double>& at_top, InterfaceNodes& interface_node) {
+// The cut of a leg on the wall at `x` (on its chord): on a curved wall, the wall's point under it,
+// on the CAD, so that curving bends the fan's wall faces with the wall (a node off the CAD keeps
+// them on the chord, up to the wall's sag under the leg).
+NodeId wall_cut(mesh::Mesh& m, const detail::WallFrame& wall, int wall_surface, const Vec3& x) {
+  if (!wall.curved) return m.add_node(x);
+  const cad::SurfaceProjection p = wall.curved->project(x, wall.root_uv);
+  return m.add_node(p.point, {mesh::CadAttachment::Surface, wall_surface, p.uv.x(), p.uv.y()});
+}
+
+FanRows cut_fan_legs(mesh::Mesh& m, const detail::JunctionShell& js, int wall_surface, const FanLegs& legs,
+                     const std::vector<double>& at_root, const std::vector<double>& at_top,
+                     InterfaceNodes& interface_node) {
+  const NodeId r = js.root_id[js.fan.index], top = static_cast<NodeId>(js.chain[js.fan.index]);
   FanRows rows;
   for (int leg : {0, 1, 2}) {
     const NodeId foot = legs.foot[leg], halo = legs.top[leg];
     rows.low[leg] = {r}, rows.high[leg] = {top};
     for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
-      rows.low[leg].push_back(m.add_node(m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
+      rows.low[leg].push_back(wall_cut(m, js.wall, wall_surface, m.node(r) + at_root[k] * (m.node(foot) - m.node(r))));
       rows.high[leg].push_back(m.add_node(m.node(top) + at_top[k] * (m.node(halo) - m.node(top))));
       interface_node[{r, foot, static_cast<int>(k)}] = rows.low[leg].back();
       interface_node[{top, halo, static_cast<int>(k)}] = rows.high[leg].back();
@@ -86,7 +97,7 @@ std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::Jun
       fail("the wing layer's ratio differs between the sharp trailing edge's root " + point_label(m.node(r)) +
            " and the top of its root strip " + point_label(m.node(top)) +
            " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
-  const FanRows rows = cut_fan_legs(m, r, top, legs, at_root, at_top, interface_node);
+  const FanRows rows = cut_fan_legs(m, js, wall_surface, legs, at_root, at_top, interface_node);
   std::vector<std::set<NodeId>> planes;
   for (int leg : {0, 2}) {  // the middle leg's plane is inside the fan
     planes.emplace_back(rows.low[leg].begin(), rows.low[leg].end());
