@@ -487,14 +487,7 @@ mesh::Mesh split(const Config& config, const mesh::Mesh& coarse, const LinearMes
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    // A sharp trailing edge's fan: its cuts must be where the split puts the hexes' nodes on their
-    // faces (curved at order P on a curved wall, on the chord at order 1), or the weld misses them.
-    mesh::Mesh followed;
-    if (weld && !linear.precut_faces.empty()) {
-      followed = coarse;
-      ho::follow_precut_faces(followed, linear.precut_faces, kPrecutTolerance * chord);
-    }
-    StackSplit fine = split_stacks(followed.elements().empty() ? coarse : followed, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
+    StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);
@@ -724,6 +717,10 @@ RunResult run(const Config& config, Progress& progress) {
   result.layers.layers = config.boundary_layer.split.layers;
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks
+  // A sharp trailing edge's fan: its cuts must be where the split puts the hexes' nodes on their
+  // faces (curved at order P on a curved wall, on the chord at order 1), or the weld misses them.
+  if (linear.wake.hexes > 0 && result.layers.layers > 1 && !linear.precut_faces.empty())
+    ho::follow_precut_faces(result.mesh, linear.precut_faces, kPrecutTolerance * chord);
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, result.mesh, linear, chord, progress, result, inherited);
   if (config.output.target == OutputTarget::Pyfr) {
