@@ -8,6 +8,7 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/layer_keys.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/pyramid_columns.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/splitting/precut_faces.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/pole_chart.cpp

@@ -18,6 +18,7 @@
 #include "semimesh/pipeline/output_formats.hpp"
 #include "semimesh/pipeline/pictures.hpp"
 #include "semimesh/pipeline/pyfr_limits.hpp"
+#include "semimesh/ho/splitting/precut_faces.hpp"
 #include "semimesh/ho/splitting/pyramid_columns.hpp"
 #include "semimesh/pipeline/report.hpp"
 #include "semimesh/pipeline/roles.hpp"
@@ -51,6 +52,8 @@ constexpr double kCurvedBodyVolumeFraction = 0.02;
 // Nodes closer than this (relative to the chord) are one node after the H-type split: the split and
 // the pre-cut skin compute the same points up to round-off.
 constexpr double kWeldTolerance = 1e-9;
+// A fan's cut node this close to the curved face (times the chord) stays: far inside the weld's reach.
+constexpr double kPrecutTolerance = 1e-12;
 
 // The stage's progress callback: forwards to `progress`, never letting the fraction go back (the
 // parts of a stage report at their own start; a part may end below where the next starts).
@@ -369,6 +372,7 @@ struct LinearMesh {
   mesh::Mesh mesh;
   std::vector<nearfield::LayerStack> stacks;  ///< every layer element, with its direction(s)
   nearfield::WakeBlock wake;                  ///< H-type: the wake block (no hexes otherwise)
+  std::vector<ho::PrecutFace> precut_faces;   ///< H-type: the fan's cuts on the junction hexes' faces
 };
 
 // The wing layer's ratio and its field along the body (from boundary_layer, y+ resolved).
@@ -420,6 +424,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   result.wake.streamwise_cells = near.wake.streamwise_cells;
   result.wake.gap = near.wake.gap;
   nearfield::WakeBlock wake = near.wake;
+  std::vector<ho::PrecutFace> precut_faces = near.precut_faces;
   result.thickness_min = near.thickness_min;
   result.thickness_max = near.thickness_max;
   for (const nearfield::Warning& w : near.warnings)
@@ -430,7 +435,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
                                      junction ? config.wall_layer.thickness : 0.0, report);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh), std::move(far.stacks), std::move(wake)};
+  return {std::move(far.mesh), std::move(far.stacks), std::move(wake), std::move(precut_faces)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -713,6 +718,10 @@ RunResult run(const Config& config, Progress& progress) {
   result.layers.layers = config.boundary_layer.split.layers;
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks
+  // A sharp trailing edge's fan: its cuts must be where the split puts the hexes' nodes on their
+  // faces (curved at order P on a curved wall, on the chord at order 1), or the weld misses them.
+  if (linear.wake.hexes > 0 && result.layers.layers > 1 && !linear.precut_faces.empty())
+    ho::follow_precut_faces(result.mesh, linear.precut_faces, kPrecutTolerance * chord);
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
   if (config.output.target == OutputTarget::Pyfr) {

@@ -27,15 +27,26 @@ struct FanRows {
   std::vector<std::vector<NodeId>> low, high;
 };
 
-FanRows cut_fan_legs(mesh::Mesh& m, const Wedge& w, const std::vector<double>& at_root,
-                     const std::vector<double>& at_top, InterfaceNodes& interface_node) {
+// The cut of a leg on the wall at `x` (on its chord): on a curved wall, the wall's point under it,
+// on the CAD, so that curving bends the wedge's wall faces with the wall (a node off the CAD keeps
+// them on the chord, up to the wall's sag under the leg).
+NodeId wall_cut(mesh::Mesh& m, const detail::WallFrame& wall, int wall_surface, const Vec3& x) {
+  if (!wall.curved) return m.add_node(x);
+  const cad::SurfaceProjection p = wall.curved->project(x, wall.root_uv);
+  return m.add_node(p.point, {mesh::CadAttachment::Surface, wall_surface, p.uv.x(), p.uv.y()});
+}
+
+FanRows cut_fan_legs(mesh::Mesh& m, const Wedge& w, const detail::WallFrame& wall, int wall_surface,
+                     const std::vector<double>& at_root, const std::vector<double>& at_top,
+                     InterfaceNodes& interface_node) {
   FanRows rows;
   rows.low.resize(w.foot.size()), rows.high.resize(w.foot.size());
   for (std::size_t leg = 0; leg < w.foot.size(); ++leg) {
     const NodeId foot = w.foot[leg], halo = w.halo[leg];
     rows.low[leg] = {w.r}, rows.high[leg] = {w.top};
     for (std::size_t k = 1; k + 1 < at_root.size(); ++k) {
-      rows.low[leg].push_back(m.add_node(m.node(w.r) + at_root[k] * (m.node(foot) - m.node(w.r))));
+      const Vec3 on_chord = m.node(w.r) + at_root[k] * (m.node(foot) - m.node(w.r));
+      rows.low[leg].push_back(wall_cut(m, wall, wall_surface, on_chord));
       rows.high[leg].push_back(m.add_node(m.node(w.top) + at_top[k] * (m.node(halo) - m.node(w.top))));
       interface_node[{w.r, foot, static_cast<int>(k)}] = rows.low[leg].back();
       interface_node[{w.top, halo, static_cast<int>(k)}] = rows.high[leg].back();
@@ -68,8 +79,9 @@ void add_fan_piece(NearField& field, int wall_surface, const Wedge& w, ho::Shape
 // The wedge (R, the feet / W, the halos) as prisms on the wall, cut in advance at the wing layer's
 // interfaces (`fractions`); the nodes on its two outer legs' faces R-W-H-L, which it shares with
 // junction hexes.
-std::vector<std::set<NodeId>> fill_wedge(NearField& field, const Wedge& w, int wall_surface,
-                                         const LayerFractions& fractions, InterfaceNodes& interface_node) {
+std::vector<std::set<NodeId>> fill_wedge(NearField& field, const Wedge& w, const detail::WallFrame& wall,
+                                         int wall_surface, const LayerFractions& fractions,
+                                         InterfaceNodes& interface_node) {
   mesh::Mesh& m = field.mesh;
   std::vector<double> at_root{0.0, 1.0}, at_top{0.0, 1.0};
   if (fractions) at_root = fractions(m.node(w.r), field.wake), at_top = fractions(m.node(w.top), field.wake);
@@ -78,11 +90,12 @@ std::vector<std::set<NodeId>> fill_wedge(NearField& field, const Wedge& w, int w
       fail("the wing layer's ratio differs between " + w.where + " " + point_label(m.node(w.r)) +
            " and the top of its root strip " + point_label(m.node(w.top)) +
            " (a boundary_layer.ratio_line?): the junction's wedge there takes one ratio; make it the same at both");
-  const FanRows rows = cut_fan_legs(m, w, at_root, at_top, interface_node);
+  const FanRows rows = cut_fan_legs(m, w, wall, wall_surface, at_root, at_top, interface_node);
   std::vector<std::set<NodeId>> planes;
   for (std::size_t leg : {std::size_t{0}, w.foot.size() - 1}) {  // the inner legs' planes are inside the wedge
     planes.emplace_back(rows.low[leg].begin(), rows.low[leg].end());
     planes.back().insert(rows.high[leg].begin(), rows.high[leg].end());
+    if (fractions) field.precut_faces.push_back({rows.low[leg], rows.high[leg], at_root});
   }
   // Each band between two interfaces as two prisms (its diagonal from the first leg's inner
   // corner): the sharp edge's fan opens by nearly 180 degrees, so a band is a sliver whose top, a
@@ -129,7 +142,7 @@ std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::Jun
   const Wedge w{js.root_id[js.fan.index], static_cast<NodeId>(js.chain[js.fan.index]),
                 {legs.foot.begin(), legs.foot.end()}, {legs.top.begin(), legs.top.end()},
                 "the sharp trailing edge's root"};
-  return fill_wedge(field, w, wall_surface, fractions, interface_node);
+  return fill_wedge(field, w, js.wall, wall_surface, fractions, interface_node);
 }
 
 std::vector<std::set<NodeId>> fill_corner_wedges(NearField& field, const detail::JunctionShell& js, int wall_surface,
@@ -138,7 +151,8 @@ std::vector<std::set<NodeId>> fill_corner_wedges(NearField& field, const detail:
   for (const detail::JunctionShell::Corner& c : js.corners) {
     const Wedge w{js.root_id[c.index], static_cast<NodeId>(js.chain[c.index]), {c.foot[0], c.foot[1]},
                   {c.top[0], c.top[1]}, "the trailing edge's root corner"};
-    for (auto& plane : fill_wedge(field, w, wall_surface, fractions, interface_node)) planes.push_back(std::move(plane));
+    for (auto& plane : fill_wedge(field, w, js.wall, wall_surface, fractions, interface_node))
+      planes.push_back(std::move(plane));
   }
   return planes;
 }

@@ -145,6 +145,9 @@ using InterfaceNodes = std::map<std::tuple<NodeId, NodeId, int>, NodeId>;
 // a fan from R the split cannot make: the prisms are given here already cut there (an inner
 // prism and bands of prisms around it, at the interfaces the split will use: `fractions`), and
 // the weld after the split joins their nodes to the hexes' (as the far field's pre-cut skin quads).
+// On a curved wall the legs' cuts on the wall are the wall's points (on the CAD), and the hexes'
+// faces R-L-H-W cut for the fan go to field.precut_faces: the hexes' faces are curved or straight
+// once the order is raised, and the cuts must follow them then (ho::follow_precut_faces).
 // Returns the nodes on each face R-W-H-L the fan shares with a junction hex (none without a fan).
 std::vector<std::set<NodeId>> fill_fan_wedge(NearField& field, const detail::JunctionShell& js, const FanLegs& legs,
                                              int wall_surface, const LayerFractions& fractions,

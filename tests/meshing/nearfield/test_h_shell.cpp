@@ -41,7 +41,7 @@ mock_cad::NacaWingParams naca0012(bool sharp) {
 }
 
 HShellBuilt build(const WakeParams& wake, bool sharp = false, const mock_cad::NacaWingParams& wing = naca0012(false),
-            double thickness = 0.05, double wall_thickness = 0.04) {
+                  double thickness = 0.05, double wall_thickness = 0.04, const LayerFractions& fractions = {}) {
   HShellBuilt b;
   mock_cad::NacaWingParams shape = wing;
   shape.sharp_te = shape.sharp_te || sharp;
@@ -62,7 +62,8 @@ HShellBuilt build(const WakeParams& wake, bool sharp = false, const mock_cad::Na
   roles.wall_surface = *b.model->find_surface("wall");
   ShellParams shell;
   shell.thickness = thickness;
-  b.field = build_h_shell(*b.model, meshes, roles, shell, JunctionParams{}, wall_thickness, wake, b.model->bbox(), {});
+  b.field =
+      build_h_shell(*b.model, meshes, roles, shell, JunctionParams{}, wall_thickness, wake, b.model->bbox(), fractions);
   return b;
 }
 
@@ -486,6 +487,46 @@ TEST(HShellSharp, SweptEdgesLowestRearInterfacesStandSteeplyOverTheFanTop) {
     ++legs;
   }
   EXPECT_GE(legs, 3);  // the fan's three legs
+}
+
+// A sharp edge on a fuselage (issue #24): the fan's cuts of its legs on the wall are the cylinder's
+// points (on the CAD, so curving bends the fan's wall faces with it; on the chord they were up to
+// the wall's sag below it), and the junction hexes' faces R-L-H-W the fan shares, cut at the wing
+// layer's interfaces, are recorded for the curved mesh (ho::follow_precut_faces).
+TEST(HShellSharpOnAFuselage, FanCutsOnTheCylinderAndTheSharedHexFacesRecorded) {
+  constexpr double kRadius = 1.5;
+  mock_cad::NacaWingParams wing;
+  wing.code = "0006";
+  wing.sweep_deg = 21.2;
+  wing.span = 1.0;
+  wing.fuselage = true;
+  wing.wall_radius = kRadius;
+  wing.box = {-2, -3, -5, 3, 3, 2};
+  WakeParams wake = short_wake();
+  wake.te_base = "auto";
+  const std::vector<double> cuts{0.0, 0.1, 0.3, 1.0};
+  const LayerFractions fractions = [&](const Eigen::Vector3d&, const WakeBlock&) { return cuts; };
+  const HShellBuilt b = build(wake, /*sharp=*/true, wing, /*thickness=*/0.05, /*wall_thickness=*/0.04, fractions);
+  const mesh::Mesh& m = b.field.mesh;
+  const int wall = *b.model->find_surface("wall");
+  ASSERT_EQ(b.field.precut_faces.size(), 2u);  // one per side leg
+  for (const ho::PrecutFace& p : b.field.precut_faces) {
+    ASSERT_EQ(p.low.size(), cuts.size());
+    ASSERT_EQ(p.high.size(), cuts.size());
+    EXPECT_EQ(p.fractions, cuts);
+    EXPECT_EQ(p.low.front(), b.field.precut_faces[0].low.front());  // both from the root R
+    EXPECT_GE(m.find_face({p.low.front(), p.low.back(), p.high.back(), p.high.front()}), 0) << "the hex's face";
+    const Vec3 r = m.node(p.low.front()), foot = m.node(p.low.back());
+    for (std::size_t k = 1; k + 1 < cuts.size(); ++k) {
+      const Vec3 x = m.node(p.low[k]);
+      EXPECT_NEAR(std::hypot(x.y(), x.z() + kRadius), kRadius, 1e-10) << "cut " << k << " at " << x.transpose();
+      EXPECT_EQ(m.cad_attachment(p.low[k]).kind, mesh::CadAttachment::Surface);
+      EXPECT_EQ(m.cad_attachment(p.low[k]).entity, wall);
+      // Over the chord's point, within the wall's sag across the leg (d^2 / 8R).
+      const double d = (foot - r).norm();
+      EXPECT_LT((x - (r + cuts[k] * (foot - r))).norm(), d * d / (8 * kRadius) + 1e-12);
+    }
+  }
 }
 
 TEST(HShellBadInput, WakeKeysOutOfReachAreNamed) {

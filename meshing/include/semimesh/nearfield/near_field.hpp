@@ -14,6 +14,7 @@
 // which element is a layer, in which direction, from element shapes or indices.
 #pragma once
 
+#include "semimesh/ho/splitting/precut_faces.hpp"
 #include "semimesh/mesh/mesh.hpp"
 
 #include <array>
@@ -84,6 +85,9 @@ struct NearField {
                                             ///< face (junction hexes: the wing surface of their R-W face)
   int junction_hexes = 0;                   ///< C-type: hexes along the root loop(s)
   WakeBlock wake;                           ///< H-type
+  std::vector<ho::PrecutFace> precut_faces;  ///< H-type, a sharp trailing edge: the junction hexes' faces
+                                            ///< R-L-H-W the fan shares cut at the wing layer's interfaces
+                                            ///< (ho::follow_precut_faces puts the cuts on the curved faces)
   double thickness_min = 0.0;               ///< smallest layer thickness used (after local reduction)
   double thickness_max = 0.0;               ///< largest layer thickness used
   std::vector<Warning> warnings;
