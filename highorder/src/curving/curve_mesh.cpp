@@ -20,6 +20,10 @@ using detail::CadPlace;
 using mesh::CadAttachment;
 using mesh::NodeId;
 
+// Edges, faces or elements placed in parallel before their nodes are made (bounds the memory of
+// the placed positions; large enough that the threads rarely wait at a block's end).
+constexpr std::size_t kBlock = 4096;
+
 class Curver {
  public:
   Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params, ProgressCallback progress)
@@ -165,17 +169,17 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
   for (int i = 0; i < P - 1; ++i) fraction[i] = 0.5 * (seg(i + 2, 0) + 1.0);
 
   // Positions in parallel, then the nodes in edge order (ids independent of the thread count).
-  std::vector<EdgeNodes> placed(in_.edges().size());
-  detail::parallel_for(
-      placed.size(), model_.thread_safe(),
-      [&](std::size_t e) { placed[e] = place_edge(e, fraction, on_boundary[e] != 0); }, edge_progress_, "edges");
   edge_interior_.resize(in_.edges().size());
-  for (std::size_t e = 0; e < placed.size(); ++e) {
-    note(placed[e]);
-    stats_.edges_on_curves += placed[e].place == CadPlace::Curve ? 1 : 0;
-    stats_.edges_on_surfaces += placed[e].place == CadPlace::Surface ? 1 : 0;
-    for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(placed[e].x[i], placed[e].att[i]));
-  }
+  detail::parallel_blocks(
+      in_.edges().size(), model_.thread_safe(), kBlock,
+      [&](std::size_t e) { return place_edge(e, fraction, on_boundary[e] != 0); },
+      [&](std::size_t e, const EdgeNodes& placed) {
+        note(placed);
+        stats_.edges_on_curves += placed.place == CadPlace::Curve ? 1 : 0;
+        stats_.edges_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
+        for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(placed.x[i], placed.att[i]));
+      },
+      edge_progress_, "edges");
 }
 
 Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
@@ -241,23 +245,23 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
 
 void Curver::curve_faces(const std::vector<char>& on_boundary) {
   const int P = params_.order;
-  std::vector<FaceNodes> placed(in_.faces().size());
-  detail::parallel_for(
-      placed.size(), model_.thread_safe(),
-      [&](std::size_t f) { placed[f] = place_face(f, on_boundary[f] != 0); }, face_progress_, "faces");
   face_interior_.resize(in_.faces().size());
-  for (std::size_t f = 0; f < placed.size(); ++f) {
-    const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
-    const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
-    if (ext.interior.empty()) continue;
-    note(placed[f]);
-    stats_.faces_on_surfaces += placed[f].place == CadPlace::Surface ? 1 : 0;
-    // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
-    const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
-    face_interior_[f].assign(ext.interior.size(), mesh::kNoNode);
-    for (int j : ext.interior)
-      face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(placed[f].x.row(j).transpose(), placed[f].att[j]);
-  }
+  detail::parallel_blocks(
+      in_.faces().size(), model_.thread_safe(), kBlock,
+      [&](std::size_t f) { return place_face(f, on_boundary[f] != 0); },
+      [&](std::size_t f, const FaceNodes& placed) {
+        const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+        const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
+        if (ext.interior.empty()) return;
+        note(placed);
+        stats_.faces_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
+        // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
+        const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
+        face_interior_[f].assign(ext.interior.size(), mesh::kNoNode);
+        for (int j : ext.interior)
+          face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(placed.x.row(j).transpose(), placed.att[j]);
+      },
+      face_progress_, "faces");
 }
 
 std::vector<NodeId> Curver::element_node_ids(std::size_t e) const {
@@ -309,23 +313,28 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order.
   const int P = params_.order;
   const std::size_t num_elements = in_.elements().size();
-  std::vector<std::vector<NodeId>> element_ids(num_elements);
-  std::vector<Eigen::MatrixXd> interior(num_elements);  // [elements] (nodes, 3), interior rows filled
-  detail::parallel_for(num_elements, true, [&](std::size_t e) {
-    element_ids[e] = element_node_ids(e);
-    const detail::HarmonicExtension& ext = detail::harmonic_extension(in_.elements()[e].shape, P, params_.node_set);
-    if (ext.interior.empty()) return;
-    Eigen::MatrixXd X = Eigen::MatrixXd::Zero(element_ids[e].size(), 3);
-    for (int j : ext.boundary) X.row(j) = out_.node(element_ids[e][j]).transpose();
-    extend_harmonically(ext, X);
-    interior[e] = std::move(X);
-  }, volume_progress_, "volumes");
-  for (std::size_t e = 0; e < num_elements; ++e) {
-    const Shape shape = in_.elements()[e].shape;
-    for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
-      element_ids[e][j] = out_.add_node(interior[e].row(j).transpose());
-    out_.add_element(shape, element_ids[e], in_.elements()[e].region);
-  }
+  struct VolumeNodes {
+    std::vector<NodeId> ids;  // canonical, kNoNode for the interior until made
+    Eigen::MatrixXd x;        // (nodes, 3), interior rows filled
+  };
+  detail::parallel_blocks(
+      num_elements, true, kBlock,
+      [&](std::size_t e) {
+        VolumeNodes v{element_node_ids(e), {}};
+        const detail::HarmonicExtension& ext = detail::harmonic_extension(in_.elements()[e].shape, P, params_.node_set);
+        if (ext.interior.empty()) return v;
+        v.x = Eigen::MatrixXd::Zero(v.ids.size(), 3);
+        for (int j : ext.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
+        extend_harmonically(ext, v.x);
+        return v;
+      },
+      [&](std::size_t e, VolumeNodes& v) {
+        const Shape shape = in_.elements()[e].shape;
+        for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
+          v.ids[j] = out_.add_node(v.x.row(j).transpose());
+        out_.add_element(shape, v.ids, in_.elements()[e].region);
+      },
+      volume_progress_, "volumes");
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
     out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
