@@ -108,10 +108,26 @@ std::vector<int> trailing_edge_vertices(const cad::Model& model, const surface::
   return vertices;
 }
 
-// A body face at the trailing edge's vertices that neither touches the root nor is a tip face:
-// the trailing edge goes on in it past the base or the sharp curve (a wing of several spanwise
-// panels, a crank), where the H-type's wake block, swept from the one trailing-edge face or curve,
-// would run into the next panel's layer. -1 when the trailing edge reaches the tip.
+// How far a trailing edge may go on into a face, along the span, and still end at the tip: a
+// fraction of the span above the trailing edge's far end. A tip's pieces (a round or filleted tip,
+// slivers at its trailing edge) rise by about the section's thickness; a wing's next panel by its
+// own length.
+constexpr double kPastTipSpan = 0.1;
+
+// The highest of a face's vertices along the span.
+double top_of(const cad::Model& model, int surface, const cad::Vec3& span) {
+  double top = -1e300;
+  for (const cad::Loop& loop : model.loops(surface))
+    for (const cad::CurveUse& use : loop.uses)
+      for (int v : model.curve_vertices(use.curve)) top = std::max(top, model.vertex(v).point.dot(span));
+  return top;
+}
+
+// A body face at the trailing edge's vertices that neither touches the root nor is a tip and that
+// rises along the span beyond the trailing edge's far end (kPastTipSpan): the trailing edge goes on
+// in it past the base or the sharp curve (a wing of several spanwise panels, a crank), where the
+// H-type's wake block, swept from the one trailing-edge face or curve, would run into the next
+// panel's layer. -1 when the trailing edge reaches the tip.
 int face_past_trailing_edge(const cad::Model& model, const surface::CadRoles& roles, const std::vector<int>& vertices) {
   std::set<int> at_root;
   for (int c = 0; c < model.num_curves(); ++c) {
@@ -120,13 +136,17 @@ int face_past_trailing_edge(const cad::Model& model, const surface::CadRoles& ro
     if (on_wall)
       for (const cad::SurfaceUse& u : uses) at_root.insert(u.surface);
   }
+  double te_top = -1e300;
+  for (int v : vertices) te_top = std::max(te_top, model.vertex(v).point.dot(roles.span_direction));
   for (int v : vertices)
     for (int c : model.curves_of_vertex(v))
       for (const cad::SurfaceUse& u : model.surfaces_of_curve(c)) {
         const int s = u.surface;
         const bool body = std::binary_search(roles.body.begin(), roles.body.end(), s);
         const bool tip = std::binary_search(roles.tip.begin(), roles.tip.end(), s);
-        if (body && !tip && !at_root.count(s) && s != roles.te_base) return s;
+        if (body && !tip && !at_root.count(s) && s != roles.te_base &&
+            top_of(model, s, roles.span_direction) > te_top + kPastTipSpan * roles.span)
+          return s;
       }
   return -1;
 }
@@ -142,8 +162,8 @@ std::pair<std::string, std::string> near_field_topology(const cad::Model& model,
   if (past < 0)
     return {"H", "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"};
   return {"C", fmt::format("nearfield.topology = \"C\": the trailing edge goes on past its root face or curve into {}, "
-                           "which does not touch the root (several spanwise faces, a crank); the H-type's wake block "
-                           "stands on one trailing-edge face or curve from the root to the tip.\n",
+                           "which does not touch the root and goes on along the span (several spanwise faces, a crank); "
+                           "the H-type's wake block stands on one trailing-edge face or curve from the root to the tip.\n",
                            cad::surface_label(model, past))};
 }
 

@@ -162,6 +162,9 @@ TEST(InitCommand, BodyOnlyFileGetsItsWallPlaneFromTheRootCap) {
   EXPECT_EQ(c.sizing.size.te_size, 0.0);
   EXPECT_DOUBLE_EQ(c.wake.direction[0], 1.0);  // x, in the wall plane y = 0
   EXPECT_DOUBLE_EQ(c.wake.direction[1], 0.0);
+  // The sharp trailing edge ends among the tip's small faces (not all of them flat tips): it reaches
+  // the tip, the H-type.
+  EXPECT_EQ(c.nearfield.topology, "H");
 }
 
 // The near field init writes follows the trailing edge: a one-panel wing whose base (or sharp edge)
