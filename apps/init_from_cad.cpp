@@ -2,6 +2,7 @@
 
 #include "unit_doubt.hpp"
 
+#include "semimesh/cad/labels.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 #include "semimesh/surface/root_plane.hpp"
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
+#include <utility>
 #include <string>
 
 namespace semimesh::app {
@@ -65,12 +68,18 @@ void scale_lengths(pipeline::Config& config, double factor) {
           key.set(config, round_to_4_digits(std::get<double>(key.get(config)) * factor));
 }
 
-// Whether the H-type near field can stand on the body: a trailing-edge base, or a sharp trailing
-// edge (a curve between two body surfaces leaving the wall in the root's downstream half; the
-// leading edge of a two-face skin is the other such curve, in the upstream half). The near field
-// finds these the same way (h_shell.hpp).
-bool allows_h_type(const cad::Model& model, const surface::CadRoles& roles) {
-  if (roles.te_base) return true;
+// The vertices of the trailing edge an H-type wake block can stand on: the base's, or those of a
+// sharp trailing edge (a curve between two body surfaces leaving the wall in the root's downstream
+// half; the leading edge of a two-face skin is the other such curve, in the upstream half); empty
+// when the body has neither. The near field finds these the same way (h_shell.hpp).
+std::vector<int> trailing_edge_vertices(const cad::Model& model, const surface::CadRoles& roles) {
+  std::vector<int> vertices;
+  if (roles.te_base) {
+    for (const cad::Loop& loop : model.loops(*roles.te_base))
+      for (const cad::CurveUse& use : loop.uses)
+        for (int v : model.curve_vertices(use.curve)) vertices.push_back(v);
+    return vertices;
+  }
   const cad::Vec3 n = roles.span_direction, x = cad::Vec3::UnitX();
   const cad::Vec3 streamwise = (x - x.dot(n) * n).normalized();
   auto is_body = [&](int s) { return std::binary_search(roles.body.begin(), roles.body.end(), s); };
@@ -81,6 +90,7 @@ bool allows_h_type(const cad::Model& model, const surface::CadRoles& roles) {
     return false;
   };
   double lo = 1e300, hi = -1e300, sharp = -1e300;
+  int sharp_curve = -1;
   for (int c = 0; c < model.num_curves(); ++c) {
     const auto& uses = model.surfaces_of_curve(c);
     if (uses.size() != 2) continue;
@@ -90,10 +100,71 @@ bool allows_h_type(const cad::Model& model, const surface::CadRoles& roles) {
     for (int v : model.curve_vertices(c)) {
       const double along = model.vertex(v).point.dot(streamwise);
       if (root) lo = std::min(lo, along), hi = std::max(hi, along);
-      if (body_body && on_wall(v)) sharp = std::max(sharp, along);
+      if (body_body && on_wall(v) && along > sharp) sharp = along, sharp_curve = c;
     }
   }
-  return sharp > 0.5 * (lo + hi);
+  if (sharp_curve >= 0 && sharp > 0.5 * (lo + hi))
+    for (int v : model.curve_vertices(sharp_curve)) vertices.push_back(v);
+  return vertices;
+}
+
+// How far a trailing edge may go on into a face, along the span, and still end at the tip: a
+// fraction of the span above the trailing edge's far end. A tip's pieces (a round or filleted tip,
+// slivers at its trailing edge) rise by about the section's thickness; a wing's next panel by its
+// own length.
+constexpr double kPastTipSpan = 0.1;
+
+// The highest of a face's vertices along the span.
+double top_of(const cad::Model& model, int surface, const cad::Vec3& span) {
+  double top = -1e300;
+  for (const cad::Loop& loop : model.loops(surface))
+    for (const cad::CurveUse& use : loop.uses)
+      for (int v : model.curve_vertices(use.curve)) top = std::max(top, model.vertex(v).point.dot(span));
+  return top;
+}
+
+// A body face at the trailing edge's vertices that neither touches the root nor is a tip and that
+// rises along the span beyond the trailing edge's far end (kPastTipSpan): the trailing edge goes on
+// in it past the base or the sharp curve (a wing of several spanwise panels, a crank), where the
+// H-type's wake block, swept from the one trailing-edge face or curve, would run into the next
+// panel's layer. -1 when the trailing edge reaches the tip.
+int face_past_trailing_edge(const cad::Model& model, const surface::CadRoles& roles, const std::vector<int>& vertices) {
+  std::set<int> at_root;
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const auto& uses = model.surfaces_of_curve(c);
+    const bool on_wall = std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == roles.wall; });
+    if (on_wall)
+      for (const cad::SurfaceUse& u : uses) at_root.insert(u.surface);
+  }
+  double te_top = -1e300;
+  for (int v : vertices) te_top = std::max(te_top, model.vertex(v).point.dot(roles.span_direction));
+  for (int v : vertices)
+    for (int c : model.curves_of_vertex(v))
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c)) {
+        const int s = u.surface;
+        const bool body = std::binary_search(roles.body.begin(), roles.body.end(), s);
+        const bool tip = std::binary_search(roles.tip.begin(), roles.tip.end(), s);
+        if (body && !tip && !at_root.count(s) && s != roles.te_base &&
+            top_of(model, s, roles.span_direction) > te_top + kPastTipSpan * roles.span)
+          return s;
+      }
+  return -1;
+}
+
+// The near field init writes, and the summary line saying why: H where the body's trailing edge
+// (a base or a sharp edge) runs from the root to the tip, C where it stops short (the junction and
+// the wall layer still stand on the root), else O.
+std::pair<std::string, std::string> near_field_topology(const cad::Model& model, const surface::CadRoles& roles) {
+  const std::vector<int> te = trailing_edge_vertices(model, roles);
+  if (te.empty())
+    return {"O", "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n"};
+  const int past = face_past_trailing_edge(model, roles, te);
+  if (past < 0)
+    return {"H", "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"};
+  return {"C", fmt::format("nearfield.topology = \"C\": the trailing edge goes on past its root face or curve into {}, "
+                           "which does not touch the root and goes on along the span (several spanwise faces, a crank); "
+                           "the H-type's wake block stands on one trailing-edge face or curve from the root to the tip.\n",
+                           cad::surface_label(model, past))};
 }
 
 }  // namespace
@@ -154,8 +225,8 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
   }
   // The paper's near field where the body allows it; its wall layer and wake keys are the defaults
   // scaled by the chord (as every length here).
-  const bool h_type = allows_h_type(*model, roles);
-  if (h_type) c.nearfield.topology = "H";
+  const auto [topology, topology_why] = near_field_topology(*model, roles);
+  c.nearfield.topology = topology;
   out.summary = fmt::format("Written by `semimesh init --cad {}`: the roles found in the file, and the lengths of the\n"
                             "paper's case (chord 1) times the body's root chord {:.6g} {}.\n",
                             cad_path, roles.chord, model->units());
@@ -177,8 +248,7 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
                                "leading_edge or trailing_edge, so only the body's curvature and this size resolve the "
                                "chord.\n",
                                c.sizing.size.max_size);
-  out.summary += h_type ? "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"
-                        : "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n";
+  out.summary += topology_why;
   if (!model->surface(roles.wall).is_planar())
     out.summary += "The wall is curved (a fuselage, a hub): the junction, the wall layer and the wake's gap follow it.\n";
   if (doubt) out.summary += fmt::format("geometry.units = \"{}\", not the file's '{}': {}.\n", doubt->likelier, model->units(), doubt->why);

@@ -13,7 +13,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include "temp_path.hpp"
 
@@ -159,6 +162,44 @@ TEST(InitCommand, BodyOnlyFileGetsItsWallPlaneFromTheRootCap) {
   EXPECT_EQ(c.sizing.size.te_size, 0.0);
   EXPECT_DOUBLE_EQ(c.wake.direction[0], 1.0);  // x, in the wall plane y = 0
   EXPECT_DOUBLE_EQ(c.wake.direction[1], 0.0);
+  // The sharp trailing edge ends among the tip's small faces (not all of them flat tips): it reaches
+  // the tip, the H-type.
+  EXPECT_EQ(c.nearfield.topology, "H");
+}
+
+// The near field init writes follows the trailing edge: a one-panel wing whose base (or sharp edge)
+// runs from the root to the tip gets the H-type; a cranked wing, whose trailing edge goes on from
+// the root panel's base (or sharp curve) into the next panel's faces, gets the C-type and the face
+// named (the H-type's wake block stands on one face or curve; on the next panel's layer TetGen
+// crashed). The files are written by tests/occ/write_wing_variant.
+TEST(InitCommand, ATrailingEdgeOfSeveralFacesGetsTheCTypeNearField) {
+#ifndef SEMIMESH_WRITE_WING_VARIANT
+  GTEST_SKIP() << "no occ backend: write_wing_variant is not built";
+#else
+  const std::filesystem::path dir = semimesh::test::temp_path("init_cranked");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  struct Case {
+    const char* variant;
+    const char* te;
+    const char* topology;
+  };
+  for (const Case& k : {Case{"capped", "blunt", "H"}, Case{"capped", "sharp", "H"}, Case{"cranked", "blunt", "C"},
+                        Case{"cranked", "sharp", "C"}}) {
+    const std::string name = std::string(k.variant) + "_" + k.te;
+    const std::string step = (dir / (name + ".step")).string(), toml = (dir / (name + ".toml")).string();
+    const std::string write = std::string(SEMIMESH_WRITE_WING_VARIANT) + " " + k.variant + " " + step +
+                              " naca.farfield=false naca.span=1 naca.te=" + k.te + " > /dev/null 2>&1";
+    ASSERT_EQ(std::system(write.c_str()), 0) << write;
+    std::ostringstream out, err;
+    ASSERT_EQ(run_init_command({toml, false, step}, out, err), 0) << name << ": " << err.str();
+    EXPECT_EQ(pipeline::load_config(toml).nearfield.topology, k.topology) << name;
+    std::ifstream text(toml);
+    const std::string written((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(written.find("does not touch the root") != std::string::npos, std::string(k.topology) == "C") << name;
+  }
+  std::filesystem::remove_all(dir);
+#endif
 }
 
 }  // namespace

@@ -26,6 +26,14 @@
 //              normal turns along the root and the junction's angles differ on each side;
 //   fuselage_seam_on_crest the cylinder with its seam along its top, through the wing's root (bad
 //              input: the root is then no hole of the wall).
+//   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
+//              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
+//              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
+//              0 -> -2 -> -5 degrees (washout); each panel's upper, lower [and trailing-edge base]
+//              surface its own B-spline face (the naca.code section, naca.te), meeting at the kink;
+//              a planar tip face. naca.chord scales it; in the file's numbers as given (unit MM);
+//   cranked_mm, cranked_m  the same wing at a root chord of 1 m (naca.chord ignored): written in
+//              millimetres (numbers 1000, unit MM) and in metres (numbers 1, unit M).
 //
 // Exit 0 on success, 1 with a message on stderr otherwise.
 #include "semimesh/occ/occ_backend.hpp"
@@ -37,6 +45,9 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Interface_Static.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
@@ -58,6 +69,7 @@
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <IFSelect_ReturnStatus.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <Standard_Failure.hxx>
@@ -216,6 +228,95 @@ TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord, Fuselage kind) 
   return shell.Current();
 }
 
+// The cranked wing's sections (issue #23: several spanwise faces meeting at a kink): the leading
+// edge's x, the chord and the twist (degrees, nose up, about the quarter chord) at each z, in root
+// chords.
+struct CrankSection {
+  double z, x_le, chord, twist_deg;
+};
+const CrankSection kCrank[] = {{0.0, 0.0, 1.0, 0.0},
+                               {0.8, 0.8 * std::tan(10 * M_PI / 180), 0.75, -2.0},
+                               {2.0, 0.8 * std::tan(10 * M_PI / 180) + 1.2 * std::tan(35 * M_PI / 180), 0.35, -5.0}};
+
+// A pole (X, Y) of the unit section placed at a crank section: twisted about its quarter chord,
+// scaled by its chord (and the root chord), shifted to its leading edge.
+gp_Pnt placed(const gp_Pnt& unit, const CrankSection& at, double root_chord) {
+  const double t = at.twist_deg * M_PI / 180, dx = unit.X() - 0.25, y = unit.Y();
+  const double x = 0.25 + dx * std::cos(t) + y * std::sin(t), yr = -dx * std::sin(t) + y * std::cos(t);
+  return gp_Pnt(root_chord * (at.x_le + at.chord * x), root_chord * at.chord * yr, root_chord * at.z);
+}
+
+// The skin between two sections: the unit wing's skin (its root row of poles is the section,
+// exact) with each row placed at one section; ruled (degree 1) across the span as the NACA skins.
+Handle(Geom_BSplineSurface) crank_panel(const Geom_BSplineSurface& unit, const CrankSection& a, const CrankSection& b,
+                                        double root_chord) {
+  TColgp_Array2OfPnt poles(1, unit.NbUPoles(), 1, 2);
+  for (int i = 1; i <= unit.NbUPoles(); ++i) {
+    poles.SetValue(i, 1, placed(unit.Pole(i, 1), a, root_chord));
+    poles.SetValue(i, 2, placed(unit.Pole(i, 1), b, root_chord));
+  }
+  TColStd_Array1OfReal u_knots(1, unit.NbUKnots()), v_knots(1, 2);
+  TColStd_Array1OfInteger u_mults(1, unit.NbUKnots()), v_mults(1, 2);
+  unit.UKnots(u_knots);
+  unit.UMultiplicities(u_mults);
+  v_knots.SetValue(1, 0.0);
+  v_knots.SetValue(2, 1.0);
+  v_mults.Init(2);
+  return new Geom_BSplineSurface(poles, u_knots, v_knots, u_mults, v_mults, unit.UDegree(), 1);
+}
+
+// The bilinear trailing-edge base between the two skins' last pole columns.
+Handle(Geom_BSplineSurface) crank_te_base(const Geom_BSplineSurface& upper, const Geom_BSplineSurface& lower) {
+  TColgp_Array2OfPnt poles(1, 2, 1, 2);
+  for (int j = 1; j <= 2; ++j) {
+    poles.SetValue(1, j, lower.Pole(lower.NbUPoles(), j));
+    poles.SetValue(2, j, upper.Pole(upper.NbUPoles(), j));
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  TColStd_Array1OfInteger mults(1, 2);
+  knots.SetValue(1, 0.0);
+  knots.SetValue(2, 1.0);
+  mults.Init(2);
+  return new Geom_BSplineSurface(poles, knots, knots, mults, mults, 1, 1);
+}
+
+Handle(Geom_BSplineSurface) surface_of(const TopoDS_Face& face) {
+  Handle(Geom_BSplineSurface) s = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+  if (s.IsNull()) throw std::runtime_error("cranked: the unit wing's skin is not a B-spline surface");
+  return s;
+}
+
+TopoDS_Shape cranked(const semimesh::mock_cad::NacaWingParams& params) {
+  semimesh::mock_cad::NacaWingParams unit = params;  // the section's poles at chord 1, z = 0
+  unit.chord = 1;
+  unit.span = 1;
+  unit.taper = 1;
+  unit.sweep_deg = unit.dihedral_deg = 0;
+  unit.farfield = false;
+  const std::vector<TopoDS_Face> unit_faces = faces_of(semimesh::occ::make_naca_wing_shape(unit));
+  const Handle(Geom_BSplineSurface) unit_upper = surface_of(unit_faces[0]), unit_lower = surface_of(unit_faces[1]);
+  BRepBuilderAPI_Sewing sewing(1e-7 * params.chord);
+  Handle(Geom_BSplineSurface) upper, lower;
+  for (int panel = 0; panel < 2; ++panel) {
+    upper = crank_panel(*unit_upper, kCrank[panel], kCrank[panel + 1], params.chord);
+    lower = crank_panel(*unit_lower, kCrank[panel], kCrank[panel + 1], params.chord);
+    sewing.Add(BRepBuilderAPI_MakeFace(upper, 1e-9).Face());
+    sewing.Add(BRepBuilderAPI_MakeFace(lower, 1e-9).Face());
+    if (!params.sharp_te) sewing.Add(BRepBuilderAPI_MakeFace(crank_te_base(*upper, *lower), 1e-9).Face());
+  }
+  // The tip: the outboard panel's last section, a planar face.
+  BRepBuilderAPI_MakeWire outline;
+  outline.Add(BRepBuilderAPI_MakeEdge(upper->VIso(1.0)).Edge());
+  if (!params.sharp_te) outline.Add(BRepBuilderAPI_MakeEdge(upper->Value(1, 1), lower->Value(1, 1)).Edge());
+  outline.Add(BRepBuilderAPI_MakeEdge(lower->VIso(1.0)).Edge());
+  if (!outline.IsDone()) throw std::runtime_error("cranked: the tip section's outline does not close");
+  ShapeFix_Face tip(BRepBuilderAPI_MakeFace(outline.Wire(), /*OnlyPlane=*/true).Face());
+  tip.Perform();
+  sewing.Add(tip.Face());
+  sewing.Perform();
+  return capped(sewing.SewedShape());
+}
+
 TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
   if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
@@ -229,9 +330,11 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_bspline") return on_fuselage(wing, params.chord, Fuselage::BSpline);
   if (name == "fuselage_dihedral") return on_fuselage(wing, params.chord, Fuselage::Dihedral);
   if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
+  if (name == "cranked") return cranked(params);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest)");
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, cranked, cranked_mm, "
+                              "cranked_m)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit
@@ -244,6 +347,22 @@ void write_iges_inch_flag(const TopoDS_Shape& shape, const char* path) {
   IGESControl_Writer writer("IN", 0);
   if (!writer.AddShape(BRepBuilderAPI_Transform(shape, scale, /*copy=*/true).Shape()) ||
       (writer.ComputeModel(), !writer.Write(path)))
+    throw std::runtime_error(std::string("cannot write '") + path + "'");
+}
+
+// The cranked wing at a root chord of 1 m, in OCC's session unit (millimetres): the writer
+// converts it to the file's unit.
+TopoDS_Shape cranked_in_mm(semimesh::mock_cad::NacaWingParams params) {
+  params.chord = 1000;
+  return cranked(params);
+}
+
+// STEP in the given unit ("MM", "M"): the numbers are the shape's (millimetres) converted to it.
+void write_step_in(const TopoDS_Shape& shape, const char* unit, const char* path) {
+  STEPControl_Controller::Init();  // the static below exists once the STEP controller is
+  Interface_Static::SetCVal("write.step.unit", unit);
+  STEPControl_Writer writer;
+  if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone || writer.Write(path) != IFSelect_RetDone)
     throw std::runtime_error(std::string("cannot write '") + path + "'");
 }
 
@@ -263,8 +382,13 @@ int main(int argc, char** argv) {
       params.set(kv.substr(0, eq), kv.substr(eq + 1));
     }
     const semimesh::mock_cad::NacaWingParams wing = semimesh::mock_cad::naca_params_from(params);
-    const TopoDS_Shape shape = variant(argv[1], semimesh::occ::make_naca_wing_shape(wing), wing);
-    if (std::string(argv[1]) == "unsewn") {
+    const std::string name = argv[1];
+    if (name == "cranked_mm" || name == "cranked_m") {
+      write_step_in(cranked_in_mm(wing), name == "cranked_mm" ? "MM" : "M", argv[2]);
+      return 0;
+    }
+    const TopoDS_Shape shape = variant(name, semimesh::occ::make_naca_wing_shape(wing), wing);
+    if (name == "unsewn") {
       write_iges_inch_flag(shape, argv[2]);
       return 0;
     }
