@@ -33,6 +33,7 @@ def main():
     parser.add_argument("--gmsh", action="store_true", help="certify the .msh with Gmsh too")
     parser.add_argument("--init-says", action="append", default=[], help="text init must write or warn")
     parser.add_argument("--init-refuses-with", help="init must exit 1 with this text on stderr")
+    parser.add_argument("--run-refuses-with", help="run must exit 1 with this text on stderr, writing no mesh")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -66,6 +67,16 @@ def main():
     done = subprocess.run([args.exe, "run", config, "-o", os.path.join(args.workdir, "out")] + overrides,
                           capture_output=True, text=True)
     print(done.stdout)
+    if args.run_refuses_with is not None:
+        print(done.stderr)
+        if done.returncode != 1 or args.run_refuses_with not in done.stderr:
+            print("FAIL: expected run to exit 1 saying '%s'; it exited %d" % (args.run_refuses_with, done.returncode))
+            return 1
+        if os.path.exists(os.path.join(args.workdir, "out")) and os.listdir(os.path.join(args.workdir, "out")):
+            print("FAIL: run refused but wrote into %s" % os.path.join(args.workdir, "out"))
+            return 1
+        print("ok")
+        return 0
     if done.returncode != 0:
         print("FAIL: run exited with %d\n%s" % (done.returncode, done.stderr))
         return 1

@@ -34,6 +34,54 @@ int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const V
   return best;
 }
 
+namespace {
+
+bool is_body(const BodyRoles& roles, int s) {
+  return std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), s) > 0;
+}
+
+// The body surfaces across the curves of `s` (other than s).
+std::set<int> body_neighbours(const cad::Model& model, const BodyRoles& roles, int s) {
+  std::set<int> out;
+  for (const cad::Loop& loop : model.loops(s))
+    for (const cad::CurveUse& use : loop.uses)
+      for (const cad::SurfaceUse& u : model.surfaces_of_curve(use.curve))
+        if (u.surface != s && is_body(roles, u.surface)) out.insert(u.surface);
+  return out;
+}
+
+bool borders_any(const cad::Model& model, const BodyRoles& roles, int s, const std::set<int>& others) {
+  for (int n : body_neighbours(model, roles, s))
+    if (others.count(n)) return true;
+  return false;
+}
+
+}  // namespace
+
+int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack) {
+  if (base >= 0) {
+    const std::set<int> around = body_neighbours(model, roles, base);
+    for (int n : around) {
+      std::set<int> others = around;
+      others.erase(n);
+      if (!borders_any(model, roles, n, others)) return n;
+    }
+    return -1;
+  }
+  if (crack < 0) return -1;
+  std::set<int> sides;
+  for (const cad::SurfaceUse& u : model.surfaces_of_curve(crack)) sides.insert(u.surface);
+  for (int v : model.curve_vertices(crack))
+    for (int c : model.curves_of_vertex(v)) {
+      const auto& uses = model.surfaces_of_curve(c);
+      if (c == crack || uses.size() != 2 || uses[0].surface == uses[1].surface) continue;
+      bool next_panel = true;
+      for (const cad::SurfaceUse& u : uses) next_panel = next_panel && is_body(roles, u.surface) && !sides.count(u.surface);
+      if (next_panel) return c;
+    }
+  return -1;
+}
+
 std::set<int> flat_base_corners(const cad::Model& model, int base) {
   constexpr double kFlatCorner = 150.0;  // degrees
   std::set<int> flat;
@@ -103,6 +151,13 @@ TrailingEdge find_trailing_edge(const cad::Model& model, const surface::SurfaceM
          (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
                                  : "") +
          "; the H-type near field sweeps the wake from the trailing edge");
+  if (const int next = detail::trailing_edge_continuation(model, roles, te.base, te.crack); next >= 0)
+    fail("the trailing edge goes on past " +
+         (blunt ? surface_label(model, te.base) + " into " + surface_label(model, next)
+                : "curve " + std::to_string(te.crack) + " ('" + model.curve(te.crack).name() + "') into curve " +
+                      std::to_string(next) + " ('" + model.curve(next).name() + "')") +
+         " (several spanwise faces, a crank): the H-type's wake block stands on one trailing-edge face or curve from "
+         "the root to the tip; set nearfield.topology = \"C\"");
   if (blunt) {
     te.flat = detail::flat_base_corners(model, te.base);
     const surface::SurfaceMesh& base_mesh = meshes.surfaces.at(te.base);

@@ -63,6 +63,32 @@ TEST(SharpTrailingEdge, IsTheBodyCurveLeavingTheWallFarthestDownstream) {
   }
 }
 
+// One-panel wings (blunt or sharp, flat or round tip, swept): the trailing edge ends at the tip.
+// The cranked wing's continuation is tested on its OCC file (cli.init_cad_cranked_*_forced_h_refused).
+TEST(TrailingEdgeContinuation, NoneOnAOnePanelWing) {
+  for (bool sharp : {false, true})
+    for (bool round : {false, true}) {
+      mock_cad::NacaWingParams wing = naca("2412", sharp, 0.6, 30.0);
+      wing.round_tip = round;
+      const auto model = mock_cad::make_naca_wing(wing);
+      BodyRoles roles;
+      for (const std::string name : {"upper", "lower", "te_base", "tip"})
+        if (auto s = model->find_surface(name)) roles.body_surfaces.push_back(*s);
+      roles.wall_surface = *model->find_surface("wall");
+      const int base = sharp ? -1 : *model->find_surface("te_base");
+      const int crack = sharp ? curve_named(*model, "trailing_edge") : -1;
+      EXPECT_EQ(detail::trailing_edge_continuation(*model, roles, base, crack), -1)
+          << "sharp " << sharp << " round " << round;
+      // Without the tip among the body's faces the sides border nothing past the trailing edge:
+      // still no continuation (the sides border each other at the leading edge).
+      BodyRoles no_tip = roles;
+      no_tip.body_surfaces.erase(std::remove(no_tip.body_surfaces.begin(), no_tip.body_surfaces.end(),
+                                             *model->find_surface("tip")),
+                                 no_tip.body_surfaces.end());
+      EXPECT_EQ(detail::trailing_edge_continuation(*model, no_tip, base, crack), -1);
+    }
+}
+
 // The flat tip's base is a rectangle (four right angles); the round tip's base is capped by a half
 // disc that continues its two sides tangentially: flat at tip_te_upper and tip_te_lower only.
 TEST(FlatBaseCorners, OnlyWhereARoundTipContinuesTheBasesSides) {

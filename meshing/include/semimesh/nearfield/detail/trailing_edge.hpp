@@ -18,6 +18,15 @@ namespace semimesh::nearfield::detail {
 /// edge is the other one of a wing's section); -1 when there is none.
 int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const Vec3& d);
 
+/// Where the trailing edge goes on past the base surface `base` (blunt) or the sharp edge's curve
+/// `crack` (-1 for the other): a body surface across one of the base's curves that borders none
+/// of the base's other body neighbours (a tip borders the sides; a cranked wing's outboard base
+/// borders only its own panel's sides), or a curve at one of the crack's ends between two body
+/// surfaces that are neither of the crack's sides (the outboard panel's trailing edge; a tip's
+/// curves have a side on one hand). Returns that surface or curve id, -1 when the trailing edge
+/// ends at the tip. Topology only: no angle or size to tune.
+int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack);
+
 /// The trailing-edge base's flat corners: CAD vertices where its two curves meet at more than 150
 /// degrees inside the face (a revolved tip's rounded trailing edge continues the base's sides
 /// tangentially: the NekMesh wing's base is a rectangle capped by a half disc). A structured quad
