@@ -50,6 +50,13 @@ std::set<int> body_neighbours(const cad::Model& model, const BodyRoles& roles, i
   return out;
 }
 
+double longest_curve(const cad::Model& model, int s) {
+  double longest = 0.0;
+  for (const cad::Loop& loop : model.loops(s))
+    for (const cad::CurveUse& use : loop.uses) longest = std::max(longest, model.curve(use.curve).length());
+  return longest;
+}
+
 bool borders_any(const cad::Model& model, const BodyRoles& roles, int s, const std::set<int>& others) {
   for (int n : body_neighbours(model, roles, s))
     if (others.count(n)) return true;
@@ -59,12 +66,14 @@ bool borders_any(const cad::Model& model, const BodyRoles& roles, int s, const s
 }  // namespace
 
 int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack) {
+  constexpr double kSliver = 0.1;  // of the base's or crack's length: smaller faces and curves are slivers
   if (base >= 0) {
     const std::set<int> around = body_neighbours(model, roles, base);
+    const double span = longest_curve(model, base);
     for (int n : around) {
       std::set<int> others = around;
       others.erase(n);
-      if (!borders_any(model, roles, n, others)) return n;
+      if (!borders_any(model, roles, n, others) && longest_curve(model, n) > kSliver * span) return n;
     }
     return -1;
   }
@@ -74,7 +83,9 @@ int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, 
   for (int v : model.curve_vertices(crack))
     for (int c : model.curves_of_vertex(v)) {
       const auto& uses = model.surfaces_of_curve(c);
-      if (c == crack || uses.size() != 2 || uses[0].surface == uses[1].surface) continue;
+      if (c == crack || uses.size() != 2 || uses[0].surface == uses[1].surface ||
+          model.curve(c).length() <= kSliver * model.curve(crack).length())
+        continue;
       bool next_panel = true;
       for (const cad::SurfaceUse& u : uses) next_panel = next_panel && is_body(roles, u.surface) && !sides.count(u.surface);
       if (next_panel) return c;

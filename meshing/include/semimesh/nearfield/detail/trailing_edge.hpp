@@ -24,7 +24,9 @@ int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const V
 /// borders only its own panel's sides), or a curve at one of the crack's ends between two body
 /// surfaces that are neither of the crack's sides (the outboard panel's trailing edge; a tip's
 /// curves have a side on one hand). Returns that surface or curve id, -1 when the trailing edge
-/// ends at the tip. Topology only: no angle or size to tune.
+/// ends at the tip. Faces whose longest curve, and curves, under a tenth of the base's longest
+/// curve or the crack's length are slivers, not panels (the ONERA M6's tip faces at its trailing
+/// edge); no angle to tune.
 int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack);
 
 /// The trailing-edge base's flat corners: CAD vertices where its two curves meet at more than 150
