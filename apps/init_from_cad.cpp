@@ -3,6 +3,7 @@
 #include "unit_doubt.hpp"
 
 #include "semimesh/cad/labels.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 #include "semimesh/surface/root_plane.hpp"
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
 #include <utility>
 #include <string>
 
@@ -68,18 +68,12 @@ void scale_lengths(pipeline::Config& config, double factor) {
           key.set(config, round_to_4_digits(std::get<double>(key.get(config)) * factor));
 }
 
-// The vertices of the trailing edge an H-type wake block can stand on: the base's, or those of a
-// sharp trailing edge (a curve between two body surfaces leaving the wall in the root's downstream
-// half; the leading edge of a two-face skin is the other such curve, in the upstream half); empty
-// when the body has neither. The near field finds these the same way (h_shell.hpp).
-std::vector<int> trailing_edge_vertices(const cad::Model& model, const surface::CadRoles& roles) {
-  std::vector<int> vertices;
-  if (roles.te_base) {
-    for (const cad::Loop& loop : model.loops(*roles.te_base))
-      for (const cad::CurveUse& use : loop.uses)
-        for (int v : model.curve_vertices(use.curve)) vertices.push_back(v);
-    return vertices;
-  }
+// The trailing edge an H-type wake block can stand on: the base, or a sharp trailing edge (a curve
+// between two body surfaces leaving the wall in the root's downstream half; the leading edge of a
+// two-face skin is the other such curve, in the upstream half). {base, crack}, -1 for what is not
+// there. The near field finds these the same way (h_shell.hpp).
+std::pair<int, int> trailing_edge(const cad::Model& model, const surface::CadRoles& roles) {
+  if (roles.te_base) return {*roles.te_base, -1};
   const cad::Vec3 n = roles.span_direction, x = cad::Vec3::UnitX();
   const cad::Vec3 streamwise = (x - x.dot(n) * n).normalized();
   auto is_body = [&](int s) { return std::binary_search(roles.body.begin(), roles.body.end(), s); };
@@ -103,68 +97,25 @@ std::vector<int> trailing_edge_vertices(const cad::Model& model, const surface::
       if (body_body && on_wall(v) && along > sharp) sharp = along, sharp_curve = c;
     }
   }
-  if (sharp_curve >= 0 && sharp > 0.5 * (lo + hi))
-    for (int v : model.curve_vertices(sharp_curve)) vertices.push_back(v);
-  return vertices;
-}
-
-// How far a trailing edge may go on into a face, along the span, and still end at the tip: a
-// fraction of the span above the trailing edge's far end. A tip's pieces (a round or filleted tip,
-// slivers at its trailing edge) rise by about the section's thickness; a wing's next panel by its
-// own length.
-constexpr double kPastTipSpan = 0.1;
-
-// The highest of a face's vertices along the span.
-double top_of(const cad::Model& model, int surface, const cad::Vec3& span) {
-  double top = -1e300;
-  for (const cad::Loop& loop : model.loops(surface))
-    for (const cad::CurveUse& use : loop.uses)
-      for (int v : model.curve_vertices(use.curve)) top = std::max(top, model.vertex(v).point.dot(span));
-  return top;
-}
-
-// A body face at the trailing edge's vertices that neither touches the root nor is a tip and that
-// rises along the span beyond the trailing edge's far end (kPastTipSpan): the trailing edge goes on
-// in it past the base or the sharp curve (a wing of several spanwise panels, a crank), where the
-// H-type's wake block, swept from the one trailing-edge face or curve, would run into the next
-// panel's layer. -1 when the trailing edge reaches the tip.
-int face_past_trailing_edge(const cad::Model& model, const surface::CadRoles& roles, const std::vector<int>& vertices) {
-  std::set<int> at_root;
-  for (int c = 0; c < model.num_curves(); ++c) {
-    const auto& uses = model.surfaces_of_curve(c);
-    const bool on_wall = std::any_of(uses.begin(), uses.end(), [&](const cad::SurfaceUse& u) { return u.surface == roles.wall; });
-    if (on_wall)
-      for (const cad::SurfaceUse& u : uses) at_root.insert(u.surface);
-  }
-  double te_top = -1e300;
-  for (int v : vertices) te_top = std::max(te_top, model.vertex(v).point.dot(roles.span_direction));
-  for (int v : vertices)
-    for (int c : model.curves_of_vertex(v))
-      for (const cad::SurfaceUse& u : model.surfaces_of_curve(c)) {
-        const int s = u.surface;
-        const bool body = std::binary_search(roles.body.begin(), roles.body.end(), s);
-        const bool tip = std::binary_search(roles.tip.begin(), roles.tip.end(), s);
-        if (body && !tip && !at_root.count(s) && s != roles.te_base &&
-            top_of(model, s, roles.span_direction) > te_top + kPastTipSpan * roles.span)
-          return s;
-      }
-  return -1;
+  return {-1, sharp_curve >= 0 && sharp > 0.5 * (lo + hi) ? sharp_curve : -1};
 }
 
 // The near field init writes, and the summary line saying why: H where the body's trailing edge
-// (a base or a sharp edge) runs from the root to the tip, C where it stops short (the junction and
-// the wall layer still stand on the root), else O.
+// (a base or a sharp edge) runs from the root to the tip, C where it goes on past its root face or
+// curve (several spanwise panels: the run's own check, detail::trailing_edge_continuation, would
+// refuse H), else O.
 std::pair<std::string, std::string> near_field_topology(const cad::Model& model, const surface::CadRoles& roles) {
-  const std::vector<int> te = trailing_edge_vertices(model, roles);
-  if (te.empty())
+  const auto [base, crack] = trailing_edge(model, roles);
+  if (base < 0 && crack < 0)
     return {"O", "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n"};
-  const int past = face_past_trailing_edge(model, roles, te);
+  const nearfield::BodyRoles body{roles.body, roles.wall};
+  const int past = nearfield::detail::trailing_edge_continuation(model, body, base, crack);
   if (past < 0)
     return {"H", "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"};
   return {"C", fmt::format("nearfield.topology = \"C\": the trailing edge goes on past its root face or curve into {}, "
                            "which does not touch the root and goes on along the span (several spanwise faces, a crank); "
                            "the H-type's wake block stands on one trailing-edge face or curve from the root to the tip.\n",
-                           cad::surface_label(model, past))};
+                           base >= 0 ? cad::surface_label(model, past) : cad::curve_label(model, past))};
 }
 
 }  // namespace
