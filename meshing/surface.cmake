@@ -1,6 +1,7 @@
 # 1D/2D meshing on CAD: size field, curve discretisation, surface meshes in parameter space.
 # Included from meshing/CMakeLists.txt; paths are relative to this file's folder.
 find_package(CGAL REQUIRED)
+find_package(OpenMP REQUIRED COMPONENTS CXX)  # the shell limits' sample rows
 add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/size_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/shell_size_limit.cpp
@@ -18,5 +19,5 @@ add_library(semimesh_surface_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/surface/root_plane.cpp)
 add_library(semimesh::surface_mesh ALIAS semimesh_surface_mesh)
 target_include_directories(semimesh_surface_mesh PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
-target_link_libraries(semimesh_surface_mesh PUBLIC semimesh_cadapi PRIVATE CGAL::CGAL fmt::fmt semimesh_warnings)
+target_link_libraries(semimesh_surface_mesh PUBLIC semimesh_cadapi PRIVATE CGAL::CGAL fmt::fmt OpenMP::OpenMP_CXX semimesh_warnings)
 set_target_properties(semimesh_surface_mesh PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -21,8 +21,9 @@ std::optional<double> Surface::period(int direction) const {
   return std::nullopt;
 }
 
-Vec3 Surface::normal(const Vec2& uv) const {
-  SurfaceDerivatives d = derivatives(uv);
+Vec3 Surface::normal(const Vec2& uv) const { return normal(derivatives(uv)); }
+
+Vec3 Surface::normal(const SurfaceDerivatives& d) const {
   Vec3 n = d.du.cross(d.dv);
   double len = n.norm();
   if (len == 0.0) return Vec3::Zero();  // degenerate point (pole): no normal

@@ -8,7 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace semimesh::surface {
 namespace {
@@ -44,8 +50,8 @@ Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
   const auto box = s.bounds();
   std::vector<Vec2> path{start};
   Vec2 uv = start;
+  cad::SurfaceDerivatives d = s.derivatives(uv);  // at uv: the step's Jacobian and, after it, the normal
   for (int k = 0; k < kMarchSteps; ++k) {
-    const cad::SurfaceDerivatives d = s.derivatives(uv);
     Eigen::Matrix<double, 3, 2> jacobian;
     jacobian << d.du, d.dv;
     const Vec2 step = (jacobian.transpose() * jacobian).ldlt().solve(jacobian.transpose() * dir * (length / kMarchSteps));
@@ -55,7 +61,8 @@ Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
       break;
     uv = next;
     path.push_back(uv);
-    const Vec3 n = s.normal(uv);
+    d = s.derivatives(uv);
+    const Vec3 n = s.normal(d);
     dir = (dir - dir.dot(n) * n).normalized();
   }
   return {path.front(), path[path.size() / 2], path.back()};
@@ -89,6 +96,14 @@ double thickness_needed(const cad::Surface& s, const Vec2& uv, const Vec3& dir, 
   return needed;
 }
 
+bool reporting_thread() {
+#ifdef _OPENMP
+  return omp_get_thread_num() == 0;
+#else
+  return true;
+#endif
+}
+
 std::string label(const Vec3& p) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x(), p.y(), p.z()); }
 
 // The name of the CAD curve of `surface` nearest to p, when one is within `within`.
@@ -106,44 +121,70 @@ std::string nearby_curve(const cad::Model& model, int surface, const Vec3& p, do
 
 }  // namespace
 
+namespace {
+
+// The limits along one row of samples (u = its i-th value) of one surface.
+std::vector<ShellSizeLimit> row_limits(const cad::Surface& s, int i, const ShellSizing& shell, double max_size,
+                                       double probe_size) {
+  const double delta = shell.thickness, q = shell.min_gap_fraction;
+  const int n = shell.samples;
+  const auto box = s.bounds();
+  std::vector<ShellSizeLimit> limits;
+  for (int j = 0; j <= n; ++j) {
+    const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
+    if (!s.contains(uv)) continue;
+    const cad::PrincipalCurvatures k = s.curvatures(uv);
+    if (!(k.k_max > 0.0)) continue;  // concave or flat: the outer chord passes outside the arc
+    const double radius = 1.0 / k.k_max;
+    // On the osculating circle (R + delta) cos(h / 2R) >= R + q delta holds for every h: no limit.
+    const double circle = (radius + q * delta) / (radius + delta);
+    if (2.0 * radius * std::acos(circle) >= max_size) continue;
+    double lo = 0.0, hi = std::min(max_size, kScanStart * radius);  // ok at lo
+    while (hi < max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) lo = hi, hi = std::min(max_size, hi * kScanGrowth);
+    if (hi >= max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) continue;
+    for (int b = 0; b < kBisections; ++b) {
+      const double mid = 0.5 * (lo + hi);
+      (gap_ok(s, uv, k.dir_max, mid, delta, q) ? lo : hi) = mid;
+    }
+    limits.push_back({s.point(uv), s.id(), radius, lo, thickness_needed(s, uv, k.dir_max, probe_size, q)});
+  }
+  return limits;
+}
+
+}  // namespace
+
 std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
                                               double probe_size, const ProgressCallback& progress) {
   if (!(shell.thickness > 0.0)) throw SurfaceMeshError("shell size limit: the thickness must be > 0");
-  const double delta = shell.thickness, q = shell.min_gap_fraction;
-  const int n = shell.samples;
-  ProgressCounter rows(progress, shell.body_surfaces.size() * static_cast<std::size_t>(n + 1), "shell limits");
-  std::vector<ShellSizeLimit> limits;
-  for (int id : shell.body_surfaces) {
-    const cad::Surface& s = model.surface(id);
-    if (s.is_planar()) {
-      rows.add(static_cast<std::size_t>(n + 1));
-      continue;
-    }
-    const auto box = s.bounds();
-    for (int i = 0; i <= n; ++i) {
-      for (int j = 0; j <= n; ++j) {
-        const Vec2 uv(box[0].lo + box[0].length() * i / n, box[1].lo + box[1].length() * j / n);
-        if (!s.contains(uv)) continue;
-        const cad::PrincipalCurvatures k = s.curvatures(uv);
-        if (!(k.k_max > 0.0)) continue;  // concave or flat: the outer chord passes outside the arc
-        const double radius = 1.0 / k.k_max;
-        // On the osculating circle (R + delta) cos(h / 2R) >= R + q delta holds for every h: no limit.
-        const double circle = (radius + q * delta) / (radius + delta);
-        if (2.0 * radius * std::acos(circle) >= max_size) continue;
-        double lo = 0.0, hi = std::min(max_size, kScanStart * radius);  // ok at lo
-        while (hi < max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) lo = hi, hi = std::min(max_size, hi * kScanGrowth);
-        if (hi >= max_size && gap_ok(s, uv, k.dir_max, hi, delta, q)) continue;
-        for (int b = 0; b < kBisections; ++b) {
-          const double mid = 0.5 * (lo + hi);
-          (gap_ok(s, uv, k.dir_max, mid, delta, q) ? lo : hi) = mid;
-        }
-        limits.push_back({s.point(uv), id, radius, lo, thickness_needed(s, uv, k.dir_max, probe_size, q)});
-      }
-      rows.add();
-      rows.report_if_due();
+  const int rows_per_surface = shell.samples + 1;
+  std::vector<const cad::Surface*> curved;  // planar faces limit nothing
+  for (int id : shell.body_surfaces)
+    if (!model.surface(id).is_planar()) curved.push_back(&model.surface(id));
+  // Rows in parallel (the CAD queries dominate), each writing its own slot: the limits come out in
+  // (surface, row, column) order whatever the thread count.
+  const long rows = static_cast<long>(curved.size()) * rows_per_surface;
+  std::vector<std::vector<ShellSizeLimit>> per_row(static_cast<std::size_t>(rows));
+  ProgressCounter counter(progress, static_cast<std::size_t>(rows), "shell limits");
+  std::mutex mutex;
+  long failed_at = rows;
+  std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1) if (model.thread_safe())
+  for (long r = 0; r < rows; ++r) {
+    try {
+      per_row[static_cast<std::size_t>(r)] =
+          row_limits(*curved[static_cast<std::size_t>(r / rows_per_surface)], static_cast<int>(r % rows_per_surface),
+                     shell, max_size, probe_size);
+      counter.add();
+      if (reporting_thread()) counter.report_if_due();
+    } catch (...) {  // may not leave the parallel region: the lowest row's is rethrown, as in order
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (r < failed_at) failed_at = r, error = std::current_exception();
     }
   }
-  rows.finish();
+  if (error) std::rethrow_exception(error);
+  counter.finish();
+  std::vector<ShellSizeLimit> limits;
+  for (const auto& row : per_row) limits.insert(limits.end(), row.begin(), row.end());
   return limits;
 }
 

@@ -56,6 +56,8 @@ class Surface {
 
   /// Unit normal pointing into the fluid (see the orientation contract above).
   Vec3 normal(const Vec2& uv) const;
+  /// The same from derivatives already evaluated at a point (saves a second evaluation).
+  Vec3 normal(const SurfaceDerivatives& d) const;
   /// Principal curvatures with the sign convention of PrincipalCurvatures.
   PrincipalCurvatures curvatures(const Vec2& uv) const;
 
