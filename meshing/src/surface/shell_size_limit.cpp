@@ -39,41 +39,42 @@ constexpr double kThinShell = 0.75;
 // 0.022 is marginal, 0.025 is sound); the remedy offered keeps this margin.
 constexpr double kThicknessMargin = 1.25;
 
-// The ends and the midpoint of an arc on the surface.
+// The ends and the midpoint of an arc on the surface, with the unit normals there.
 struct Arc {
   Vec2 a, m, b;
+  Vec3 na, nm, nb;
 };
 
 // Walks `length` from uv along the surface, starting in tangent direction `dir` and keeping the
-// direction tangent (transported by projection); stops at the surface's boundary.
+// direction tangent (transported by projection); stops at the surface's boundary. The normals come
+// from the evaluations the walk makes anyway.
 Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
   const auto box = s.bounds();
   std::vector<Vec2> path{start};
-  Vec2 uv = start;
-  cad::SurfaceDerivatives d = s.derivatives(uv);  // at uv: the step's Jacobian and, after it, the normal
+  cad::SurfaceDerivatives d = s.derivatives(start);  // at the path's end: the step's Jacobian, the normal
+  std::vector<Vec3> normals{s.normal(d)};
   for (int k = 0; k < kMarchSteps; ++k) {
     Eigen::Matrix<double, 3, 2> jacobian;
     jacobian << d.du, d.dv;
     const Vec2 step = (jacobian.transpose() * jacobian).ldlt().solve(jacobian.transpose() * dir * (length / kMarchSteps));
-    const Vec2 next = uv + step;
+    const Vec2 next = path.back() + step;
     if (!std::isfinite(next.x()) || !std::isfinite(next.y()) || next.x() < box[0].lo || next.x() > box[0].hi ||
         next.y() < box[1].lo || next.y() > box[1].hi || !s.contains(next))
       break;
-    uv = next;
-    path.push_back(uv);
-    d = s.derivatives(uv);
-    const Vec3 n = s.normal(d);
-    dir = (dir - dir.dot(n) * n).normalized();
+    path.push_back(next);
+    d = s.derivatives(next);
+    normals.push_back(s.normal(d));
+    dir = (dir - dir.dot(normals.back()) * normals.back()).normalized();
   }
-  return {path.front(), path[path.size() / 2], path.back()};
+  const std::size_t mid = path.size() / 2;
+  return {path.front(), path[mid], path.back(), normals.front(), normals[mid], normals.back()};
 }
 
 // Gap of the straight offset chord over the arc's midpoint at thickness 0 (g0, negative on a convex
 // arc) and its growth per unit thickness (c): g(delta) = g0 + c delta.
 std::pair<double, double> chord_gap(const cad::Surface& s, const Arc& arc) {
   const Vec3 a = s.point(arc.a), b = s.point(arc.b), m = s.point(arc.m);
-  const Vec3 nm = s.normal(arc.m);
-  return {(0.5 * (a + b) - m).dot(nm), 0.5 * (s.normal(arc.a) + s.normal(arc.b)).dot(nm)};
+  return {(0.5 * (a + b) - m).dot(arc.nm), 0.5 * (arc.na + arc.nb).dot(arc.nm)};
 }
 
 bool gap_ok(const cad::Surface& s, const Vec2& uv, const Vec3& dir, double h, double thickness, double fraction) {
