@@ -1,5 +1,6 @@
 #include "semimesh/ho/bernstein.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -177,7 +178,7 @@ BernsteinPolynomial BernsteinPolynomial::divide_by_one_minus(int var) const {
 namespace {
 
 /// The layout of a product of two polynomials of these layouts (degrees add factor by factor).
-std::vector<SimplexFactor> product_factors(const BernsteinLayout& la, const BernsteinLayout& lb) {
+std::vector<SimplexFactor> product_layout_factors(const BernsteinLayout& la, const BernsteinLayout& lb) {
   if (la.factors.size() != lb.factors.size())
     throw std::invalid_argument("Bernstein product: operands have different factor structures");
   std::vector<SimplexFactor> factors = la.factors;
@@ -225,6 +226,54 @@ std::vector<BoxRun> box_runs(const std::vector<int>& offset) {
   return runs;
 }
 
+/// box[offset + run.offset + t] += scale * source[run.first + t] over every run: kLength > 0 when
+/// all runs have that length (a fixed inner loop the compiler unrolls; the runs of a hexahedron's
+/// and a prism's segment are all equally long), 0 for runs of any length.
+template <int kLength>
+void accumulate_runs(const std::vector<BoxRun>& runs, const double* __restrict source, double scale,
+                     double* __restrict box) {
+  for (const BoxRun& run : runs) {
+    double* target = box + run.offset;
+    const double* from = source + run.first;
+    const int length = kLength > 0 ? kLength : run.length;
+    for (int t = 0; t < length; ++t) target[t] += scale * from[t];
+  }
+}
+
+using RunAccumulator = void (*)(const std::vector<BoxRun>&, const double*, double, double*);
+
+/// The accumulate_runs for these runs: fixed lengths 1..kMaxFixedRun, else any length.
+constexpr int kMaxFixedRun = 16;
+template <int... kLengths>
+RunAccumulator pick_accumulator(int length, std::integer_sequence<int, kLengths...>) {
+  constexpr RunAccumulator fixed[] = {&accumulate_runs<kLengths + 1>...};
+  return length >= 1 && length <= kMaxFixedRun ? fixed[length - 1] : &accumulate_runs<0>;
+}
+
+RunAccumulator accumulator_for(const std::vector<BoxRun>& runs) {
+  const bool uniform = std::all_of(runs.begin(), runs.end(), [&](const BoxRun& r) { return r.length == runs[0].length; });
+  if (runs.empty() || !uniform) return &accumulate_runs<0>;
+  return pick_accumulator(runs[0].length, std::make_integer_sequence<int, kMaxFixedRun>{});
+}
+
+/// What a product of two layouts needs besides the coefficients: a's places in the result's box,
+/// b's runs (cached per pair of layouts, which live as long as the program).
+struct ProductPlan {
+  std::vector<int> offset_a;
+  std::vector<BoxRun> runs_b;
+  RunAccumulator accumulate = nullptr;
+};
+
+const ProductPlan& product_plan(const BernsteinLayout& la, const BernsteinLayout& lb, const BernsteinLayout& out) {
+  thread_local std::map<std::pair<const BernsteinLayout*, const BernsteinLayout*>, ProductPlan> plans;
+  ProductPlan& plan = plans[{&la, &lb}];
+  if (plan.accumulate) return plan;
+  plan.offset_a = box_offsets(la, out);
+  plan.runs_b = box_runs(box_offsets(lb, out));
+  plan.accumulate = accumulator_for(plan.runs_b);
+  return plan;
+}
+
 }  // namespace
 
 // In the scaled basis (multinomial folded into the coefficient) the product is a plain convolution
@@ -235,10 +284,9 @@ std::vector<BoxRun> box_runs(const std::vector<int>& offset) {
 BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
   const BernsteinLayout& la = a.layout();
   const BernsteinLayout& lb = b.layout();
-  BernsteinPolynomial result(product_factors(la, lb));
+  BernsteinPolynomial result(product_layout_factors(la, lb));
   const BernsteinLayout& out = result.layout();
-  const std::vector<int> offset_a = box_offsets(la, out);
-  const std::vector<BoxRun> runs = box_runs(box_offsets(lb, out));
+  const ProductPlan& plan = product_plan(la, lb, out);
   thread_local std::vector<double> scaled_b, box;
   scaled_b.resize(lb.size());
   for (int j = 0; j < lb.size(); ++j) scaled_b[j] = b.coefficients()[j] * lb.multinomial[j];
@@ -246,11 +294,7 @@ BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolyn
   for (int i = 0; i < la.size(); ++i) {
     const double scaled_a = a.coefficients()[i] * la.multinomial[i];
     if (scaled_a == 0.0) continue;
-    for (const BoxRun& run : runs) {
-      double* __restrict target = box.data() + offset_a[i] + run.offset;
-      const double* __restrict source = scaled_b.data() + run.first;
-      for (int t = 0; t < run.length; ++t) target[t] += scaled_a * source[t];
-    }
+    plan.accumulate(plan.runs_b, scaled_b.data(), scaled_a, box.data() + plan.offset_a[i]);
   }
   gather_box(box, result);
   return result;
@@ -259,7 +303,7 @@ BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolyn
 BernsteinPolynomial multiply_pairwise(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
   const BernsteinLayout& la = a.layout();
   const BernsteinLayout& lb = b.layout();
-  BernsteinPolynomial result(product_factors(la, lb));
+  BernsteinPolynomial result(product_layout_factors(la, lb));
   const BernsteinLayout& out = result.layout();
   const std::vector<int> offset_a = box_offsets(la, out), offset_b = box_offsets(lb, out);
   std::vector<double> box(out.box_to_id.size(), 0.0);
