@@ -1,6 +1,7 @@
 // Bernstein machinery checked against direct evaluation (values, finite differences, restriction to
 // sub-simplices), never against its own coefficients.
 #include "semimesh/ho/bernstein.hpp"
+#include "semimesh/ho/element_type.hpp"
 
 #include <gtest/gtest.h>
 
@@ -81,6 +82,30 @@ TEST(Bernstein, ProductEvaluatesToProductOfValues) {
       EXPECT_NEAR(pq.evaluate(x), p.evaluate(x) * q.evaluate(x), 1e-12);
     }
   }
+}
+
+/// The factor structures of det J's products for every shape and order (a column's degrees times
+/// another's, and the 2 x 2 minor's times the third column's), with every other coefficient of the
+/// first operand zero (the skipped terms).
+TEST(Bernstein, ProductMatchesPairwiseReferenceBitForBit) {
+  std::mt19937 rng(11);
+  auto check = [&](const std::vector<SimplexFactor>& fa, const std::vector<SimplexFactor>& fb) {
+    BernsteinPolynomial a = random_polynomial(fa, rng);
+    for (int i = 0; i < a.size(); i += 2) a.coefficients()[i] = 0.0;
+    const BernsteinPolynomial b = random_polynomial(fb, rng);
+    const BernsteinPolynomial fast = a * b, reference = multiply_pairwise(a, b);
+    ASSERT_EQ(fast.layout_ptr(), reference.layout_ptr());
+    for (int k = 0; k < fast.size(); ++k) ASSERT_EQ(fast.coefficients()[k], reference.coefficients()[k]) << k;
+  };
+  for (int p = 1; p <= kMaxOrder; ++p) {
+    check({{3, p - 1}}, {{3, p - 1}});
+    check({{3, 2 * p - 2}}, {{3, p - 1}});
+    check({{2, p - 1}, {1, p}}, {{2, p}, {1, p - 1}});
+    check({{2, 2 * p - 1}, {1, 2 * p - 1}}, {{2, p - 1}, {1, p}});
+    check({{1, p - 1}, {1, p}, {1, p}}, {{1, p}, {1, p - 1}, {1, p}});
+    check({{1, 2 * p - 1}, {1, 2 * p - 1}, {1, 2 * p}}, {{1, p}, {1, p}, {1, p - 1}});
+  }
+  for (const auto& factors : spaces()) check(factors, factors);
 }
 
 TEST(Bernstein, DerivativeMatchesFiniteDifference) {

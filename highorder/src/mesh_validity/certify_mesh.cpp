@@ -24,12 +24,12 @@ bool usable(const InheritedBounds& inherited, const mesh::Mesh& mesh, std::size_
 }  // namespace
 
 std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e) {
+  // FNV-1a on 64-bit words instead of bytes (an eighth of the multiplications): each step is a
+  // bijection of the hash, so elements that differ in one word always get different fingerprints.
   std::uint64_t hash = 14695981039346656037ull;
   const auto mix = [&](std::uint64_t word) {
-    for (int byte = 0; byte < 8; ++byte) {
-      hash ^= (word >> (8 * byte)) & 0xffu;
-      hash *= 1099511628211ull;
-    }
+    hash ^= word;
+    hash *= 1099511628211ull;
   };
   mix(static_cast<std::uint64_t>(mesh.elements()[e].shape));
   mix(static_cast<std::uint64_t>(mesh.order()));

@@ -1,5 +1,6 @@
 #include "semimesh/ho/bernstein.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -174,9 +175,10 @@ BernsteinPolynomial BernsteinPolynomial::divide_by_one_minus(int var) const {
   return result;
 }
 
-BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
-  const BernsteinLayout& la = a.layout();
-  const BernsteinLayout& lb = b.layout();
+namespace {
+
+/// The layout of a product of two polynomials of these layouts (degrees add factor by factor).
+std::vector<SimplexFactor> product_layout_factors(const BernsteinLayout& la, const BernsteinLayout& lb) {
   if (la.factors.size() != lb.factors.size())
     throw std::invalid_argument("Bernstein product: operands have different factor structures");
   std::vector<SimplexFactor> factors = la.factors;
@@ -185,31 +187,132 @@ BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolyn
       throw std::invalid_argument("Bernstein product: operands have different factor dimensions");
     factors[f].degree += lb.factors[f].degree;
   }
-  BernsteinPolynomial result(factors);
+  return factors;
+}
+
+/// [size] place of each coefficient of `in` in the dense box of `out`.
+std::vector<int> box_offsets(const BernsteinLayout& in, const BernsteinLayout& out) {
+  std::vector<int> offset(in.size(), 0);
+  for (int i = 0; i < in.size(); ++i)
+    for (int v = 0; v < in.num_vars; ++v) offset[i] += in.index[i][v] * out.box_stride[v];
+  return offset;
+}
+
+/// The result's coefficients from its scaled coefficients accumulated in its dense box.
+void gather_box(const std::vector<double>& box, BernsteinPolynomial& result) {
   const BernsteinLayout& out = result.layout();
-  // In the scaled basis (multinomial folded into the coefficient) the product is a plain
-  // convolution of multi-indices: alpha + beta.
-  // Accumulated in the dense box of the result (contiguous inner loop), then gathered.
-  std::vector<int> offset_a(la.size(), 0), offset_b(lb.size(), 0);
-  for (int i = 0; i < la.size(); ++i)
-    for (int v = 0; v < la.num_vars; ++v) offset_a[i] += la.index[i][v] * out.box_stride[v];
-  for (int j = 0; j < lb.size(); ++j)
-    for (int v = 0; v < lb.num_vars; ++v) offset_b[j] += lb.index[j][v] * out.box_stride[v];
-  std::vector<double> scaled_b(lb.size());
-  for (int j = 0; j < lb.size(); ++j) scaled_b[j] = b.coefficients_[j] * lb.multinomial[j];
-  std::vector<double> box(out.box_to_id.size(), 0.0);
-  for (int i = 0; i < la.size(); ++i) {
-    const double scaled_a = a.coefficients_[i] * la.multinomial[i];
-    if (scaled_a == 0.0) continue;
-    double* target = box.data() + offset_a[i];
-    for (int j = 0; j < lb.size(); ++j) target[offset_b[j]] += scaled_a * scaled_b[j];
-  }
-  Eigen::VectorXd scaled_out(out.size());
   for (int k = 0; k < out.size(); ++k) {
     const std::array<int, 3>& free = out.index[k];
-    scaled_out[k] = box[free[0] * out.box_stride[0] + free[1] * out.box_stride[1] + free[2] * out.box_stride[2]];
+    const double scaled = box[free[0] * out.box_stride[0] + free[1] * out.box_stride[1] + free[2] * out.box_stride[2]];
+    result.coefficients()[k] = scaled / out.multinomial[k];
   }
-  for (int k = 0; k < out.size(); ++k) result.coefficients_[k] = scaled_out[k] / out.multinomial[k];
+}
+
+/// A run of coefficients with consecutive ids whose places in the result's box are consecutive too.
+struct BoxRun {
+  int first = 0;   // id of the run's first coefficient
+  int offset = 0;  // its place in the box
+  int length = 0;
+};
+
+std::vector<BoxRun> box_runs(const std::vector<int>& offset) {
+  std::vector<BoxRun> runs;
+  for (int j = 0; j < static_cast<int>(offset.size()); ++j) {
+    if (!runs.empty() && offset[j] == runs.back().offset + runs.back().length && runs.back().first + runs.back().length == j)
+      ++runs.back().length;
+    else
+      runs.push_back({j, offset[j], 1});
+  }
+  return runs;
+}
+
+/// box[offset + run.offset + t] += scale * source[run.first + t] over every run: kLength > 0 when
+/// all runs have that length (a fixed inner loop the compiler unrolls; the runs of a hexahedron's
+/// and a prism's segment are all equally long), 0 for runs of any length.
+template <int kLength>
+void accumulate_runs(const std::vector<BoxRun>& runs, const double* __restrict source, double scale,
+                     double* __restrict box) {
+  for (const BoxRun& run : runs) {
+    double* target = box + run.offset;
+    const double* from = source + run.first;
+    const int length = kLength > 0 ? kLength : run.length;
+    for (int t = 0; t < length; ++t) target[t] += scale * from[t];
+  }
+}
+
+using RunAccumulator = void (*)(const std::vector<BoxRun>&, const double*, double, double*);
+
+/// The accumulate_runs for these runs: fixed lengths 1..kMaxFixedRun, else any length.
+constexpr int kMaxFixedRun = 16;
+template <int... kLengths>
+RunAccumulator pick_accumulator(int length, std::integer_sequence<int, kLengths...>) {
+  constexpr RunAccumulator fixed[] = {&accumulate_runs<kLengths + 1>...};
+  return length >= 1 && length <= kMaxFixedRun ? fixed[length - 1] : &accumulate_runs<0>;
+}
+
+RunAccumulator accumulator_for(const std::vector<BoxRun>& runs) {
+  const bool uniform = std::all_of(runs.begin(), runs.end(), [&](const BoxRun& r) { return r.length == runs[0].length; });
+  if (runs.empty() || !uniform) return &accumulate_runs<0>;
+  return pick_accumulator(runs[0].length, std::make_integer_sequence<int, kMaxFixedRun>{});
+}
+
+/// What a product of two layouts needs besides the coefficients: a's places in the result's box,
+/// b's runs (cached per pair of layouts, which live as long as the program).
+struct ProductPlan {
+  std::vector<int> offset_a;
+  std::vector<BoxRun> runs_b;
+  RunAccumulator accumulate = nullptr;
+};
+
+const ProductPlan& product_plan(const BernsteinLayout& la, const BernsteinLayout& lb, const BernsteinLayout& out) {
+  thread_local std::map<std::pair<const BernsteinLayout*, const BernsteinLayout*>, ProductPlan> plans;
+  ProductPlan& plan = plans[{&la, &lb}];
+  if (plan.accumulate) return plan;
+  plan.offset_a = box_offsets(la, out);
+  plan.runs_b = box_runs(box_offsets(lb, out));
+  plan.accumulate = accumulator_for(plan.runs_b);
+  return plan;
+}
+
+}  // namespace
+
+// In the scaled basis (multinomial folded into the coefficient) the product is a plain convolution
+// of multi-indices: alpha + beta, accumulated in the dense box of the result, then gathered.
+// Each box entry receives its terms in the order of a's coefficients, as in multiply_pairwise, so
+// the two give the same bits; here b's coefficients go in runs that are contiguous in the box (a
+// line along the first variable), an inner loop the compiler vectorises, with no per-call buffers.
+BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
+  const BernsteinLayout& la = a.layout();
+  const BernsteinLayout& lb = b.layout();
+  BernsteinPolynomial result(product_layout_factors(la, lb));
+  const BernsteinLayout& out = result.layout();
+  const ProductPlan& plan = product_plan(la, lb, out);
+  thread_local std::vector<double> scaled_b, box;
+  scaled_b.resize(lb.size());
+  for (int j = 0; j < lb.size(); ++j) scaled_b[j] = b.coefficients()[j] * lb.multinomial[j];
+  box.assign(out.box_to_id.size(), 0.0);
+  for (int i = 0; i < la.size(); ++i) {
+    const double scaled_a = a.coefficients()[i] * la.multinomial[i];
+    if (scaled_a == 0.0) continue;
+    plan.accumulate(plan.runs_b, scaled_b.data(), scaled_a, box.data() + plan.offset_a[i]);
+  }
+  gather_box(box, result);
+  return result;
+}
+
+BernsteinPolynomial multiply_pairwise(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
+  const BernsteinLayout& la = a.layout();
+  const BernsteinLayout& lb = b.layout();
+  BernsteinPolynomial result(product_layout_factors(la, lb));
+  const BernsteinLayout& out = result.layout();
+  const std::vector<int> offset_a = box_offsets(la, out), offset_b = box_offsets(lb, out);
+  std::vector<double> box(out.box_to_id.size(), 0.0);
+  for (int i = 0; i < la.size(); ++i) {
+    const double scaled_a = a.coefficients()[i] * la.multinomial[i];
+    if (scaled_a == 0.0) continue;
+    for (int j = 0; j < lb.size(); ++j) box[offset_a[i] + offset_b[j]] += scaled_a * (b.coefficients()[j] * lb.multinomial[j]);
+  }
+  gather_box(box, result);
   return result;
 }
 

@@ -101,6 +101,11 @@ class BernsteinPolynomial {
   Eigen::VectorXd coefficients_;
 };
 
+/// The product a * b term by term, one pair of coefficients at a time: the slow, obviously right
+/// reference operator* is tested against, bit for bit (each result coefficient sums its terms in
+/// the same order).
+BernsteinPolynomial multiply_pairwise(const BernsteinPolynomial& a, const BernsteinPolynomial& b);
+
 /// Degree elevation of a 1D Bernstein basis: column i holds the degree-`to` coefficients of
 /// B^from_i, E(j, i) = C(from, i) C(to - from, j - i) / C(to, j). Shape (to + 1, from + 1).
 Eigen::MatrixXd bernstein_elevation_1d(int from, int to);

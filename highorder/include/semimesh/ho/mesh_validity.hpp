@@ -37,7 +37,7 @@ struct InheritedBounds {
 };
 
 /// A hash of element e's shape, the mesh's order and node set, and the bits of its nodes'
-/// coordinates in element order (FNV-1a, 64 bits).
+/// coordinates in element order (FNV-1a over 64-bit words).
 std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e);
 
 /// Certifies every 3D element of `mesh` (its order and node set) with certify_jacobian(..., max_depth,

@@ -24,9 +24,15 @@ struct MeshVolume {
   double boundary_relative_error() const;   ///< |element - boundary| / |boundary|
 };
 
+/// Quadrature of the element volumes. Exact: per shape the fewest Gauss points that integrate the
+/// polynomial det J of a tet, prism or hex exactly. Generous: every shape with the points of the
+/// largest degree any shape's det J reaches, plus two (the reference Exact is tested against: the
+/// same integrals, so equal to rounding).
+enum class VolumeRule { Exact, Generous };
+
 /// Integrates every element and every boundary face of `mesh` (any order; quadrature exact for the
-/// polynomial det J of tets, prisms and hexes).
-MeshVolume mesh_volume(const mesh::Mesh& mesh);
+/// polynomial det J of tets, prisms and hexes; faces always with the generous rule).
+MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact);
 
 /// Volume of the solid bounded by `faces` (triangles and quads counter-clockwise seen from OUTSIDE
 /// the solid) and, where the surface is open, by the plane through `plane_point` with normal
