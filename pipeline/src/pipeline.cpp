@@ -492,14 +492,14 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);
     // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
-    // does it in its own rebuild of the mesh).
-    if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
+    // does it in its own renumbering of the mesh).
+    if (!weld) fine.mesh = mesh::without_unreferenced_nodes(std::move(fine.mesh));
     return fine;
   });
-  coarse = mesh::Mesh();  // not needed any more: the weld then holds two meshes at once, not three
+  coarse = mesh::Mesh();  // not needed any more
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
-      return weld_coincident_nodes(split.mesh, kWeldTolerance * chord, report).mesh;
+      return weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
     });
   // The weld keeps the elements in order; an element it moved no longer matches its fingerprint.
   inherited = std::move(split.inherited);
