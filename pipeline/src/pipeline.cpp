@@ -737,11 +737,13 @@ RunResult run(const Config& config, Progress& progress) {
     ho::follow_precut_faces(result.mesh, linear.precut_faces, kPrecutTolerance * chord);
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
+  linear = LinearMesh();  // its layer stacks and cuts served the split
   if (config.output.target == OutputTarget::Pyfr) {
     result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
-    inherited.clear();  // elements renumbered: every one is certified on its own
+    inherited = {};  // elements renumbered: every one is certified on its own
   }
   check(config, geometry, surfaces, chord, inherited, progress, result);
+  inherited = {};  // served the checks; the write needs the room
   // A user writing MSH for PyFR hears now what its importer would refuse.
   if (std::any_of(config.output.formats.begin(), config.output.formats.end(),
                   [](const std::string& f) { return f == "msh41-ascii" || f == "msh22"; }))
