@@ -5,7 +5,8 @@ comparable on a loaded machine (wall clock does not: it grows with the load, CPU
 Runs SEMIMESH run CONFIG -o OUT --log-json [--set ...], reads its stage events as they come and
 samples the process's CPU time (/proc/PID/stat utime + stime: all threads; + cutime + cstime: the
 children it has waited for, e.g. the far field's TetGen process) at each stage's start and end; the
-peak resident memory and total CPU come from wait4's rusage.
+peak resident memory and total CPU come from wait4's rusage. The largest resident memory seen in
+each stage comes from /proc/PID/status (VmRSS, sampled every 0.2 s): where the peak is.
 
 usage: stage_cpu.py SEMIMESH CONFIG OUT [--set key=value ...]
 """
@@ -13,6 +14,7 @@ import json
 import os
 import subprocess
 import sys
+import threading
 import time
 
 
@@ -22,6 +24,25 @@ def cpu_seconds(pid):
     return sum(int(f) for f in fields[11:15]) / os.sysconf("SC_CLK_TCK")  # utime, stime, cutime, cstime
 
 
+def resident_mb(pid):
+    try:
+        with open(f"/proc/{pid}/status") as fh:
+            for line in fh:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return 0.0
+
+
+def sample_resident(pid, current, largest, stop):
+    """largest[stage] = the most VmRSS seen while current[0] was that stage, until stop is set."""
+    while not stop.is_set():
+        mb = resident_mb(pid)
+        largest[current[0]] = max(largest.get(current[0], 0.0), mb)
+        stop.wait(0.2)
+
+
 def main():
     if len(sys.argv) < 4:
         sys.exit(__doc__)
@@ -29,6 +50,9 @@ def main():
     proc = subprocess.Popen([exe, "run", config, "-o", out, "--log-json"] + extra, stdout=subprocess.PIPE,
                             text=True, bufsize=1)
     started, rows = {}, []
+    current, largest, stop = ["(between stages)"], {}, threading.Event()
+    sampler = threading.Thread(target=sample_resident, args=(proc.pid, current, largest, stop), daemon=True)
+    sampler.start()
     begin = time.monotonic()
     for line in proc.stdout:
         try:
@@ -38,13 +62,17 @@ def main():
         kind = event.get("event")
         if kind == "stage_started":
             started[event["stage"]] = cpu_seconds(proc.pid)
+            current[0] = event["stage"]
         elif kind == "stage_finished":
             rows.append((event["stage"], event["seconds"], cpu_seconds(proc.pid) - started.pop(event["stage"])))
+            current[0] = "(between stages)"
+    stop.set()
+    sampler.join()
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.monotonic() - begin
-    print(f"{'stage':<14} {'wall s':>9} {'CPU s':>9}")
+    print(f"{'stage':<14} {'wall s':>9} {'CPU s':>9} {'RSS MB':>9}")
     for name, seconds, cpu in rows:
-        print(f"{name:<14} {seconds:9.2f} {cpu:9.2f}")
+        print(f"{name:<14} {seconds:9.2f} {cpu:9.2f} {largest.get(name, 0.0):9.0f}")
     print(f"{'total':<14} {wall:9.2f} {usage.ru_utime + usage.ru_stime:9.2f}")
     print(f"peak RSS {usage.ru_maxrss / 1024:.0f} MB, exit status {os.waitstatus_to_exitcode(status)}, "
           f"load average {os.getloadavg()[0]:.1f}")

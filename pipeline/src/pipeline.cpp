@@ -30,6 +30,9 @@
 #include <fmt/format.h>
 
 #include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>  // malloc_trim
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -65,11 +68,21 @@ ProgressCallback stage_progress(Progress& progress) {
   };
 }
 
+// The C library keeps what a stage freed (the hash tables' nodes, a replaced mesh's small blocks) for
+// later allocations, resident: given back to the system before each stage, the peak is what the
+// stages hold, not what they once held.
+void release_freed_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
 // Runs one stage: reports its start and end, and turns its exceptions into RunError. A body that
 // takes a ProgressCallback reports its progress through it.
 template <typename Stage>
 auto stage(const std::string& name, Progress& progress, RunResult& result, Stage&& body) {
   progress.stage_started(name);
+  release_freed_memory();
   const ProgressCallback report = stage_progress(progress);
   auto call = [&] {
     if constexpr (std::is_invocable_v<Stage&, const ProgressCallback&>)
@@ -492,14 +505,14 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);
     // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
-    // does it in its own rebuild of the mesh).
-    if (!weld) fine.mesh = mesh::without_unreferenced_nodes(fine.mesh);
+    // does it in its own renumbering of the mesh).
+    if (!weld) fine.mesh = mesh::without_unreferenced_nodes(std::move(fine.mesh));
     return fine;
   });
-  coarse = mesh::Mesh();  // not needed any more: the weld then holds two meshes at once, not three
+  coarse = mesh::Mesh();  // not needed any more
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
-      return weld_coincident_nodes(split.mesh, kWeldTolerance * chord, report).mesh;
+      return weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
     });
   // The weld keeps the elements in order; an element it moved no longer matches its fingerprint.
   inherited = std::move(split.inherited);
@@ -724,11 +737,13 @@ RunResult run(const Config& config, Progress& progress) {
     ho::follow_precut_faces(result.mesh, linear.precut_faces, kPrecutTolerance * chord);
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
     result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
+  linear = LinearMesh();  // its layer stacks and cuts served the split
   if (config.output.target == OutputTarget::Pyfr) {
     result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
-    inherited.clear();  // elements renumbered: every one is certified on its own
+    inherited = {};  // elements renumbered: every one is certified on its own
   }
   check(config, geometry, surfaces, chord, inherited, progress, result);
+  inherited = {};  // served the checks; the write needs the room
   // A user writing MSH for PyFR hears now what its importer would refuse.
   if (std::any_of(config.output.formats.begin(), config.output.formats.end(),
                   [](const std::string& f) { return f == "msh41-ascii" || f == "msh22"; }))

@@ -1,7 +1,6 @@
 #include "semimesh/pipeline/weld_nodes.hpp"
 
 #include "semimesh/ho/curving/extend_inward.hpp"
-#include "semimesh/mesh/compact.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace semimesh::pipeline {
@@ -95,10 +95,11 @@ Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vect
     out.edge_moved[e] = take_nodes(mesh, pool_part(mesh.edge_pool(), edge.first_node, P - 1), theirs, tolerance, to,
                                    out.largest_move);
   }
+  std::vector<mesh::NodeId> welded;  // one face's vertices after the weld, reused: most faces do not move
   for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
     const mesh::Face& face = mesh.faces()[f];
     const int n = face.num_vertices;
-    std::vector<mesh::NodeId> welded(face.vertices.begin(), face.vertices.begin() + n);
+    welded.assign(face.vertices.begin(), face.vertices.begin() + n);
     bool moved = false;
     for (mesh::NodeId& v : welded) moved = moved || to[v] != v, v = to[v];
     if (!moved) continue;
@@ -186,19 +187,11 @@ std::unordered_map<mesh::NodeId, Eigen::Vector3d> carry_inwards(const mesh::Mesh
   return moved;
 }
 
-}  // namespace
-
-Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress) {
-  const auto report = [&](double fraction, const char* step) {
-    if (progress) progress(fraction, step);
-  };
+// to[v]: the vertex seen first (in element order) within tolerance of vertex v's point, else v.
+std::vector<mesh::NodeId> coincident_vertices(const mesh::Mesh& mesh, double tolerance) {
   const std::size_t n = mesh.num_nodes();
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
-  Welded out{mesh::Mesh(mesh.order(), mesh.node_set()), 0};
-
-  report(0.0, "vertices");
-  // Coincident vertices by their points; the nodes inside edges and faces by topology (above).
   std::vector<char> seen(n, 0);
   PointIndex vertices(mesh, tolerance);
   for (const mesh::Element& e : mesh.elements())
@@ -208,15 +201,29 @@ Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const Pro
       seen[v] = 1;
       to[v] = vertices.find_or_add(v);
     }
+  return to;
+}
+
+}  // namespace
+
+Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress) {
+  const auto report = [&](double fraction, const char* step) {
+    if (progress) progress(fraction, step);
+  };
+  Welded out;
+  report(0.0, "vertices");
+  // Coincident vertices by their points; the nodes inside edges and faces by topology (above).
+  std::vector<mesh::NodeId> to = coincident_vertices(mesh, tolerance);
   report(0.1, "edges and faces");
   const Snapped snapped = snap_welded_entities(mesh, tolerance, to);
   out.largest_move = snapped.largest_move;
-  for (std::size_t v = 0; v < n; ++v) out.merged += to[v] != v;
+  for (std::size_t v = 0; v < to.size(); ++v) out.merged += to[v] != v;
   report(0.15, "inwards");
   const auto moved = carry_inwards(mesh, snapped, to);
   out.carried = moved.size();
   report(0.2, "mesh");
-  out.mesh = mesh::with_nodes_replaced(mesh, to, moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
+  mesh.replace_nodes(to, moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
+  out.mesh = std::move(mesh);
   return out;
 }
 

@@ -347,6 +347,78 @@ void Mesh::face_nodes(std::size_t face, std::vector<NodeId>& out) const {
   assemble(shape, f.vertices.data(), f.edges.data(), f.edge_reversed, &id, &identity, 0, out);
 }
 
+std::vector<char> Mesh::referenced_nodes() const {
+  std::vector<char> used(nodes_.size(), 0);
+  std::vector<NodeId> ids;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    element_nodes(e, ids);
+    for (NodeId id : ids) used[id] = 1;
+  }
+  for (std::size_t b = 0; b < boundary_.size(); ++b)
+    for (NodeId id : boundary_face_nodes(b)) used[id] = 1;
+  return used;
+}
+
+std::vector<NodeId> Mesh::compact_nodes(const std::vector<char>& used,
+                                        const std::unordered_map<NodeId, Eigen::Vector3d>& moved) {
+  std::vector<NodeId> new_id(nodes_.size(), kNoNode);
+  std::unordered_map<NodeId, CadAttachment> cad;
+  NodeId next = 0;
+  for (NodeId id = 0; id < nodes_.size(); ++id) {
+    if (!used[id]) continue;
+    const auto it = moved.find(id);
+    nodes_[next] = it == moved.end() ? nodes_[id] : it->second;  // next <= id: never a node still to be read
+    if (const auto c = cad_.find(id); c != cad_.end()) cad.emplace(next, c->second);
+    new_id[id] = next++;
+  }
+  nodes_.resize(next);
+  cad_ = std::move(cad);
+  return new_id;
+}
+
+void Mesh::replace_nodes(const std::vector<NodeId>& to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                         const std::function<void(double)>& done) {
+  for (const auto& [id, x] : moved)
+    if (cad_attachment(id).kind != CadAttachment::None)
+      throw std::invalid_argument("Mesh::replace_nodes: node " + std::to_string(id) +
+                                  " is attached to the CAD and cannot be moved off it");
+  if (to.size() != nodes_.size())
+    throw std::invalid_argument("Mesh::replace_nodes: a map of " + std::to_string(to.size()) +
+                                " nodes for a mesh of " + std::to_string(nodes_.size()));
+  std::vector<char> used(nodes_.size(), 0);
+  {
+    const std::vector<char> referenced = referenced_nodes();
+    for (NodeId v = 0; v < nodes_.size(); ++v)
+      if (referenced[v]) used[to[v]] = 1;
+  }
+  const std::vector<NodeId> new_id = compact_nodes(used, moved);
+  used = {};
+  // The old entities move into a mesh of their own, which still assembles the old node lists.
+  Mesh old(order_, node_set_);
+  old.edges_ = std::move(edges_), old.faces_ = std::move(faces_);
+  old.elements_ = std::move(elements_), old.boundary_ = std::move(boundary_);
+  old.edge_pool_ = std::move(edge_pool_), old.face_pool_ = std::move(face_pool_);
+  old.interior_pool_ = std::move(interior_pool_);
+  edges_ = {}, faces_ = {}, elements_ = {}, boundary_ = {};
+  edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
+  edge_index_ = {}, face_index_ = {};  // = {} frees them, clear() would keep their buckets
+  if (!old.elements_.empty()) reserve(old.elements_.front().shape, old.elements_.size());
+  std::vector<NodeId> ids;
+  const std::size_t count = old.elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
+  for (std::size_t e = 0; e < count; ++e) {
+    if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
+    old.element_nodes(e, ids);
+    for (NodeId& id : ids) id = new_id[to[id]];
+    add_element(old.elements_[e].shape, ids, old.elements_[e].region);
+  }
+  for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
+    ids = old.boundary_face_nodes(b);
+    for (NodeId& id : ids) id = new_id[to[id]];
+    add_boundary_face(groups_[old.boundary_[b].group], old.boundary_[b].shape, ids);
+  }
+  if (done) done(1.0);
+}
+
 std::size_t Mesh::memory_bytes() const {
   // unordered_map: one bucket pointer per bucket, one heap node (value + next pointer + cached
   // hash) per entry.

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace semimesh::ho {
@@ -372,7 +373,7 @@ PyramidColumns split_pyramid_columns(const mesh::Mesh& in, double tolerance) {
       out.add_boundary_face(in.group_names()[in.boundary_faces()[b].group], in.boundary_faces()[b].shape,
                             in.boundary_face_nodes(b));
   }
-  return {mesh::without_unreferenced_nodes(out), columns.stats};
+  return {mesh::without_unreferenced_nodes(std::move(out)), columns.stats};
 }
 
 }  // namespace semimesh::ho

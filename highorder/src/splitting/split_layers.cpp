@@ -99,9 +99,6 @@ class Splitter {
                  std::vector<InheritedBounds>* inherited = nullptr);
 
  private:
-  /// [pieces of split element j, in `split`'s order] each piece's node list.
-  using Pieces = std::vector<std::vector<std::vector<NodeId>>>;
-
   /// Throws unless there is a family and each has layers >= 1 and a constant ratio >= 1.
   void check_families() const;
   /// Throws naming the element when one entry of the list cannot be split as asked (index, shape,
@@ -112,16 +109,19 @@ class Splitter {
   /// The output starts as the input's nodes (with their CAD attachments), groups and regions.
   void copy_nodes_groups_and_regions();
   /// Every input element into the output in input order, split ones as their pieces (with their
-  /// inherited bounds when asked); returns the pieces' node lists.
-  Pieces add_elements(const std::vector<int>& position, std::size_t split_count, std::vector<std::size_t>* first_piece,
-                      const ProgressCallback& progress, std::vector<InheritedBounds>* inherited);
+  /// inherited bounds when asked); returns [split element j, in `split`'s order] the output index
+  /// of its first piece (the pieces' node lists are then read from the output, never kept).
+  std::vector<std::size_t> add_elements(const std::vector<int>& position, std::size_t split_count,
+                                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                                        std::vector<InheritedBounds>* inherited);
   /// Input elements [from, end) copied as they are.
   void copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece);
   /// The pieces of one split element, with the bounds certify_pieces derived for them when asked.
   void add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,
                   const std::vector<std::optional<JacobianBounds>>& bounds, std::vector<InheritedBounds>* inherited);
   /// Each input boundary face: one per piece lying on it when its element's split cuts it, else copied.
-  void add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position, const Pieces& pieces);
+  void add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
+                          const std::vector<std::size_t>& first_out);
   /// Does piece `piece` of `element` lie on the element's face with local vertices `local`?
   bool piece_on_face(std::size_t element, std::size_t piece, const std::vector<int>& local) const;
   /// [families] the figures gathered while splitting.
@@ -162,8 +162,8 @@ class Splitter {
   SplitGeometry place_sub_nodes(std::size_t element, const VertexInterfaces& z_of_vertex) const;
   /// The reference boxes of the pieces of an element split with constant interfaces `z` per slot.
   std::vector<ReferenceBox> piece_boxes(std::size_t element, const std::array<std::vector<double>, 2>& z) const;
-  /// Piece node lists of one coarse element, body-side pieces first; creates the new nodes.
-  std::vector<std::vector<NodeId>> split_element(std::size_t element, const SplitGeometry& geometry);
+  /// Piece node lists of one coarse element into pieces_, body-side pieces first; creates the new nodes.
+  void split_element(std::size_t element, const SplitGeometry& geometry);
   NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
                  const std::array<int, 2>& g) const;
   NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
@@ -184,6 +184,10 @@ class Splitter {
   std::vector<std::vector<NodeId>> edge_slots_, face_slots_;  // [input edges], [input faces]
   std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
   std::vector<NodeId> face_vertices_;                          // scratch of node_for
+  // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
+  // nodes, its pieces' node lists.
+  std::vector<NodeId> coarse_;
+  std::vector<std::vector<NodeId>> pieces_;
   struct Figures {
     double height_min = 1e300, height_max = 0.0, ratio_sum = 0.0;
     int vertical_edges = 0, elements = 0;
@@ -435,16 +439,19 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
   return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[s], plan.two() ? -1 - s : 0};
 }
 
-std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
+void Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
   const int P = in_.order(), na = layers(element, 0), nb = layers(element, 1);
-  const std::vector<NodeId> coarse = in_.element_nodes(element);
+  in_.element_nodes(element, coarse_);
+  const std::vector<NodeId>& coarse = coarse_;
   const int nn = static_cast<int>(coarse.size());
   const Eigen::MatrixX3d& x = geometry.x;
   element_nodes_.clear();  // the last element's inner nodes: no other element names them
 
-  std::vector<std::vector<NodeId>> subs(na * nb, std::vector<NodeId>(nn));
+  std::vector<std::vector<NodeId>>& subs = pieces_;
+  subs.resize(static_cast<std::size_t>(na) * nb);
+  for (std::vector<NodeId>& piece : subs) piece.resize(nn);
   for (int kb = 0; kb < nb; ++kb)
     for (int ka = 0; ka < na; ++ka)
       for (int i = 0; i < nn; ++i) {
@@ -473,7 +480,6 @@ std::vector<std::vector<NodeId>> Splitter::split_element(std::size_t element, co
     }
     ++f.elements;
   }
-  return subs;
 }
 
 std::vector<std::pair<int, std::vector<NodeId>>> Splitter::cuts(std::size_t element, std::uint32_t face) const {
@@ -534,8 +540,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   check_side_faces(split);                                 // before any output: a crack is refused
   if (first_piece) first_piece->assign(in_.elements().size(), 0);
   copy_nodes_groups_and_regions();  // input node ids stay valid in the output
-  const Pieces pieces = add_elements(position, split.size(), first_piece, progress, inherited);
-  add_boundary_faces(split, position, pieces);  // the pieces made their faces: these link to them
+  const std::vector<std::size_t> first_out = add_elements(position, split.size(), first_piece, progress, inherited);
+  add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
   if (stats) *stats = split_stats();
   return std::move(out_);
 }
@@ -604,13 +610,13 @@ void Splitter::copy_nodes_groups_and_regions() {
 // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
 // nodes' positions (the costly part) in parallel, then node creation and elements serially in a
 // fixed order, so the output does not depend on the thread count.
-Splitter::Pieces Splitter::add_elements(const std::vector<int>& position, std::size_t split_count,
-                                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
-                                        std::vector<InheritedBounds>* inherited) {
+std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position, std::size_t split_count,
+                                                std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                                                std::vector<InheritedBounds>* inherited) {
   std::vector<std::size_t> ascending;
   for (std::size_t e = 0; e < in_.elements().size(); ++e)
     if (position[e] >= 0) ascending.push_back(e);
-  Pieces pieces(split_count);
+  std::vector<std::size_t> first_out(split_count);
   std::size_t next = 0;                                             // next input element to emit
   ProgressCounter counter(progress, ascending.size(), "elements");  // reported per block, from this thread
   for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
@@ -623,10 +629,10 @@ Splitter::Pieces Splitter::add_elements(const std::vector<int>& position, std::s
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t e = ascending[first + k];
       copy_elements(next, e, first_piece);
-      std::vector<std::vector<NodeId>>& mine = pieces[position[e]];
-      mine = split_element(e, geometry[k]);
+      split_element(e, geometry[k]);
+      first_out[position[e]] = out_.elements().size();
       if (first_piece) (*first_piece)[e] = out_.elements().size();
-      add_pieces(e, mine, geometry[k].bounds, inherited);
+      add_pieces(e, pieces_, geometry[k].bounds, inherited);
       next = e + 1;
     }
     counter.add(count);
@@ -635,7 +641,7 @@ Splitter::Pieces Splitter::add_elements(const std::vector<int>& position, std::s
   counter.finish();
   copy_elements(next, in_.elements().size(), first_piece);
   if (inherited) inherited->resize(out_.elements().size());
-  return pieces;
+  return first_out;
 }
 
 void Splitter::copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece) {
@@ -662,7 +668,7 @@ void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<Nod
 // Boundary faces: split with the element whose face they are when its split cuts them (each
 // piece lying on the face gives one), copied otherwise.
 void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
-                                  const Pieces& pieces) {
+                                  const std::vector<std::size_t>& first_out) {
   std::map<std::uint32_t, std::size_t> cut_face_owner;  // input face id -> split element
   for (const LayerSplit& s : split) {
     const mesh::Element& el = in_.elements()[s.element];
@@ -683,11 +689,13 @@ void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const st
     for (std::size_t j = 0; j < local.size(); ++j)
       local[j] =
           static_cast<int>(std::find(el.vertices.begin(), el.vertices.end(), bf.vertices[j]) - el.vertices.begin());
-    const auto& mine = pieces[position[e]];
-    for (std::size_t piece = 0; piece < mine.size(); ++piece)
-      if (piece_on_face(e, piece, local))
-        out_.add_boundary_face(group, bf.shape,
-                               detail::face_nodes_of_element(el.shape, in_.order(), mine[piece], local));
+    const std::size_t count = static_cast<std::size_t>(layers(e, 0)) * layers(e, 1);
+    std::vector<NodeId> nodes;
+    for (std::size_t piece = 0; piece < count; ++piece)
+      if (piece_on_face(e, piece, local)) {
+        out_.element_nodes(first_out[position[e]] + piece, nodes);
+        out_.add_boundary_face(group, bf.shape, detail::face_nodes_of_element(el.shape, in_.order(), nodes, local));
+      }
   }
 }
 

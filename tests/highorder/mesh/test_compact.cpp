@@ -1,11 +1,17 @@
 // mesh::without_unreferenced_nodes: orphan nodes dropped, everything else kept (compared with the
 // source mesh through node positions, not through the function's own bookkeeping); and
-// with_nodes_replaced, which a weld uses to join two elements given equal nodes under two ids.
+// with_nodes_replaced, which a weld uses to join two elements given equal nodes under two ids;
+// Mesh::replace_nodes, which does it in place, gives the entities a fresh build would.
 #include "semimesh/mesh/compact.hpp"
+
+#include "semimesh/ho/element_type.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -125,6 +131,119 @@ TEST(Compact, ReplacingNodesCanMoveTheKeptOnesOffNoCad) {
   EXPECT_EQ(out.node(moved_tet.back()), there);
   for (std::size_t k = 0; k + 1 < tet.size(); ++k) EXPECT_EQ(out.node(moved_tet[k]), source.node(tet[k])) << k;
   EXPECT_THROW(semimesh::mesh::with_nodes_replaced(source, to, {{tet[0], there}}), std::invalid_argument);
+}
+
+// Two order-3 hexes side by side (x in [0, 1] and [1, 2]), each with its own 64 nodes, the second
+// one's created first (lower ids) so that welding its x = 1 face onto the first's turns some of its
+// edges around; a boundary quad on that face in the second hex's ids, and an orphan.
+struct DoubledFace {
+  Mesh mesh{3};
+  std::vector<NodeId> to;  ///< every node of the second hex at a point of the first onto that one
+};
+
+DoubledFace two_order3_hexes_with_a_doubled_face() {
+  DoubledFace d;
+  Mesh& m = d.mesh;
+  const Eigen::MatrixX3d reference = semimesh::ho::reference_nodes(Shape::Hexahedron, 3);  // [-1, 1]^3
+  auto hex_nodes = [&](double x0) {
+    std::vector<NodeId> ids;
+    for (int i = 0; i < reference.rows(); ++i)
+      ids.push_back(m.add_node((reference.row(i).transpose() + Eigen::Vector3d::Ones()) / 2 + Eigen::Vector3d(x0, 0, 0)));
+    return ids;
+  };
+  const std::vector<NodeId> second = hex_nodes(1.0);
+  m.add_node(Eigen::Vector3d(9, 9, 9));  // orphan
+  const std::vector<NodeId> first = hex_nodes(0.0);
+  m.add_element(Shape::Hexahedron, first);
+  m.add_element(Shape::Hexahedron, second, m.region_index("farfield"));
+  const long face = m.find_face({second[0], second[3], second[7], second[4]});  // its x = 1 side
+  m.add_boundary_face("interface", Shape::Quadrilateral, m.face_nodes(static_cast<std::size_t>(face)));
+  d.to.resize(m.num_nodes());
+  for (NodeId v = 0; v < m.num_nodes(); ++v) d.to[v] = v;
+  // The nodes sit at multiples of 1/3, each hex's computed its own way (equal up to round-off).
+  auto lattice = [&](NodeId v) {
+    const Eigen::Vector3d x = 3 * m.node(v);
+    return std::array<long, 3>{std::lround(x.x()), std::lround(x.y()), std::lround(x.z())};
+  };
+  std::map<std::array<long, 3>, NodeId> of_first;
+  for (NodeId v : first) of_first[lattice(v)] = v;
+  for (NodeId v : second)
+    if (const auto it = of_first.find(lattice(v)); it != of_first.end()) d.to[v] = it->second;
+  return d;
+}
+
+// The reference: a fresh mesh given the kept nodes in order and the welded node lists.
+Mesh built_afresh(const Mesh& m, const std::vector<NodeId>& to) {
+  std::vector<char> used(m.num_nodes(), 0);
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    for (NodeId v : m.element_nodes(e)) used[to[v]] = 1;
+  Mesh out(m.order(), m.node_set());
+  std::vector<NodeId> new_id(m.num_nodes(), semimesh::mesh::kNoNode);
+  for (NodeId v = 0; v < m.num_nodes(); ++v)
+    if (used[v]) new_id[v] = out.add_node(m.node(v), m.cad_attachment(v));
+  out.copy_regions_from(m);
+  auto welded = [&](std::vector<NodeId> ids) {
+    for (NodeId& v : ids) v = new_id[to[v]];
+    return ids;
+  };
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    out.add_element(m.elements()[e].shape, welded(m.element_nodes(e)), m.elements()[e].region);
+  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
+    out.add_boundary_face(m.group_names()[m.boundary_faces()[b].group], m.boundary_faces()[b].shape,
+                          welded(m.boundary_face_nodes(b)));
+  return out;
+}
+
+TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  const Mesh expected = built_afresh(d.mesh, d.to);
+  ASSERT_EQ(d.mesh.faces().size(), 12u);
+  d.mesh.replace_nodes(d.to);
+  const Mesh& m = d.mesh;
+  EXPECT_EQ(m.num_nodes(), 2u * 64 - 16);
+  EXPECT_EQ(m.faces().size(), 11u);
+  EXPECT_EQ(m.nodes(), expected.nodes());
+  EXPECT_EQ(m.edge_pool(), expected.edge_pool());
+  EXPECT_EQ(m.face_pool(), expected.face_pool());
+  EXPECT_EQ(m.interior_pool(), expected.interior_pool());
+  ASSERT_EQ(m.edges().size(), expected.edges().size());
+  for (std::size_t e = 0; e < m.edges().size(); ++e) {
+    EXPECT_EQ(m.edges()[e].vertices, expected.edges()[e].vertices) << e;
+    EXPECT_EQ(m.edges()[e].first_node, expected.edges()[e].first_node) << e;
+  }
+  ASSERT_EQ(m.faces().size(), expected.faces().size());
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    EXPECT_EQ(m.faces()[f].vertices, expected.faces()[f].vertices) << f;
+    EXPECT_EQ(m.faces()[f].edges, expected.faces()[f].edges) << f;
+    EXPECT_EQ(m.faces()[f].edge_reversed, expected.faces()[f].edge_reversed) << f;
+    EXPECT_EQ(m.faces()[f].first_node, expected.faces()[f].first_node) << f;
+  }
+  ASSERT_EQ(m.elements().size(), 2u);
+  for (std::size_t e = 0; e < 2; ++e) {
+    EXPECT_EQ(m.elements()[e].vertices, expected.elements()[e].vertices) << e;
+    EXPECT_EQ(m.elements()[e].edges, expected.elements()[e].edges) << e;
+    EXPECT_EQ(m.elements()[e].edge_reversed, expected.elements()[e].edge_reversed) << e;
+    EXPECT_EQ(m.elements()[e].faces, expected.elements()[e].faces) << e;
+    EXPECT_EQ(m.elements()[e].face_orientation, expected.elements()[e].face_orientation) << e;
+    EXPECT_EQ(m.elements()[e].region, expected.elements()[e].region) << e;
+    EXPECT_EQ(m.element_nodes(e), expected.element_nodes(e)) << e;
+  }
+  ASSERT_EQ(m.boundary_faces().size(), 1u);
+  EXPECT_EQ(m.boundary_face_nodes(0), expected.boundary_face_nodes(0));
+  EXPECT_EQ(m.group_names(), expected.group_names());
+  const auto& quad = m.boundary_faces()[0].vertices;
+  EXPECT_EQ(m.find_face({quad[0], quad[1], quad[2], quad[3]}), static_cast<long>(m.boundary_faces()[0].face))
+      << "the lookup tables are rebuilt too";
+}
+
+TEST(Compact, ReplacingNodesInPlaceRefusesABadMapWithoutChangingTheMesh) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  const std::vector<Eigen::Vector3d> before = d.mesh.nodes();
+  const std::size_t faces = d.mesh.faces().size();
+  std::vector<NodeId> short_map(d.to.begin(), d.to.end() - 1);
+  EXPECT_THROW(d.mesh.replace_nodes(short_map), std::invalid_argument);
+  EXPECT_EQ(d.mesh.nodes(), before);
+  EXPECT_EQ(d.mesh.faces().size(), faces);
 }
 
 }  // namespace

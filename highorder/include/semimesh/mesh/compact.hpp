@@ -16,20 +16,20 @@ std::size_t count_unreferenced_nodes(const Mesh& mesh);
 /// A mesh with the same elements (same order, same shapes, same canonical node lists up to the
 /// renumbering), boundary faces, groups and regions, whose nodes are only the referenced ones, kept in their
 /// old relative order with their CAD attachments. Edge and face entities are rebuilt in element order.
-Mesh without_unreferenced_nodes(const Mesh& mesh);
+/// Taken by value: a caller that moves its mesh in gets it back renumbered in place (Mesh::replace_nodes).
+Mesh without_unreferenced_nodes(Mesh mesh);
 
 /// The same with every node id v of an element or boundary face replaced by `to[v]` first
 /// ([mesh.num_nodes()]; a weld's map onto equal nodes): one rebuild for both. Node v's point and
 /// CAD attachment are kept for each id that remains referenced. without_unreferenced_nodes(m) is
 /// with_nodes_replaced(m, identity). `done` (optional) receives the fraction of elements rebuilt,
 /// about a hundred times.
-Mesh with_nodes_replaced(const Mesh& mesh, const std::vector<NodeId>& to,
-                         const std::function<void(double)>& done = {});
+Mesh with_nodes_replaced(Mesh mesh, const std::vector<NodeId>& to, const std::function<void(double)>& done = {});
 
 /// The same with the kept nodes listed in `moved` (by old id) at their listed points instead
 /// (a weld that carries snapped edges inwards); a listed node must have no CAD attachment
 /// (std::invalid_argument).
-Mesh with_nodes_replaced(const Mesh& mesh, const std::vector<NodeId>& to,
+Mesh with_nodes_replaced(Mesh mesh, const std::vector<NodeId>& to,
                          const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
                          const std::function<void(double)>& done = {});
 

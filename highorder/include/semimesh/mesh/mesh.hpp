@@ -28,6 +28,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -155,6 +156,21 @@ class Mesh {
   std::vector<NodeId> face_nodes(std::size_t face) const;
   void face_nodes(std::size_t face, std::vector<NodeId>& out) const;
 
+  // ---- renumbering ----------------------------------------------------------------------------
+  /// Whether some element or boundary face uses node v: [num_nodes()].
+  std::vector<char> referenced_nodes() const;
+  /// In place, what mesh::with_nodes_replaced gives (compact.hpp): every node id v of an element or
+  /// boundary face replaced by to[v] ([num_nodes()]), only the nodes then referenced kept, in their
+  /// relative order with their CAD attachments (those listed in `moved`, by old id, at the listed
+  /// points), and the edges, faces and pools rebuilt in element order as add_element builds them.
+  /// The nodes are held once; the old entities only until the new ones are built.
+  /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
+  /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
+  /// entity different nodes) leave it unusable. `done` (optional) receives the fraction of
+  /// elements rebuilt, about a hundred times.
+  void replace_nodes(const std::vector<NodeId>& to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
+                     const std::function<void(double)>& done = {});
+
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
   std::size_t memory_bytes() const;
 
@@ -167,6 +183,9 @@ class Mesh {
                      std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids, std::uint8_t* codes,
                      const std::string& who);
   void check_same_node(NodeId stored, NodeId given, const std::string& who) const;
+  /// Keeps the nodes `used` marks, in order (the `moved` ones at their new points); new id by old.
+  std::vector<NodeId> compact_nodes(const std::vector<char>& used,
+                                    const std::unordered_map<NodeId, Eigen::Vector3d>& moved);
   void assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
                 const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                 std::vector<NodeId>& out) const;

@@ -17,7 +17,7 @@ struct Welded {
   std::size_t carried = 0;    ///< face and element inner nodes re-placed around moved edges
 };
 
-/// A copy of `mesh` in which every element vertex that lies within `tolerance` of a vertex seen
+/// `mesh` (taken by value: moved in, it is renumbered in place, never copied) in which every element vertex that lies within `tolerance` of a vertex seen
 /// before it (in element order) is replaced by that one, and an edge or face whose vertices were
 /// all so welded onto those of another takes that one's inner nodes, matched by their place in it
 /// (order along the edge, slot in the face; never by distance: the far field's pre-cut skin quads
@@ -26,12 +26,12 @@ struct Welded {
 /// edge or face take the harmonic extension of their new boundary, as ho::curve_mesh gives them
 /// (ho::extend_inward), so a far-field element follows the split's curved edge. Only the nodes
 /// some element or boundary face then uses are kept (in their relative order, with their CAD
-/// attachments: one rebuild of the mesh, as mesh::with_nodes_replaced).
+/// attachments: one rebuild of the entities, as Mesh::replace_nodes).
 /// Throws std::logic_error (an internal error) naming both faces when a face's welded vertices
 /// are another face's in no rotation or reflection, and std::invalid_argument (from
 /// Mesh::add_element) when two elements would then give one edge or face different nodes.
 /// `progress`: the search (steps "vertices", "edges and faces", "inwards"), then the rebuild
 /// ("mesh"), from the calling thread.
-Welded weld_coincident_nodes(const mesh::Mesh& mesh, double tolerance, const ProgressCallback& progress = {});
+Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress = {});
 
 }  // namespace semimesh::pipeline
