@@ -281,12 +281,11 @@ TEST(PipelineRun, OutputPathsFollowTheFormats) {
 }
 
 // Uniform sizes (no curvature or named-curve sources, which the OCC model lacks): the analytic
-// and the OCC B-spline wing must give the same mesh.
-//
-// DISABLED: fails today, for reasons outside the pipeline (reported to the lead): with the same
-// curve meshes, the OCC lower surface's interior nodes land up to 0.13 chord away from the
-// analytic ones (its parameter-space triangulation differs), and TetGen then gives a different
-// number of tetrahedra. Run with --gtest_also_run_disabled_tests.
+// and the OCC B-spline wing must give the same mesh: the same surface meshes and near field
+// element for element, vertex for vertex. Not the same tetrahedra: TetGen's refinement turns
+// the round-off between the two (the B-spline matches the closed form to ~1e-9 here) into a few
+// different Steiner points (measured: 2956 and 2931 tetrahedra on boundaries equal to 4e-10),
+// so the far field must only be as large to within 5 %.
 TEST(PipelineRun, AnalyticAndOccWingsGiveTheSameMesh) {
   const std::vector<std::string> uniform = {"sizing.le_size=0", "sizing.te_size=0", "sizing.curvature_segments=0",
                                             "sizing.max_size=0.3", "geometry.naca.box=[-2,-2,0,3,2,2]",
@@ -296,11 +295,26 @@ TEST(PipelineRun, AnalyticAndOccWingsGiveTheSameMesh) {
   occ.push_back("geometry.backend=occ");
   const RunResult a = run(coarse_config(fresh_directory("naca"), uniform), progress);
   const RunResult b = run(coarse_config(fresh_directory("occ"), occ), progress);
-  EXPECT_EQ(a.elements_by_type, b.elements_by_type);
-  ASSERT_EQ(a.mesh.num_nodes(), b.mesh.num_nodes());
+  const auto tets = [](const RunResult& r) { return r.elements_by_type.at("tetrahedron"); };
+  EXPECT_NEAR(tets(a), tets(b), 0.05 * tets(a));
+  for (const auto& [type, count] : a.elements_by_type)
+    if (type != "tetrahedron") EXPECT_EQ(b.elements_by_type.at(type), count) << type;
+  // Vertices of the near field (every element that is not a tetrahedron) and of the boundary faces,
+  // in the order both runs build them.
+  const auto shaped_vertices = [](const mesh::Mesh& m) {
+    std::vector<cad::Vec3> out;
+    for (const mesh::Element& e : m.elements())
+      if (e.shape != ho::Shape::Tetrahedron)
+        for (int k = 0; k < ho::num_vertices(e.shape); ++k) out.push_back(m.node(e.vertices[k]));
+    for (const mesh::BoundaryFace& f : m.boundary_faces())
+      for (int k = 0; k < ho::num_vertices(f.shape); ++k) out.push_back(m.node(f.vertices[k]));
+    return out;
+  };
+  const std::vector<cad::Vec3> va = shaped_vertices(a.mesh), vb = shaped_vertices(b.mesh);
+  ASSERT_EQ(va.size(), vb.size());
+  ASSERT_GT(va.size(), 1000u);
   double worst = 0.0;
-  for (std::size_t n = 0; n < a.mesh.num_nodes(); ++n)
-    worst = std::max(worst, (a.mesh.node(static_cast<mesh::NodeId>(n)) - b.mesh.node(static_cast<mesh::NodeId>(n))).norm());
+  for (std::size_t k = 0; k < va.size(); ++k) worst = std::max(worst, (va[k] - vb[k]).norm());
   EXPECT_LT(worst, 1e-6);  // chord = 1
   fs::remove_all(fresh_directory("naca"));
   fs::remove_all(fresh_directory("occ"));

@@ -1,4 +1,5 @@
 #include "occ_surface.hpp"
+#include "span_cache.hpp"
 #include "to_vec.hpp"
 
 #include "semimesh/cad/error.hpp"
@@ -129,6 +130,8 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
   planar_ = kind_ == cad::SurfaceKind::Plane || lies_in_a_plane(surface_, face_, bounds_);
+  span_cached_ = type == GeomAbs_BSplineSurface || type == GeomAbs_BezierSurface;
+  serial_ = new_surface_serial();
   mutable_evaluator_ = type == GeomAbs_SurfaceOfRevolution || type == GeomAbs_SurfaceOfExtrusion ||
                        type == GeomAbs_OffsetSurface;
   grid_ = std::make_unique<SampleGrid>(bounds_, samples_along(box_adaptor, true), samples_along(box_adaptor, false),
@@ -138,7 +141,10 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
 cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
   gp_Pnt p;
   gp_Vec du, dv, duu, dvv, duv;
-  surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+  if (span_cached_)
+    thread_adaptor(serial_, surface_).D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+  else
+    surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
 }
 

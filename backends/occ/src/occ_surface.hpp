@@ -10,6 +10,7 @@
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -74,6 +75,8 @@ class OccSurface final : public cad::Surface {
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
   bool planar_ = false;
   bool mutable_evaluator_ = false;
+  bool span_cached_ = false;  // B-spline or Bezier: evaluated through this thread's span cache
+  std::uint64_t serial_ = 0;  // of thread_adaptor
 };
 
 }  // namespace semimesh::occ
