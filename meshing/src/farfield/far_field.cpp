@@ -382,7 +382,7 @@ TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<Ski
     try {
       return run_tetgen(input);
     } catch (const FarFieldError&) {
-      for (const auto& [node, index] : plc_index) mesh.place_node(node, points[index]);
+      for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_index.at(p.apex)]);
       throw first;
     }
   }
