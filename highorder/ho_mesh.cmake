@@ -14,6 +14,7 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/pole_chart.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/curve_mesh.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/follow_exposed_body.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/geometric_error.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/mesh_validity/certify_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/repair/repair_invalid.cpp)

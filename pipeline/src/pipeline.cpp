@@ -4,6 +4,7 @@
 #include "semimesh/cad/labels.hpp"
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/ho/curving/follow_exposed_body.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/ho/repair.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
@@ -456,7 +457,10 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
 mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear, Progress& progress,
                        RunResult& result) {
   mesh::Mesh curved = stage("curve", progress, result, [&](const ProgressCallback& report) {
-    return ho::curve_mesh(linear, model, config.highorder, &result.curving, report);
+    mesh::Mesh on_cad = ho::curve_mesh(linear, model, config.highorder, &result.curving, report);
+    // A sharp trailing edge's bare triangles at its tip end: the far field there bends with them.
+    ho::follow_exposed_body(on_cad, "wing", "farfield");
+    return on_cad;
   });
   result.node_placement = config.highorder.placement == ho::NodePlacement::Springs ? "springs" : "parameter";
   if (result.curving.optimisation_fallbacks > 0)
@@ -512,7 +516,11 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
   coarse = mesh::Mesh();  // not needed any more
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
-      return weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
+      mesh::Mesh welded = weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
+      // The weld re-extends the far field next to the pre-cut rims harmonically: bend it with the
+      // bare triangles again (follow_exposed_body in raise_order moved its vertices already).
+      ho::follow_exposed_body(welded, "wing", "farfield", /*moved_before=*/true);
+      return welded;
     });
   // The weld keeps the elements in order; an element it moved no longer matches its fingerprint.
   inherited = std::move(split.inherited);

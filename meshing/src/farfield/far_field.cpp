@@ -3,6 +3,7 @@
 #include "semimesh/cad/labels.hpp"
 
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
+#include "semimesh/ho/validity.hpp"
 #include "semimesh/nearfield/pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "semimesh/farfield/detail/wall_annulus.hpp"
@@ -308,9 +309,15 @@ std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mes
   return caps;
 }
 
-// Each skin quad becomes a pyramid; returns the far field's view of the skin: the skin triangles
-// and the pyramids' four side triangles.
-std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh, int& pyramids) {
+// A pyramid cap_skin stood on a skin quad: its apex node and base.
+struct SkinPyramid {
+  NodeId apex;
+  std::array<NodeId, 4> base;
+};
+
+// Each skin quad becomes a pyramid (listed in `pyramids`); returns the far field's view of the
+// skin: the skin triangles and the pyramids' four side triangles.
+std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh, std::vector<SkinPyramid>& pyramids) {
   std::map<std::pair<NodeId, NodeId>, std::size_t> face_of_edge;
   for (std::size_t f = 0; f < nf.skin.size(); ++f)
     for (int k = 0; k < nf.skin[f].count; ++k)
@@ -327,10 +334,58 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
     const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])},
                                                    slope_caps(nf, mesh, f, face_of_edge)));
     mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, mesh.region_index("farfield"));
-    ++pyramids;
+    pyramids.push_back({apex, {v[0], v[1], v[2], v[3]}});
     for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});
   }
   return triangles;
+}
+
+// TetGen 1.5.0 cannot refine a tetrahedron of zero volume (its circumcentre is at infinity: an
+// assertion in locate() aborts), and its constrained Delaunay mesh has such tets where input
+// points are exactly coplanar and cocircular. Skin quads that are copies of each other by a
+// translation (a wake block's strips where its layer ratio is 1) carry apexes at equal heights,
+// which line up with the quads' own edges exactly so (sweep seed 77 run 4: the wake's outflow end
+// beside the sharp edge's tip). Varying each apex's height by up to kApexVariation, in a fixed
+// pattern along the skin, breaks the tie; an apex whose pyramid would not stay valid keeps its place.
+constexpr double kApexVariation = 0.02;
+
+void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unordered_map<NodeId, int>& plc_index,
+                       mesh::Mesh& mesh, TetgenInput& input) {
+  constexpr int kPattern = 5;  // factors 1 - v, 1 - v/2, 1, 1 + v/2, 1 + v
+  for (std::size_t k = 0; k < pyramids.size(); ++k) {
+    const SkinPyramid& p = pyramids[k];
+    Eigen::MatrixX3d nodes(5, 3);
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 4; ++i) {
+      nodes.row(i) = mesh.node(p.base[i]).transpose();
+      centre += 0.25 * mesh.node(p.base[i]);
+    }
+    const double factor = 1.0 + kApexVariation * (static_cast<int>(k % kPattern) - kPattern / 2) / (kPattern / 2);
+    const Eigen::Vector3d apex = centre + factor * (mesh.node(p.apex) - centre);
+    nodes.row(4) = apex.transpose();
+    if (!ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) continue;
+    mesh.place_node(p.apex, apex);
+    input.points[plc_index.at(p.apex)] = apex;
+  }
+}
+
+// TetGen on the input, and once more with the apexes' heights varied when it fails (a zero-volume
+// tet among exactly degenerate points); the first failure is the one reported when both fail.
+TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
+                                       const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh) {
+  if (pyramids.empty()) return run_tetgen(input);
+  try {
+    return run_tetgen(input, /*quiet=*/true);
+  } catch (const FarFieldError& first) {
+    const std::vector<Eigen::Vector3d> points = input.points;
+    vary_apex_heights(pyramids, plc_index, mesh, input);
+    try {
+      return run_tetgen(input);
+    } catch (const FarFieldError&) {
+      for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_index.at(p.apex)]);
+      throw first;
+    }
+  }
 }
 
 }  // namespace
@@ -369,7 +424,9 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   const std::vector<Triangle> wall = model.surface(wall_surface).is_planar()
                                          ? mesh_planar_wall(model, wall_surface, nf, params, curve_nodes, mesh)
                                          : mesh_curved_wall(model, wall_surface, nf, params, curves, curve_nodes, mesh);
-  const std::vector<Triangle> skin = cap_skin(nf, mesh, stats.pyramids);
+  std::vector<SkinPyramid> pyramids;
+  const std::vector<Triangle> skin = cap_skin(nf, mesh, pyramids);
+  stats.pyramids = static_cast<int>(pyramids.size());
   // With a wall layer, its tops stand between the wall and the tetrahedra.
   std::vector<Triangle> wall_side = wall;
   std::vector<nearfield::LayerStack> stacks = nf.stacks;
@@ -402,7 +459,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
       input.triangles.push_back(local);
     }
   report(0.15, "TetGen");
-  const TetgenOutput output = run_tetgen(input);
+  const TetgenOutput output = run_tetgen_varying_apexes(input, pyramids, plc_index, mesh);
   report(0.9, "elements");
   stats.seconds_tetgen = output.seconds;
   for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <cstring>
 #include <sstream>
@@ -68,7 +69,7 @@ void write_all(int fd, const void* data, std::size_t bytes) {
 // terminatetetgen() and again in the destructor that runs while its error code is thrown, so any
 // TetGen failure would crash the whole program. The child sends back, through a pipe,
 // [int code, int points, int tets, double xyz[points][3], int corners[tets][4]].
-TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in) {
+TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quiet) {
   int pipe_fds[2];
   if (::pipe(pipe_fds) != 0) throw FarFieldError(std::string("cannot create a pipe for TetGen: ") + std::strerror(errno));
   const pid_t pid = ::fork();
@@ -79,6 +80,7 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in) {
   }
   if (pid == 0) {
     ::close(pipe_fds[0]);
+    if (quiet) ::freopen("/dev/null", "w", stderr);  // a failed assertion's message, when a retry follows
     tetgenio out;
     int header[3] = {0, 0, 0};
     try {
@@ -147,7 +149,7 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in) {
 
 }  // namespace
 
-TetgenOutput run_tetgen(const TetgenInput& input) {
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
   const int num_points = static_cast<int>(input.points.size());
   tetgenio in;
   in.firstnumber = 0;
@@ -175,7 +177,7 @@ TetgenOutput run_tetgen(const TetgenInput& input) {
   std::string buffer = switches.str();
 
   const auto start = std::chrono::steady_clock::now();
-  const TetgenRun run = tetrahedralize_in_child(buffer, in);
+  const TetgenRun run = tetrahedralize_in_child(buffer, in, quiet);
   TetgenOutput result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run.crashed)

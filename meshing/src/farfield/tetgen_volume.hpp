@@ -29,7 +29,8 @@ struct TetgenOutput {
 /// TetGen runs in a child process (see tetgen_volume.cpp: TetGen 1.5.0 crashes while reporting
 /// errors). Throws FarFieldError with TetGen's failure explained (self-intersecting boundary,
 /// facets too close, ...) and, when the boundary crosses itself, the two triangles and the point;
-/// or when TetGen moved or dropped an input point.
-TetgenOutput run_tetgen(const TetgenInput& input);
+/// or when TetGen moved or dropped an input point. `quiet`: TetGen's own messages (a failed
+/// assertion's, on stderr) are dropped, for a first try that a second one follows.
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false);
 
 }  // namespace semimesh::farfield
