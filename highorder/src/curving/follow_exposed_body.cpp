@@ -1,6 +1,7 @@
 #include "semimesh/ho/curving/follow_exposed_body.hpp"
 
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/closest_point.hpp"
 #include "semimesh/ho/element_type.hpp"
 
 #include <Eigen/Geometry>
@@ -27,37 +28,6 @@ struct ExposedFace {
   Eigen::MatrixX3d nodes;  // canonical, order P
   double size = 0.0;       // longest edge: the reach of its bulge into the far field
 };
-
-// Barycentric coordinates of the point of triangle abc closest to p (Ericson, Real-Time Collision
-// Detection, 5.1.5: the Voronoi regions of the vertices, then the edges, then the face).
-Eigen::Vector3d closest_barycentric(const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, 3>& t) {
-  const Eigen::Vector3d ab = t[1] - t[0], ac = t[2] - t[0], ap = p - t[0];
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Eigen::Vector3d bp = p - t[1];
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const Eigen::Vector3d cp = p - t[2];
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  return {1 - (vb + vc) * denom, vb * denom, vc * denom};
-}
 
 // The face entities the region's elements use.
 std::set<std::uint32_t> faces_of_region(const mesh::Mesh& m, int region) {
@@ -117,9 +87,9 @@ std::optional<Eigen::Vector3d> follow(const Eigen::Vector3d& x, const std::vecto
   const ExposedFace* face = nullptr;
   Eigen::Vector3d foot_barycentric = Eigen::Vector3d::Zero();
   for (const ExposedFace& f : faces) {
-    const Eigen::Vector3d l = closest_barycentric(x, f.corner);
-    const double d = (x - (l[0] * f.corner[0] + l[1] * f.corner[1] + l[2] * f.corner[2])).norm();
-    if (d < nearest) nearest = d, face = &f, foot_barycentric = l;
+    const TriangleFoot foot = closest_point_on_triangle(x, f.corner[0], f.corner[1], f.corner[2]);
+    const double d = (x - foot.point).norm();
+    if (d < nearest) nearest = d, face = &f, foot_barycentric = foot.barycentric;
   }
   if (!face || nearest >= face->size) return std::nullopt;
   Eigen::MatrixX3d foot(1, 3);

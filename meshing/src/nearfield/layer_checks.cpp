@@ -1,5 +1,6 @@
 #include "semimesh/nearfield/layer_checks.hpp"
 
+#include "semimesh/ho/closest_point.hpp"
 #include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
@@ -51,24 +52,7 @@ bool prism_is_sound(const std::array<Vec3, 6>& x, double min_outer_ratio) {
 }
 
 double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return ap.norm();  // vertex a
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return bp.norm();  // vertex b
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return (p - (a + d1 / (d1 - d3) * ab)).norm();  // edge ab
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return cp.norm();  // vertex c
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return (p - (a + d2 / (d2 - d6) * ac)).norm();  // edge ac
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)  // edge bc
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  const double denominator = 1.0 / (va + vb + vc);  // inside the face
-  return (p - (a + ab * (vb * denominator) + ac * (vc * denominator))).norm();
+  return (p - ho::closest_point_on_triangle(p, a, b, c).point).norm();
 }
 
 namespace {

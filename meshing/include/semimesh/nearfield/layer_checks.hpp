@@ -29,8 +29,7 @@ std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vec
 std::vector<char> crowded_nodes_by_scan(const BodyMesh& body, const std::vector<std::vector<int>>& neighbours,
                                         const std::vector<Vec3>& outer, const std::vector<double>& thickness);
 
-/// Distance from p to the triangle (a, b, c) (closest point by Voronoi regions of the triangle,
-/// Ericson, "Real-Time Collision Detection", 2005, section 5.1.5).
+/// Distance from p to the triangle (a, b, c) (ho::closest_point_on_triangle).
 double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace semimesh::nearfield
