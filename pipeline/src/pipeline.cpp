@@ -220,6 +220,8 @@ nearfield::WakeParams wake_with_base(const cad::Model& model, nearfield::WakePar
 nearfield::WakeParams wake_for(const Config& config, const cad::Model& model, const Roles& roles) {
   nearfield::WakeParams wake = wake_with_base(model, config.wake, roles);
   wake.translational_rear_interfaces = config.output.target == OutputTarget::Pyfr;
+  wake.to_outlet = config.output.target == OutputTarget::Pyfr;
+  wake.outlet_cell = config.farfield.box_size;
   return wake;
 }
 
@@ -434,7 +436,7 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   });
   result.junction_hexes = near.junction_hexes;
   result.wake.hexes = near.wake.hexes;
-  result.wake.length = near.wake.length;
+  result.wake.length = near.wake.reach;
   result.wake.streamwise_cells = near.wake.streamwise_cells;
   result.wake.gap = near.wake.gap;
   nearfield::WakeBlock wake = near.wake;

@@ -89,12 +89,13 @@ class CurveNodes {
   std::map<std::pair<int, int>, NodeId> by_curve_node_;
 };
 
-// Box faces, meshed on the CAD; triangles returned with their normal out of the domain.
-std::vector<Triangle> mesh_box(const cad::Model& model, const std::vector<int>& box_surfaces,
+// Box faces but `skip` (-1: none), meshed on the CAD; triangles returned with their normal out of the domain.
+std::vector<Triangle> mesh_box(const cad::Model& model, const std::vector<int>& box_surfaces, int skip,
                                const surface::CurveMeshes& curves, const surface::SizeField& size, CurveNodes& curve_nodes,
                                mesh::Mesh& mesh) {
   std::vector<Triangle> triangles;
   for (int s : box_surfaces) {
+    if (s == skip) continue;
     surface::SurfaceMesh sm;
     try {
       sm = surface::mesh_surface(model, s, curves, size);
@@ -113,6 +114,16 @@ std::vector<Triangle> mesh_box(const cad::Model& model, const std::vector<int>& 
     for (const auto& t : sm.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
   }
   return triangles;
+}
+
+// The nodes round a surface's first (outer) loop, in the loop's order.
+std::vector<NodeId> outer_loop_nodes(const cad::Model& model, int surface, CurveNodes& curve_nodes) {
+  std::vector<NodeId> ids;
+  for (const cad::CurveUse& use : model.loops(surface).front().uses) {
+    const int n = curve_nodes.segments(use.curve);
+    for (int k = 0; k < n; ++k) ids.push_back(curve_nodes.node(use.curve, use.forward ? k : n - k));
+  }
+  return ids;
 }
 
 // An orthonormal frame of the wall plane with e1 x e2 = the wall's fluid normal.
@@ -160,12 +171,8 @@ std::vector<Triangle> mesh_planar_wall(const cad::Model& model, int wall_surface
   const cad::Surface& wall = model.surface(wall_surface);
   const PlaneFrame frame = wall_frame(wall);
 
-  std::vector<NodeId> ids;
+  std::vector<NodeId> ids = outer_loop_nodes(model, wall_surface, curve_nodes);
   std::vector<Eigen::Vector2d> outer, hole;
-  for (const cad::CurveUse& use : model.loops(wall_surface).front().uses) {
-    const int n = curve_nodes.segments(use.curve);
-    for (int k = 0; k < n; ++k) ids.push_back(curve_nodes.node(use.curve, use.forward ? k : n - k));
-  }
   canonicalise_outer_loop(ids, frame, mesh);
   for (NodeId id : ids) outer.push_back(frame.to_2d(mesh.node(id)));
 
@@ -189,6 +196,54 @@ std::vector<Triangle> mesh_planar_wall(const cad::Model& model, int wall_surface
   std::vector<Triangle> triangles;
   // Counter-clockwise in (e1, e2) means along the fluid normal: reversed to face out of the domain.
   for (const auto& t : annulus.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
+  return triangles;
+}
+
+// The far field's face that holds the wake block's outflow face (an H-type's wake run to it: the
+// near field's outlet outline): the planar box face every outline node lies on.
+int outlet_surface(const cad::Model& model, const std::vector<int>& box_surfaces, const nearfield::NearField& nf,
+                   double tolerance) {
+  for (int s : box_surfaces) {
+    if (!model.surface(s).is_planar()) continue;
+    const PlaneFrame frame = wall_frame(model.surface(s));
+    if (std::all_of(nf.outlet.begin(), nf.outlet.end(), [&](NodeId v) {
+          return std::abs((nf.mesh.node(v) - frame.origin).dot(frame.normal)) <= 10 * tolerance;
+        }))
+      return s;
+  }
+  const Eigen::Vector3d& x = nf.mesh.node(nf.outlet.front());
+  throw FarFieldError(fmt::format("far field: the wake block runs to the far field's downstream face (output.target = "
+                                  "\"pyfr\"), but no planar far-field surface holds its outflow face (node {} at "
+                                  "({:.6g}, {:.6g}, {:.6g}))",
+                                  nf.outlet.front(), x.x(), x.y(), x.z()));
+}
+
+// The outlet face (outlet_surface) triangulated in its plane between its outer loop `outline`
+// (lifted onto the wall layer's tops) and the wake's outflow face; triangles returned with their
+// normal out of the domain (away from the model's centre).
+std::vector<Triangle> mesh_outlet(const cad::Model& model, int surface, const std::vector<NodeId>& outline,
+                                  const nearfield::NearField& nf, const FarFieldParams& params, mesh::Mesh& mesh) {
+  const cad::Surface& face = model.surface(surface);
+  const PlaneFrame frame = wall_frame(face);
+  std::vector<NodeId> ids = outline;
+  std::vector<Eigen::Vector2d> outer, hole;
+  for (NodeId id : outline) outer.push_back(frame.to_2d(mesh.node(id)));
+  for (NodeId id : nf.outlet) {
+    hole.push_back(frame.to_2d(mesh.node(id)));
+    ids.push_back(id);
+  }
+  const Annulus annulus = triangulate_annulus(outer, hole, params.box_size, params.growth);
+  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
+    const Eigen::Vector3d x = frame.to_3d(annulus.points[i]);
+    const cad::SurfaceProjection on_face = face.project(x);
+    ids.push_back(mesh.add_node(x, {CadAttachment::Surface, surface, on_face.uv.x(), on_face.uv.y()}));
+  }
+  const cad::BBox box = model.bbox();
+  const bool along_normal_is_out = (frame.origin - 0.5 * (box.lo + box.hi)).dot(frame.normal) > 0;
+  std::vector<Triangle> triangles;
+  for (const auto& t : annulus.triangles)
+    triangles.push_back(along_normal_is_out ? Triangle{ids[t[0]], ids[t[1]], ids[t[2]]}
+                                            : Triangle{ids[t[0]], ids[t[2]], ids[t[1]]});
   return triangles;
 }
 
@@ -420,7 +475,13 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   const surface::CurveMeshes curves = surface::discretise_all_curves(model, size);
   CurveNodes curve_nodes(model, curves, mesh);
 
-  std::vector<Triangle> box = mesh_box(model, box_surfaces, curves, size, curve_nodes, mesh);
+  // An H-type's wake run to the far field's downstream face: that face is meshed round it, after
+  // the wall layer has lifted its outline.
+  const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
+  const int outlet = nf.outlet.empty() ? -1 : outlet_surface(model, box_surfaces, nf, tolerance);
+  std::vector<Triangle> box = mesh_box(model, box_surfaces, outlet, curves, size, curve_nodes, mesh);
+  std::vector<NodeId> outlet_outline;
+  if (outlet >= 0) outlet_outline = outer_loop_nodes(model, outlet, curve_nodes);
   const std::vector<Triangle> wall = model.surface(wall_surface).is_planar()
                                          ? mesh_planar_wall(model, wall_surface, nf, params, curve_nodes, mesh)
                                          : mesh_curved_wall(model, wall_surface, nf, params, curves, curve_nodes, mesh);
@@ -432,10 +493,17 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   std::vector<nearfield::LayerStack> stacks = nf.stacks;
   if (wall_layer_thickness > 0) {
     report(0.1, "wall layer");
-    const WallLayer layer = build_wall_layer(model, wall_surface, box_surfaces, wall_layer_thickness, wall, nf, box, mesh);
+    const WallLayer layer =
+        build_wall_layer(model, wall_surface, box_surfaces, wall_layer_thickness, wall, nf, box, outlet_outline, mesh);
     wall_side = layer.tops;
     stats.wall_layer_prisms = static_cast<int>(layer.stacks.size());
     stacks.insert(stacks.end(), layer.stacks.begin(), layer.stacks.end());
+    for (NodeId& v : outlet_outline)
+      if (const auto it = layer.top_of.find(v); it != layer.top_of.end()) v = it->second;
+  }
+  if (outlet >= 0) {
+    const std::vector<Triangle> around_wake = mesh_outlet(model, outlet, outlet_outline, nf, params, mesh);
+    box.insert(box.end(), around_wake.begin(), around_wake.end());
   }
 
   // The closed boundary of the tetrahedral region, numbered densely for TetGen.

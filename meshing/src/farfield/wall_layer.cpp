@@ -171,7 +171,7 @@ double lift_reach(const WallHeights& wall, const std::vector<Triangle>& box, con
 
 WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std::vector<int>& box_surfaces,
                            double thickness, const std::vector<Triangle>& wall, const nearfield::NearField& near,
-                           std::vector<Triangle>& box, mesh::Mesh& mesh) {
+                           std::vector<Triangle>& box, const std::vector<NodeId>& box_outline, mesh::Mesh& mesh) {
   if (near.footprint_top.size() != near.footprint.size())
     throw FarFieldError("far field: a wall layer needs the near field's halo above its footprint (C-type near field)");
   const WallHeights wall_heights(model, wall_surface);
@@ -189,12 +189,14 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   // Lift the box: nodes on the wall get a top node, the others move up.
   std::set<NodeId> box_nodes;
   for (const Triangle& t : box) box_nodes.insert(t.begin(), t.end());
+  box_nodes.insert(box_outline.begin(), box_outline.end());
   const double box_height = lift_reach(wall_heights, box, mesh, thickness, tolerance);
   if (!(thickness < 0.5 * box_height))
     throw FarFieldError("far field: the wall layer's thickness " + std::to_string(thickness) + " is not below half " +
                         (wall_heights.planar() ? "the box height " : "the height of the box triangles on the wall ") +
                         std::to_string(box_height));
-  std::unordered_map<NodeId, NodeId> top_of;
+  WallLayer layer;
+  std::unordered_map<NodeId, NodeId>& top_of = layer.top_of;
   for (std::size_t i = 0; i < near.footprint.size(); ++i) top_of[near.footprint[i]] = near.footprint_top[i];
   for (NodeId v : box_nodes) {
     const Eigen::Vector3d x = mesh.node(v);
@@ -218,7 +220,6 @@ WallLayer build_wall_layer(const cad::Model& model, int wall_surface, const std:
   if (!wall_heights.planar()) require_gentle_wall(model, wall_surface, thickness, wall, mesh);
 
   // Prisms on the wall triangles (stored facing into the wall: (A, C, B) for the prism's (A, B, C)).
-  WallLayer layer;
   const int region = mesh.region_index("wall_layer");
   std::map<std::pair<NodeId, NodeId>, int> edge_uses;
   for (const Triangle& t : wall)

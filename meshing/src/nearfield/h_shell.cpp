@@ -282,7 +282,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   detail::JunctionShell js =
       junction_shell(model, meshes, roles, params, junction, wall_thickness, te, wake.translational_rear_interfaces);
   if (wake.translational_rear_interfaces) {
-    const detail::TranslationalRims rims = detail::make_rear_interfaces_translational(js);
+    const detail::TranslationalRims rims = detail::make_rear_interfaces_translational(js, wake.to_outlet ? &d : nullptr);
     open_root_corners(model, roles.wall_surface, params.thickness, wall_thickness, rims, js);
   }
   // Over a curved wall the normal turns under the block: the gap measured along it decides.
@@ -295,8 +295,12 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const std::vector<Quad> base = base_quads(js, te.base);
   const CutRow cut = wake_cut_row(js, trailing_edge_nodes(js, base), wall_thickness, wake);
   const WakeSections sections = wake_sections(js, te, base, cut);
-  WakeSweep sweep(field.mesh, wake, d, sections.swept, box);
-  add_wake_elements(field, sweep, sections.swept, wake, d, te.base);
+  const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
+  WakeSweep sweep(field.mesh, wake, d, sections.swept, box,
+                  wake.to_outlet ? detail::wake_stations_to(
+                                       wake, outlet_distance(field.mesh, sections.swept, wake, d, box, tolerance))
+                                 : detail::wake_stations(wake));
+  const auto outflow = add_wake_elements(field, sweep, sections.swept, wake, d, te.base);
   add_exposed_body_faces(field.mesh, sections.exposed_base, js.bare);
   describe_wake_block(js, sweep, sections.swept, wake, d, wall_thickness, field.wake);
   // A curved wall may rise under the block downstream (a fuselage widening): the gap must hold
@@ -312,6 +316,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
     fan_planes.push_back(std::move(plane));
   cut_skin_at_split_interfaces(field, skin_faces(field, fan_planes, sections.exposed_base, js.bare), fractions,
                                interface_node);
+  field.outlet = outlet_outline(field, outflow, fractions, interface_node);
   check_wake_faces_carry_pyramids(field, sweep, wake);
   return std::move(field);
 }

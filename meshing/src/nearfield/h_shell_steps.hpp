@@ -83,6 +83,13 @@ struct WakeSections {
 WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<Quad>& base,
                            const CutRow& cut);
 
+// wake.to_outlet (output.target = "pyfr"): the distance from the trailing edge's cross-section (the
+// sections' corners, which must lie in one plane across d within `tolerance`) to the far field's
+// downstream face, the box's face across d (which must be one of its axes). Throws NearFieldError
+// naming the key otherwise, or with a widening (the cells must be translates).
+double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
+                       const cad::BBox& box, double tolerance);
+
 // The wake's nodes: node p at station k is p + s_k d, the layer offsets also moved away from the
 // sheet by tan(widening) per unit length across d, within the trailing edge's cross-section (across
 // the streamwise axis x, as the base and the rear interfaces): moved across d instead, at
@@ -91,14 +98,17 @@ WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& 
 // when first asked for, so node ids follow the order the elements use them.
 class WakeSweep {
  public:
+  /// `stations`: 0 = s_0 < ... < s_K, the distances downstream (detail::wake_stations).
   WakeSweep(mesh::Mesh& m, const WakeParams& wake, const Vec3& d, const std::vector<Section>& sections,
-            const cad::BBox& box);
+            const cad::BBox& box, std::vector<double> stations);
 
   /// [stations] p's node at each station, p itself first. Throws NearFieldError when a station
   /// leaves the far field's box.
   const std::vector<NodeId>& nodes(NodeId p);
 
   std::size_t stations() const { return s_.size(); }
+  /// the last station's distance downstream
+  double reach() const { return s_.back(); }
   /// trailing-edge node -> its nodes at every station
   const std::map<NodeId, std::vector<NodeId>>& swept() const { return swept_; }
 
@@ -117,8 +127,11 @@ class WakeSweep {
 // corner's triangles), turned to sweep along d; the base's pieces faced as wing boundary. Hexes
 // over rear interfaces continue their wing layer (a stack of the wing family); the base's are not
 // split.
-void add_wake_elements(NearField& field, WakeSweep& sweep, const std::vector<Section>& sections, const WakeParams& wake,
-                       const Vec3& d, int base);
+/// Returns the block's outflow faces when it runs to the far field's downstream face
+/// (wake.to_outlet), made "farfield" boundary faces, wound out of the domain; empty otherwise.
+std::vector<std::vector<NodeId>> add_wake_elements(NearField& field, WakeSweep& sweep,
+                                                   const std::vector<Section>& sections, const WakeParams& wake,
+                                                   const Vec3& d, int base);
 
 // The body faces no element stands on: the base quads below the cut, the bare triangles at a sharp
 // edge's tip end (wing boundary, facing into the body as the layer's).
@@ -178,6 +191,12 @@ std::vector<SkinFace> skin_faces(const NearField& field, const std::vector<std::
 // they are. No fractions: the layer is not split.
 void cut_skin_at_split_interfaces(NearField& field, const std::vector<SkinFace>& skin, const LayerFractions& fractions,
                                   InterfaceNodes& interface_node);
+
+// The outline of the wake's outflow face (add_wake_elements' faces, wake.to_outlet), a closed loop
+// cut at the split's interfaces as the skin is: the hole the far field leaves in its downstream face.
+// Empty when there are no outflow faces. Throws NearFieldError when the faces are not bounded by one loop.
+std::vector<NodeId> outlet_outline(NearField& field, const std::vector<std::vector<NodeId>>& outflow,
+                                   const LayerFractions& fractions, InterfaceNodes& interface_node);
 
 // The block's outer faces must stay flat enough to carry the far field's pyramids.
 void check_wake_faces_carry_pyramids(const NearField& field, const WakeSweep& sweep, const WakeParams& wake);

@@ -138,4 +138,37 @@ void cut_skin_at_split_interfaces(NearField& field, const std::vector<SkinFace>&
   }
 }
 
+std::vector<NodeId> outlet_outline(NearField& field, const std::vector<std::vector<NodeId>>& outflow,
+                                   const LayerFractions& fractions, InterfaceNodes& interface_node) {
+  if (outflow.empty()) return {};
+  std::set<std::pair<NodeId, NodeId>> directed;
+  for (const auto& f : outflow)
+    for (std::size_t k = 0; k < f.size(); ++k) directed.insert({f[k], f[(k + 1) % f.size()]});
+  std::map<NodeId, NodeId> next;  // along the outline: the edges no neighbouring face runs back along
+  for (const auto& [a, b] : directed)
+    if (!directed.count({b, a}) && !next.emplace(a, b).second)
+      fail("the wake block's outflow face touches itself at " + point_label(field.mesh.node(a)));
+  std::vector<NodeId> corners;
+  for (NodeId v = next.begin()->first; corners.size() <= next.size(); v = next.at(v)) {
+    if (!corners.empty() && v == corners.front()) break;
+    corners.push_back(v);
+  }
+  if (corners.size() != next.size())
+    fail("the wake block's outflow face is not bounded by one loop (" + std::to_string(next.size()) +
+         " boundary edges, the loop from " + point_label(field.mesh.node(corners.front())) + " closes after " +
+         std::to_string(corners.size()) + ")");
+  LayerEdgeCuts cuts(field, fractions, interface_node);
+  std::vector<NodeId> loop;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const NodeId a = corners[i], b = corners[(i + 1) % corners.size()];
+    if (!fractions || !cuts.is_layer_edge(a, b)) {
+      loop.push_back(a);
+      continue;
+    }
+    const std::vector<NodeId> along = cuts.along(a, b);
+    loop.insert(loop.end(), along.begin(), along.end() - 1);
+  }
+  return loop;
+}
+
 }  // namespace semimesh::nearfield::h_type

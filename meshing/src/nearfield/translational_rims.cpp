@@ -45,7 +45,8 @@ void check_elements_around(const mesh::Mesh& m, const std::set<NodeId>& moved) {
 
 }  // namespace
 
-TranslationalRims make_rear_interfaces_translational(JunctionShell& js) {
+TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Vec3* flat_across) {
+  auto flattened = [&](const Vec3& edge) { return flat_across ? Vec3(edge - edge.dot(*flat_across) * *flat_across) : edge; };
   mesh::Mesh& m = js.field.mesh;
   const std::set<int> chain(js.chain.begin(), js.chain.end());
   const bool sharp = std::any_of(js.crack.begin(), js.crack.end(), [](char c) { return c != 0; });
@@ -60,18 +61,29 @@ TranslationalRims make_rear_interfaces_translational(JunctionShell& js) {
   }
   TranslationalRims rims;
   std::map<int, std::vector<int>> nodes_of;  // side -> its own nodes (no corner, no strip top)
+  std::vector<int> corners;                  // nodes two sides share, off the root row
   for (const auto& [v, sides] : sides_of) {
-    if (sides.size() != 1) continue;
-    if (chain.count(static_cast<int>(js.layer_body[v])))
+    const bool on_root_row = chain.count(static_cast<int>(js.layer_body[v])) > 0;
+    if (sides.size() != 1) {
+      if (!on_root_row) corners.push_back(v);
+      continue;
+    }
+    if (on_root_row)
       rims.root_corner[v] = *sides.begin();
     else
       nodes_of[*sides.begin()].push_back(v);
   }
   std::set<NodeId> moved;
+  if (flat_across)
+    for (int v : corners) {
+      const NodeId top = static_cast<NodeId>(v) + js.offset;
+      m.place_node(top, m.node(js.layer_body[v]) + flattened(m.node(top) - m.node(js.layer_body[v])));
+      moved.insert(top);
+    }
   for (const auto& [side, nodes] : nodes_of) {
     Vec3 mean = Vec3::Zero();
     for (int v : nodes) mean += m.node(static_cast<NodeId>(v) + js.offset) - m.node(js.layer_body[v]);
-    mean /= static_cast<double>(nodes.size());
+    mean = flattened(mean / static_cast<double>(nodes.size()));
     for (int v : nodes) {
       m.place_node(static_cast<NodeId>(v) + js.offset, m.node(js.layer_body[v]) + mean);
       moved.insert(static_cast<NodeId>(v) + js.offset);

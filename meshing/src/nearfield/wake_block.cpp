@@ -22,6 +22,26 @@ std::vector<double> wake_stations(const WakeParams& wake) {
   return s;
 }
 
+std::vector<double> wake_stations_to(const WakeParams& wake, double distance) {
+  std::vector<double> s = wake_stations(wake);
+  if (!(distance > wake.length)) {
+    for (double& x : s) x *= distance / wake.length;
+    return s;
+  }
+  const double longest = wake.outlet_cell > 0.0 ? wake.outlet_cell : distance;
+  std::vector<double> further;
+  double cell = s.back() - s[s.size() - 2], covered = 0.0;
+  while (covered < distance - wake.length) {
+    cell = std::min(cell * wake.growth, longest);
+    further.push_back(cell);
+    covered += cell;
+  }
+  const double scale = (distance - wake.length) / covered;
+  for (double c : further) s.push_back(s.back() + scale * c);
+  s.back() = distance;
+  return s;
+}
+
 }  // namespace detail
 
 namespace h_type {
@@ -90,12 +110,39 @@ WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& 
   return sections;
 }
 
+double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
+                       const cad::BBox& box, double tolerance) {
+  const std::string why = "output.target = \"pyfr\" runs the wake block to the far field's downstream face (no "
+                          "pyramid on its outflow face: PyFR's parallelogram rule, docs/solvers.md)";
+  int axis = 0;
+  d.cwiseAbs().maxCoeff(&axis);
+  if (!(std::abs(d[axis]) > 1.0 - 1e-12))
+    fail(why + ", a face of the box across wake.direction, but wake.direction = " + direction_label(wake) +
+         " is not along an axis of the box; use an axis, or nearfield.topology = \"C\" for PyFR");
+  if (wake.widening_deg != 0.0)
+    fail(widening_label(wake) + why + ", which needs its cells to be translates: use wake.widening = 0");
+  double lo = 1e300, hi = -1e300;
+  for (const Section& c : sections)
+    for (int k = 0; k < (c.triangle ? 3 : 4); ++k) {
+      const double along = m.node(c.q[k]).dot(d);
+      lo = std::min(lo, along), hi = std::max(hi, along);
+    }
+  if (hi - lo > tolerance)
+    fail(why + "; its cross-section at the trailing edge must then lie in one plane across wake.direction, but it "
+         "spans " + number_label(hi - lo) + " along it (a swept, tapered or twisted trailing edge); for PyFR use "
+         "nearfield.topology = \"C\"");
+  const double outlet = d[axis] > 0 ? box.hi[axis] : -box.lo[axis];
+  if (!(outlet - hi > tolerance))
+    fail(why + ", but that face lies upstream of the trailing edge; use a larger farfield box");
+  return outlet - hi;
+}
+
 WakeSweep::WakeSweep(mesh::Mesh& m, const WakeParams& wake, const Vec3& d, const std::vector<Section>& sections,
-                     const cad::BBox& box)
+                     const cad::BBox& box, std::vector<double> stations)
     : m_(m),
       wake_(wake),
       d_(d),
-      s_(detail::wake_stations(wake)),
+      s_(std::move(stations)),
       spread_(std::tan(wake.widening_deg * kPi / 180.0)),
       inner_(box.lo + 1e-3 * (box.hi - box.lo)),
       outer_(box.hi - 1e-3 * (box.hi - box.lo)) {
@@ -117,7 +164,8 @@ const std::vector<NodeId>& WakeSweep::nodes(NodeId p) {
   for (std::size_t k = 1; k < s_.size(); ++k) {
     Vec3 x = x0 + s_[k] * d_;
     if (a != away_.end()) x += s_[k] * spread_ * a->second;
-    if ((x.array() < inner_.array()).any() || (x.array() > outer_.array()).any())
+    const bool on_outlet = wake_.to_outlet && k + 1 == s_.size();  // the box's face: checked one station up
+    if (!on_outlet && ((x.array() < inner_.array()).any() || (x.array() > outer_.array()).any()))
       fail("wake.length = " + number_label(wake_.length) + " with wake.direction = " + direction_label(wake_) +
            ": the wake block leaves the far-field box at " + point_label(x) + "; use a shorter wake or a larger box");
     ids.push_back(m_.add_node(x));
@@ -125,8 +173,10 @@ const std::vector<NodeId>& WakeSweep::nodes(NodeId p) {
   return swept_.emplace(p, std::move(ids)).first->second;
 }
 
-void add_wake_elements(NearField& field, WakeSweep& sweep, const std::vector<Section>& sections, const WakeParams& wake,
-                       const Vec3& d, int base) {
+std::vector<std::vector<NodeId>> add_wake_elements(NearField& field, WakeSweep& sweep,
+                                                   const std::vector<Section>& sections, const WakeParams& wake,
+                                                   const Vec3& d, int base) {
+  std::vector<std::vector<NodeId>> outflow;
   mesh::Mesh& m = field.mesh;
   const int wake_region = m.region_index("wake");
   for (Section c : sections) {
@@ -150,8 +200,13 @@ void add_wake_elements(NearField& field, WakeSweep& sweep, const std::vector<Sec
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
       field.element_surface.push_back(base);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
+      if (wake.to_outlet && k + 2 == sweep.stations()) {  // the downstream face, wound along d: out of the domain
+        outflow.emplace_back(h.begin() + corners, h.end());
+        m.add_boundary_face("farfield", c.triangle ? ho::Shape::Triangle : ho::Shape::Quadrilateral, outflow.back());
+      }
     }
   }
+  return outflow;
 }
 
 void add_exposed_body_faces(mesh::Mesh& m, const std::vector<Quad>& exposed_base,
@@ -167,7 +222,8 @@ void describe_wake_block(const detail::JunctionShell& js, const WakeSweep& sweep
   const mesh::Mesh& m = js.field.mesh;
   w.direction = d;
   w.length = wake.length;
-  w.streamwise_cells = wake.layers;
+  w.reach = sweep.reach();
+  w.streamwise_cells = static_cast<int>(sweep.stations()) - 1;
   double lowest = 1e300;
   for (const auto& [p, ids] : sweep.swept())
     for (NodeId v : ids) lowest = std::min(lowest, js.wall.height(m.node(v)));

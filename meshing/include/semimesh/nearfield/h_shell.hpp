@@ -75,6 +75,13 @@ struct WakeParams {
   /// there), so the rear interfaces below the cut and the wake's outflow face are parallelograms
   /// once split (PyFR's pyramid rule; docs/solvers.md says what is left).
   bool translational_rear_interfaces = false;
+  /// Not keys: output.target = "pyfr" sets them. The block runs on past `length` to the far
+  /// field's downstream face (a plane across `direction`), its cells still growing by `growth` but
+  /// none longer than `outlet_cell`, so its outflow face is part of the domain's boundary: the
+  /// quads there cannot all be parallelograms (the layer's cross-section turns round the tip), and
+  /// PyFR refuses a pyramid on one that is not (docs/solvers.md).
+  bool to_outlet = false;
+  double outlet_cell = 0.0;
 };
 
 /// One row per key of WakeParams (semimesh/params/table.hpp).

@@ -62,7 +62,8 @@ struct WakeBlock {
                                                          ///< sorted by their coordinate along span_axis
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< unit
   Eigen::Vector3d span_axis = Eigen::Vector3d::UnitZ();  ///< unit, across `direction` (the wall normal's part)
-  double length = 0.0;
+  double length = 0.0;  ///< wake.length: the ratio along the block changes over it
+  double reach = 0.0;   ///< the block's whole length: `length`, or more when it runs to the far field's face
   int streamwise_cells = 0;
   int hexes = 0;   ///< wake elements: hexes, and prisms behind a base's flat corners (h_shell.hpp)
   double gap = 0.0;  ///< measured: lowest wake node's height above the wall layer's top
@@ -79,6 +80,9 @@ struct NearField {
                                             ///< plane, counter-clockwise seen from the fluid side of the wall
   std::vector<mesh::NodeId> footprint_top;  ///< [footprint] C-type: the node at the wall-layer thickness above
                                             ///< each footprint node (its halo point); empty for O-type
+  std::vector<mesh::NodeId> outlet;         ///< H-type with wake.to_outlet: the outline of the wake's outflow
+                                            ///< face (a closed loop, first != last, on the far field's
+                                            ///< downstream face, cut where the split cuts it); empty otherwise
   std::vector<LayerStack> stacks;           ///< every layer element of the mesh, with its direction(s) (the
                                             ///< far field appends its wall-layer prisms)
   std::vector<int> element_surface;         ///< [elements the shell built] CAD surface id of each one's body

@@ -40,4 +40,10 @@ std::set<int> flat_base_corners(const cad::Model& model, int base);
 /// previous one.
 std::vector<double> wake_stations(const WakeParams& wake);
 
+/// [cells + 1] wake_stations(wake), then on to `distance` (> wake.length): each further cell
+/// `growth` times the previous one up to wake.outlet_cell, all of them scaled so the last station
+/// is `distance` exactly. Just wake_stations scaled to `distance` when that is no longer than
+/// wake.length.
+std::vector<double> wake_stations_to(const WakeParams& wake, double distance);
+
 }  // namespace semimesh::nearfield::detail
