@@ -296,10 +296,11 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const CutRow cut = wake_cut_row(js, trailing_edge_nodes(js, base), wall_thickness, wake);
   const WakeSections sections = wake_sections(js, te, base, cut);
   const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());
+  std::optional<Outlet> outlet;
+  if (wake.to_outlet) outlet = find_outlet(field.mesh, sections.swept, wake, d, box, tolerance);
   WakeSweep sweep(field.mesh, wake, d, sections.swept, box,
-                  wake.to_outlet ? detail::wake_stations_to(
-                                       wake, outlet_distance(field.mesh, sections.swept, wake, d, box, tolerance))
-                                 : detail::wake_stations(wake));
+                  outlet ? detail::wake_stations_to(wake, outlet->distance) : detail::wake_stations(wake),
+                  outlet ? std::optional<double>(outlet->along) : std::nullopt);
   const auto outflow = add_wake_elements(field, sweep, sections.swept, wake, d, te.base);
   add_exposed_body_faces(field.mesh, sections.exposed_base, js.bare);
   describe_wake_block(js, sweep, sections.swept, wake, d, wall_thickness, field.wake);

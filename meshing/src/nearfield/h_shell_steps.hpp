@@ -12,6 +12,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -83,12 +84,18 @@ struct WakeSections {
 WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<Quad>& base,
                            const CutRow& cut);
 
-// wake.to_outlet (output.target = "pyfr"): the distance from the trailing edge's cross-section (the
-// sections' corners, which must lie in one plane across d within `tolerance`) to the far field's
-// downstream face, the box's face across d (which must be one of its axes). Throws NearFieldError
-// naming the key otherwise, or with a widening (the cells must be translates).
-double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
-                       const cad::BBox& box, double tolerance);
+// wake.to_outlet (output.target = "pyfr"): the far field's downstream face, the box's face across
+// d (which must be one of its axes), as its coordinate along d, and its distance from the block's
+// outer edge at the trailing edge (the rear interfaces' layer nodes, which must lie in one plane
+// across d within `tolerance`: the block's outer faces then meet that face on one line-up of
+// nodes). Throws NearFieldError naming the key otherwise, or with a widening (the cells must be
+// translates) or a box that does not reach past the trailing edge.
+struct Outlet {
+  double along = 0.0;
+  double distance = 0.0;
+};
+Outlet find_outlet(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
+                   const cad::BBox& box, double tolerance);
 
 // The wake's nodes: node p at station k is p + s_k d, the layer offsets also moved away from the
 // sheet by tan(widening) per unit length across d, within the trailing edge's cross-section (across
@@ -98,17 +105,19 @@ double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections
 // when first asked for, so node ids follow the order the elements use them.
 class WakeSweep {
  public:
-  /// `stations`: 0 = s_0 < ... < s_K, the distances downstream (detail::wake_stations).
+  /// `stations`: 0 = s_0 < ... < s_K, the distances downstream (detail::wake_stations); `outlet`:
+  /// the coordinate along d of a plane the last station is laid on (each node moved along d).
   WakeSweep(mesh::Mesh& m, const WakeParams& wake, const Vec3& d, const std::vector<Section>& sections,
-            const cad::BBox& box, std::vector<double> stations);
+            const cad::BBox& box, std::vector<double> stations, std::optional<double> outlet = std::nullopt);
 
   /// [stations] p's node at each station, p itself first. Throws NearFieldError when a station
   /// leaves the far field's box.
   const std::vector<NodeId>& nodes(NodeId p);
 
   std::size_t stations() const { return s_.size(); }
-  /// the last station's distance downstream
+  /// the last station's distance downstream (of the block's outer edge)
   double reach() const { return s_.back(); }
+  bool to_outlet() const { return outlet_.has_value(); }
   /// trailing-edge node -> its nodes at every station
   const std::map<NodeId, std::vector<NodeId>>& swept() const { return swept_; }
 
@@ -117,6 +126,7 @@ class WakeSweep {
   const WakeParams& wake_;
   Vec3 d_;
   std::vector<double> s_;
+  std::optional<double> outlet_;
   double spread_;
   Vec3 inner_, outer_;           ///< the far-field box, a little inside
   std::map<NodeId, Vec3> away_;  ///< offset node -> direction in the cross-section, of unit part across d

@@ -45,8 +45,7 @@ void check_elements_around(const mesh::Mesh& m, const std::set<NodeId>& moved) {
 
 }  // namespace
 
-TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Vec3* flat_across) {
-  auto flattened = [&](const Vec3& edge) { return flat_across ? Vec3(edge - edge.dot(*flat_across) * *flat_across) : edge; };
+TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Vec3* along) {
   mesh::Mesh& m = js.field.mesh;
   const std::set<int> chain(js.chain.begin(), js.chain.end());
   const bool sharp = std::any_of(js.crack.begin(), js.crack.end(), [](char c) { return c != 0; });
@@ -73,23 +72,30 @@ TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Ve
     else
       nodes_of[*sides.begin()].push_back(v);
   }
-  std::set<NodeId> moved;
-  if (flat_across)
-    for (int v : corners) {
-      const NodeId top = static_cast<NodeId>(v) + js.offset;
-      m.place_node(top, m.node(js.layer_body[v]) + flattened(m.node(top) - m.node(js.layer_body[v])));
-      moved.insert(top);
-    }
+  auto edge_of = [&](int v) { return Vec3(m.node(static_cast<NodeId>(v) + js.offset) - m.node(js.layer_body[v])); };
   for (const auto& [side, nodes] : nodes_of) {
     Vec3 mean = Vec3::Zero();
-    for (int v : nodes) mean += m.node(static_cast<NodeId>(v) + js.offset) - m.node(js.layer_body[v]);
-    mean = flattened(mean / static_cast<double>(nodes.size()));
-    for (int v : nodes) {
-      m.place_node(static_cast<NodeId>(v) + js.offset, m.node(js.layer_body[v]) + mean);
-      moved.insert(static_cast<NodeId>(v) + js.offset);
-    }
-    rims.side_edge[side] = mean;
+    for (int v : nodes) mean += edge_of(v);
+    rims.side_edge[side] = mean / static_cast<double>(nodes.size());
   }
+  std::map<int, Vec3> corner_edge;
+  if (along) {
+    // One reach downstream for every layer edge: the largest, as lowering one could tip its prism's
+    // top over the next one upstream.
+    double reach = -1e300;
+    for (const auto& [side, edge] : rims.side_edge) reach = std::max(reach, edge.dot(*along));
+    for (int v : corners) reach = std::max(reach, edge_of(v).dot(*along));
+    for (auto& [side, edge] : rims.side_edge) edge += (reach - edge.dot(*along)) * *along;
+    for (int v : corners) corner_edge[v] = edge_of(v) + (reach - edge_of(v).dot(*along)) * *along;
+  }
+  std::set<NodeId> moved;
+  auto place = [&](int v, const Vec3& edge) {
+    m.place_node(static_cast<NodeId>(v) + js.offset, m.node(js.layer_body[v]) + edge);
+    moved.insert(static_cast<NodeId>(v) + js.offset);
+  };
+  for (const auto& [side, nodes] : nodes_of)
+    for (int v : nodes) place(v, rims.side_edge.at(side));
+  for (const auto& [v, edge] : corner_edge) place(v, edge);
   check_elements_around(m, moved);
   rims.moved = moved.size();
   return rims;

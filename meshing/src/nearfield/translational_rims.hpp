@@ -28,10 +28,10 @@ struct TranslationalRims {
 /// Left as they are: the root row (pinned at the junction's halos: open_root_corners moves
 /// those of the trailing edge's root corners) and the corners two sides share (e.g. the tip's
 /// trailing-edge corners), where no one vector serves both sides. A sharp trailing edge: the
-/// crack's nodes only. With `flat_across` (the wake running to the far field's downstream face),
-/// every layer edge there, the corners' included, is also laid in the plane across it, so a
-/// trailing edge square to the stream gives a cross-section in one plane that the wake's last
-/// station can share with that face.
-TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Vec3* flat_across = nullptr);
+/// crack's nodes only. With `along` (the wake's direction, when it runs to the far field's
+/// downstream face), every layer edge there, the corners' included, is also given the same reach
+/// along it (the largest of theirs), so the wake's outer faces meet that face on one line-up of
+/// nodes (docs/solvers.md).
+TranslationalRims make_rear_interfaces_translational(JunctionShell& js, const Vec3* along = nullptr);
 
 }  // namespace semimesh::nearfield::detail

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace semimesh::nearfield {
 
@@ -110,8 +111,8 @@ WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& 
   return sections;
 }
 
-double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
-                       const cad::BBox& box, double tolerance) {
+Outlet find_outlet(const mesh::Mesh& m, const std::vector<Section>& sections, const WakeParams& wake, const Vec3& d,
+                   const cad::BBox& box, double tolerance) {
   const std::string why = "output.target = \"pyfr\" runs the wake block to the far field's downstream face (no "
                           "pyramid on its outflow face: PyFR's parallelogram rule, docs/solvers.md)";
   int axis = 0;
@@ -121,28 +122,32 @@ double outlet_distance(const mesh::Mesh& m, const std::vector<Section>& sections
          " is not along an axis of the box; use an axis, or nearfield.topology = \"C\" for PyFR");
   if (wake.widening_deg != 0.0)
     fail(widening_label(wake) + why + ", which needs its cells to be translates: use wake.widening = 0");
-  double lo = 1e300, hi = -1e300;
+  double lo = 1e300, hi = -1e300, last = -1e300;
   for (const Section& c : sections)
     for (int k = 0; k < (c.triangle ? 3 : 4); ++k) {
       const double along = m.node(c.q[k]).dot(d);
-      lo = std::min(lo, along), hi = std::max(hi, along);
+      last = std::max(last, along);
+      if (c.layer && k >= 2) lo = std::min(lo, along), hi = std::max(hi, along);  // the block's outer edge
     }
   if (hi - lo > tolerance)
-    fail(why + "; its cross-section at the trailing edge must then lie in one plane across wake.direction, but it "
-         "spans " + number_label(hi - lo) + " along it (a swept, tapered or twisted trailing edge); for PyFR use "
-         "nearfield.topology = \"C\"");
-  const double outlet = d[axis] > 0 ? box.hi[axis] : -box.lo[axis];
-  if (!(outlet - hi > tolerance))
-    fail(why + ", but that face lies upstream of the trailing edge; use a larger farfield box");
-  return outlet - hi;
+    fail(why + "; the block's outer edge at the trailing edge must then lie in one plane across wake.direction, "
+         "but it spans " + number_label(hi - lo) + " along it (a swept, tapered or twisted trailing edge); for "
+         "PyFR use nearfield.topology = \"C\"");
+  Outlet outlet;
+  outlet.along = d[axis] > 0 ? box.hi[axis] : -box.lo[axis];
+  outlet.distance = outlet.along - hi;
+  if (!(outlet.along - last > tolerance))
+    fail(why + ", but the trailing edge reaches that face; use a larger farfield box");
+  return outlet;
 }
 
 WakeSweep::WakeSweep(mesh::Mesh& m, const WakeParams& wake, const Vec3& d, const std::vector<Section>& sections,
-                     const cad::BBox& box, std::vector<double> stations)
+                     const cad::BBox& box, std::vector<double> stations, std::optional<double> outlet)
     : m_(m),
       wake_(wake),
       d_(d),
       s_(std::move(stations)),
+      outlet_(outlet),
       spread_(std::tan(wake.widening_deg * kPi / 180.0)),
       inner_(box.lo + 1e-3 * (box.hi - box.lo)),
       outer_(box.hi - 1e-3 * (box.hi - box.lo)) {
@@ -162,9 +167,10 @@ const std::vector<NodeId>& WakeSweep::nodes(NodeId p) {
   const Vec3 x0 = m_.node(p);
   const auto a = away_.find(p);
   for (std::size_t k = 1; k < s_.size(); ++k) {
+    const bool on_outlet = outlet_ && k + 1 == s_.size();  // the box's face: checked one station up
     Vec3 x = x0 + s_[k] * d_;
     if (a != away_.end()) x += s_[k] * spread_ * a->second;
-    const bool on_outlet = wake_.to_outlet && k + 1 == s_.size();  // the box's face: checked one station up
+    if (on_outlet) x += (*outlet_ - x.dot(d_)) * d_;
     if (!on_outlet && ((x.array() < inner_.array()).any() || (x.array() > outer_.array()).any()))
       fail("wake.length = " + number_label(wake_.length) + " with wake.direction = " + direction_label(wake_) +
            ": the wake block leaves the far-field box at " + point_label(x) + "; use a shorter wake or a larger box");
@@ -200,7 +206,7 @@ std::vector<std::vector<NodeId>> add_wake_elements(NearField& field, WakeSweep& 
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
       field.element_surface.push_back(base);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
-      if (wake.to_outlet && k + 2 == sweep.stations()) {  // the downstream face, wound along d: out of the domain
+      if (sweep.to_outlet() && k + 2 == sweep.stations()) {  // the downstream face, wound along d: out of the domain
         outflow.emplace_back(h.begin() + corners, h.end());
         m.add_boundary_face("farfield", c.triangle ? ho::Shape::Triangle : ho::Shape::Quadrilateral, outflow.back());
       }

@@ -317,6 +317,82 @@ TEST(HShell, PyfrTargetRefusesTheRootCornersOnACurvedWall) {
   }
 }
 
+// For PyFR the wake runs on to the far field's downstream face (x = 11 here), where its outflow
+// face joins the domain's boundary: no pyramid stands on those quads, which cannot all be
+// parallelograms round the tip (docs/solvers.md). The outflow faces are "farfield" boundary faces
+// on that plane, bounded by the outline handed to the far field (its area is theirs), none of
+// them is skin, and the block's outer faces next to that plane are still parallelograms (its rear
+// interfaces' layer edges all reach as far downstream).
+TEST(HShell, PyfrTargetRunsTheWakeToTheFarFieldsDownstreamFace) {
+  WakeParams wake = short_wake();
+  wake.translational_rear_interfaces = true;
+  EXPECT_TRUE(build(wake).field.outlet.empty());
+  wake.to_outlet = true;
+  wake.outlet_cell = 2.0;
+  const HShellBuilt b = build(wake);
+  const mesh::Mesh& m = b.field.mesh;
+  const double outlet = b.model->bbox().hi.x();
+  auto on_outlet = [&](mesh::NodeId v) { return std::abs(m.node(v).x() - outlet) < 1e-12; };
+  ASSERT_GE(b.field.outlet.size(), 8u);
+  for (mesh::NodeId v : b.field.outlet) EXPECT_TRUE(on_outlet(v)) << m.node(v).transpose();
+  EXPECT_EQ(testing::invalid_elements(m), 0);
+  EXPECT_GT(b.field.wake.reach, wake.length);
+
+  // Signed areas in the outlet's (y, z) plane, seen from downstream.
+  auto area = [&](const std::vector<mesh::NodeId>& loop) {
+    double twice = 0.0;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 &p = m.node(loop[k]), &q = m.node(loop[(k + 1) % loop.size()]);
+      twice += p.y() * q.z() - q.y() * p.z();
+    }
+    return 0.5 * twice;
+  };
+  double faces = 0.0;
+  int outflow = 0;
+  const auto& groups = m.group_names();
+  const auto farfield = static_cast<int>(std::find(groups.begin(), groups.end(), "farfield") - groups.begin());
+  for (std::size_t f = 0; f < m.boundary_faces().size(); ++f) {
+    if (m.boundary_faces()[f].group != farfield) continue;
+    const std::vector<mesh::NodeId> v = m.boundary_face_nodes(f);
+    EXPECT_TRUE(std::all_of(v.begin(), v.end(), on_outlet));
+    faces += area(v);
+    ++outflow;
+  }
+  EXPECT_GT(outflow, 10);
+  EXPECT_GT(faces, 0.0);  // wound out of the domain: downstream
+  EXPECT_NEAR(std::abs(area(b.field.outlet)), faces, 1e-12 * faces);
+
+  int outer_quads_at_the_outlet = 0;
+  for (const SkinFace& f : b.field.skin) {
+    const std::vector<mesh::NodeId> v(f.nodes.begin(), f.nodes.begin() + f.count);
+    EXPECT_FALSE(std::all_of(v.begin(), v.end(), on_outlet)) << "an outflow face is skin";
+    if (f.count != 4 || std::count_if(v.begin(), v.end(), on_outlet) != 2) continue;
+    const Vec3 normal = (m.node(v[2]) - m.node(v[0])).cross(m.node(v[3]) - m.node(v[1]));
+    if (normal.z() < -0.9 * normal.norm()) continue;  // the block's root face: trapezoids the columns split
+    ++outer_quads_at_the_outlet;
+    const Vec3 defect = m.node(v[0]) - m.node(v[1]) + m.node(v[2]) - m.node(v[3]);
+    EXPECT_LT(defect.norm(), 1e-12) << "skin quad at " << m.node(v[0]).transpose();
+  }
+  EXPECT_GT(outer_quads_at_the_outlet, 4);
+}
+
+// The block's outer edge must meet the downstream face on one line-up of nodes: a swept trailing
+// edge cannot, and is refused naming what to use instead.
+TEST(HShell, PyfrTargetRefusesASweptTrailingEdgeNamingTheTopology) {
+  mock_cad::NacaWingParams wing = naca0012(false);
+  wing.sweep_deg = 20.0;
+  WakeParams wake = short_wake();
+  wake.translational_rear_interfaces = true;
+  wake.to_outlet = true;
+  try {
+    build(wake, false, wing);
+    ADD_FAILURE() << "expected a NearFieldError";
+  } catch (const NearFieldError& e) {
+    for (const char* expected : {"output.target = \"pyfr\"", "swept", "nearfield.topology = \"C\""})
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
 // Sharp trailing edge: each side's layer ends on the trailing-edge curve with that side's own
 // normal (two offsets per curve node), the wake's upper and lower hexes share the swept curve (the
 // wake sheet): every sheet face is a face of exactly two wake hexes, one on each side.

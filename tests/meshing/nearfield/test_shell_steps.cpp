@@ -45,6 +45,30 @@ TEST(WakeStations, GrowGeometricallyFromTheTrailingEdgeToTheLength) {
   for (std::size_t k = 0; k < even.size(); ++k) EXPECT_NEAR(even[k], k * wake.length / wake.layers, 1e-14);
 }
 
+// Run on to the far field's face: the configured stations first, then cells still growing but
+// none longer than outlet_cell (once scaled), the last station exactly at the distance.
+TEST(WakeStations, RunOnToADistanceGrowingUpToTheLongestCell) {
+  WakeParams wake;
+  wake.layers = 5;
+  wake.growth = 1.3;
+  wake.length = 1.0;
+  wake.outlet_cell = 0.8;
+  const std::vector<double> own = detail::wake_stations(wake);
+  const std::vector<double> s = detail::wake_stations_to(wake, 7.0);
+  ASSERT_GT(s.size(), own.size() + 3);
+  for (std::size_t k = 0; k < own.size(); ++k) EXPECT_EQ(s[k], own[k]);
+  EXPECT_EQ(s.back(), 7.0);
+  for (std::size_t k = own.size(); k < s.size(); ++k) {
+    EXPECT_GT(s[k] - s[k - 1], 0.0) << k;
+    EXPECT_LE(s[k] - s[k - 1], wake.outlet_cell) << k;
+    EXPECT_LE(s[k] - s[k - 1], wake.growth * (s[k - 1] - s[k - 2]) + 1e-12) << k;
+  }
+  EXPECT_GT(s[s.size() - 2] - s[s.size() - 3], 0.7 * wake.outlet_cell);  // the cap was reached
+  const std::vector<double> shorter = detail::wake_stations_to(wake, 0.5);
+  ASSERT_EQ(shorter.size(), own.size());
+  for (std::size_t k = 0; k < own.size(); ++k) EXPECT_NEAR(shorter[k], 0.5 * own[k], 1e-15);
+}
+
 // The leading edge is a body-body curve leaving the wall too: the sweep direction decides.
 TEST(SharpTrailingEdge, IsTheBodyCurveLeavingTheWallFarthestDownstream) {
   for (const auto& wing : {naca("0012", true), naca("2412", true, 0.6, 30.0)}) {
