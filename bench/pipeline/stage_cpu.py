@@ -43,13 +43,12 @@ def sample_resident(pid, current, largest, stop):
         stop.wait(0.2)
 
 
-def main():
-    if len(sys.argv) < 4:
-        sys.exit(__doc__)
-    exe, config, out, extra = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+def measure(exe, config, out, extra):
+    """Runs SEMIMESH run CONFIG -o OUT --log-json EXTRA. Returns rows [(stage, wall s, CPU s, largest
+    RSS MB)], the total wall and CPU seconds, the peak RSS in MB and the exit status."""
     proc = subprocess.Popen([exe, "run", config, "-o", out, "--log-json"] + extra, stdout=subprocess.PIPE,
                             text=True, bufsize=1)
-    started, rows = {}, []
+    started, finished = {}, []
     current, largest, stop = ["(between stages)"], {}, threading.Event()
     sampler = threading.Thread(target=sample_resident, args=(proc.pid, current, largest, stop), daemon=True)
     sampler.start()
@@ -64,18 +63,25 @@ def main():
             started[event["stage"]] = cpu_seconds(proc.pid)
             current[0] = event["stage"]
         elif kind == "stage_finished":
-            rows.append((event["stage"], event["seconds"], cpu_seconds(proc.pid) - started.pop(event["stage"])))
+            finished.append((event["stage"], event["seconds"], cpu_seconds(proc.pid) - started.pop(event["stage"])))
             current[0] = "(between stages)"
     stop.set()
     sampler.join()
     _, status, usage = os.wait4(proc.pid, 0)
     wall = time.monotonic() - begin
+    rows = [(name, seconds, cpu, largest.get(name, 0.0)) for name, seconds, cpu in finished]
+    return rows, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024, os.waitstatus_to_exitcode(status)
+
+
+def main():
+    if len(sys.argv) < 4:
+        sys.exit(__doc__)
+    rows, wall, cpu, peak, status = measure(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:])
     print(f"{'stage':<14} {'wall s':>9} {'CPU s':>9} {'RSS MB':>9}")
-    for name, seconds, cpu in rows:
-        print(f"{name:<14} {seconds:9.2f} {cpu:9.2f} {largest.get(name, 0.0):9.0f}")
-    print(f"{'total':<14} {wall:9.2f} {usage.ru_utime + usage.ru_stime:9.2f}")
-    print(f"peak RSS {usage.ru_maxrss / 1024:.0f} MB, exit status {os.waitstatus_to_exitcode(status)}, "
-          f"load average {os.getloadavg()[0]:.1f}")
+    for name, seconds, stage_cpu, rss in rows:
+        print(f"{name:<14} {seconds:9.2f} {stage_cpu:9.2f} {rss:9.0f}")
+    print(f"{'total':<14} {wall:9.2f} {cpu:9.2f}")
+    print(f"peak RSS {peak:.0f} MB, exit status {status}, load average {os.getloadavg()[0]:.1f}")
 
 
 if __name__ == "__main__":
