@@ -24,7 +24,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from stage_cpu import measure
 
 PAPER_ELEMENTS = 523180  # the paper's case at s = 1 (any order)
-FIRST_EXPONENT = 1.5
+FIRST_EXPONENT = 1.3  # measured between 1e5 and 1e6 elements (order 1)
 SIZES = {"sizing.max_size": 2.0, "sizing.min_size": 0.005, "sizing.le_size": 0.02, "sizing.te_size": 0.01,
          "farfield.box_size": 2.0, "farfield.wall_size": 1.0}
 PER_LENGTH = {"sizing.curvature_segments": 4.0}
