@@ -399,7 +399,8 @@ TEST(PipelineRunCType, BadInputNamesTheEntityAndWritesNothing) {
       {{"geometry.wall=upper", "geometry.body=[\"lower\", \"te_base\", \"tip\"]"}, {"('upper')", "no inner loop"}},
       {{"wall_layer.thickness=0.6"}, {"0.6", "wall layer"}},
       {{"geometry.naca.chord=0.05", "geometry.naca.te=sharp", "nearfield.thickness=0.6"},
-       {"root loop is too short", "('root_", "thickness 0.6", "wall layer thickness 0.04"}},
+       {"root loop is too short", "('root_", "thickness 0.6", "wall layer thickness 0.04",
+        "(neighbouring prisms would fold"}},
       {{"geometry.naca.sweep=30", "geometry.naca.taper=0.5", "wall_layer.thickness=0.2"},
        {"thicker than the wing's shell", "('root_"}},
   };

@@ -157,7 +157,7 @@ LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
             point_label(body.points[i]) + ": " + reason_text(bad[i]) + " even at min_thickness_fraction (" +
             number_label(params.min_thickness_fraction) + ") x thickness (" + number_label(params.thickness) +
             "); use a smaller 'thickness' or a finer surface mesh there",
-            i);
+            i, reason_text(bad[i]));
       thickness[i] = std::max(thickness[i] * params.reduction_factor, thinnest_allowed);
     }
     if (!reducible) {
@@ -167,7 +167,7 @@ LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
                            surface_label(model, body.node_surface[i]) + " at " + point_label(body.points[i]) +
                            " is not sound: " + reason_text(bad[i]) +
                            "; use a smaller 'wall_layer.thickness' or 'thickness', or a finer surface mesh there",
-                           i);
+                           i, reason_text(bad[i]));
     }
     limit_gradation(body, neighbours, params.gradation, pinned, thickness);
   }

@@ -8,6 +8,7 @@
 #include "semimesh/nearfield/near_field.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -40,8 +41,10 @@ struct LayerOffsets {
 /// The layer cannot be built at body node `node` (its message names the place).
 class LayerFoldError : public NearFieldError {
  public:
-  LayerFoldError(const std::string& message, int node) : NearFieldError(message), node(node) {}
+  LayerFoldError(const std::string& message, int node, std::string reason)
+      : NearFieldError(message), node(node), reason(std::move(reason)) {}
   int node;
+  std::string reason;  ///< what the layer check found there (reason_text)
 };
 
 /// Offsets x + thickness n along the node normals, reducing the thickness where prisms would fold

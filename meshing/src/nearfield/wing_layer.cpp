@@ -174,7 +174,8 @@ detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const Bod
                          ") cannot meet the halo above the root strip (wall layer "
                          "thickness " +
                          number_label(delta_wall) + ") without folding at " + point_label(layer.points[fold.node]) +
-                         ", even at min_thickness_fraction (" + number_label(params.min_thickness_fraction) +
+                         " (" + fold.reason + "), even at min_thickness_fraction (" +
+                         number_label(params.min_thickness_fraction) +
                          "); use a smaller thickness or wall layer thickness, or more segments along the root "
                          "(smaller sizing sizes)");
   }
