@@ -32,16 +32,24 @@ std::array<NodeId, 4> face_key(const NodeId* v, int n) {
   return key;
 }
 
+std::uint64_t face_key_hash(const std::array<NodeId, 4>& k) {
+  const std::uint64_t low = (static_cast<std::uint64_t>(k[0]) << 32) | k[1];
+  const std::uint64_t high = (static_cast<std::uint64_t>(k[2]) << 32) | k[3];
+  return IdTable::mix(IdTable::mix(low) ^ high);
+}
+
 std::string element_name(ho::Shape shape, std::size_t index) {
   return ho::to_string(shape) + " " + std::to_string(index);
 }
 
 }  // namespace
 
-std::size_t Mesh::FaceKeyHash::operator()(const std::array<NodeId, 4>& k) const {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four ids
-  for (NodeId v : k) h = (h ^ v) * 1099511628211ull;
-  return static_cast<std::size_t>(h);
+std::uint64_t Mesh::edge_hash(std::uint32_t edge) const {
+  return IdTable::mix(edge_key(edges_[edge].vertices[0], edges_[edge].vertices[1]));
+}
+
+std::uint64_t Mesh::face_hash(std::uint32_t face) const {
+  return face_key_hash(face_key(faces_[face].vertices.data(), faces_[face].num_vertices));
 }
 
 Mesh::Mesh(int order, ho::NodeSet node_set) : order_(order), node_set_(node_set) {
@@ -107,10 +115,10 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   // Each edge and interior face is shared by several elements; these are upper bounds.
   const std::size_t ne = ho::edges(typical_shape).size() * num_elements / 2;
   const std::size_t nf = ho::faces(typical_shape).size() * num_elements / 2 + num_elements;
+  // The vectors' unused room is never touched, so never resident; the lookups grow as they fill
+  // (sized by these bounds they would be resident in full: twice too large on hexahedra).
   edges_.reserve(ne);
   faces_.reserve(nf);
-  edge_index_.reserve(ne);
-  face_index_.reserve(nf);
   edge_pool_.reserve(ne * (order_ - 1));
   interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
 }
@@ -228,22 +236,28 @@ std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
 }
 
 std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
-  const auto [it, inserted] = edge_index_.try_emplace(edge_key(a, b), static_cast<std::uint32_t>(edges_.size()));
-  if (inserted) {
-    Edge edge;
-    edge.vertices = {std::min(a, b), std::max(a, b)};
-    edge.first_node = static_cast<std::uint32_t>(edge_pool_.size());
-    edge_pool_.resize(edge_pool_.size() + edge_interior_count(order_), kNoNode);
-    edges_.push_back(edge);
-  }
-  return it->second;
+  const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
+  const auto id = static_cast<std::uint32_t>(edges_.size());
+  const std::uint32_t found = edge_index_.find_or_insert(
+      IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; }, id,
+      [&](std::uint32_t e) { return edge_hash(e); });
+  if (found != IdTable::kNone) return found;
+  Edge edge;
+  edge.vertices = key;
+  edge.first_node = static_cast<std::uint32_t>(edge_pool_.size());
+  edge_pool_.resize(edge_pool_.size() + edge_interior_count(order_), kNoNode);
+  edges_.push_back(edge);
+  return id;
 }
 
 std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code,
                                      const std::string& who) {
-  const auto [it, inserted] =
-      face_index_.try_emplace(face_key(local_vertices, n), static_cast<std::uint32_t>(faces_.size()));
-  if (inserted) {
+  const std::array<NodeId, 4> key = face_key(local_vertices, n);
+  const auto id = static_cast<std::uint32_t>(faces_.size());
+  const std::uint32_t found = face_index_.find_or_insert(
+      face_key_hash(key), [&](std::uint32_t f) { return has_face_key(f, key); }, id,
+      [&](std::uint32_t f) { return face_hash(f); });
+  if (found == IdTable::kNone) {
     Face face;
     std::copy(local_vertices, local_vertices + n, face.vertices.begin());
     face.num_vertices = static_cast<std::uint8_t>(n);
@@ -252,32 +266,39 @@ std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::u
     const auto& local_edges = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
     for (std::size_t e = 0; e < local_edges.size(); ++e) {
       const NodeId a = local_vertices[local_edges[e][0]], b = local_vertices[local_edges[e][1]];
-      face.edges[e] = edge_index_.at(edge_key(a, b));
+      face.edges[e] = static_cast<std::uint32_t>(find_edge(a, b));
       if (a > b) face.edge_reversed |= static_cast<std::uint8_t>(1u << e);
     }
     face.first_node = static_cast<std::uint32_t>(face_pool_.size());
     face_pool_.resize(face_pool_.size() + face_interior_count(n, order_), kNoNode);
     faces_.push_back(face);
     code = 0;
-    return it->second;
+    return id;
   }
-  const int c = face_orientation_code(local_vertices, faces_[it->second].vertices.data(), n);
+  const int c = face_orientation_code(local_vertices, faces_[found].vertices.data(), n);
   if (c < 0)
-    throw std::invalid_argument(who + ": face " + std::to_string(it->second) +
+    throw std::invalid_argument(who + ": face " + std::to_string(found) +
                                 " has the same vertices in a different cycle (twisted quadrilateral)");
   code = static_cast<std::uint8_t>(c);
-  return it->second;
+  return found;
+}
+
+bool Mesh::has_face_key(std::uint32_t face, const std::array<NodeId, 4>& key) const {
+  return face_key(faces_[face].vertices.data(), faces_[face].num_vertices) == key;
 }
 
 long Mesh::find_edge(NodeId a, NodeId b) const {
-  const auto it = edge_index_.find(edge_key(a, b));
-  return it == edge_index_.end() ? -1 : static_cast<long>(it->second);
+  const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
+  const std::uint32_t found =
+      edge_index_.find(IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; });
+  return found == IdTable::kNone ? -1 : static_cast<long>(found);
 }
 
 long Mesh::find_face(const std::vector<NodeId>& vertices) const {
   if (vertices.size() != 3 && vertices.size() != 4) return -1;
-  const auto it = face_index_.find(face_key(vertices.data(), static_cast<int>(vertices.size())));
-  return it == face_index_.end() ? -1 : static_cast<long>(it->second);
+  const std::array<NodeId, 4> key = face_key(vertices.data(), static_cast<int>(vertices.size()));
+  const std::uint32_t found = face_index_.find(face_key_hash(key), [&](std::uint32_t f) { return has_face_key(f, key); });
+  return found == IdTable::kNone ? -1 : static_cast<long>(found);
 }
 
 void Mesh::assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
@@ -401,8 +422,11 @@ void Mesh::replace_nodes(const std::vector<NodeId>& to, const std::unordered_map
   old.interior_pool_ = std::move(interior_pool_);
   edges_ = {}, faces_ = {}, elements_ = {}, boundary_ = {};
   edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
-  edge_index_ = {}, face_index_ = {};  // = {} frees them, clear() would keep their buckets
+  edge_index_.clear(), face_index_.clear();
   if (!old.elements_.empty()) reserve(old.elements_.front().shape, old.elements_.size());
+  // The rebuilt mesh has at most the old entities: lookups of that size never grow.
+  edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
+  face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
   std::vector<NodeId> ids;
   const std::size_t count = old.elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
   for (std::size_t e = 0; e < count; ++e) {
@@ -431,8 +455,7 @@ std::size_t Mesh::memory_bytes() const {
   bytes += elements_.capacity() * sizeof(Element) + boundary_.capacity() * sizeof(BoundaryFace);
   bytes += (edge_pool_.capacity() + face_pool_.capacity() + interior_pool_.capacity()) * sizeof(NodeId);
   bytes += map_bytes(cad_, sizeof(std::pair<const NodeId, CadAttachment>));
-  bytes += map_bytes(edge_index_, sizeof(std::pair<const std::uint64_t, std::uint32_t>));
-  bytes += map_bytes(face_index_, sizeof(std::pair<const std::array<NodeId, 4>, std::uint32_t>));
+  bytes += edge_index_.memory_bytes() + face_index_.memory_bytes();
   for (const auto& g : groups_) bytes += sizeof(g) + g.capacity();
   for (const auto& r : regions_) bytes += sizeof(r) + r.capacity();
   return bytes;

@@ -602,6 +602,17 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
 void Splitter::copy_nodes_groups_and_regions() {
   edge_slots_.resize(in_.edges().size());
   face_slots_.resize(in_.faces().size());
+  // Room for every node the pieces could make: grown by doubling, the node array would be resident
+  // twice at its last growth (the room never used is never touched, so never resident).
+  std::size_t nodes = in_.num_nodes(), elements = in_.elements().size();
+  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
+    if (!plans_[e].split()) continue;
+    const std::size_t pieces = static_cast<std::size_t>(layers(e, 0)) * layers(e, 1);
+    nodes += pieces * static_cast<std::size_t>(num_nodes(in_.elements()[e].shape, in_.order()));
+    elements += pieces - 1;
+  }
+  out_.reserve_nodes(nodes);
+  if (!in_.elements().empty()) out_.reserve(in_.elements().front().shape, elements);
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "semimesh/ho/element_type.hpp"
+#include "semimesh/mesh/id_table.hpp"
 
 #include <Eigen/Core>
 
@@ -125,8 +126,10 @@ class Mesh {
   /// Gives this mesh the regions of `other` with the same indices (for stages that copy elements
   /// into a new mesh). Throws std::logic_error if this mesh already has different regions.
   void copy_regions_from(const Mesh& other);
-  /// Reserves storage for about this many elements of one shape (avoids rehashing; optional).
+  /// Reserves storage for about this many elements of one shape (avoids regrowing; optional).
   void reserve(ho::Shape typical_shape, std::size_t num_elements);
+  /// Reserves storage for this many nodes (avoids regrowing; optional).
+  void reserve_nodes(std::size_t num_nodes) { nodes_.reserve(num_nodes); }
 
   // ---- entities -------------------------------------------------------------------------------
   const std::vector<Edge>& edges() const { return edges_; }
@@ -190,9 +193,9 @@ class Mesh {
                 const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                 std::vector<NodeId>& out) const;
 
-  struct FaceKeyHash {
-    std::size_t operator()(const std::array<NodeId, 4>& k) const;
-  };
+  bool has_face_key(std::uint32_t face, const std::array<NodeId, 4>& sorted_vertices) const;
+  std::uint64_t edge_hash(std::uint32_t edge) const;
+  std::uint64_t face_hash(std::uint32_t face) const;
 
   int order_;
   ho::NodeSet node_set_;
@@ -205,8 +208,8 @@ class Mesh {
   std::vector<std::string> groups_;
   std::vector<std::string> regions_{"fluid"};
   std::vector<NodeId> edge_pool_, face_pool_, interior_pool_;
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_index_;
-  std::unordered_map<std::array<NodeId, 4>, std::uint32_t, FaceKeyHash> face_index_;
+  IdTable edge_index_;  // edge ids by their vertices
+  IdTable face_index_;  // face ids by their sorted vertices
 };
 
 }  // namespace semimesh::mesh
