@@ -31,16 +31,19 @@ struct Lines {
   }
 };
 
-/// Height of each vertex: 0, or above every base vertex of the pyramids it is the apex of.
-std::vector<std::uint32_t> apex_heights(const mesh::Mesh& m) {
-  std::vector<std::uint32_t> h(m.num_nodes(), 0);
+/// Height of each vertex (by its index `index[node]`, of `count`): 0, or above every base vertex of
+/// the pyramids it is the apex of.
+std::vector<std::uint32_t> apex_heights(const mesh::Mesh& m, const std::vector<std::uint32_t>& index,
+                                        std::size_t count) {
+  std::vector<std::uint32_t> h(count, 0);
   std::vector<std::size_t> pyramids;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
     if (m.elements()[e].shape == ho::Shape::Pyramid) pyramids.push_back(e);
   auto raise = [&](std::size_t e) {  // true if the apex had to move up
     const auto& v = m.elements()[e].vertices;
-    const std::uint32_t need = 1 + std::max({h[v[0]], h[v[1]], h[v[2]], h[v[3]]});
-    return h[v[4]] < need ? (h[v[4]] = need, true) : false;
+    const std::uint32_t need = 1 + std::max({h[index[v[0]]], h[index[v[1]]], h[index[v[2]]], h[index[v[3]]]});
+    std::uint32_t& apex = h[index[v[4]]];
+    return apex < need ? (apex = need, true) : false;
   };
   for (std::size_t pass = 0; pass <= pyramids.size(); ++pass) {
     bool changed = false;
@@ -122,24 +125,32 @@ const std::vector<std::vector<int>>& nektar_faces(ho::Shape shape) {
 NektarNumbering number_for_nektar(const mesh::Mesh& m) {
   NektarNumbering out;
   const std::size_t n = m.num_nodes();
-  std::vector<char> is_vertex(n, 0);
-  Lines lines(n);
-  for (const auto& el : m.elements()) {
-    for (int k = 0; k < ho::num_vertices(el.shape); ++k) is_vertex[el.vertices[k]] = 1;
-    if (el.shape == ho::Shape::Prism)
-      for (int k = 0; k < 3; ++k) lines.join(el.vertices[k], el.vertices[k + 3]);
+  {
+    std::vector<char> is_vertex(n, 0);
+    for (const auto& el : m.elements())
+      for (int k = 0; k < ho::num_vertices(el.shape); ++k) is_vertex[el.vertices[k]] = 1;
+    for (const auto& bf : m.boundary_faces())
+      for (int k = 0; k < ho::num_vertices(bf.shape); ++k) is_vertex[bf.vertices[k]] = 1;
+    for (mesh::NodeId v = 0; v < n; ++v)
+      if (is_vertex[v]) out.vertex_node.push_back(v);
   }
-  for (const auto& bf : m.boundary_faces())
-    for (int k = 0; k < ho::num_vertices(bf.shape); ++k) is_vertex[bf.vertices[k]] = 1;
-  const std::vector<std::uint32_t> height = apex_heights(m);
-
-  for (mesh::NodeId v = 0; v < n; ++v)
-    if (is_vertex[v]) out.vertex_node.push_back(v);
-  std::vector<std::tuple<std::uint32_t, std::uint32_t, mesh::NodeId>> key;
-  key.reserve(out.vertex_node.size());
-  for (mesh::NodeId v : out.vertex_node) key.emplace_back(height[v], lines.find(v), v);
-  std::sort(key.begin(), key.end());
+  // The prism lines and apex heights are kept per vertex, not per node (a twentieth of the nodes
+  // at order 4): vertex_id holds each vertex's index in vertex_node (ascending node ids, so a
+  // line's smallest index is its smallest node) until it is given the final ids.
+  const std::size_t count = out.vertex_node.size();
   out.vertex_id.assign(n, kNone);
+  for (std::size_t i = 0; i < count; ++i) out.vertex_id[out.vertex_node[i]] = static_cast<std::uint32_t>(i);
+  const std::vector<std::uint32_t>& index = out.vertex_id;
+  Lines lines(count);
+  for (const auto& el : m.elements())
+    if (el.shape == ho::Shape::Prism)
+      for (int k = 0; k < 3; ++k) lines.join(index[el.vertices[k]], index[el.vertices[k + 3]]);
+  const std::vector<std::uint32_t> height = apex_heights(m, index, count);
+
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, mesh::NodeId>> key;
+  key.reserve(count);
+  for (std::uint32_t i = 0; i < count; ++i) key.emplace_back(height[i], lines.find(i), out.vertex_node[i]);
+  std::sort(key.begin(), key.end());
   for (std::size_t i = 0; i < key.size(); ++i) {
     out.vertex_node[i] = std::get<2>(key[i]);
     out.vertex_id[out.vertex_node[i]] = static_cast<std::uint32_t>(i);

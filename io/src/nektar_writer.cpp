@@ -339,11 +339,20 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
   // Curves share their points through INDEX: every edge/face node is stored once. INDEX cannot be
   // left out: MeshGraphIOXmlCompressed::v_ReadCurves requires it and reads every point through it.
+  // A node's point id is the order of its first sight in INDEX; POINTS replays the same walk and
+  // writes each node at its first sight, so no list of the points' nodes is held (4 bytes a node).
   std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
-  std::vector<mesh::NodeId> point_node;
+  std::uint32_t points = 0;
   auto point_of = [&](mesh::NodeId id) {
-    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = static_cast<std::uint32_t>(point_node.size()), point_node.push_back(id);
+    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = points++;
     return I(point_of_node[id]);
+  };
+  auto each_curved_node = [&](auto f) {
+    for (std::size_t e = 0; e < m.edges().size(); ++e)
+      if (g.edge_is_curved(e))
+        for (mesh::NodeId id : m.edge_nodes(e)) f(id);
+    for (std::size_t f_id = 0; f_id < m.faces().size(); ++f_id)
+      if (g.face_is_curved(f_id)) g.face_nodes_written(f_id, f);
   };
   const I p = m.order();
   I total = 0;
@@ -370,14 +379,13 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   }, false);
   out.print("      <DATAPOINTS ID=\"0\">\n");
   compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
-    for (std::size_t e = 0; e < m.edges().size(); ++e)
-      if (g.edge_is_curved(e))
-        for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
-    for (std::size_t f = 0; f < m.faces().size(); ++f)
-      if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
+    each_curved_node([&](mesh::NodeId id) { z.add_value(point_of(id)); });
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
-    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), g.node[point_node[k]]);
+    std::uint32_t next = 0;
+    each_curved_node([&](mesh::NodeId id) {
+      if (point_of_node[id] == next) put_point(z, I(next), g.node[id]), ++next;
+    });
   }, false, Content::Doubles);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
 }

@@ -166,12 +166,13 @@ class Mesh {
   /// boundary face replaced by to[v] ([num_nodes()]), only the nodes then referenced kept, in their
   /// relative order with their CAD attachments (those listed in `moved`, by old id, at the listed
   /// points), and the edges, faces and pools rebuilt in element order as add_element builds them.
-  /// The nodes are held once; the old entities only until the new ones are built.
+  /// The nodes are held once; the old entities only until the new ones are built. `to` is taken by
+  /// value: a caller that moves it in holds no second map of the nodes.
   /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
   /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
   /// entity different nodes) leave it unusable. `done` (optional) receives the fraction of
   /// elements rebuilt, about a hundred times.
-  void replace_nodes(const std::vector<NodeId>& to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
+  void replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
                      const std::function<void(double)>& done = {});
 
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
