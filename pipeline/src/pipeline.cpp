@@ -504,7 +504,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
+    StackSplit fine = split_stacks(std::move(coarse), stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);

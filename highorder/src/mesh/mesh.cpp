@@ -66,6 +66,12 @@ NodeId Mesh::add_node(const Eigen::Vector3d& x, const CadAttachment& cad) {
   return id;
 }
 
+void Mesh::take_nodes(Mesh& other) {
+  if (!nodes_.empty()) throw std::logic_error("Mesh::take_nodes: this mesh has nodes already");
+  nodes_ = std::move(other.nodes_), other.nodes_ = {};
+  cad_ = std::move(other.cad_), other.cad_ = {};
+}
+
 const CadAttachment& Mesh::cad_attachment(NodeId id) const {
   static const CadAttachment none{};
   const auto it = cad_.find(id);

@@ -84,8 +84,12 @@ struct Plan {
 
 class Splitter {
  public:
-  Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller)
+  /// `give_nodes`: the input itself, whose nodes then move into the output instead of being copied
+  /// (the input keeps its topology only; coordinates are read from the output, same ids).
+  Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller,
+           mesh::Mesh* give_nodes = nullptr)
       : in_(in),
+        give_nodes_(give_nodes),
         families_(std::move(families)),
         caller_(std::move(caller)),
         out_(in.order(), in.node_set()),
@@ -172,6 +176,7 @@ class Splitter {
   double ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const;
 
   const mesh::Mesh& in_;
+  mesh::Mesh* give_nodes_;
   std::vector<SplitFamily> families_;
   std::string caller_;
   mesh::Mesh out_;
@@ -304,7 +309,7 @@ Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element) {
     std::vector<std::vector<double>> z(num_vertices(el.shape));
     bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
     for (int v : direction_of(element, slot).bottom) {
-      const double r = ratio_at(in_.node(el.vertices[v]), element, family);
+      const double r = ratio_at(out_.node(el.vertices[v]), element, family);
       uniform = uniform && r == families_[family].distribution.ratio;
       z[v] = layer_interfaces(layers(element, slot), r);
     }
@@ -318,7 +323,10 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
   const mesh::Element& el = in_.elements()[element];
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
-  const Eigen::MatrixX3d X = in_.element_coordinates(element);
+  // The coarse nodes are the output's first ones, same ids.
+  const std::vector<NodeId> coarse = in_.element_nodes(element);
+  Eigen::MatrixX3d X(coarse.size(), 3);
+  for (std::size_t i = 0; i < coarse.size(); ++i) X.row(i) = out_.node(coarse[i]).transpose();
 
   // Coarse reference points of every node of every piece, then chi at all of them at once. With
   // constant ratios they are the same for every element of a shape and plan: the basis values are
@@ -611,9 +619,14 @@ void Splitter::copy_nodes_groups_and_regions() {
     nodes += pieces * static_cast<std::size_t>(num_nodes(in_.elements()[e].shape, in_.order()));
     elements += pieces - 1;
   }
-  out_.reserve_nodes(nodes);
   if (!in_.elements().empty()) out_.reserve(in_.elements().front().shape, elements);
-  for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+  if (give_nodes_) {
+    give_nodes_->reserve_nodes(nodes);
+    out_.take_nodes(*give_nodes_);
+  } else {
+    out_.reserve_nodes(nodes);
+    for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+  }
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
 }
@@ -749,6 +762,13 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
                         std::vector<InheritedBounds>* inherited) {
   return Splitter(mesh, families, "split_layers").run(split, stats, first_piece, progress, inherited);
+}
+
+mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                        std::vector<InheritedBounds>* inherited) {
+  return Splitter(mesh, families, "split_layers", &mesh).run(split, stats, first_piece, progress, inherited);
 }
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,

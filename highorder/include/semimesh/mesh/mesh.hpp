@@ -130,6 +130,10 @@ class Mesh {
   void reserve(ho::Shape typical_shape, std::size_t num_elements);
   /// Reserves storage for this many nodes (avoids regrowing; optional).
   void reserve_nodes(std::size_t num_nodes) { nodes_.reserve(num_nodes); }
+  /// Takes the nodes and CAD attachments of `other` (same ids; this mesh must have none), leaving it
+  /// without nodes: for a stage that builds a new mesh on an old one's nodes and reads the old one's
+  /// topology only (ho::split_layers).
+  void take_nodes(Mesh& other);
 
   // ---- entities -------------------------------------------------------------------------------
   const std::vector<Edge>& edges() const { return edges_; }
