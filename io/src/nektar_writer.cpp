@@ -221,7 +221,7 @@ struct Geometry {
 
 void write_plain(AtomicFile& out, const Geometry& g) {
   const mesh::Mesh& m = g.m;
-  const auto& vid = g.numbering.vertex_id;
+  auto vid = [&](mesh::NodeId v) { return g.numbering.vertex_id(v); };
   out.print("    <VERTEX>\n");
   for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) {
     const auto& x = g.node[g.numbering.vertex_node[i]];
@@ -229,7 +229,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
   }
   out.print("    </VERTEX>\n    <EDGE>\n");
   for (std::size_t e = 0; e < m.edges().size(); ++e)
-    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vid[m.edges()[e].vertices[0]], vid[m.edges()[e].vertices[1]]);
+    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vid(m.edges()[e].vertices[0]), vid(m.edges()[e].vertices[1]));
   out.print("    </EDGE>\n    <FACE>\n");
   for (std::size_t f = 0; f < m.faces().size(); ++f) {
     const int n = g.num_face_vertices(f);
@@ -286,7 +286,7 @@ void compressed_block(AtomicFile& out, const std::string& indent, const std::str
 
 void write_compressed(AtomicFile& out, const Geometry& g) {
   const mesh::Mesh& m = g.m;
-  const auto& vid = g.numbering.vertex_id;
+  auto vid = [&](mesh::NodeId v) { return g.numbering.vertex_id(v); };
   using I = std::int64_t;
   auto put_point = [](ZlibStream& z, I id, const Eigen::Vector3d& x) {
     z.add_value(id);
@@ -299,7 +299,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   out.print("    ");
   compressed_block(out, "", "EDGE", [&](ZlibStream& z) {
     for (std::size_t e = 0; e < m.edges().size(); ++e) {
-      const I rec[3] = {I(e), I(vid[m.edges()[e].vertices[0]]), I(vid[m.edges()[e].vertices[1]])};
+      const I rec[3] = {I(e), I(vid(m.edges()[e].vertices[0])), I(vid(m.edges()[e].vertices[1]))};
       z.add(rec, sizeof rec);
     }
   });
