@@ -126,6 +126,7 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   edges_.reserve(ne);
   faces_.reserve(nf);
   edge_pool_.reserve(ne * (order_ - 1));
+  face_pool_.reserve(nf * face_interior_count(4, order_));  // quadrilaterals own the most
   interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
 }
 
@@ -199,6 +200,12 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
     throw std::invalid_argument("Mesh::add_element: region " + std::to_string(region) + " does not exist (" +
                                 std::to_string(regions_.size()) + " regions)");
   const std::size_t index = elements_.size();
+  elements_.push_back(linked_element(shape, canonical_nodes, region, index));
+  return index;
+}
+
+Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
+                             std::size_t index) {
   const std::string who = element_name(shape, index);
   const int nv = ho::num_vertices(shape);
   if (canonical_nodes.size() < static_cast<std::size_t>(nv))
@@ -215,8 +222,7 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
   for (std::size_t i = 0; i < layout.slots.size(); ++i)
     if (layout.slots[i].kind == NodeSlot::Interior)
       interior_pool_[el.first_node + layout.slots[i].slot[0]] = canonical_nodes[i];
-  elements_.push_back(el);
-  return index;
+  return el;
 }
 
 std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
@@ -424,26 +430,32 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
     for (NodeId& t : to) t = t < new_id.size() ? new_id[t] : kNoNode;
   }
   used = {};
-  // The old entities move into a mesh of their own, which still assembles the old node lists.
+  // The old entities move into a mesh of their own, which still assembles the old node lists. The
+  // elements stay: each is rebuilt in its own place once its old node list is read (held once).
   Mesh old(order_, node_set_);
-  old.edges_ = std::move(edges_), old.faces_ = std::move(faces_);
-  old.elements_ = std::move(elements_), old.boundary_ = std::move(boundary_);
+  old.edges_ = std::move(edges_), old.faces_ = std::move(faces_), old.boundary_ = std::move(boundary_);
   old.edge_pool_ = std::move(edge_pool_), old.face_pool_ = std::move(face_pool_);
   old.interior_pool_ = std::move(interior_pool_);
-  edges_ = {}, faces_ = {}, elements_ = {}, boundary_ = {};
+  edges_ = {}, faces_ = {}, boundary_ = {};
   edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
   edge_index_.clear(), face_index_.clear();
-  if (!old.elements_.empty()) reserve(old.elements_.front().shape, old.elements_.size());
-  // The rebuilt mesh has at most the old entities: lookups of that size never grow.
+  // The rebuilt mesh has at most the old entities and pool entries: sized so, nothing regrows (a
+  // vector that doubles holds its old and new copies at once).
+  boundary_.reserve(old.boundary_.size());
+  edges_.reserve(old.edges_.size()), faces_.reserve(old.faces_.size());
+  edge_pool_.reserve(old.edge_pool_.size()), face_pool_.reserve(old.face_pool_.size());
+  interior_pool_.reserve(old.interior_pool_.size());
   edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
   face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
   std::vector<NodeId> ids;
-  const std::size_t count = old.elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
+  const std::size_t count = elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
   for (std::size_t e = 0; e < count; ++e) {
     if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
-    old.element_nodes(e, ids);
+    const Element was = elements_[e];
+    old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
+                 was.face_orientation.data(), was.first_node, ids);
     for (NodeId& id : ids) id = to[id];
-    add_element(old.elements_[e].shape, ids, old.elements_[e].region);
+    elements_[e] = linked_element(was.shape, ids, was.region, e);
   }
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
     ids = old.boundary_face_nodes(b);

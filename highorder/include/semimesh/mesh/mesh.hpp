@@ -170,7 +170,8 @@ class Mesh {
   /// boundary face replaced by to[v] ([num_nodes()]), only the nodes then referenced kept, in their
   /// relative order with their CAD attachments (those listed in `moved`, by old id, at the listed
   /// points), and the edges, faces and pools rebuilt in element order as add_element builds them.
-  /// The nodes are held once; the old entities only until the new ones are built. `to` is taken by
+  /// The nodes and elements are held once (each element rebuilt in its place); the old edges, faces
+  /// and pools only until the new ones are built. `to` is taken by
   /// value: a caller that moves it in holds no second map of the nodes.
   /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
   /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
@@ -191,6 +192,9 @@ class Mesh {
                      std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids, std::uint8_t* codes,
                      const std::string& who);
   void check_same_node(NodeId stored, NodeId given, const std::string& who) const;
+  /// add_element's element (its entities found or created, its interior nodes appended), not yet
+  /// stored; `index` names it in errors.
+  Element linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region, std::size_t index);
   /// Keeps the nodes `used` marks, in order (the `moved` ones at their new points); new id by old.
   std::vector<NodeId> compact_nodes(const std::vector<char>& used,
                                     const std::unordered_map<NodeId, Eigen::Vector3d>& moved);
