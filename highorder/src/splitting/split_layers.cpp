@@ -70,6 +70,7 @@ DirectionData make_direction_data(const ShapeData& data, int order, int directio
 }
 
 using NodeKey = std::array<std::int64_t, 7>;
+constexpr std::uint32_t kNoBlock = 0xffffffffu;  // a coarse entity without slots yet
 
 // Split elements whose sub-node positions are held at once (bounds the memory of the parallel pass).
 constexpr std::size_t kSplitBlock = 1024;
@@ -184,9 +185,13 @@ class Splitter {
   std::map<Shape, ShapeData> shapes_;
   std::map<std::tuple<Shape, int, int, int, int>, Eigen::MatrixXd> uniform_;
   // The nodes made so far, by where they are (key_of): on a coarse edge or face shared with
-  // neighbours, in slots of that entity (4 bytes a node: a map of every key held ~1 GB on the
-  // paper's case); inside the element, only while it is split; the rare rest by key.
-  std::vector<std::vector<NodeId>> edge_slots_, face_slots_;  // [input edges], [input faces]
+  // neighbours, in a block of slots of that entity in `slots_` (4 bytes a node: a map of every key
+  // held ~1 GB on the paper's case; a vector per entity ~50 MB of headers and allocations), made at
+  // its first node and large enough for any split of it; inside the element, only while it is
+  // split; the rare rest by key.
+  std::vector<std::uint32_t> edge_block_, face_block_;  // [input edges], [input faces]: first slot, or kNoBlock
+  std::vector<NodeId> slots_;
+  std::size_t edge_block_size_ = 0, face_block_size_ = 0;
   std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
   std::vector<NodeId> face_vertices_;                          // scratch of node_for
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
@@ -275,18 +280,23 @@ double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int fam
 // Kinds of key_of: 1 on a coarse edge (its ends, level), 2 on a coarse face (bottom edge, top
 // edge, place along, level), 3 inside the element, 4 on a face cut both ways.
 NodeId& Splitter::slot_of(const NodeKey& key) {
-  auto slot = [](std::vector<NodeId>& slots, std::size_t i) -> NodeId& {
-    if (slots.size() <= i) slots.resize(i + 1, mesh::kNoNode);
-    return slots[i];
+  auto slot = [&](std::uint32_t& block, std::size_t size, std::size_t i) -> NodeId& {
+    if (i >= size) throw std::logic_error(caller_ + ": a node's slot lies beyond its coarse entity's block");
+    if (block == kNoBlock) {
+      block = static_cast<std::uint32_t>(slots_.size());
+      slots_.resize(slots_.size() + size, mesh::kNoNode);
+    }
+    return slots_[block + i];
   };
   if (key[0] == 1) {
     const long edge = in_.find_edge(static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]));
-    if (edge >= 0) return slot(edge_slots_[edge], static_cast<std::size_t>(key[3]));
+    if (edge >= 0) return slot(edge_block_[edge], edge_block_size_, static_cast<std::size_t>(key[3]));
   } else if (key[0] == 2) {
     face_vertices_.assign({static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]), static_cast<NodeId>(key[4]),
                            static_cast<NodeId>(key[3])});
     const long face = in_.find_face(face_vertices_);
-    if (face >= 0) return slot(face_slots_[face], static_cast<std::size_t>(key[6] * in_.order() + key[5]));
+    if (face >= 0)
+      return slot(face_block_[face], face_block_size_, static_cast<std::size_t>(key[6] * in_.order() + key[5]));
   } else if (key[0] == 3) {
     return element_nodes_.try_emplace(key, mesh::kNoNode).first->second;
   }
@@ -608,8 +618,14 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
 }
 
 void Splitter::copy_nodes_groups_and_regions() {
-  edge_slots_.resize(in_.edges().size());
-  face_slots_.resize(in_.faces().size());
+  // An edge across the layers has its nodes at levels below layers * P; a side face also at
+  // places 1..P-1 along its bottom edge (slot level * P + place).
+  int most_layers = 1;
+  for (const SplitFamily& f : families_) most_layers = std::max(most_layers, f.distribution.layers);
+  edge_block_size_ = static_cast<std::size_t>(most_layers) * in_.order();
+  face_block_size_ = edge_block_size_ * in_.order();
+  edge_block_.assign(in_.edges().size(), kNoBlock);
+  face_block_.assign(in_.faces().size(), kNoBlock);
   // Room for every node the pieces could make: grown by doubling, the node array would be resident
   // twice at its last growth (the room never used is never touched, so never resident).
   std::size_t nodes = in_.num_nodes(), elements = in_.elements().size();
