@@ -119,6 +119,14 @@ const std::vector<std::vector<int>>& nektar_faces(ho::Shape shape) {
   }
 }
 
+std::array<mesh::NodeId, 8> nektar_element_vertices(const mesh::Mesh& m, const NektarNumbering& numbering,
+                                                    std::size_t e) {
+  const auto& el = m.elements()[e];
+  if (el.shape == ho::Shape::Tetrahedron) return number_tet(m, el, numbering);
+  if (el.shape == ho::Shape::Prism) return number_prism(m, e, numbering);
+  return el.vertices;  // pyramids and hexes: Gmsh's numbering is Nektar's
+}
+
 NektarNumbering number_for_nektar(const mesh::Mesh& m) {
   NektarNumbering out;
   const std::size_t n = m.num_nodes();
@@ -149,16 +157,9 @@ NektarNumbering number_for_nektar(const mesh::Mesh& m) {
   for (std::size_t i = 0; i < key.size(); ++i) out.vertex_node[i] = std::get<2>(key[i]);
   out.index_vertices();
 
-  out.element_vertices.resize(m.elements().size());
   for (std::size_t e = 0; e < m.elements().size(); ++e) {
     const auto& el = m.elements()[e];
-    auto& v = out.element_vertices[e];
-    if (el.shape == ho::Shape::Tetrahedron)
-      v = number_tet(m, el, out);
-    else if (el.shape == ho::Shape::Prism)
-      v = number_prism(m, e, out);
-    else
-      v = el.vertices;  // pyramids and hexes: Gmsh's numbering is Nektar's
+    const std::array<mesh::NodeId, 8> v = nektar_element_vertices(m, out, e);
     // The rules, checked on the faces as they will be written.
     const auto& faces = nektar_faces(el.shape);
     for (std::size_t f = 0; f < faces.size(); ++f) {

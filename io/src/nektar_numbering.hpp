@@ -28,8 +28,6 @@ namespace semimesh::io {
 struct NektarNumbering {
   /// Mesh node of each Nektar vertex id.
   std::vector<mesh::NodeId> vertex_node;
-  /// Per element, its vertices in Nektar's local numbering (first num_vertices used).
-  std::vector<std::array<mesh::NodeId, 8>> element_vertices;
 
   /// Nektar vertex id of a mesh node (0xffffffff for a node that is not an element vertex): looked
   /// up in a hash of the vertices, not an array over every node (45 MB on the paper's case).
@@ -57,6 +55,11 @@ const std::vector<std::vector<int>>& nektar_faces(ho::Shape shape);
 /// Ranks the vertices and numbers every element; throws std::runtime_error naming the element if a
 /// rule cannot be met.
 NektarNumbering number_for_nektar(const mesh::Mesh& mesh);
+
+/// Element e's vertices in Nektar's local numbering (first num_vertices used), as number_for_nektar
+/// checked them: derived again when written rather than kept (32 bytes an element).
+std::array<mesh::NodeId, 8> nektar_element_vertices(const mesh::Mesh& mesh, const NektarNumbering& numbering,
+                                                    std::size_t e);
 
 /// The vertices of face `f` in the order written to the file: a triangle rotated so that its
 /// highest Nektar id is third, a quadrilateral as stored. Its edges join consecutive vertices.

@@ -181,7 +181,7 @@ struct Geometry {
   /// Face ids of an element in Nektar's local face order.
   std::array<std::int64_t, 6> element_faces(std::size_t e) const {
     const auto& el = m.elements()[e];
-    const auto& v = numbering.element_vertices[e];
+    const std::array<mesh::NodeId, 8> v = nektar_element_vertices(m, numbering, e);
     const auto& gmsh_faces = ho::faces(el.shape);
     const auto& nek_faces = nektar_faces(el.shape);
     std::array<std::int64_t, 6> out{};

@@ -112,7 +112,8 @@ class Splitter {
   /// Fills plans_ and the shape caches; returns [input elements] the entry's index in `split`, or -1.
   std::vector<int> plan_elements(const std::vector<LayerSplit>& split);
   /// The output starts as the input's nodes (with their CAD attachments), groups and regions.
-  void copy_nodes_groups_and_regions();
+  /// Returns the number of elements the output will have.
+  std::size_t copy_nodes_groups_and_regions();
   /// Every input element into the output in input order, split ones as their pieces (with their
   /// inherited bounds when asked); returns [split element j, in `split`'s order] the output index
   /// of its first piece (the pieces' node lists are then read from the output, never kept).
@@ -557,7 +558,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   const std::vector<int> position = plan_elements(split);  // also throws for a bad entry
   check_side_faces(split);                                 // before any output: a crack is refused
   if (first_piece) first_piece->assign(in_.elements().size(), 0);
-  copy_nodes_groups_and_regions();  // input node ids stay valid in the output
+  const std::size_t elements = copy_nodes_groups_and_regions();  // input node ids stay valid in the output
+  if (inherited) inherited->reserve(elements);                    // filled piece by piece: never regrown
   const std::vector<std::size_t> first_out = add_elements(position, split.size(), first_piece, progress, inherited);
   add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
   if (stats) *stats = split_stats();
@@ -617,7 +619,7 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
   return position;
 }
 
-void Splitter::copy_nodes_groups_and_regions() {
+std::size_t Splitter::copy_nodes_groups_and_regions() {
   // An edge across the layers has its nodes at levels below layers * P; a side face also at
   // places 1..P-1 along its bottom edge (slot level * P + place).
   int most_layers = 1;
@@ -645,6 +647,7 @@ void Splitter::copy_nodes_groups_and_regions() {
   }
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
+  return elements;
 }
 
 // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
