@@ -5,6 +5,7 @@
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/nektar.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <cmath>
 #include <algorithm>
@@ -204,12 +205,18 @@ struct Geometry {
   /// Curved nodes of a face, in the order written.
   template <typename Emit>
   void face_nodes_written(std::size_t f, Emit emit) const {
+    face_slots_written(f, [&](int, mesh::NodeId id) { emit(id); });
+  }
+  /// The same with each node's position k in the face's canonical node list (its slot in
+  /// mesh::node_layout of the face's shape).
+  template <typename Emit>
+  void face_slots_written(std::size_t f, Emit emit) const {
     thread_local std::vector<mesh::NodeId> ids;
     m.face_nodes(f, ids);
     if (num_face_vertices(f) == 3) {
-      for (int k : tri_point_order[written_rotation(f)]) emit(ids[k]);
+      for (int k : tri_point_order[written_rotation(f)]) emit(k, ids[k]);
     } else {
-      for (int k : quad_point_order) emit(ids[k]);
+      for (int k : quad_point_order) emit(k, ids[k]);
     }
   }
   bool face_is_curved(std::size_t f) const { return m.order() >= 2 && face_curved[f]; }
@@ -340,19 +347,48 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   // Curves share their points through INDEX: every edge/face node is stored once. INDEX cannot be
   // left out: MeshGraphIOXmlCompressed::v_ReadCurves requires it and reads every point through it.
   // A node's point id is the order of its first sight in INDEX; POINTS replays the same walk and
-  // writes each node at its first sight, so no list of the points' nodes is held (4 bytes a node).
-  std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
+  // writes each node at its first sight. The ids are kept per vertex, edge and face, not per node
+  // (4 bytes a node): a curved face's edges are all curved, so its vertices and edge nodes are
+  // first seen along the edges (an edge's inner nodes one after the other), and its own nodes,
+  // seen nowhere else, take the next ids in the order written.
+  constexpr std::uint32_t kUnseen = 0xffffffffu;
+  std::vector<std::uint32_t> vertex_point(g.numbering.vertex_node.size(), kUnseen);
+  std::vector<std::uint32_t> edge_point(m.edges().size(), kUnseen), face_point(m.faces().size(), kUnseen);
   std::uint32_t points = 0;
-  auto point_of = [&](mesh::NodeId id) {
-    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = points++;
-    return I(point_of_node[id]);
+  auto vertex = [&](mesh::NodeId id) {
+    std::uint32_t& point = vertex_point[g.numbering.vertex_id(id)];
+    if (point == kUnseen) point = points++;
+    return point;
   };
+  const int inner = m.order() - 1;
+  // f(node, point id) along INDEX's walk.
   auto each_curved_node = [&](auto f) {
-    for (std::size_t e = 0; e < m.edges().size(); ++e)
-      if (g.edge_is_curved(e))
-        for (mesh::NodeId id : m.edge_nodes(e)) f(id);
-    for (std::size_t f_id = 0; f_id < m.faces().size(); ++f_id)
-      if (g.face_is_curved(f_id)) g.face_nodes_written(f_id, f);
+    for (std::size_t e = 0; e < m.edges().size(); ++e) {
+      if (!g.edge_is_curved(e)) continue;
+      const std::vector<mesh::NodeId> ids = m.edge_nodes(e);
+      f(ids.front(), vertex(ids.front()));
+      if (edge_point[e] == kUnseen) edge_point[e] = points, points += inner;
+      for (int j = 0; j < inner; ++j) f(ids[j + 1], edge_point[e] + j);
+      f(ids.back(), vertex(ids.back()));
+    }
+    for (std::size_t face = 0; face < m.faces().size(); ++face) {
+      if (!g.face_is_curved(face)) continue;
+      const mesh::Face& entity = m.faces()[face];
+      const auto& slots =
+          mesh::node_layout(entity.num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.order()).slots;
+      if (face_point[face] == kUnseen)
+        face_point[face] = points, points += mesh::face_interior_count(entity.num_vertices, m.order());
+      std::uint32_t own = face_point[face];
+      g.face_slots_written(face, [&](int k, mesh::NodeId id) {
+        const mesh::NodeSlot& slot = slots[k];
+        if (slot.kind == mesh::NodeSlot::Vertex) return f(id, vertex(id));
+        if (slot.kind == mesh::NodeSlot::Face) return f(id, own++);
+        const std::uint32_t edge = entity.edges[slot.local];
+        if (edge_point[edge] == kUnseen)
+          throw std::logic_error("Nektar++ XML: curved face " + std::to_string(face) + " has a straight edge");
+        f(id, edge_point[edge] + slot.slot[(entity.edge_reversed >> slot.local) & 1u]);
+      });
+    }
   };
   const I p = m.order();
   I total = 0;
@@ -379,12 +415,12 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   }, false);
   out.print("      <DATAPOINTS ID=\"0\">\n");
   compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
-    each_curved_node([&](mesh::NodeId id) { z.add_value(point_of(id)); });
+    each_curved_node([&](mesh::NodeId, std::uint32_t point) { z.add_value(I(point)); });
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
     std::uint32_t next = 0;
-    each_curved_node([&](mesh::NodeId id) {
-      if (point_of_node[id] == next) put_point(z, I(next), g.node[id]), ++next;
+    each_curved_node([&](mesh::NodeId id, std::uint32_t point) {
+      if (point == next) put_point(z, I(next), g.node[id]), ++next;
     });
   }, false, Content::Doubles);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
