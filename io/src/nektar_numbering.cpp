@@ -11,8 +11,6 @@
 namespace semimesh::io {
 namespace {
 
-constexpr std::uint32_t kNone = 0xffffffffu;
-
 std::runtime_error element_error(std::size_t e, const std::string& what) {
   return std::runtime_error("Nektar++ XML: element " + std::to_string(e) + ": " + what);
 }
@@ -31,16 +29,19 @@ struct Lines {
   }
 };
 
-/// Height of each vertex: 0, or above every base vertex of the pyramids it is the apex of.
-std::vector<std::uint32_t> apex_heights(const mesh::Mesh& m) {
-  std::vector<std::uint32_t> h(m.num_nodes(), 0);
+/// Height of each vertex (by its id in `n`): 0, or above every base vertex of the pyramids it is the
+/// apex of.
+std::vector<std::uint32_t> apex_heights(const mesh::Mesh& m, const NektarNumbering& n) {
+  std::vector<std::uint32_t> h(n.vertex_node.size(), 0);
+  auto index = [&](mesh::NodeId v) { return n.vertex_id(v); };
   std::vector<std::size_t> pyramids;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
     if (m.elements()[e].shape == ho::Shape::Pyramid) pyramids.push_back(e);
   auto raise = [&](std::size_t e) {  // true if the apex had to move up
     const auto& v = m.elements()[e].vertices;
-    const std::uint32_t need = 1 + std::max({h[v[0]], h[v[1]], h[v[2]], h[v[3]]});
-    return h[v[4]] < need ? (h[v[4]] = need, true) : false;
+    const std::uint32_t need = 1 + std::max({h[index(v[0])], h[index(v[1])], h[index(v[2])], h[index(v[3])]});
+    std::uint32_t& apex = h[index(v[4])];
+    return apex < need ? (apex = need, true) : false;
   };
   for (std::size_t pass = 0; pass <= pyramids.size(); ++pass) {
     bool changed = false;
@@ -64,21 +65,20 @@ double corner_jacobian(const mesh::Mesh& m, ho::Shape shape, const std::array<me
   return shape == ho::Shape::Tetrahedron ? triple(m, v, 0, 1, 2, 3) : triple(m, v, 0, 1, 3, 4);
 }
 
-std::array<mesh::NodeId, 8> number_tet(const mesh::Mesh& m, const mesh::Element& el,
-                                       const std::vector<std::uint32_t>& id) {
+std::array<mesh::NodeId, 8> number_tet(const mesh::Mesh& m, const mesh::Element& el, const NektarNumbering& n) {
   std::array<mesh::NodeId, 8> v{};
   std::copy_n(el.vertices.begin(), 4, v.begin());
-  std::sort(v.begin(), v.begin() + 4, [&](mesh::NodeId a, mesh::NodeId b) { return id[a] < id[b]; });
+  std::sort(v.begin(), v.begin() + 4, [&](mesh::NodeId a, mesh::NodeId b) { return n.vertex_id(a) < n.vertex_id(b); });
   if (triple(m, v, 0, 1, 2, 3) < 0) std::swap(v[0], v[1]);  // the two lowest: mirror keeps 2, 3 highest
   return v;
 }
 
-std::array<mesh::NodeId, 8> number_prism(const mesh::Mesh& m, std::size_t e, const std::vector<std::uint32_t>& id) {
+std::array<mesh::NodeId, 8> number_prism(const mesh::Mesh& m, std::size_t e, const NektarNumbering& n) {
   const auto& g = m.elements()[e].vertices;  // Gmsh: triangles 0 1 2 / 3 4 5, lateral edges k - k+3
   auto peak = [&](int first) {
     int best = first;
     for (int k = first + 1; k < first + 3; ++k)
-      if (id[g[k]] > id[g[best]]) best = k;
+      if (n.vertex_id(g[k]) > n.vertex_id(g[best])) best = k;
     return best;
   };
   const int k = peak(0);
@@ -119,49 +119,54 @@ const std::vector<std::vector<int>>& nektar_faces(ho::Shape shape) {
   }
 }
 
+std::array<mesh::NodeId, 8> nektar_element_vertices(const mesh::Mesh& m, const NektarNumbering& numbering,
+                                                    std::size_t e) {
+  const auto& el = m.elements()[e];
+  if (el.shape == ho::Shape::Tetrahedron) return number_tet(m, el, numbering);
+  if (el.shape == ho::Shape::Prism) return number_prism(m, e, numbering);
+  return el.vertices;  // pyramids and hexes: Gmsh's numbering is Nektar's
+}
+
 NektarNumbering number_for_nektar(const mesh::Mesh& m) {
   NektarNumbering out;
   const std::size_t n = m.num_nodes();
-  std::vector<char> is_vertex(n, 0);
-  Lines lines(n);
-  for (const auto& el : m.elements()) {
-    for (int k = 0; k < ho::num_vertices(el.shape); ++k) is_vertex[el.vertices[k]] = 1;
+  {
+    std::vector<char> is_vertex(n, 0);
+    for (const auto& el : m.elements())
+      for (int k = 0; k < ho::num_vertices(el.shape); ++k) is_vertex[el.vertices[k]] = 1;
+    for (const auto& bf : m.boundary_faces())
+      for (int k = 0; k < ho::num_vertices(bf.shape); ++k) is_vertex[bf.vertices[k]] = 1;
+    for (mesh::NodeId v = 0; v < n; ++v)
+      if (is_vertex[v]) out.vertex_node.push_back(v);
+  }
+  // The prism lines and apex heights are kept per vertex, not per node (a twentieth of the nodes
+  // at order 4), by the vertices' ids in ascending node order (so a line's smallest id is its
+  // smallest node) until they are given the final ids.
+  const std::size_t count = out.vertex_node.size();
+  out.index_vertices();
+  Lines lines(count);
+  for (const auto& el : m.elements())
     if (el.shape == ho::Shape::Prism)
-      for (int k = 0; k < 3; ++k) lines.join(el.vertices[k], el.vertices[k + 3]);
-  }
-  for (const auto& bf : m.boundary_faces())
-    for (int k = 0; k < ho::num_vertices(bf.shape); ++k) is_vertex[bf.vertices[k]] = 1;
-  const std::vector<std::uint32_t> height = apex_heights(m);
+      for (int k = 0; k < 3; ++k) lines.join(out.vertex_id(el.vertices[k]), out.vertex_id(el.vertices[k + 3]));
+  const std::vector<std::uint32_t> height = apex_heights(m, out);
 
-  for (mesh::NodeId v = 0; v < n; ++v)
-    if (is_vertex[v]) out.vertex_node.push_back(v);
   std::vector<std::tuple<std::uint32_t, std::uint32_t, mesh::NodeId>> key;
-  key.reserve(out.vertex_node.size());
-  for (mesh::NodeId v : out.vertex_node) key.emplace_back(height[v], lines.find(v), v);
+  key.reserve(count);
+  for (std::uint32_t i = 0; i < count; ++i) key.emplace_back(height[i], lines.find(i), out.vertex_node[i]);
   std::sort(key.begin(), key.end());
-  out.vertex_id.assign(n, kNone);
-  for (std::size_t i = 0; i < key.size(); ++i) {
-    out.vertex_node[i] = std::get<2>(key[i]);
-    out.vertex_id[out.vertex_node[i]] = static_cast<std::uint32_t>(i);
-  }
+  for (std::size_t i = 0; i < key.size(); ++i) out.vertex_node[i] = std::get<2>(key[i]);
+  out.index_vertices();
 
-  out.element_vertices.resize(m.elements().size());
   for (std::size_t e = 0; e < m.elements().size(); ++e) {
     const auto& el = m.elements()[e];
-    auto& v = out.element_vertices[e];
-    if (el.shape == ho::Shape::Tetrahedron)
-      v = number_tet(m, el, out.vertex_id);
-    else if (el.shape == ho::Shape::Prism)
-      v = number_prism(m, e, out.vertex_id);
-    else
-      v = el.vertices;  // pyramids and hexes: Gmsh's numbering is Nektar's
+    const std::array<mesh::NodeId, 8> v = nektar_element_vertices(m, out, e);
     // The rules, checked on the faces as they will be written.
     const auto& faces = nektar_faces(el.shape);
     for (std::size_t f = 0; f < faces.size(); ++f) {
       if (faces[f].size() != 3) continue;
       const mesh::NodeId collapsed = v[faces[f][2]];
       for (int k = 0; k < 2; ++k)
-        if (out.vertex_id[v[faces[f][k]]] > out.vertex_id[collapsed])
+        if (out.vertex_id(v[faces[f][k]]) > out.vertex_id(collapsed))
           throw element_error(e, "its local face " + std::to_string(f) + " (a triangle) would not have the "
                                  "element's collapsed vertex as its third vertex (e.g. a pyramid apex that is "
                                  "not above a vertex of a neighbouring triangle)");
@@ -180,7 +185,7 @@ std::array<mesh::NodeId, 4> written_face_vertices(const mesh::Mesh& m, const Nek
   if (face.num_vertices == 3) {
     int top = 0;
     for (int k = 1; k < 3; ++k)
-      if (numbering.vertex_id[v[k]] > numbering.vertex_id[v[top]]) top = k;
+      if (numbering.vertex_id(v[k]) > numbering.vertex_id(v[top])) top = k;
     std::rotate(v.begin(), v.begin() + (top + 1) % 3, v.begin() + 3);
   }
   return v;

@@ -26,12 +26,25 @@
 namespace semimesh::io {
 
 struct NektarNumbering {
-  /// Nektar vertex id of each mesh node (kNoNode for nodes that are not element vertices).
-  std::vector<std::uint32_t> vertex_id;
   /// Mesh node of each Nektar vertex id.
   std::vector<mesh::NodeId> vertex_node;
-  /// Per element, its vertices in Nektar's local numbering (first num_vertices used).
-  std::vector<std::array<mesh::NodeId, 8>> element_vertices;
+
+  /// Nektar vertex id of a mesh node (0xffffffff for a node that is not an element vertex): looked
+  /// up in a hash of the vertices, not an array over every node (45 MB on the paper's case).
+  std::uint32_t vertex_id(mesh::NodeId node) const {
+    return by_node.find(mesh::IdTable::mix(node), [&](std::uint32_t id) { return vertex_node[id] == node; });
+  }
+  /// Indexes vertex_node anew (after it is filled or reordered).
+  void index_vertices() {
+    by_node.clear();
+    by_node.reserve(vertex_node.size(), [&](std::uint32_t id) { return mesh::IdTable::mix(vertex_node[id]); });
+    for (std::uint32_t id = 0; id < vertex_node.size(); ++id)
+      by_node.find_or_insert(
+          mesh::IdTable::mix(vertex_node[id]), [](std::uint32_t) { return false; }, id,
+          [&](std::uint32_t other) { return mesh::IdTable::mix(vertex_node[other]); });
+  }
+
+  mesh::IdTable by_node;  ///< Nektar vertex ids by their mesh node
 };
 
 /// Nektar++ element letter (A tet, P pyramid, R prism, H hex).
@@ -42,6 +55,11 @@ const std::vector<std::vector<int>>& nektar_faces(ho::Shape shape);
 /// Ranks the vertices and numbers every element; throws std::runtime_error naming the element if a
 /// rule cannot be met.
 NektarNumbering number_for_nektar(const mesh::Mesh& mesh);
+
+/// Element e's vertices in Nektar's local numbering (first num_vertices used), as number_for_nektar
+/// checked them: derived again when written rather than kept (32 bytes an element).
+std::array<mesh::NodeId, 8> nektar_element_vertices(const mesh::Mesh& mesh, const NektarNumbering& numbering,
+                                                    std::size_t e);
 
 /// The vertices of face `f` in the order written to the file: a triangle rotated so that its
 /// highest Nektar id is third, a quadrilateral as stored. Its edges join consecutive vertices.

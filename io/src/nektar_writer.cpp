@@ -5,6 +5,7 @@
 #include "semimesh/io/atomic_file.hpp"
 #include "semimesh/io/equispaced.hpp"
 #include "semimesh/io/nektar.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <cmath>
 #include <algorithm>
@@ -181,7 +182,7 @@ struct Geometry {
   /// Face ids of an element in Nektar's local face order.
   std::array<std::int64_t, 6> element_faces(std::size_t e) const {
     const auto& el = m.elements()[e];
-    const auto& v = numbering.element_vertices[e];
+    const std::array<mesh::NodeId, 8> v = nektar_element_vertices(m, numbering, e);
     const auto& gmsh_faces = ho::faces(el.shape);
     const auto& nek_faces = nektar_faces(el.shape);
     std::array<std::int64_t, 6> out{};
@@ -204,12 +205,18 @@ struct Geometry {
   /// Curved nodes of a face, in the order written.
   template <typename Emit>
   void face_nodes_written(std::size_t f, Emit emit) const {
+    face_slots_written(f, [&](int, mesh::NodeId id) { emit(id); });
+  }
+  /// The same with each node's position k in the face's canonical node list (its slot in
+  /// mesh::node_layout of the face's shape).
+  template <typename Emit>
+  void face_slots_written(std::size_t f, Emit emit) const {
     thread_local std::vector<mesh::NodeId> ids;
     m.face_nodes(f, ids);
     if (num_face_vertices(f) == 3) {
-      for (int k : tri_point_order[written_rotation(f)]) emit(ids[k]);
+      for (int k : tri_point_order[written_rotation(f)]) emit(k, ids[k]);
     } else {
-      for (int k : quad_point_order) emit(ids[k]);
+      for (int k : quad_point_order) emit(k, ids[k]);
     }
   }
   bool face_is_curved(std::size_t f) const { return m.order() >= 2 && face_curved[f]; }
@@ -221,7 +228,7 @@ struct Geometry {
 
 void write_plain(AtomicFile& out, const Geometry& g) {
   const mesh::Mesh& m = g.m;
-  const auto& vid = g.numbering.vertex_id;
+  auto vid = [&](mesh::NodeId v) { return g.numbering.vertex_id(v); };
   out.print("    <VERTEX>\n");
   for (std::size_t i = 0; i < g.numbering.vertex_node.size(); ++i) {
     const auto& x = g.node[g.numbering.vertex_node[i]];
@@ -229,7 +236,7 @@ void write_plain(AtomicFile& out, const Geometry& g) {
   }
   out.print("    </VERTEX>\n    <EDGE>\n");
   for (std::size_t e = 0; e < m.edges().size(); ++e)
-    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vid[m.edges()[e].vertices[0]], vid[m.edges()[e].vertices[1]]);
+    out.print("      <E ID=\"{}\">{} {}</E>\n", e, vid(m.edges()[e].vertices[0]), vid(m.edges()[e].vertices[1]));
   out.print("    </EDGE>\n    <FACE>\n");
   for (std::size_t f = 0; f < m.faces().size(); ++f) {
     const int n = g.num_face_vertices(f);
@@ -286,7 +293,7 @@ void compressed_block(AtomicFile& out, const std::string& indent, const std::str
 
 void write_compressed(AtomicFile& out, const Geometry& g) {
   const mesh::Mesh& m = g.m;
-  const auto& vid = g.numbering.vertex_id;
+  auto vid = [&](mesh::NodeId v) { return g.numbering.vertex_id(v); };
   using I = std::int64_t;
   auto put_point = [](ZlibStream& z, I id, const Eigen::Vector3d& x) {
     z.add_value(id);
@@ -299,7 +306,7 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   out.print("    ");
   compressed_block(out, "", "EDGE", [&](ZlibStream& z) {
     for (std::size_t e = 0; e < m.edges().size(); ++e) {
-      const I rec[3] = {I(e), I(vid[m.edges()[e].vertices[0]]), I(vid[m.edges()[e].vertices[1]])};
+      const I rec[3] = {I(e), I(vid(m.edges()[e].vertices[0])), I(vid(m.edges()[e].vertices[1]))};
       z.add(rec, sizeof rec);
     }
   });
@@ -339,11 +346,49 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   // faces, then DATAPOINTS: INDEX (curve point -> unique point) and POINTS (MeshVertex records).
   // Curves share their points through INDEX: every edge/face node is stored once. INDEX cannot be
   // left out: MeshGraphIOXmlCompressed::v_ReadCurves requires it and reads every point through it.
-  std::vector<std::uint32_t> point_of_node(m.num_nodes(), 0xffffffffu);
-  std::vector<mesh::NodeId> point_node;
-  auto point_of = [&](mesh::NodeId id) {
-    if (point_of_node[id] == 0xffffffffu) point_of_node[id] = static_cast<std::uint32_t>(point_node.size()), point_node.push_back(id);
-    return I(point_of_node[id]);
+  // A node's point id is the order of its first sight in INDEX; POINTS replays the same walk and
+  // writes each node at its first sight. The ids are kept per vertex, edge and face, not per node
+  // (4 bytes a node): a curved face's edges are all curved, so its vertices and edge nodes are
+  // first seen along the edges (an edge's inner nodes one after the other), and its own nodes,
+  // seen nowhere else, take the next ids in the order written.
+  constexpr std::uint32_t kUnseen = 0xffffffffu;
+  std::vector<std::uint32_t> vertex_point(g.numbering.vertex_node.size(), kUnseen);
+  std::vector<std::uint32_t> edge_point(m.edges().size(), kUnseen), face_point(m.faces().size(), kUnseen);
+  std::uint32_t points = 0;
+  auto vertex = [&](mesh::NodeId id) {
+    std::uint32_t& point = vertex_point[g.numbering.vertex_id(id)];
+    if (point == kUnseen) point = points++;
+    return point;
+  };
+  const int inner = m.order() - 1;
+  // f(node, point id) along INDEX's walk.
+  auto each_curved_node = [&](auto f) {
+    for (std::size_t e = 0; e < m.edges().size(); ++e) {
+      if (!g.edge_is_curved(e)) continue;
+      const std::vector<mesh::NodeId> ids = m.edge_nodes(e);
+      f(ids.front(), vertex(ids.front()));
+      if (edge_point[e] == kUnseen) edge_point[e] = points, points += inner;
+      for (int j = 0; j < inner; ++j) f(ids[j + 1], edge_point[e] + j);
+      f(ids.back(), vertex(ids.back()));
+    }
+    for (std::size_t face = 0; face < m.faces().size(); ++face) {
+      if (!g.face_is_curved(face)) continue;
+      const mesh::Face& entity = m.faces()[face];
+      const auto& slots =
+          mesh::node_layout(entity.num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral, m.order()).slots;
+      if (face_point[face] == kUnseen)
+        face_point[face] = points, points += mesh::face_interior_count(entity.num_vertices, m.order());
+      std::uint32_t own = face_point[face];
+      g.face_slots_written(face, [&](int k, mesh::NodeId id) {
+        const mesh::NodeSlot& slot = slots[k];
+        if (slot.kind == mesh::NodeSlot::Vertex) return f(id, vertex(id));
+        if (slot.kind == mesh::NodeSlot::Face) return f(id, own++);
+        const std::uint32_t edge = entity.edges[slot.local];
+        if (edge_point[edge] == kUnseen)
+          throw std::logic_error("Nektar++ XML: curved face " + std::to_string(face) + " has a straight edge");
+        f(id, edge_point[edge] + slot.slot[(entity.edge_reversed >> slot.local) & 1u]);
+      });
+    }
   };
   const I p = m.order();
   I total = 0;
@@ -370,14 +415,13 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   }, false);
   out.print("      <DATAPOINTS ID=\"0\">\n");
   compressed_block(out, "        ", "INDEX", [&](ZlibStream& z) {
-    for (std::size_t e = 0; e < m.edges().size(); ++e)
-      if (g.edge_is_curved(e))
-        for (mesh::NodeId id : m.edge_nodes(e)) z.add_value(point_of(id));
-    for (std::size_t f = 0; f < m.faces().size(); ++f)
-      if (g.face_is_curved(f)) g.face_nodes_written(f, [&](mesh::NodeId id) { z.add_value(point_of(id)); });
+    each_curved_node([&](mesh::NodeId, std::uint32_t point) { z.add_value(I(point)); });
   }, false);
   compressed_block(out, "        ", "POINTS", [&](ZlibStream& z) {
-    for (std::size_t k = 0; k < point_node.size(); ++k) put_point(z, I(k), g.node[point_node[k]]);
+    std::uint32_t next = 0;
+    each_curved_node([&](mesh::NodeId id, std::uint32_t point) {
+      if (point == next) put_point(z, I(next), g.node[id]), ++next;
+    });
   }, false, Content::Doubles);
   out.print("      </DATAPOINTS>\n    </CURVED>\n");
 }

@@ -506,7 +506,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    StackSplit fine = split_stacks(coarse, stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
+    StackSplit fine = split_stacks(std::move(coarse), stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
                                    report, config.checks.inherit_bounds);
@@ -554,11 +554,12 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
 // output.target = "pyfr": no pyramid on a base that is not a parallelogram, PyFR's importer rule
 // (the H-type's transition pyramids on the wake block's trapezoids): the hex columns under them are
 // split into prisms and their end pyramids into tetrahedra. Before the checks, which certify the pieces.
-mesh::Mesh meet_pyfr_pyramid_rule(const mesh::Mesh& mesh, Progress& progress, RunResult& result) {
+// The mesh is taken by value and moved on: a mesh without refused pyramids is not copied.
+mesh::Mesh meet_pyfr_pyramid_rule(mesh::Mesh mesh, Progress& progress, RunResult& result) {
   return stage("pyfr", progress, result, [&] {
     try {
       // A tenth of PyFR's tolerance: a margin for its own order of operations on the same doubles.
-      ho::PyramidColumns split = ho::split_pyramid_columns(mesh, kPyfrParallelogramTolerance / 10);
+      ho::PyramidColumns split = ho::split_pyramid_columns(std::move(mesh), kPyfrParallelogramTolerance / 10);
       result.pyfr_columns = split.stats;
       return std::move(split.mesh);
     } catch (const std::invalid_argument& e) {
@@ -749,7 +750,7 @@ RunResult run(const Config& config, Progress& progress) {
     result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
   linear = LinearMesh();  // its layer stacks and cuts served the split
   if (config.output.target == OutputTarget::Pyfr) {
-    result.mesh = meet_pyfr_pyramid_rule(result.mesh, progress, result);
+    result.mesh = meet_pyfr_pyramid_rule(std::move(result.mesh), progress, result);
     inherited = {};  // elements renumbered: every one is certified on its own
   }
   check(config, geometry, surfaces, chord, inherited, progress, result);

@@ -1,8 +1,10 @@
 #include "semimesh/pipeline/split_stacks.hpp"
 
+#include <utility>
+
 namespace semimesh::pipeline {
 
-StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
+StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress,
                         bool inherit_bounds) {
   // Family 0 the wing's layers, 1 the wall's; a family of one layer leaves its directions unsplit.
@@ -23,7 +25,7 @@ StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::Lay
   StackSplit result;
   std::vector<ho::SplitStats> stats;
   std::vector<std::size_t> first;
-  result.mesh = ho::split_layers(mesh, split, families, &stats, &first, progress,
+  result.mesh = ho::split_layers(std::move(mesh), split, families, &stats, &first, progress,
                                  inherit_bounds ? &result.inherited : nullptr);
   result.wing = stats[0];
   result.wall = stats[1];

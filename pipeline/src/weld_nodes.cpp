@@ -222,7 +222,7 @@ Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCa
   const auto moved = carry_inwards(mesh, snapped, to);
   out.carried = moved.size();
   report(0.2, "mesh");
-  mesh.replace_nodes(to, moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
+  mesh.replace_nodes(std::move(to), moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
   out.mesh = std::move(mesh);
   return out;
 }

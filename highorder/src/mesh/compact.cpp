@@ -15,7 +15,8 @@ std::size_t count_unreferenced_nodes(const Mesh& mesh) {
 Mesh without_unreferenced_nodes(Mesh m) {
   std::vector<NodeId> identity(m.num_nodes());
   std::iota(identity.begin(), identity.end(), NodeId{0});
-  return with_nodes_replaced(std::move(m), identity);
+  m.replace_nodes(std::move(identity));
+  return m;
 }
 
 Mesh with_nodes_replaced(Mesh m, const std::vector<NodeId>& to, const std::function<void(double)>& done) {

@@ -32,16 +32,24 @@ std::array<NodeId, 4> face_key(const NodeId* v, int n) {
   return key;
 }
 
+std::uint64_t face_key_hash(const std::array<NodeId, 4>& k) {
+  const std::uint64_t low = (static_cast<std::uint64_t>(k[0]) << 32) | k[1];
+  const std::uint64_t high = (static_cast<std::uint64_t>(k[2]) << 32) | k[3];
+  return IdTable::mix(IdTable::mix(low) ^ high);
+}
+
 std::string element_name(ho::Shape shape, std::size_t index) {
   return ho::to_string(shape) + " " + std::to_string(index);
 }
 
 }  // namespace
 
-std::size_t Mesh::FaceKeyHash::operator()(const std::array<NodeId, 4>& k) const {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the four ids
-  for (NodeId v : k) h = (h ^ v) * 1099511628211ull;
-  return static_cast<std::size_t>(h);
+std::uint64_t Mesh::edge_hash(std::uint32_t edge) const {
+  return IdTable::mix(edge_key(edges_[edge].vertices[0], edges_[edge].vertices[1]));
+}
+
+std::uint64_t Mesh::face_hash(std::uint32_t face) const {
+  return face_key_hash(face_key(faces_[face].vertices.data(), faces_[face].num_vertices));
 }
 
 Mesh::Mesh(int order, ho::NodeSet node_set) : order_(order), node_set_(node_set) {
@@ -56,6 +64,12 @@ NodeId Mesh::add_node(const Eigen::Vector3d& x, const CadAttachment& cad) {
   nodes_.push_back(x);
   if (cad.kind != CadAttachment::None) cad_[id] = cad;
   return id;
+}
+
+void Mesh::take_nodes(Mesh& other) {
+  if (!nodes_.empty()) throw std::logic_error("Mesh::take_nodes: this mesh has nodes already");
+  nodes_ = std::move(other.nodes_), other.nodes_ = {};
+  cad_ = std::move(other.cad_), other.cad_ = {};
 }
 
 const CadAttachment& Mesh::cad_attachment(NodeId id) const {
@@ -107,11 +121,12 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   // Each edge and interior face is shared by several elements; these are upper bounds.
   const std::size_t ne = ho::edges(typical_shape).size() * num_elements / 2;
   const std::size_t nf = ho::faces(typical_shape).size() * num_elements / 2 + num_elements;
+  // The vectors' unused room is never touched, so never resident; the lookups grow as they fill
+  // (sized by these bounds they would be resident in full: twice too large on hexahedra).
   edges_.reserve(ne);
   faces_.reserve(nf);
-  edge_index_.reserve(ne);
-  face_index_.reserve(nf);
   edge_pool_.reserve(ne * (order_ - 1));
+  face_pool_.reserve(nf * face_interior_count(4, order_));  // quadrilaterals own the most
   interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
 }
 
@@ -185,6 +200,12 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
     throw std::invalid_argument("Mesh::add_element: region " + std::to_string(region) + " does not exist (" +
                                 std::to_string(regions_.size()) + " regions)");
   const std::size_t index = elements_.size();
+  elements_.push_back(linked_element(shape, canonical_nodes, region, index));
+  return index;
+}
+
+Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
+                             std::size_t index) {
   const std::string who = element_name(shape, index);
   const int nv = ho::num_vertices(shape);
   if (canonical_nodes.size() < static_cast<std::size_t>(nv))
@@ -201,8 +222,7 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
   for (std::size_t i = 0; i < layout.slots.size(); ++i)
     if (layout.slots[i].kind == NodeSlot::Interior)
       interior_pool_[el.first_node + layout.slots[i].slot[0]] = canonical_nodes[i];
-  elements_.push_back(el);
-  return index;
+  return el;
 }
 
 std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
@@ -228,22 +248,28 @@ std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
 }
 
 std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
-  const auto [it, inserted] = edge_index_.try_emplace(edge_key(a, b), static_cast<std::uint32_t>(edges_.size()));
-  if (inserted) {
-    Edge edge;
-    edge.vertices = {std::min(a, b), std::max(a, b)};
-    edge.first_node = static_cast<std::uint32_t>(edge_pool_.size());
-    edge_pool_.resize(edge_pool_.size() + edge_interior_count(order_), kNoNode);
-    edges_.push_back(edge);
-  }
-  return it->second;
+  const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
+  const auto id = static_cast<std::uint32_t>(edges_.size());
+  const std::uint32_t found = edge_index_.find_or_insert(
+      IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; }, id,
+      [&](std::uint32_t e) { return edge_hash(e); });
+  if (found != IdTable::kNone) return found;
+  Edge edge;
+  edge.vertices = key;
+  edge.first_node = static_cast<std::uint32_t>(edge_pool_.size());
+  edge_pool_.resize(edge_pool_.size() + edge_interior_count(order_), kNoNode);
+  edges_.push_back(edge);
+  return id;
 }
 
 std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code,
                                      const std::string& who) {
-  const auto [it, inserted] =
-      face_index_.try_emplace(face_key(local_vertices, n), static_cast<std::uint32_t>(faces_.size()));
-  if (inserted) {
+  const std::array<NodeId, 4> key = face_key(local_vertices, n);
+  const auto id = static_cast<std::uint32_t>(faces_.size());
+  const std::uint32_t found = face_index_.find_or_insert(
+      face_key_hash(key), [&](std::uint32_t f) { return has_face_key(f, key); }, id,
+      [&](std::uint32_t f) { return face_hash(f); });
+  if (found == IdTable::kNone) {
     Face face;
     std::copy(local_vertices, local_vertices + n, face.vertices.begin());
     face.num_vertices = static_cast<std::uint8_t>(n);
@@ -252,32 +278,39 @@ std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::u
     const auto& local_edges = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
     for (std::size_t e = 0; e < local_edges.size(); ++e) {
       const NodeId a = local_vertices[local_edges[e][0]], b = local_vertices[local_edges[e][1]];
-      face.edges[e] = edge_index_.at(edge_key(a, b));
+      face.edges[e] = static_cast<std::uint32_t>(find_edge(a, b));
       if (a > b) face.edge_reversed |= static_cast<std::uint8_t>(1u << e);
     }
     face.first_node = static_cast<std::uint32_t>(face_pool_.size());
     face_pool_.resize(face_pool_.size() + face_interior_count(n, order_), kNoNode);
     faces_.push_back(face);
     code = 0;
-    return it->second;
+    return id;
   }
-  const int c = face_orientation_code(local_vertices, faces_[it->second].vertices.data(), n);
+  const int c = face_orientation_code(local_vertices, faces_[found].vertices.data(), n);
   if (c < 0)
-    throw std::invalid_argument(who + ": face " + std::to_string(it->second) +
+    throw std::invalid_argument(who + ": face " + std::to_string(found) +
                                 " has the same vertices in a different cycle (twisted quadrilateral)");
   code = static_cast<std::uint8_t>(c);
-  return it->second;
+  return found;
+}
+
+bool Mesh::has_face_key(std::uint32_t face, const std::array<NodeId, 4>& key) const {
+  return face_key(faces_[face].vertices.data(), faces_[face].num_vertices) == key;
 }
 
 long Mesh::find_edge(NodeId a, NodeId b) const {
-  const auto it = edge_index_.find(edge_key(a, b));
-  return it == edge_index_.end() ? -1 : static_cast<long>(it->second);
+  const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
+  const std::uint32_t found =
+      edge_index_.find(IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; });
+  return found == IdTable::kNone ? -1 : static_cast<long>(found);
 }
 
 long Mesh::find_face(const std::vector<NodeId>& vertices) const {
   if (vertices.size() != 3 && vertices.size() != 4) return -1;
-  const auto it = face_index_.find(face_key(vertices.data(), static_cast<int>(vertices.size())));
-  return it == face_index_.end() ? -1 : static_cast<long>(it->second);
+  const std::array<NodeId, 4> key = face_key(vertices.data(), static_cast<int>(vertices.size()));
+  const std::uint32_t found = face_index_.find(face_key_hash(key), [&](std::uint32_t f) { return has_face_key(f, key); });
+  return found == IdTable::kNone ? -1 : static_cast<long>(found);
 }
 
 void Mesh::assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
@@ -376,7 +409,7 @@ std::vector<NodeId> Mesh::compact_nodes(const std::vector<char>& used,
   return new_id;
 }
 
-void Mesh::replace_nodes(const std::vector<NodeId>& to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
                          const std::function<void(double)>& done) {
   for (const auto& [id, x] : moved)
     if (cad_attachment(id).kind != CadAttachment::None)
@@ -391,29 +424,42 @@ void Mesh::replace_nodes(const std::vector<NodeId>& to, const std::unordered_map
     for (NodeId v = 0; v < nodes_.size(); ++v)
       if (referenced[v]) used[to[v]] = 1;
   }
-  const std::vector<NodeId> new_id = compact_nodes(used, moved);
+  {
+    // `to` then leads straight to the new ids: one map of 4 bytes a node held through the rebuild.
+    const std::vector<NodeId> new_id = compact_nodes(used, moved);
+    for (NodeId& t : to) t = t < new_id.size() ? new_id[t] : kNoNode;
+  }
   used = {};
-  // The old entities move into a mesh of their own, which still assembles the old node lists.
+  // The old entities move into a mesh of their own, which still assembles the old node lists. The
+  // elements stay: each is rebuilt in its own place once its old node list is read (held once).
   Mesh old(order_, node_set_);
-  old.edges_ = std::move(edges_), old.faces_ = std::move(faces_);
-  old.elements_ = std::move(elements_), old.boundary_ = std::move(boundary_);
+  old.edges_ = std::move(edges_), old.faces_ = std::move(faces_), old.boundary_ = std::move(boundary_);
   old.edge_pool_ = std::move(edge_pool_), old.face_pool_ = std::move(face_pool_);
   old.interior_pool_ = std::move(interior_pool_);
-  edges_ = {}, faces_ = {}, elements_ = {}, boundary_ = {};
+  edges_ = {}, faces_ = {}, boundary_ = {};
   edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
-  edge_index_ = {}, face_index_ = {};  // = {} frees them, clear() would keep their buckets
-  if (!old.elements_.empty()) reserve(old.elements_.front().shape, old.elements_.size());
+  edge_index_.clear(), face_index_.clear();
+  // The rebuilt mesh has at most the old entities and pool entries: sized so, nothing regrows (a
+  // vector that doubles holds its old and new copies at once).
+  boundary_.reserve(old.boundary_.size());
+  edges_.reserve(old.edges_.size()), faces_.reserve(old.faces_.size());
+  edge_pool_.reserve(old.edge_pool_.size()), face_pool_.reserve(old.face_pool_.size());
+  interior_pool_.reserve(old.interior_pool_.size());
+  edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
+  face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
   std::vector<NodeId> ids;
-  const std::size_t count = old.elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
+  const std::size_t count = elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
   for (std::size_t e = 0; e < count; ++e) {
     if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
-    old.element_nodes(e, ids);
-    for (NodeId& id : ids) id = new_id[to[id]];
-    add_element(old.elements_[e].shape, ids, old.elements_[e].region);
+    const Element was = elements_[e];
+    old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
+                 was.face_orientation.data(), was.first_node, ids);
+    for (NodeId& id : ids) id = to[id];
+    elements_[e] = linked_element(was.shape, ids, was.region, e);
   }
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
     ids = old.boundary_face_nodes(b);
-    for (NodeId& id : ids) id = new_id[to[id]];
+    for (NodeId& id : ids) id = to[id];
     add_boundary_face(groups_[old.boundary_[b].group], old.boundary_[b].shape, ids);
   }
   if (done) done(1.0);
@@ -431,8 +477,7 @@ std::size_t Mesh::memory_bytes() const {
   bytes += elements_.capacity() * sizeof(Element) + boundary_.capacity() * sizeof(BoundaryFace);
   bytes += (edge_pool_.capacity() + face_pool_.capacity() + interior_pool_.capacity()) * sizeof(NodeId);
   bytes += map_bytes(cad_, sizeof(std::pair<const NodeId, CadAttachment>));
-  bytes += map_bytes(edge_index_, sizeof(std::pair<const std::uint64_t, std::uint32_t>));
-  bytes += map_bytes(face_index_, sizeof(std::pair<const std::array<NodeId, 4>, std::uint32_t>));
+  bytes += edge_index_.memory_bytes() + face_index_.memory_bytes();
   for (const auto& g : groups_) bytes += sizeof(g) + g.capacity();
   for (const auto& r : regions_) bytes += sizeof(r) + r.capacity();
   return bytes;

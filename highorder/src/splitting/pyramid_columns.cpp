@@ -332,10 +332,10 @@ bool has_parallelogram_base(const mesh::Mesh& mesh, std::size_t pyramid, double 
   return (x(0) - x(1) + x(2) - x(3)).cwiseAbs().maxCoeff() <= tolerance;
 }
 
-PyramidColumns split_pyramid_columns(const mesh::Mesh& in, double tolerance) {
+PyramidColumns split_pyramid_columns(mesh::Mesh in, double tolerance) {
   ColumnFinder columns(in, tolerance);
   columns.run();
-  if (columns.stats.pyramids_refused == 0) return {in, columns.stats};
+  if (columns.stats.pyramids_refused == 0) return {std::move(in), columns.stats};
   columns.stats.pyramids_split = columns.pyramid_cut.size();
 
   mesh::Mesh out(in.order(), in.node_set());

@@ -70,6 +70,7 @@ DirectionData make_direction_data(const ShapeData& data, int order, int directio
 }
 
 using NodeKey = std::array<std::int64_t, 7>;
+constexpr std::uint32_t kNoBlock = 0xffffffffu;  // a coarse entity without slots yet
 
 // Split elements whose sub-node positions are held at once (bounds the memory of the parallel pass).
 constexpr std::size_t kSplitBlock = 1024;
@@ -84,8 +85,12 @@ struct Plan {
 
 class Splitter {
  public:
-  Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller)
+  /// `give_nodes`: the input itself, whose nodes then move into the output instead of being copied
+  /// (the input keeps its topology only; coordinates are read from the output, same ids).
+  Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller,
+           mesh::Mesh* give_nodes = nullptr)
       : in_(in),
+        give_nodes_(give_nodes),
         families_(std::move(families)),
         caller_(std::move(caller)),
         out_(in.order(), in.node_set()),
@@ -107,7 +112,8 @@ class Splitter {
   /// Fills plans_ and the shape caches; returns [input elements] the entry's index in `split`, or -1.
   std::vector<int> plan_elements(const std::vector<LayerSplit>& split);
   /// The output starts as the input's nodes (with their CAD attachments), groups and regions.
-  void copy_nodes_groups_and_regions();
+  /// Returns the number of elements the output will have.
+  std::size_t copy_nodes_groups_and_regions();
   /// Every input element into the output in input order, split ones as their pieces (with their
   /// inherited bounds when asked); returns [split element j, in `split`'s order] the output index
   /// of its first piece (the pieces' node lists are then read from the output, never kept).
@@ -172,6 +178,7 @@ class Splitter {
   double ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const;
 
   const mesh::Mesh& in_;
+  mesh::Mesh* give_nodes_;
   std::vector<SplitFamily> families_;
   std::string caller_;
   mesh::Mesh out_;
@@ -179,9 +186,13 @@ class Splitter {
   std::map<Shape, ShapeData> shapes_;
   std::map<std::tuple<Shape, int, int, int, int>, Eigen::MatrixXd> uniform_;
   // The nodes made so far, by where they are (key_of): on a coarse edge or face shared with
-  // neighbours, in slots of that entity (4 bytes a node: a map of every key held ~1 GB on the
-  // paper's case); inside the element, only while it is split; the rare rest by key.
-  std::vector<std::vector<NodeId>> edge_slots_, face_slots_;  // [input edges], [input faces]
+  // neighbours, in a block of slots of that entity in `slots_` (4 bytes a node: a map of every key
+  // held ~1 GB on the paper's case; a vector per entity ~50 MB of headers and allocations), made at
+  // its first node and large enough for any split of it; inside the element, only while it is
+  // split; the rare rest by key.
+  std::vector<std::uint32_t> edge_block_, face_block_;  // [input edges], [input faces]: first slot, or kNoBlock
+  std::vector<NodeId> slots_;
+  std::size_t edge_block_size_ = 0, face_block_size_ = 0;
   std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
   std::vector<NodeId> face_vertices_;                          // scratch of node_for
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
@@ -270,18 +281,23 @@ double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int fam
 // Kinds of key_of: 1 on a coarse edge (its ends, level), 2 on a coarse face (bottom edge, top
 // edge, place along, level), 3 inside the element, 4 on a face cut both ways.
 NodeId& Splitter::slot_of(const NodeKey& key) {
-  auto slot = [](std::vector<NodeId>& slots, std::size_t i) -> NodeId& {
-    if (slots.size() <= i) slots.resize(i + 1, mesh::kNoNode);
-    return slots[i];
+  auto slot = [&](std::uint32_t& block, std::size_t size, std::size_t i) -> NodeId& {
+    if (i >= size) throw std::logic_error(caller_ + ": a node's slot lies beyond its coarse entity's block");
+    if (block == kNoBlock) {
+      block = static_cast<std::uint32_t>(slots_.size());
+      slots_.resize(slots_.size() + size, mesh::kNoNode);
+    }
+    return slots_[block + i];
   };
   if (key[0] == 1) {
     const long edge = in_.find_edge(static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]));
-    if (edge >= 0) return slot(edge_slots_[edge], static_cast<std::size_t>(key[3]));
+    if (edge >= 0) return slot(edge_block_[edge], edge_block_size_, static_cast<std::size_t>(key[3]));
   } else if (key[0] == 2) {
     face_vertices_.assign({static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]), static_cast<NodeId>(key[4]),
                            static_cast<NodeId>(key[3])});
     const long face = in_.find_face(face_vertices_);
-    if (face >= 0) return slot(face_slots_[face], static_cast<std::size_t>(key[6] * in_.order() + key[5]));
+    if (face >= 0)
+      return slot(face_block_[face], face_block_size_, static_cast<std::size_t>(key[6] * in_.order() + key[5]));
   } else if (key[0] == 3) {
     return element_nodes_.try_emplace(key, mesh::kNoNode).first->second;
   }
@@ -304,7 +320,7 @@ Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element) {
     std::vector<std::vector<double>> z(num_vertices(el.shape));
     bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
     for (int v : direction_of(element, slot).bottom) {
-      const double r = ratio_at(in_.node(el.vertices[v]), element, family);
+      const double r = ratio_at(out_.node(el.vertices[v]), element, family);
       uniform = uniform && r == families_[family].distribution.ratio;
       z[v] = layer_interfaces(layers(element, slot), r);
     }
@@ -318,7 +334,10 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
   const mesh::Element& el = in_.elements()[element];
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
-  const Eigen::MatrixX3d X = in_.element_coordinates(element);
+  // The coarse nodes are the output's first ones, same ids.
+  const std::vector<NodeId> coarse = in_.element_nodes(element);
+  Eigen::MatrixX3d X(coarse.size(), 3);
+  for (std::size_t i = 0; i < coarse.size(); ++i) X.row(i) = out_.node(coarse[i]).transpose();
 
   // Coarse reference points of every node of every piece, then chi at all of them at once. With
   // constant ratios they are the same for every element of a shape and plan: the basis values are
@@ -539,7 +558,8 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   const std::vector<int> position = plan_elements(split);  // also throws for a bad entry
   check_side_faces(split);                                 // before any output: a crack is refused
   if (first_piece) first_piece->assign(in_.elements().size(), 0);
-  copy_nodes_groups_and_regions();  // input node ids stay valid in the output
+  const std::size_t elements = copy_nodes_groups_and_regions();  // input node ids stay valid in the output
+  if (inherited) inherited->reserve(elements);                    // filled piece by piece: never regrown
   const std::vector<std::size_t> first_out = add_elements(position, split.size(), first_piece, progress, inherited);
   add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
   if (stats) *stats = split_stats();
@@ -599,12 +619,35 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
   return position;
 }
 
-void Splitter::copy_nodes_groups_and_regions() {
-  edge_slots_.resize(in_.edges().size());
-  face_slots_.resize(in_.faces().size());
-  for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+std::size_t Splitter::copy_nodes_groups_and_regions() {
+  // An edge across the layers has its nodes at levels below layers * P; a side face also at
+  // places 1..P-1 along its bottom edge (slot level * P + place).
+  int most_layers = 1;
+  for (const SplitFamily& f : families_) most_layers = std::max(most_layers, f.distribution.layers);
+  edge_block_size_ = static_cast<std::size_t>(most_layers) * in_.order();
+  face_block_size_ = edge_block_size_ * in_.order();
+  edge_block_.assign(in_.edges().size(), kNoBlock);
+  face_block_.assign(in_.faces().size(), kNoBlock);
+  // Room for every node the pieces could make: grown by doubling, the node array would be resident
+  // twice at its last growth (the room never used is never touched, so never resident).
+  std::size_t nodes = in_.num_nodes(), elements = in_.elements().size();
+  for (std::size_t e = 0; e < in_.elements().size(); ++e) {
+    if (!plans_[e].split()) continue;
+    const std::size_t pieces = static_cast<std::size_t>(layers(e, 0)) * layers(e, 1);
+    nodes += pieces * static_cast<std::size_t>(num_nodes(in_.elements()[e].shape, in_.order()));
+    elements += pieces - 1;
+  }
+  if (!in_.elements().empty()) out_.reserve(in_.elements().front().shape, elements);
+  if (give_nodes_) {
+    give_nodes_->reserve_nodes(nodes);
+    out_.take_nodes(*give_nodes_);
+  } else {
+    out_.reserve_nodes(nodes);
+    for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+  }
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
+  return elements;
 }
 
 // Blocks of split elements in mesh order: interfaces (user ratio field) serially, the sub-element
@@ -738,6 +781,13 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
                         std::vector<InheritedBounds>* inherited) {
   return Splitter(mesh, families, "split_layers").run(split, stats, first_piece, progress, inherited);
+}
+
+mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
+                        std::vector<InheritedBounds>* inherited) {
+  return Splitter(mesh, families, "split_layers", &mesh).run(split, stats, first_piece, progress, inherited);
 }
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,

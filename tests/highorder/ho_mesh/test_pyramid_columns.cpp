@@ -178,6 +178,19 @@ TEST(PyramidColumns, ColumnUnderTwoTrapezoidPyramidsBecomesPrismsAndTetsAtEveryO
     }
 }
 
+TEST(PyramidColumns, AMeshWithNothingRefusedComesBackMovedNotCopied) {
+  MeshBuilder b(2, NodeSet::GLL);
+  add_column(b, 2);
+  add_neighbour(b);
+  mesh::Mesh in = b.build();
+  const std::size_t elements = in.elements().size();
+  const Eigen::Vector3d* nodes = in.nodes().data();
+  const PyramidColumns out = split_pyramid_columns(std::move(in), 1e-11);
+  EXPECT_EQ(out.stats.pyramids_refused, 0u);
+  EXPECT_EQ(out.mesh.elements().size(), elements);
+  EXPECT_EQ(out.mesh.nodes().data(), nodes);  // the same node array: moved through
+}
+
 TEST(PyramidColumns, CurvedColumnStaysConformingAndValid) {
   const Deformation bend = [](const Eigen::Vector3d& x) {
     return Eigen::Vector3d(x.x() + 0.08 * std::sin(1.3 * x.z()), x.y() + 0.05 * x.x() * x.x(), x.z() + 0.04 * x.y() * x.x());

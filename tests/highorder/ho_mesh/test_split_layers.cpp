@@ -296,6 +296,25 @@ TEST(SplitLayers, RatioFieldOnTheSecondDirectionFollowsTheFootAtTheTopOfTheFirst
   }
 }
 
+// A mesh given up (moved in) lends its nodes to the split instead of a copy: the same output, and
+// the input left without nodes. A ratio field makes the split read vertex coordinates too.
+TEST(SplitLayers, AMeshGivenUpSplitsAsACopiedOneAndLendsItsNodes) {
+  const int P = 3;
+  mesh::Mesh coarse = single_element(Shape::Hexahedron, P, NodeSet::GLL, hex_map);
+  const RatioField ratio = [](const Eigen::Vector3d& x) { return 2.0 + 0.5 * x(0) + 0.25 * x(2); };
+  const std::vector<LayerSplit> split{{0, {2, 1}, {0, 1}}};
+  const std::vector<SplitFamily> families{SplitFamily{{3, 1.5}, {}}, SplitFamily{{4, 2.0}, ratio}};
+  const mesh::Mesh copied = split_layers(coarse, split, families, nullptr, nullptr);
+  const std::size_t coarse_nodes = coarse.num_nodes();
+  const mesh::Mesh given = split_layers(std::move(coarse), split, families, nullptr, nullptr);
+  EXPECT_EQ(coarse.num_nodes(), 0u);  // NOLINT(bugprone-use-after-move): the test of the move
+  ASSERT_GT(given.num_nodes(), coarse_nodes);
+  EXPECT_TRUE(given.nodes() == copied.nodes());
+  ASSERT_EQ(given.elements().size(), copied.elements().size());
+  for (std::size_t e = 0; e < given.elements().size(); ++e)
+    EXPECT_EQ(given.element_nodes(e), copied.element_nodes(e)) << "element " << e;
+}
+
 // A hex split along zeta (3 layers, r = 1.5) and eta (2 layers, r = 1) with a boundary face on
 // four of its sides, and an unsplit hex beside it with one. A face at one end of a split direction
 // keeps the pieces at that end, a face across a direction takes one face per layer, a face across

@@ -265,6 +265,40 @@ TEST(MeshModel, ElementsKeepTheirRegion) {
   EXPECT_THROW(other.copy_regions_from(m), std::logic_error);
 }
 
+TEST(MeshModel, FindsEveryEdgeAndFaceByItsVerticesInAnyOrder) {
+  // 6 x 6 x 6 hexes of order 1: 882 edges, 756 faces, enough for the lookups to grow many times.
+  Mesh mesh(1);
+  NodeMaker make{mesh, {}, {}};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 6; ++k) {
+        std::vector<Eigen::Vector3d> v;
+        for (const auto& c : std::vector<std::array<int, 3>>{
+                 {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}})
+          v.emplace_back(i + c[0], j + c[1], k + c[2]);
+        mesh.add_element(Shape::Hexahedron, make.element(Shape::Hexahedron, 1, v));
+      }
+  ASSERT_EQ(mesh.edges().size(), 882u);
+  ASSERT_EQ(mesh.faces().size(), 756u);
+  for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
+    const auto& v = mesh.edges()[e].vertices;
+    ASSERT_EQ(mesh.find_edge(v[0], v[1]), static_cast<long>(e));
+    ASSERT_EQ(mesh.find_edge(v[1], v[0]), static_cast<long>(e));
+  }
+  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+    std::vector<NodeId> v(mesh.faces()[f].vertices.begin(), mesh.faces()[f].vertices.begin() + 4);
+    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+    std::reverse(v.begin(), v.end());
+    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+    std::rotate(v.begin(), v.begin() + 1, v.end());
+    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+  }
+  // Vertices 0 and the lattice's far corner share no edge; three vertices of a quad are no face.
+  EXPECT_EQ(mesh.find_edge(0, static_cast<NodeId>(mesh.num_nodes() - 1)), -1);
+  const auto& quad = mesh.faces()[0].vertices;
+  EXPECT_EQ(mesh.find_face({quad[0], quad[1], quad[2]}), -1);
+}
+
 TEST(MeshModel, MemoryPerElementIsModest) {
   // 2 x 2 x 2 hexes of order 4 on a shared lattice.
   Mesh mesh(4);

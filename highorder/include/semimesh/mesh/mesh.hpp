@@ -22,6 +22,7 @@
 #pragma once
 
 #include "semimesh/ho/element_type.hpp"
+#include "semimesh/mesh/id_table.hpp"
 
 #include <Eigen/Core>
 
@@ -125,8 +126,14 @@ class Mesh {
   /// Gives this mesh the regions of `other` with the same indices (for stages that copy elements
   /// into a new mesh). Throws std::logic_error if this mesh already has different regions.
   void copy_regions_from(const Mesh& other);
-  /// Reserves storage for about this many elements of one shape (avoids rehashing; optional).
+  /// Reserves storage for about this many elements of one shape (avoids regrowing; optional).
   void reserve(ho::Shape typical_shape, std::size_t num_elements);
+  /// Reserves storage for this many nodes (avoids regrowing; optional).
+  void reserve_nodes(std::size_t num_nodes) { nodes_.reserve(num_nodes); }
+  /// Takes the nodes and CAD attachments of `other` (same ids; this mesh must have none), leaving it
+  /// without nodes: for a stage that builds a new mesh on an old one's nodes and reads the old one's
+  /// topology only (ho::split_layers).
+  void take_nodes(Mesh& other);
 
   // ---- entities -------------------------------------------------------------------------------
   const std::vector<Edge>& edges() const { return edges_; }
@@ -163,12 +170,14 @@ class Mesh {
   /// boundary face replaced by to[v] ([num_nodes()]), only the nodes then referenced kept, in their
   /// relative order with their CAD attachments (those listed in `moved`, by old id, at the listed
   /// points), and the edges, faces and pools rebuilt in element order as add_element builds them.
-  /// The nodes are held once; the old entities only until the new ones are built.
+  /// The nodes and elements are held once (each element rebuilt in its place); the old edges, faces
+  /// and pools only until the new ones are built. `to` is taken by
+  /// value: a caller that moves it in holds no second map of the nodes.
   /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
   /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
   /// entity different nodes) leave it unusable. `done` (optional) receives the fraction of
   /// elements rebuilt, about a hundred times.
-  void replace_nodes(const std::vector<NodeId>& to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
+  void replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
                      const std::function<void(double)>& done = {});
 
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
@@ -183,6 +192,9 @@ class Mesh {
                      std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids, std::uint8_t* codes,
                      const std::string& who);
   void check_same_node(NodeId stored, NodeId given, const std::string& who) const;
+  /// add_element's element (its entities found or created, its interior nodes appended), not yet
+  /// stored; `index` names it in errors.
+  Element linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region, std::size_t index);
   /// Keeps the nodes `used` marks, in order (the `moved` ones at their new points); new id by old.
   std::vector<NodeId> compact_nodes(const std::vector<char>& used,
                                     const std::unordered_map<NodeId, Eigen::Vector3d>& moved);
@@ -190,9 +202,9 @@ class Mesh {
                 const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                 std::vector<NodeId>& out) const;
 
-  struct FaceKeyHash {
-    std::size_t operator()(const std::array<NodeId, 4>& k) const;
-  };
+  bool has_face_key(std::uint32_t face, const std::array<NodeId, 4>& sorted_vertices) const;
+  std::uint64_t edge_hash(std::uint32_t edge) const;
+  std::uint64_t face_hash(std::uint32_t face) const;
 
   int order_;
   ho::NodeSet node_set_;
@@ -205,8 +217,8 @@ class Mesh {
   std::vector<std::string> groups_;
   std::vector<std::string> regions_{"fluid"};
   std::vector<NodeId> edge_pool_, face_pool_, interior_pool_;
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_index_;
-  std::unordered_map<std::array<NodeId, 4>, std::uint32_t, FaceKeyHash> face_index_;
+  IdTable edge_index_;  // edge ids by their vertices
+  IdTable face_index_;  // face ids by their sorted vertices
 };
 
 }  // namespace semimesh::mesh

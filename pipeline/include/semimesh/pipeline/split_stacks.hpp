@@ -29,8 +29,9 @@ struct StackSplit {
 
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
 /// differently, naming both elements.
-/// `progress` as split_layers'. inherit_bounds: fill `inherited`.
-StackSplit split_stacks(const mesh::Mesh& mesh, const std::vector<nearfield::LayerStack>& stacks,
+/// `progress` as split_layers'. inherit_bounds: fill `inherited`. The mesh is taken by value: a
+/// caller that moves it in holds its nodes once (they move into the output).
+StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {},
                         bool inherit_bounds = false);
 

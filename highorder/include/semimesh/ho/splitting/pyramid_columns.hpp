@@ -45,6 +45,7 @@ bool has_parallelogram_base(const mesh::Mesh& mesh, std::size_t pyramid, double 
 /// tetrahedra, all on one diagonal per column (the shorter one of the first such base met). Other
 /// elements and boundary faces are copied; a split element's pieces take its place and region.
 /// Nodes: the input's (with their CAD attachments) that remain in use, then the new ones.
-PyramidColumns split_pyramid_columns(const mesh::Mesh& mesh, double tolerance);
+/// Taken by value: a mesh moved in comes back as it is, not copied, when no pyramid is refused.
+PyramidColumns split_pyramid_columns(mesh::Mesh mesh, double tolerance);
 
 }  // namespace semimesh::ho

@@ -105,6 +105,13 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                         std::vector<InheritedBounds>* inherited = nullptr);
+/// The same on a mesh given up: its nodes move into the output instead of being copied, so they
+/// are held once. The mesh is left without nodes (only the moved-from mesh's destruction or
+/// assignment is then meaningful).
+mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
+                        const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
+                        std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
+                        std::vector<InheritedBounds>* inherited = nullptr);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a

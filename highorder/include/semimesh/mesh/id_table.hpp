@@ -1,0 +1,81 @@
+// A hash index of entity ids whose keys live in the entities themselves (the mesh's edge and face
+// lookups): open addressing with linear probing over 32-bit ids, at most 3/4 full, so 5-11 bytes an
+// entry. A std::unordered_map from key to id costs a heap node per entry (40-48 bytes with the
+// allocator's header) and a bucket pointer: ~120 MB on the paper's case, held by every stage.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace semimesh::mesh {
+
+class IdTable {
+ public:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+  /// A well-mixed 64-bit hash of a 64-bit key (the splitmix64 finalizer): the table uses the low
+  /// bits, which raw vertex ids would fill in runs.
+  static std::uint64_t mix(std::uint64_t x) {
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+
+  std::size_t size() const { return size_; }
+  std::size_t memory_bytes() const { return slots_.capacity() * sizeof(std::uint32_t); }
+
+  /// The stored id whose key is the one of hash `hash` (is_key(id) tells), or kNone.
+  template <typename IsKey>
+  std::uint32_t find(std::uint64_t hash, IsKey is_key) const {
+    if (slots_.empty()) return kNone;
+    for (std::size_t i = hash & mask_;; i = (i + 1) & mask_)
+      if (slots_[i] == kNone || is_key(slots_[i])) return slots_[i];
+  }
+
+  /// find; when absent, stores `id` and returns kNone. hash_of(stored id) rehashes on growth.
+  template <typename IsKey, typename HashOf>
+  std::uint32_t find_or_insert(std::uint64_t hash, IsKey is_key, std::uint32_t id, HashOf hash_of) {
+    if (4 * (size_ + 1) > 3 * slots_.size()) rehash(2 * (size_ + 1), hash_of);
+    std::size_t i = hash & mask_;
+    for (; slots_[i] != kNone; i = (i + 1) & mask_)
+      if (is_key(slots_[i])) return slots_[i];
+    slots_[i] = id;
+    ++size_;
+    return kNone;
+  }
+
+  /// Room for `count` ids without growing (a table sized once holds no discarded copies).
+  template <typename HashOf>
+  void reserve(std::size_t count, HashOf hash_of) {
+    if (4 * count > 3 * slots_.size()) rehash(count + count / 3 + 1, hash_of);
+  }
+
+  /// Empties the table and frees its slots.
+  void clear() { *this = IdTable(); }
+
+ private:
+  // At least `wanted` slots (a power of two), every stored id placed anew.
+  template <typename HashOf>
+  void rehash(std::size_t wanted, HashOf hash_of) {
+    std::size_t slots = 16;
+    while (slots < wanted) slots *= 2;
+    std::vector<std::uint32_t> old = std::move(slots_);
+    slots_.assign(slots, kNone);
+    mask_ = slots - 1;
+    for (std::uint32_t id : old) {
+      if (id == kNone) continue;
+      std::size_t i = hash_of(id) & mask_;
+      while (slots_[i] != kNone) i = (i + 1) & mask_;
+      slots_[i] = id;
+    }
+  }
+
+  std::vector<std::uint32_t> slots_;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+};
+
+}  // namespace semimesh::mesh
