@@ -164,6 +164,18 @@ void canonicalise_outer_loop(std::vector<NodeId>& ids, const PlaneFrame& frame, 
               ids.end());
 }
 
+// The annulus's own points (after its loops', whose nodes `ids` holds) added as nodes on the planar
+// surface `surface`, appended to `ids`.
+void add_annulus_points(const Annulus& annulus, const PlaneFrame& frame, const cad::Model& model, int surface,
+                        std::vector<NodeId>& ids, mesh::Mesh& mesh) {
+  const cad::Surface& face = model.surface(surface);
+  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
+    const Eigen::Vector3d x = frame.to_3d(annulus.points[i]);
+    const cad::SurfaceProjection on_face = face.project(x);
+    ids.push_back(mesh.add_node(x, {CadAttachment::Surface, surface, on_face.uv.x(), on_face.uv.y()}));
+  }
+}
+
 // The far-field part of a planar wall, triangulated in the plane; triangles returned with their
 // normal out of the domain.
 std::vector<Triangle> mesh_planar_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
@@ -188,11 +200,7 @@ std::vector<Triangle> mesh_planar_wall(const cad::Model& model, int wall_surface
   }
 
   const Annulus annulus = triangulate_annulus(outer, hole, params.wall_size, params.growth);
-  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
-    const Eigen::Vector3d x = frame.to_3d(annulus.points[i]);
-    const cad::SurfaceProjection on_wall = wall.project(x);
-    ids.push_back(mesh.add_node(x, {CadAttachment::Surface, wall_surface, on_wall.uv.x(), on_wall.uv.y()}));
-  }
+  add_annulus_points(annulus, frame, model, wall_surface, ids, mesh);
   std::vector<Triangle> triangles;
   // Counter-clockwise in (e1, e2) means along the fluid normal: reversed to face out of the domain.
   for (const auto& t : annulus.triangles) triangles.push_back({ids[t[0]], ids[t[2]], ids[t[1]]});
@@ -233,11 +241,7 @@ std::vector<Triangle> mesh_outlet(const cad::Model& model, int surface, const st
     ids.push_back(id);
   }
   const Annulus annulus = triangulate_annulus(outer, hole, params.box_size, params.growth);
-  for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
-    const Eigen::Vector3d x = frame.to_3d(annulus.points[i]);
-    const cad::SurfaceProjection on_face = face.project(x);
-    ids.push_back(mesh.add_node(x, {CadAttachment::Surface, surface, on_face.uv.x(), on_face.uv.y()}));
-  }
+  add_annulus_points(annulus, frame, model, surface, ids, mesh);
   const cad::BBox box = model.bbox();
   const bool along_normal_is_out = (frame.origin - 0.5 * (box.lo + box.hi)).dot(frame.normal) > 0;
   std::vector<Triangle> triangles;
