@@ -12,6 +12,7 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/harmonic_extension.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/cad_classification.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/pole_chart.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/curving/kinked_parameters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/spring_optimisation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/curve_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/curving/follow_exposed_body.cpp

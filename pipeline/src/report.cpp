@@ -84,6 +84,9 @@ std::string summary_table(const RunResult& r) {
     t += fmt::format("{:<28} {:>12.4g}\n", "max node move onto CAD", r.curving.max_projection_distance);
     if (r.curving.optimisation_fallbacks > 0)
       t += fmt::format("{:<28} {:>12}\n", "spring fallbacks", r.curving.optimisation_fallbacks);
+    if (r.curving.kinked_surfaces + r.curving.kinked_curves > 0)
+      t += fmt::format("{:<28} {:>12}\n", "kinked parameters (s / c)",
+                       fmt::format("{} / {}", r.curving.kinked_surfaces, r.curving.kinked_curves));
   }
   t += fmt::format("{:<28} {:>12.3e}\n", "geometric error max / chord", r.geometric_error.max_rel);
   t += fmt::format("{:<28} {:>12.3e}\n", "geometric error rms / chord", r.geometric_error.rms_rel);
@@ -140,9 +143,11 @@ std::string report_json(const RunResult& r, const Config& config) {
                    json_number(r.geometric_error.max_rel), json_number(r.geometric_error.rms_rel),
                    json_number(r.geometric_error.reference_length), r.geometric_error.samples);
   j += fmt::format("  \"curving\": {{\"node_placement\": {}, \"edges_on_curves\": {}, \"edges_on_surfaces\": {}, "
-                   "\"faces_on_surfaces\": {}, \"spring_fallbacks\": {}, \"max_node_move\": {}}},\n",
+                   "\"faces_on_surfaces\": {}, \"spring_fallbacks\": {}, \"kinked_surfaces\": {}, \"kinked_curves\": {}, "
+                   "\"max_node_move\": {}}},\n",
                    json_string(r.node_placement), r.curving.edges_on_curves, r.curving.edges_on_surfaces,
-                   r.curving.faces_on_surfaces, r.curving.optimisation_fallbacks,
+                   r.curving.faces_on_surfaces, r.curving.optimisation_fallbacks, r.curving.kinked_surfaces,
+                   r.curving.kinked_curves,
                    json_number(r.curving.max_projection_distance));
   j += fmt::format("  \"invalid_elements\": {},\n", r.validity.invalid);
   j += fmt::format("  \"min_scaled_jacobian\": {},\n", json_number(r.validity.min_scaled_jacobian));

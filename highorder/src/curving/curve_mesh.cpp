@@ -2,6 +2,7 @@
 
 #include "curving/cad_classification.hpp"
 #include "curving/harmonic_extension.hpp"
+#include "curving/kinked_parameters.hpp"
 #include "curving/pole_chart.hpp"
 #include "curving/spring_optimisation.hpp"
 #include "parallel_for.hpp"
@@ -68,6 +69,8 @@ class Curver {
   // The parts of progress_ for the edges, faces and volumes, in proportion to their counts.
   ProgressCallback edge_progress_, face_progress_, volume_progress_;
   std::vector<std::vector<cad::Vec3>> poles_;       // [surfaces] detail::surface_poles
+  std::vector<char> kinked_;                        // [surfaces] detail::has_kinked_parameters
+  std::vector<char> kinked_curves_;                 // [curves] detail::has_kinked_parameters
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
@@ -110,7 +113,7 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
   const bool springs = params_.placement == NodePlacement::Springs;
   if (place.kind == CadPlace::Curve) {
     // The node set's fractions of the parameter interval, or of the arc length (the spring chain's
-    // optimum on a curve).
+    // optimum on a curve); on a curve with kinked parameters the straight edge's nodes projected.
     const cad::Curve& c = model_.curve(place.id);
     // b's parameter first on its own, then each end next to the other: a closed curve's vertex
     // takes the end nearer the edge's other node (only a vertex needs b's second look).
@@ -120,7 +123,8 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     const double tb = att_b.kind == CadAttachment::Vertex ? detail::curve_parameter(model_, place.id, att_b, xb, ta) : tb0;
     const double length = springs ? c.arc_length(ta, tb) : 0.0;
     for (int i = 0; i < P - 1; ++i) {
-      const double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);
+      double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);
+      if (kinked_curves_[place.id]) t = c.project(out.x[i], t).t;
       const Eigen::Vector3d p = c.point(t);
       out.moved = std::max(out.moved, (p - out.x[i]).norm());
       out.x[i] = p;
@@ -141,7 +145,7 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     pts.row(0) = xa.transpose();
     pts.row(1) = xb.transpose();
     for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
-    if (detail::near_pole(poles_[place.id], xa, xb, params_.pole_reach))
+    if (kinked_[place.id] || detail::near_pole(poles_[place.id], xa, xb, params_.pole_reach))
       for (int i = 0; i < P - 1; ++i) detail::place_by_projection(s, out.x[i], uv, pts, i + 2);
     else if (springs)
       out.fallback = !detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts,
@@ -226,7 +230,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
     std::vector<cad::Vec3> vertices;
     for (int v = 0; v < face.num_vertices; ++v) vertices.push_back(X.row(v).transpose());
-    if (detail::face_near_pole(poles_[place.id], vertices, params_.pole_reach))
+    if (kinked_[place.id] || detail::face_near_pole(poles_[place.id], vertices, params_.pole_reach))
       for (int j : ext.interior) detail::place_by_projection(s, straight.row(j).transpose(), uv2, pts, j);
     else if (params_.placement == NodePlacement::Springs)
       out.fallback = !detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
@@ -293,7 +297,12 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     throw std::invalid_argument("curve_mesh: CurvingParams::tolerance = " + std::to_string(params_.tolerance) +
                                 " must be > 0");
 
-  for (int s = 0; s < model_.num_surfaces(); ++s) poles_.push_back(detail::surface_poles(model_, s));
+  for (int s = 0; s < model_.num_surfaces(); ++s) {
+    poles_.push_back(detail::surface_poles(model_, s));
+    kinked_.push_back(detail::has_kinked_parameters(model_.surface(s)) ? 1 : 0);
+  }
+  for (int c = 0; c < model_.num_curves(); ++c)
+    kinked_curves_.push_back(detail::has_kinked_parameters(model_.curve(c)) ? 1 : 0);
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
@@ -340,6 +349,8 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
                            planar_nodes(bf.shape, bf.vertices.data(), bf.face, bf.face_orientation));
   }
+  stats_.kinked_surfaces = static_cast<int>(std::count(kinked_.begin(), kinked_.end(), 1));
+  stats_.kinked_curves = static_cast<int>(std::count(kinked_curves_.begin(), kinked_curves_.end(), 1));
   if (stats) *stats = stats_;
   return std::move(out_);
 }

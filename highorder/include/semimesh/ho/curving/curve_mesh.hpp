@@ -30,6 +30,10 @@
 //  and no smooth chart: there the nodes are the closest points of the surface to the straight-sided
 //  element's nodes (measured rates 4.0, 4.0, 6.0 at P = 2, 3, 4 on an ellipsoid's pole, 2.0 in the
 //  polar parameters; test_curve_periodic.cpp; the reach: bench/ho_mesh/bench_pole_reach.cpp).
+//  Either way too, on a surface or curve whose parametric speed jumps (Bezier patches joined at
+//  knots of full multiplicity, as OpenVSP exports wings: smooth geometry, kinked parameters) the
+//  nodes are the closest points to the straight-sided element's nodes, whatever its parameters
+//  (curving/kinked_parameters.hpp; test_curve_kinked_parameters.cpp). CurvingStats counts them.
 // Which CAD entity an edge or face lies on comes from the CAD attachments of its vertices (see
 // cad_classification in the sources); only edges and faces of boundary faces are curved.
 #pragma once
@@ -63,6 +67,8 @@ struct CurvingStats {
   int edges_on_surfaces = 0;
   int faces_on_surfaces = 0;
   int optimisation_fallbacks = 0;       ///< edges + faces that kept their projected start positions (Springs)
+  int kinked_surfaces = 0;  ///< surfaces whose parametric speed jumps: nodes on them placed by projection
+  int kinked_curves = 0;    ///< curves whose parametric speed jumps: nodes on them placed by arc length
   double max_projection_distance = 0.0; ///< largest distance from a straight-sided node to its CAD position
 };
 
