@@ -2,7 +2,7 @@
 
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
-                   [--init-says TEXT ...] [--init-refuses-with TEXT]
+                   [--init-says TEXT ...] [--init-refuses-with TEXT] [--run-says TEXT ...]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
@@ -10,7 +10,7 @@ fails unless the run exits 0 with 0 invalid elements (and elements in each of th
 report.json); with --gmsh, Gmsh's own certified Jacobian bounds of every element of the written
 .msh must be positive too (tests/pipeline/gmsh_validity.py). --init-says: init's output (the
 config's header comments and its warnings) must hold TEXT. --init-refuses-with: init must exit 1
-with TEXT on stderr and write no config (nothing is run).
+with TEXT on stderr and write no config (nothing is run). --run-says: the run's summary must hold TEXT.
 """
 import argparse
 import json
@@ -34,6 +34,7 @@ def main():
     parser.add_argument("--init-says", action="append", default=[], help="text init must write or warn")
     parser.add_argument("--init-refuses-with", help="init must exit 1 with this text on stderr")
     parser.add_argument("--run-refuses-with", help="run must exit 1 with this text on stderr, writing no mesh")
+    parser.add_argument("--run-says", action="append", default=[], help="text the run's summary must hold")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -83,6 +84,10 @@ def main():
     if "invalid elements                        0" not in done.stdout:
         print("FAIL: the run reports invalid elements")
         return 1
+    for text in args.run_says:
+        if text not in done.stdout:
+            print("FAIL: the run's summary does not say '%s'" % text)
+            return 1
     with open(os.path.join(args.workdir, "out", "report.json")) as f:
         regions = json.load(f)["elements_by_region"]
     for region in filter(None, args.regions.split(",")):

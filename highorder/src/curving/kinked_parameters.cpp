@@ -22,7 +22,6 @@ bool speed_jumps(const Speed& speed) {
 }  // namespace
 
 bool has_kinked_parameters(const cad::Surface& surface) {
-  if (surface.is_planar()) return false;
   constexpr int kLines = 9;
   const std::array<cad::Interval, 2> box = surface.bounds();
   for (int along = 0; along < 2; ++along)

@@ -20,7 +20,8 @@ inline constexpr double kKinkRatio = 1.5;
 /// along the line at 257 evenly spaced parameters, two neighbours differing by more than
 /// kKinkRatio. A smooth parametrisation changes by O(1/256) of its log-speed scale between
 /// neighbours; the three spacings next to each end are left out, where a pole's speed falls to 0
-/// (its ratio there is at most 4/3). Planes are never kinked.
+/// (its ratio there is at most 4/3). A plane's parameters are affine, but a planar B-spline face's
+/// may be kinked too (a trailing-edge base written as patches): its nodes then bunch up in-plane.
 bool has_kinked_parameters(const cad::Surface& surface);
 
 /// The same for a curve's |dC/dt| over its parameter interval. Lines are never kinked.
