@@ -2,6 +2,7 @@
 // quarter cylinder parametrised by pieces of different speeds, as CAD exporters write Bezier
 // patches joined at knots of full multiplicity. The nodes placed on it must not depend on how it
 // is parametrised, and a smooth parametrisation (or a pole) is not taken for a kinked one.
+#include "outward_prism.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -122,16 +123,11 @@ mesh::Mesh layer_on(const cad::Model& model, int n) {
       m.add_node(x + 0.05 * Vec3(std::cos(angle), std::sin(angle), 0));
     }
   const int region = m.region_index("layer");
-  const auto prism = [&](mesh::NodeId a, mesh::NodeId b, mesh::NodeId c) {
-    if ((m.node(b) - m.node(a)).cross(m.node(c) - m.node(a)).dot(m.node(a + 1) - m.node(a)) < 0) std::swap(b, c);
-    m.add_element(Shape::Prism, {a, b, c, a + 1, b + 1, c + 1}, region);
-    m.add_boundary_face("body", Shape::Triangle, {a, c, b});
-  };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const auto id = [&](int a, int b) { return body[(i + a) * (n + 1) + j + b]; };
-      prism(id(0, 0), id(1, 0), id(1, 1));
-      prism(id(0, 0), id(1, 1), id(0, 1));
+      add_outward_prism(m, id(0, 0), id(1, 0), id(1, 1), region, "body");
+      add_outward_prism(m, id(0, 0), id(1, 1), id(0, 1), region, "body");
     }
   return m;
 }

@@ -14,6 +14,7 @@
 // Inside a knot span the surface is smooth and the error must fall like h^(P+1). An element with a
 // knot line inside interpolates a map whose third derivative jumps there: its error falls like h^3
 // at best, whatever P (measured below and pinned).
+#include "outward_prism.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
 
@@ -66,17 +67,11 @@ mesh::Mesh uv_patch(const cad::Model& model, const UvBox& box, int n, double thi
       m.add_node(s.point(uv) + thickness * s.normal(uv));
     }
   const int region = m.region_index("layer");
-  const auto triangle = [&](mesh::NodeId a, mesh::NodeId b, mesh::NodeId c) {
-    // Counter-clockwise seen from the fluid, so the prism grows along its body face's normal.
-    if ((m.node(b) - m.node(a)).cross(m.node(c) - m.node(a)).dot(m.node(a + 1) - m.node(a)) < 0) std::swap(b, c);
-    m.add_element(Shape::Prism, {a, b, c, a + 1, b + 1, c + 1}, region);
-    m.add_boundary_face("tip", Shape::Triangle, {a, c, b});
-  };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const mesh::NodeId a = body[i * (n + 1) + j], b = body[(i + 1) * (n + 1) + j];
-      triangle(a, b, b + 2);
-      triangle(a, b + 2, a + 2);
+      add_outward_prism(m, a, b, b + 2, region, "tip");
+      add_outward_prism(m, a, b + 2, a + 2, region, "tip");
     }
   return m;
 }

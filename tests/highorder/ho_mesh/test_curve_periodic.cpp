@@ -2,6 +2,7 @@
 // (naca.shape = revolution: one periodic face, its seam, a pole at the nose and at the tail),
 // curved at P = 1..3. Element parameters must stay continuous across the seam cut and take the
 // fan's parameter at a pole, else interpolated nodes land round the other side of the body.
+#include "outward_prism.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
@@ -179,12 +180,7 @@ mesh::Mesh pole_rings(const cad::Model& model, double h, int rings, const Vec3& 
       ring[k].push_back(add({mesh::CadAttachment::Surface, 0, uv.x(), uv.y()}, uv));
     }
   const int region = m.region_index("layer");
-  const auto triangle = [&](mesh::NodeId a, mesh::NodeId b, mesh::NodeId c) {
-    // Counter-clockwise seen from outside, so the prism grows along its body face's normal.
-    if ((m.node(b) - m.node(a)).cross(m.node(c) - m.node(a)).dot(m.node(a + 1) - m.node(a)) < 0) std::swap(b, c);
-    m.add_element(Shape::Prism, {a, b, c, a + 1, b + 1, c + 1}, region);
-    m.add_boundary_face("body", Shape::Triangle, {a, c, b});
-  };
+  const auto triangle = [&](mesh::NodeId a, mesh::NodeId b, mesh::NodeId c) { add_outward_prism(m, a, b, c, region, "body"); };
   // Each sixth of the strip between rings k and k + 1: k + 1 triangles on the outer ring's
   // segments, k on the inner ring's.
   for (int k = 0; k < rings; ++k)
