@@ -43,8 +43,17 @@ OccCurve::OccCurve(int id, std::string name, const TopoDS_Edge& edge) : cad::Cur
     throw cad::CadError(cad::CadError::Kind::Geometry,
                         "occ: edge of curve " + std::to_string(id) + " has no 3D curve (try occ.heal = true)");
   range_ = {first, last};
-  GeomAbs_CurveType type = GeomAdaptor_Curve(curve_).GetType();
+  const GeomAdaptor_Curve adaptor(curve_);
+  GeomAbs_CurveType type = adaptor.GetType();
   kind_ = kind_of(type);
+  // A B-spline or Bezier curve caches its parametric resolution on first use, a write into the
+  // shared curve when threads project onto it at once (GeomAPI_ProjectPointOnCurve asks for it):
+  // filled here, before any thread sees the curve, every later use only reads it.
+  try {
+    adaptor.Resolution(1.0);
+  } catch (const Standard_Failure&) {
+    // no resolution for this curve: nothing cached to race on
+  }
   mutable_evaluator_ = type == GeomAbs_OffsetCurve;
 }
 

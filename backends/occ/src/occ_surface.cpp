@@ -172,6 +172,7 @@ std::optional<double> OccSurface::exact_area() const {
 }
 
 bool OccSurface::contains_exactly(const cad::Vec2& uv) const {
+  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
   const TopAbs_State state = classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
@@ -185,6 +186,7 @@ bool OccSurface::contains(const cad::Vec2& uv) const {
 bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
   if (const TrimRaster* raster = trim_raster())
     if (const std::optional<bool> known = raster->lookup(uv)) return *known;
+  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
   const TopAbs_State state = tolerant_classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }

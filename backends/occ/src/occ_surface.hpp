@@ -68,6 +68,10 @@ class OccSurface final : public cad::Surface {
   std::array<cad::Interval, 2> bounds_;
   std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;           // face tolerance: contains()
   std::unique_ptr<BRepTopAdaptor_FClass2d> tolerant_classifier_;  // boundary tolerance: project()
+  // Held around every Perform of the classifiers: OCC's const Perform writes the "current item"
+  // of its sequences of wires (NCollection_Sequence::Value), so threads classifying on a face with
+  // holes at once read another wire's polygon or walk off the sequence (a SIGSEGV).
+  mutable std::mutex classifiers_mutex_;
   std::unique_ptr<SampleGrid> grid_;  // built once after surface_ and bounds_
   double uv_tolerance_ = 0.0;           // of tolerant_classifier_
   mutable std::once_flag raster_built_;

@@ -1,0 +1,77 @@
+// An OccSurface classified by several threads at once, as the curve stage does: every answer must
+// be the one a single thread gets. OCC's face classifier keeps a mutable "current item" in its
+// sequences of wires, so unguarded concurrent use read the wrong wire's polygon (a wrong answer)
+// or walked off the end of the sequence (the curve stage's intermittent SIGSEGV).
+#include "occ_surface.hpp"
+#include "semimesh/occ/occ_backend.hpp"
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+#include <vector>
+
+namespace semimesh::occ::test {
+namespace {
+
+// A 10 x 10 square with a 4 x 4 array of round holes, every face a B-spline (as CAD tools export
+// them): 17 wires, each exact classification walks all of them.
+TopoDS_Face square_with_holes() {
+  const gp_Pln plane(gp::XOY());
+  BRepBuilderAPI_MakeFace face(plane, 0.0, 10.0, 0.0, 10.0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const gp_Circ circle(gp_Ax2(gp_Pnt(1.5 + 2.3 * i, 1.5 + 2.3 * j, 0.0), gp::DZ()), 0.6);
+      const TopoDS_Wire hole = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)).Wire();
+      face.Add(TopoDS::Wire(hole.Reversed()));
+    }
+  BRepBuilderAPI_NurbsConvert nurbs(face.Face());
+  for (TopExp_Explorer f(nurbs.Shape(), TopAbs_FACE); f.More(); f.Next()) return TopoDS::Face(f.Current());
+  return {};
+}
+
+TEST(OccThreads, ExactClassificationOfAFaceWithHolesAgreesAcrossThreads) {
+  const OccSurface surface(0, "holes", square_with_holes());
+  ASSERT_EQ(surface.kind(), cad::SurfaceKind::BSpline);
+  // Points all over the square, many on or near the holes' rims.
+  constexpr int kSide = 60;
+  std::vector<cad::Vec2> points;
+  const auto box = surface.bounds();
+  for (int i = 0; i < kSide; ++i)
+    for (int j = 0; j < kSide; ++j)
+      points.emplace_back(box[0].lo + box[0].length() * (i + 0.5) / kSide,
+                          box[1].lo + box[1].length() * (j + 0.5) / kSide);
+  std::vector<char> expected;
+  for (const cad::Vec2& uv : points) expected.push_back(surface.contains_exactly(uv) ? 1 : 0);
+  int inside = 0;
+  for (char e : expected) inside += e;
+  ASSERT_GT(inside, 0);
+  ASSERT_LT(inside, static_cast<int>(points.size()));
+
+  constexpr int kThreads = 4, kRounds = 8;
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < kRounds; ++round)
+        for (std::size_t k = 0; k < points.size(); ++k) {
+          const std::size_t p = (k * (t + 1) + round) % points.size();  // threads out of step
+          if ((surface.contains_exactly(points[p]) ? 1 : 0) != expected[p]) ++wrong;
+        }
+    });
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(wrong.load(), 0);
+}
+
+}  // namespace
+}  // namespace semimesh::occ::test
