@@ -107,11 +107,13 @@ std::vector<SkinFace> skin_faces(const NearField& field, const std::vector<std::
     return std::all_of(face.begin(), face.end(), [&](NodeId v) { return nodes.count(v) > 0; });
   };
   std::vector<SkinFace> skin;
-  for (const auto& [k, use] : face_uses(field.mesh))
+  for (const auto& [key, use] : face_uses(field.mesh)) {
+    const auto& k = key;  // a lambda may not capture a structured binding before C++20 (clang < 16)
     if (use.first == 1 && !all_in(k, on_footprint) &&
         std::none_of(fan_planes.begin(), fan_planes.end(),
                      [&](const std::set<NodeId>& plane) { return all_in(k, plane); }))
       skin.push_back(use.second);
+  }
   for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
   for (const auto& t : bare)
     skin.push_back(
