@@ -10,6 +10,7 @@
 #include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -71,6 +72,8 @@ class Curver {
   std::vector<std::vector<cad::Vec3>> poles_;       // [surfaces] detail::surface_poles
   std::vector<char> kinked_;                        // [surfaces] detail::has_kinked_parameters
   std::vector<char> kinked_curves_;                 // [curves] detail::has_kinked_parameters
+  std::vector<std::array<detail::KinkChart, 2>> surface_charts_;  // [surfaces] u and v, kinked ones
+  std::vector<detail::KinkChart> curve_charts_;                   // [curves], kinked ones
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
@@ -112,8 +115,8 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
   out.place = place.kind;
   const bool springs = params_.placement == NodePlacement::Springs;
   if (place.kind == CadPlace::Curve) {
-    // The node set's fractions of the parameter interval, or of the arc length (the spring chain's
-    // optimum on a curve); on a curve with kinked parameters the straight edge's nodes projected.
+    // The node set's fractions of the parameter interval (of its kink chart's when kinked), or of
+    // the arc length (the spring chain's optimum on a curve).
     const cad::Curve& c = model_.curve(place.id);
     // b's parameter first on its own, then each end next to the other: a closed curve's vertex
     // takes the end nearer the edge's other node (only a vertex needs b's second look).
@@ -123,8 +126,9 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     const double tb = att_b.kind == CadAttachment::Vertex ? detail::curve_parameter(model_, place.id, att_b, xb, ta) : tb0;
     const double length = springs ? c.arc_length(ta, tb) : 0.0;
     for (int i = 0; i < P - 1; ++i) {
-      double t = springs ? c.parameter_at_length(ta, fraction[i] * length) : ta + fraction[i] * (tb - ta);
-      if (kinked_curves_[place.id]) t = c.project(out.x[i], t).t;
+      const detail::KinkChart& chart = curve_charts_[place.id];
+      const double t = springs ? c.parameter_at_length(ta, fraction[i] * length)
+                               : chart.from_chart(chart.to_chart(ta) + fraction[i] * (chart.to_chart(tb) - chart.to_chart(ta)));
       const Eigen::Vector3d p = c.point(t);
       out.moved = std::max(out.moved, (p - out.x[i]).norm());
       out.x[i] = p;
@@ -144,8 +148,13 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     uv.row(1) = uvb.transpose();
     pts.row(0) = xa.transpose();
     pts.row(1) = xb.transpose();
-    for (int i = 0; i < P - 1; ++i) uv.row(i + 2) = (uva + fraction[i] * (uvb - uva)).transpose();
-    if (kinked_[place.id] || detail::near_pole(poles_[place.id], xa, xb, params_.pole_reach))
+    const std::array<detail::KinkChart, 2>& chart = surface_charts_[place.id];
+    for (int i = 0; i < P - 1; ++i)
+      for (int d = 0; d < 2; ++d) {
+        const double a = chart[d].to_chart(uva[d]), b = chart[d].to_chart(uvb[d]);
+        uv(i + 2, d) = chart[d].from_chart(a + fraction[i] * (b - a));
+      }
+    if (detail::near_pole(poles_[place.id], xa, xb, params_.pole_reach))
       for (int i = 0; i < P - 1; ++i) detail::place_by_projection(s, out.x[i], uv, pts, i + 2);
     else if (springs)
       out.fallback = !detail::optimise_on_surface(s, Shape::Segment, P, params_.node_set, uv, pts,
@@ -223,14 +232,20 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
             detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
                 .transpose();
     detail::continuous_parameters(s, uv, static_cast<int>(uv.rows()), face.num_vertices);
+    // The harmonic extension in the kink chart's parameters (the identity on most surfaces).
+    const std::array<detail::KinkChart, 2>& chart = surface_charts_[place.id];
+    for (int j : ext.boundary)
+      for (int d = 0; d < 2; ++d) uv(j, d) = chart[d].to_chart(uv(j, d));
     extend_harmonically(ext, uv);
+    for (int j = 0; j < n; ++j)
+      for (int d = 0; d < 2; ++d) uv(j, d) = chart[d].from_chart(uv(j, d));
     Eigen::MatrixX2d uv2 = uv;
     Eigen::MatrixX3d pts = X;
     double size = 0.0;
     for (int v = 1; v < face.num_vertices; ++v) size = std::max(size, (X.row(v) - X.row(0)).norm());
     std::vector<cad::Vec3> vertices;
     for (int v = 0; v < face.num_vertices; ++v) vertices.push_back(X.row(v).transpose());
-    if (kinked_[place.id] || detail::face_near_pole(poles_[place.id], vertices, params_.pole_reach))
+    if (detail::face_near_pole(poles_[place.id], vertices, params_.pole_reach))
       for (int j : ext.interior) detail::place_by_projection(s, straight.row(j).transpose(), uv2, pts, j);
     else if (params_.placement == NodePlacement::Springs)
       out.fallback = !detail::optimise_on_surface(s, shape, P, params_.node_set, uv2, pts, params_.spring_iterations,
@@ -300,9 +315,14 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   for (int s = 0; s < model_.num_surfaces(); ++s) {
     poles_.push_back(detail::surface_poles(model_, s));
     kinked_.push_back(detail::has_kinked_parameters(model_.surface(s)) ? 1 : 0);
+    surface_charts_.emplace_back();
+    if (kinked_.back())
+      surface_charts_.back() = {detail::kink_chart(model_.surface(s), 0), detail::kink_chart(model_.surface(s), 1)};
   }
-  for (int c = 0; c < model_.num_curves(); ++c)
+  for (int c = 0; c < model_.num_curves(); ++c) {
     kinked_curves_.push_back(detail::has_kinked_parameters(model_.curve(c)) ? 1 : 0);
+    curve_charts_.push_back(kinked_curves_.back() ? detail::kink_chart(model_.curve(c)) : detail::KinkChart());
+  }
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);

@@ -3,13 +3,16 @@
 // is smooth, but the parametric speed |dS/du|, |dS/dv| or |dC/dt| jumps at each joint (by 2-8x on
 // OpenVSP's ONERA M6). Nodes placed at the node set's fractions of an edge's parameter interval
 // then bunch up on one side of a joint the edge crosses, and thin layer elements fold. So on a
-// kinked surface or curve the nodes go where the straight-sided element's nodes project onto it
-// (as next to a pole: pole_chart.hpp): a chart that does not see the parameters, so the error
-// still falls like h^(P+1).
+// kinked surface or curve the nodes are placed at fractions of a chart that takes the kinks out
+// (KinkChart: the parameters mapped piecewise linearly so that the speed is continuous at each
+// kink), which on patches that only reparametrise a smooth surface gives back its smooth
+// parameters, and so the parameter placement's accuracy.
 #pragma once
 
 #include "semimesh/cad/curve.hpp"
 #include "semimesh/cad/surface.hpp"
+
+#include <vector>
 
 namespace semimesh::ho::detail {
 
@@ -26,5 +29,31 @@ bool has_kinked_parameters(const cad::Surface& surface);
 
 /// The same for a curve's |dC/dt| over its parameter interval. Lines are never kinked.
 bool has_kinked_parameters(const cad::Curve& curve);
+
+/// A piecewise linear reparametrisation of one parameter that takes its kinks out: s(t) has slope
+/// 1 up to the first kink and is multiplied at each kink by the ratio of the speeds after and
+/// before it, so the speed in s is continuous there. Between kinks s is affine in t, so each smooth
+/// piece keeps its own parameters up to scale: nodes placed at fractions of s are those of the
+/// surface's smooth parametrisation when the kinks are pure reparametrisations (Bezier patches
+/// with moved knots). Default: the identity.
+class KinkChart {
+ public:
+  KinkChart() = default;
+  /// kinks: ascending parameters; ratios: speed after / speed before, one per kink.
+  KinkChart(std::vector<double> kinks, const std::vector<double>& ratios);
+  double to_chart(double t) const;
+  double from_chart(double s) const;
+  bool identity() const { return kinks_.empty(); }
+
+ private:
+  std::vector<double> kinks_;   // t of each kink
+  std::vector<double> at_;      // s of each kink
+  std::vector<double> slopes_;  // ds/dt before the first kink (1), then after each
+};
+
+/// The chart along parameter `along` (0: u, 1: v) of a surface, from the kinks on its middle
+/// iso-line (sampled as has_kinked_parameters, each kink located by bisection).
+KinkChart kink_chart(const cad::Surface& surface, int along);
+KinkChart kink_chart(const cad::Curve& curve);
 
 }  // namespace semimesh::ho::detail

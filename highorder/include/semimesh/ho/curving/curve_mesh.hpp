@@ -32,8 +32,9 @@
 //  polar parameters; test_curve_periodic.cpp; the reach: bench/ho_mesh/bench_pole_reach.cpp).
 //  Either way too, on a surface or curve whose parametric speed jumps (Bezier patches joined at
 //  knots of full multiplicity, as OpenVSP exports wings: smooth geometry, kinked parameters) the
-//  nodes are the closest points to the straight-sided element's nodes, whatever its parameters
-//  (curving/kinked_parameters.hpp; test_curve_kinked_parameters.cpp). CurvingStats counts them.
+//  parameters are first mapped piecewise linearly so that the speed is continuous at each kink,
+//  and the nodes placed at fractions of those (curving/kinked_parameters.hpp;
+//  test_curve_kinked_parameters.cpp). CurvingStats counts the kinked surfaces and curves.
 // Which CAD entity an edge or face lies on comes from the CAD attachments of its vertices (see
 // cad_classification in the sources); only edges and faces of boundary faces are curved.
 #pragma once
