@@ -70,10 +70,8 @@ class Curver {
   // The parts of progress_ for the edges, faces and volumes, in proportion to their counts.
   ProgressCallback edge_progress_, face_progress_, volume_progress_;
   std::vector<std::vector<cad::Vec3>> poles_;       // [surfaces] detail::surface_poles
-  std::vector<char> kinked_;                        // [surfaces] detail::has_kinked_parameters
-  std::vector<char> kinked_curves_;                 // [curves] detail::has_kinked_parameters
-  std::vector<std::array<detail::KinkChart, 2>> surface_charts_;  // [surfaces] u and v, kinked ones
-  std::vector<detail::KinkChart> curve_charts_;                   // [curves], kinked ones
+  std::vector<std::array<detail::KinkChart, 2>> surface_charts_;  // [surfaces] u and v
+  std::vector<detail::KinkChart> curve_charts_;                   // [curves]
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
@@ -125,10 +123,11 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, tb0);
     const double tb = att_b.kind == CadAttachment::Vertex ? detail::curve_parameter(model_, place.id, att_b, xb, ta) : tb0;
     const double length = springs ? c.arc_length(ta, tb) : 0.0;
+    const detail::KinkChart& chart = curve_charts_[place.id];
+    const double sa = chart.to_chart(ta), sb = chart.to_chart(tb);
     for (int i = 0; i < P - 1; ++i) {
-      const detail::KinkChart& chart = curve_charts_[place.id];
       const double t = springs ? c.parameter_at_length(ta, fraction[i] * length)
-                               : chart.from_chart(chart.to_chart(ta) + fraction[i] * (chart.to_chart(tb) - chart.to_chart(ta)));
+                               : chart.from_chart(sa + fraction[i] * (sb - sa));
       const Eigen::Vector3d p = c.point(t);
       out.moved = std::max(out.moved, (p - out.x[i]).norm());
       out.x[i] = p;
@@ -314,14 +313,12 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
 
   for (int s = 0; s < model_.num_surfaces(); ++s) {
     poles_.push_back(detail::surface_poles(model_, s));
-    kinked_.push_back(detail::has_kinked_parameters(model_.surface(s)) ? 1 : 0);
-    surface_charts_.emplace_back();
-    if (kinked_.back())
-      surface_charts_.back() = {detail::kink_chart(model_.surface(s), 0), detail::kink_chart(model_.surface(s), 1)};
+    surface_charts_.push_back({detail::kink_chart(model_.surface(s), 0), detail::kink_chart(model_.surface(s), 1)});
+    stats_.kinked_surfaces += surface_charts_.back()[0].identity() && surface_charts_.back()[1].identity() ? 0 : 1;
   }
   for (int c = 0; c < model_.num_curves(); ++c) {
-    kinked_curves_.push_back(detail::has_kinked_parameters(model_.curve(c)) ? 1 : 0);
-    curve_charts_.push_back(kinked_curves_.back() ? detail::kink_chart(model_.curve(c)) : detail::KinkChart());
+    curve_charts_.push_back(detail::kink_chart(model_.curve(c)));
+    stats_.kinked_curves += curve_charts_.back().identity() ? 0 : 1;
   }
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
@@ -369,8 +366,6 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
                            planar_nodes(bf.shape, bf.vertices.data(), bf.face, bf.face_orientation));
   }
-  stats_.kinked_surfaces = static_cast<int>(std::count(kinked_.begin(), kinked_.end(), 1));
-  stats_.kinked_curves = static_cast<int>(std::count(kinked_curves_.begin(), kinked_curves_.end(), 1));
   if (stats) *stats = stats_;
   return std::move(out_);
 }

@@ -9,22 +9,11 @@ namespace {
 
 constexpr int kSpacings = 256, kEndSpacingsLeftOut = 3;
 
-// Whether speed(t) at t = k / kSpacings (k away from both ends) jumps between neighbours.
+// The kinks of speed(t), t in [0, 1] (see kink_chart), each with the ratio of the speeds after
+// and before it, mapped onto `range`.
 template <class Speed>
-bool speed_jumps(const Speed& speed) {
-  double previous = -1.0;
-  for (int k = kEndSpacingsLeftOut; k <= kSpacings - kEndSpacingsLeftOut; ++k) {
-    const double now = speed(static_cast<double>(k) / kSpacings);
-    if (previous > 0.0 && now > 0.0 && std::max(now, previous) > kKinkRatio * std::min(now, previous)) return true;
-    previous = now;
-  }
-  return false;
-}
-
-// The kinks of speed(t), t in [0, 1] (found as speed_jumps does, each located by bisection) and
-// the ratio of the speeds after and before each.
-template <class Speed>
-void find_kinks(const Speed& speed, std::vector<double>& at, std::vector<double>& ratios) {
+KinkChart chart_of(const Speed& speed, cad::Interval range) {
+  std::vector<double> at, ratios;
   double previous = -1.0;
   for (int k = kEndSpacingsLeftOut; k <= kSpacings - kEndSpacingsLeftOut; ++k) {
     const double now = speed(static_cast<double>(k) / kSpacings);
@@ -38,11 +27,12 @@ void find_kinks(const Speed& speed, std::vector<double>& at, std::vector<double>
         else
           b = m, right = middle;
       }
-      at.push_back(0.5 * (a + b));
+      at.push_back(range.lo + 0.5 * (a + b) * range.length());
       ratios.push_back(right / left);
     }
     previous = now;
   }
+  return KinkChart(std::move(at), ratios);
 }
 
 }  // namespace
@@ -69,48 +59,19 @@ KinkChart kink_chart(const cad::Surface& surface, int along) {
   const std::array<cad::Interval, 2> box = surface.bounds();
   cad::Vec2 uv;
   uv[1 - along] = box[1 - along].lo + 0.5 * box[1 - along].length();
-  std::vector<double> at, ratios;
-  find_kinks(
-      [&](double fraction) {
-        uv[along] = box[along].lo + fraction * box[along].length();
-        const cad::SurfaceDerivatives d = surface.derivatives(uv);
-        return (along == 0 ? d.du : d.dv).norm();
-      },
-      at, ratios);
-  for (double& t : at) t = box[along].lo + t * box[along].length();
-  return KinkChart(std::move(at), ratios);
+  const auto speed = [&](double fraction) {
+    uv[along] = box[along].lo + fraction * box[along].length();
+    const cad::SurfaceDerivatives d = surface.derivatives(uv);
+    return (along == 0 ? d.du : d.dv).norm();
+  };
+  return chart_of(speed, box[along]);
 }
 
 KinkChart kink_chart(const cad::Curve& curve) {
+  if (curve.kind() == cad::CurveKind::Line || curve.is_degenerate()) return {};
   const cad::Interval range = curve.bounds();
-  std::vector<double> at, ratios;
-  find_kinks([&](double fraction) { return curve.derivatives(range.lo + fraction * range.length()).d1.norm(); }, at,
-             ratios);
-  for (double& t : at) t = range.lo + t * range.length();
-  return KinkChart(std::move(at), ratios);
-}
-
-bool has_kinked_parameters(const cad::Surface& surface) {
-  constexpr int kLines = 9;
-  const std::array<cad::Interval, 2> box = surface.bounds();
-  for (int along = 0; along < 2; ++along)
-    for (int line = 0; line < kLines; ++line) {
-      cad::Vec2 uv;
-      uv[1 - along] = box[1 - along].lo + (line + 0.5) / kLines * box[1 - along].length();
-      const bool kinked = speed_jumps([&](double fraction) {
-        uv[along] = box[along].lo + fraction * box[along].length();
-        const cad::SurfaceDerivatives d = surface.derivatives(uv);
-        return (along == 0 ? d.du : d.dv).norm();
-      });
-      if (kinked) return true;
-    }
-  return false;
-}
-
-bool has_kinked_parameters(const cad::Curve& curve) {
-  if (curve.kind() == cad::CurveKind::Line || curve.is_degenerate()) return false;
-  const cad::Interval range = curve.bounds();
-  return speed_jumps([&](double fraction) { return curve.derivatives(range.lo + fraction * range.length()).d1.norm(); });
+  return chart_of([&](double fraction) { return curve.derivatives(range.lo + fraction * range.length()).d1.norm(); },
+                  range);
 }
 
 }  // namespace semimesh::ho::detail

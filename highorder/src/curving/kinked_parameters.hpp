@@ -19,17 +19,6 @@ namespace semimesh::ho::detail {
 /// Neighbouring speeds further apart than this ratio make a kink.
 inline constexpr double kKinkRatio = 1.5;
 
-/// Whether `surface`'s parametric speed jumps: along 9 iso-lines in each direction, the speed
-/// along the line at 257 evenly spaced parameters, two neighbours differing by more than
-/// kKinkRatio. A smooth parametrisation changes by O(1/256) of its log-speed scale between
-/// neighbours; the three spacings next to each end are left out, where a pole's speed falls to 0
-/// (its ratio there is at most 4/3). A plane's parameters are affine, but a planar B-spline face's
-/// may be kinked too (a trailing-edge base written as patches): its nodes then bunch up in-plane.
-bool has_kinked_parameters(const cad::Surface& surface);
-
-/// The same for a curve's |dC/dt| over its parameter interval. Lines are never kinked.
-bool has_kinked_parameters(const cad::Curve& curve);
-
 /// A piecewise linear reparametrisation of one parameter that takes its kinks out: s(t) has slope
 /// 1 up to the first kink and is multiplied at each kink by the ratio of the speeds after and
 /// before it, so the speed in s is continuous there. Between kinks s is affine in t, so each smooth
@@ -51,9 +40,15 @@ class KinkChart {
   std::vector<double> slopes_;  // ds/dt before the first kink (1), then after each
 };
 
-/// The chart along parameter `along` (0: u, 1: v) of a surface, from the kinks on its middle
-/// iso-line (sampled as has_kinked_parameters, each kink located by bisection).
+/// The chart along parameter `along` (0: u, 1: v) of a surface. Its kinks: on the middle iso-line
+/// across the other parameter (knot lines of a tensor-product surface cross it), the speed along
+/// the line at 257 evenly spaced parameters, two neighbours differing by more than kKinkRatio, the
+/// kink then located between them by bisection. A smooth parametrisation changes by O(1/256) of
+/// its log-speed scale between neighbours; the three spacings next to each end are left out, where
+/// a pole's speed falls to 0 (its ratio there is at most 4/3). Planar B-spline faces are charted
+/// too: a trailing-edge base written as patches bunches its nodes in-plane.
 KinkChart kink_chart(const cad::Surface& surface, int along);
+/// The same along a curve (the identity for lines and degenerate curves).
 KinkChart kink_chart(const cad::Curve& curve);
 
 }  // namespace semimesh::ho::detail
