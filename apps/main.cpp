@@ -11,6 +11,9 @@
 #include <fmt/format.h>
 
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <iostream>
 
@@ -67,6 +70,12 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // glibc raises its mmap threshold whenever a large block is freed; the stages' later large arrays
+  // then come from the heap, whose freed room stays resident (measured: 21 of the 519 MiB peak of the
+  // paper's case at order 3). A fixed threshold gives every large array back to the system when freed.
+  mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+#endif
   try {
     return run(argc, argv);
   } catch (const semimesh::Error& e) {

@@ -12,9 +12,8 @@
 namespace semimesh::io {
 namespace {
 
-Eigen::MatrixXd resampling(ho::Shape shape, int order, ho::NodeSet from) {
-  return ho::interpolation_matrix(ho::LagrangeBasis(shape, order, from),
-                                  ho::LagrangeBasis(shape, order, ho::NodeSet::Equispaced));
+Eigen::MatrixXd resampling(ho::Shape shape, int order, ho::NodeSet from, ho::NodeSet to) {
+  return ho::interpolation_matrix(ho::LagrangeBasis(shape, order, from), ho::LagrangeBasis(shape, order, to));
 }
 
 /// The rows of the resampling matrix for the nodes an entity owns, and which canonical positions
@@ -24,8 +23,8 @@ struct OwnedRows {
   Eigen::MatrixXd rows;  // (positions, num_nodes)
 };
 
-OwnedRows owned_rows(ho::Shape shape, int order, ho::NodeSet from, mesh::NodeSlot::Kind owned) {
-  const Eigen::MatrixXd m = resampling(shape, order, from);
+OwnedRows owned_rows(ho::Shape shape, int order, ho::NodeSet from, ho::NodeSet to, mesh::NodeSlot::Kind owned) {
+  const Eigen::MatrixXd m = resampling(shape, order, from, to);
   OwnedRows r;
   const auto& slots = mesh::node_layout(shape, order).slots;
   for (std::size_t i = 0; i < slots.size(); ++i)
@@ -37,8 +36,8 @@ OwnedRows owned_rows(ho::Shape shape, int order, ho::NodeSet from, mesh::NodeSlo
 
 /// Edges: Mesh::edge_nodes lists the nodes by position along the edge, the canonical segment
 /// order does not; so the matrix is re-indexed by the nodes' order along the reference segment.
-Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from) {
-  const Eigen::MatrixXd m = resampling(ho::Shape::Segment, order, from);
+Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from, ho::NodeSet to) {
+  const Eigen::MatrixXd m = resampling(ho::Shape::Segment, order, from, to);
   const Eigen::MatrixX3d ref = ho::reference_nodes(ho::Shape::Segment, order, ho::NodeSet::Equispaced);
   std::vector<int> along(ref.rows());
   std::iota(along.begin(), along.end(), 0);
@@ -49,13 +48,12 @@ Eigen::MatrixXd edge_resampling(int order, ho::NodeSet from) {
   return out;
 }
 
-/// Resamples the nodes an entity owns from all its nodes `ids`: to[ids[positions[k]]] =
-/// sum_i rows(k, i) from[ids[i]]. A plain loop down the (column-major) matrix: the matrices are
-/// tiny (at most 27 x 125), where a general matrix product costs more in set-up than in arithmetic.
-/// The buffers are reused between calls (one resampler per thread).
+/// Resamples the nodes an entity owns from all its nodes `ids`, in `x` itself: x[ids[positions[k]]]
+/// = sum_i rows(k, i) x[ids[i]], every sum taken before any is stored. A plain loop down the
+/// (column-major) matrix: the matrices are tiny (at most 27 x 125), where a general matrix product
+/// costs more in set-up than in arithmetic. The buffers are reused between calls (one per thread).
 struct Resampler {
-  const std::vector<Eigen::Vector3d>& from;
-  std::vector<Eigen::Vector3d>& to;
+  std::vector<Eigen::Vector3d>& x;
   std::vector<Eigen::Vector3d> sum;
   std::vector<mesh::NodeId> ids;
 
@@ -63,53 +61,48 @@ struct Resampler {
   void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& entity_ids) {
     sum.assign(positions.size(), Eigen::Vector3d::Zero());
     for (std::size_t i = 0; i < entity_ids.size(); ++i) {
-      const Eigen::Vector3d& x = from[entity_ids[i]];
+      const Eigen::Vector3d& xi = x[entity_ids[i]];
       const double* column = rows.data() + i * positions.size();
-      for (std::size_t k = 0; k < positions.size(); ++k) sum[k] += column[k] * x;
+      for (std::size_t k = 0; k < positions.size(); ++k) sum[k] += column[k] * xi;
     }
-    for (std::size_t k = 0; k < positions.size(); ++k) to[entity_ids[positions[k]]] = sum[k];
+    for (std::size_t k = 0; k < positions.size(); ++k) x[entity_ids[positions[k]]] = sum[k];
   }
 };
 
-/// f(begin, end, resampler) over [0, n) split among the hardware threads: the entities own
-/// disjoint nodes, so the threads write disjoint entries.
+/// f(begin, end, resampler) over [0, n) split among the hardware threads: the entities of one kind
+/// own disjoint nodes and read none another entity of that kind owns, so the threads never touch
+/// an entry another writes.
 template <typename F>
-void parallel_ranges(std::size_t n, const std::vector<Eigen::Vector3d>& from, std::vector<Eigen::Vector3d>& to, F f) {
+void parallel_ranges(std::size_t n, std::vector<Eigen::Vector3d>& x, F f) {
   const std::size_t threads = std::max<std::size_t>(1, std::min<std::size_t>(std::thread::hardware_concurrency(), n / 1024 + 1));
   std::vector<std::future<void>> workers;
   for (std::size_t t = 0; t < threads; ++t)
     workers.push_back(std::async(t == 0 ? std::launch::deferred : std::launch::async, [&, t] {
-      Resampler r{from, to, {}, {}};
+      Resampler r{x, {}, {}};
       f(n * t / threads, n * (t + 1) / threads, r);
     }));
   for (auto& w : workers) w.get();  // the deferred first range runs here; rethrows a worker's exception
 }
 
-}  // namespace
-
-EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
+/// x: [m.num_nodes()] positions at the nodes of set `from` of m's element maps, moved to those of
+/// set `to`: element interiors, then faces, then edges, each reading only nodes not yet moved.
+void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
   const int p = m.order();
-  if (m.node_set() == ho::NodeSet::Equispaced || p < 2) return;
-  const ho::NodeSet set = m.node_set();
-  resampled_ = m.nodes();  // vertices keep their place
-  const auto& from = m.nodes();
-
-  const Eigen::MatrixXd edge = edge_resampling(p, set);
-  std::vector<int> edge_positions(p - 1);
-  std::iota(edge_positions.begin(), edge_positions.end(), 1);
-  parallel_ranges(m.edges().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
-    std::vector<mesh::NodeId> ids(p + 1);
+  std::map<ho::Shape, OwnedRows> interior;
+  for (const mesh::Element& el : m.elements())
+    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, p, from, to, mesh::NodeSlot::Interior));
+  parallel_ranges(m.elements().size(), x, [&](std::size_t begin, std::size_t end, Resampler& r) {
     for (std::size_t e = begin; e < end; ++e) {
-      const mesh::Edge& edge_entity = m.edges()[e];
-      ids.front() = edge_entity.vertices[0], ids.back() = edge_entity.vertices[1];
-      std::copy_n(m.edge_pool().begin() + edge_entity.first_node, p - 1, ids.begin() + 1);
-      r(edge, edge_positions, ids);
+      const OwnedRows& owned = interior.at(m.elements()[e].shape);
+      if (owned.positions.empty()) continue;
+      m.element_nodes(e, r.ids);
+      r(owned.rows, owned.positions, r.ids);
     }
   });
 
-  const OwnedRows tri = owned_rows(ho::Shape::Triangle, p, set, mesh::NodeSlot::Face);
-  const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, p, set, mesh::NodeSlot::Face);
-  parallel_ranges(m.faces().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
+  const OwnedRows tri = owned_rows(ho::Shape::Triangle, p, from, to, mesh::NodeSlot::Face);
+  const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, p, from, to, mesh::NodeSlot::Face);
+  parallel_ranges(m.faces().size(), x, [&](std::size_t begin, std::size_t end, Resampler& r) {
     for (std::size_t f = begin; f < end; ++f) {
       const OwnedRows& owned = m.faces()[f].num_vertices == 3 ? tri : quad;
       if (owned.positions.empty()) continue;
@@ -118,19 +111,39 @@ EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
     }
   });
 
-  std::map<ho::Shape, OwnedRows> interior;
-  for (const mesh::Element& el : m.elements())
-    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, p, set, mesh::NodeSlot::Interior));
-  parallel_ranges(m.elements().size(), from, resampled_, [&](std::size_t begin, std::size_t end, Resampler& r) {
-    std::vector<mesh::NodeId> ids;
+  const Eigen::MatrixXd edge = edge_resampling(p, from, to);
+  std::vector<int> edge_positions(p - 1);
+  std::iota(edge_positions.begin(), edge_positions.end(), 1);
+  parallel_ranges(m.edges().size(), x, [&](std::size_t begin, std::size_t end, Resampler& r) {
+    r.ids.resize(p + 1);
     for (std::size_t e = begin; e < end; ++e) {
-      const OwnedRows& owned = interior.at(m.elements()[e].shape);
-      if (owned.positions.empty()) continue;
-      m.element_nodes(e, ids);
-      r(owned.rows, owned.positions, ids);
+      const mesh::Edge& edge_entity = m.edges()[e];
+      r.ids.front() = edge_entity.vertices[0], r.ids.back() = edge_entity.vertices[1];
+      std::copy_n(m.edge_pool().begin() + edge_entity.first_node, p - 1, r.ids.begin() + 1);
+      r(edge, edge_positions, r.ids);
     }
   });
+}
+
+bool needs_resampling(const mesh::Mesh& m) { return m.node_set() != ho::NodeSet::Equispaced && m.order() >= 2; }
+
+}  // namespace
+
+EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
+  if (!needs_resampling(m)) return;
+  resampled_ = m.nodes();  // vertices keep their place
+  resample_in_place(m, resampled_, m.node_set(), ho::NodeSet::Equispaced);
   nodes_ = &resampled_;
+}
+
+EquispacedNodes::EquispacedNodes(mesh::Mesh& m, InPlace) : nodes_(&m.nodes()) {
+  if (!needs_resampling(m)) return;
+  resample_in_place(m, m.positions_for_resampling(), m.node_set(), ho::NodeSet::Equispaced);
+  moved_ = &m;
+}
+
+EquispacedNodes::~EquispacedNodes() {
+  if (moved_) resample_in_place(*moved_, moved_->positions_for_resampling(), ho::NodeSet::Equispaced, moved_->node_set());
 }
 
 mesh::Mesh to_equispaced(const mesh::Mesh& source) {
@@ -141,7 +154,7 @@ mesh::Mesh to_equispaced(const mesh::Mesh& source) {
   std::map<ho::Shape, Eigen::MatrixXd> resample;  // (n, n) per shape
   auto matrix = [&](ho::Shape shape) -> const Eigen::MatrixXd& {
     auto it = resample.find(shape);
-    if (it == resample.end()) it = resample.emplace(shape, resampling(shape, order, source.node_set())).first;
+    if (it == resample.end()) it = resample.emplace(shape, resampling(shape, order, source.node_set(), ho::NodeSet::Equispaced)).first;
     return it->second;
   };
   auto move_nodes = [&](ho::Shape shape, const std::vector<mesh::NodeId>& ids) {

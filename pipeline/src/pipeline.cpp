@@ -516,6 +516,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     return fine;
   });
   coarse = mesh::Mesh();  // not needed any more
+  const std::size_t split_elements = split.mesh.elements().size();
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
       mesh::Mesh welded = weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
@@ -524,9 +525,10 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
       ho::follow_exposed_body(welded, "wing", "farfield", /*moved_before=*/true);
       return welded;
     });
-  // The weld keeps the elements in order; an element it moved no longer matches its fingerprint.
+  // The weld keeps the elements in order (the bounds' element indices hold); an element it moved
+  // no longer matches its fingerprint.
   inherited = std::move(split.inherited);
-  if (inherited.size() != split.mesh.elements().size()) inherited.clear();
+  if (split.mesh.elements().size() != split_elements) inherited.clear();
   if (layers > 1) {
     result.layers.requested_ratio = ratio;
     result.layers.requested_ratio_end = config.boundary_layer.ratio_end.value_or(ratio);
@@ -649,15 +651,17 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
 
 namespace {
 
-/// The mesh files, one thread per format (their bytes do not depend on it): the resampled node
-/// positions are computed once for all. What each writer wrote is added to `written` in config
-/// order, also when another format failed (its first error, in config order, is rethrown).
-/// Progress: the mean of the files' own fractions, reported under a lock (one call at a time).
-void write_mesh_files(const mesh::Mesh& mesh, const std::vector<std::string>& formats,
+/// The mesh files, one thread per format (their bytes do not depend on it): the node positions are
+/// resampled once for all, in the mesh itself (a copy would be the run's largest array: 24 bytes a
+/// node), and moved back to round-off when the files are written or one failed. What each writer
+/// wrote is added to `written` in config order, also when another format failed (its first error,
+/// in config order, is rethrown). Progress: the mean of the files' own fractions, reported under a
+/// lock (one call at a time).
+void write_mesh_files(mesh::Mesh& mesh, const std::vector<std::string>& formats,
                       const std::vector<std::string>& paths, const ProgressCallback& report,
                       std::vector<std::string>& written) {
   if (formats.empty()) return;
-  const io::EquispacedNodes nodes(mesh);
+  const io::EquispacedNodes nodes(mesh, io::EquispacedNodes::InPlace{});
   std::mutex lock;
   std::vector<double> done(formats.size(), 0.0);
   auto file_progress = [&](std::size_t i) -> ProgressCallback {

@@ -455,6 +455,36 @@ TEST(Equispaced, EachNodeResampledByItsOwnerMatchesWholeElementResampling) {
   }
 }
 
+// In place (the pipeline's writers): the same positions as the copy, bit for bit, read from the
+// mesh's own array, and the mesh's GLL positions back to round-off afterwards.
+void expect_in_place_same_as_copy(const Mesh& gll, const std::string& what) {
+  const semimesh::io::EquispacedNodes copy(gll);
+  Mesh moved = gll;
+  {
+    const semimesh::io::EquispacedNodes in_place(moved, semimesh::io::EquispacedNodes::InPlace{});
+    ASSERT_EQ(&in_place.all(), &moved.nodes()) << what;
+    for (NodeId i = 0; i < gll.num_nodes(); ++i) ASSERT_EQ(in_place[i], copy[i]) << what << " node " << i;
+  }
+  double scale = 0;
+  for (const Eigen::Vector3d& x : gll.nodes()) scale = std::max(scale, x.norm());
+  for (NodeId i = 0; i < gll.num_nodes(); ++i)
+    ASSERT_LT((moved.node(i) - gll.node(i)).norm(), 1e-13 * scale) << what << " node " << i << " not moved back";
+}
+
+TEST(Equispaced, InPlaceMatchesTheCopyAndMovesTheNodesBack) {
+  for (int p = 2; p <= 6; ++p) {
+    expect_in_place_same_as_copy(two_prisms(p, NodeSet::GLL), "two prisms, order " + std::to_string(p));
+    for (Shape shape : {Shape::Tetrahedron, Shape::Pyramid, Shape::Prism, Shape::Hexahedron}) {
+      Mesh one(p, NodeSet::GLL);
+      const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(shape, p, NodeSet::GLL);
+      std::vector<NodeId> ids;
+      for (int i = 0; i < ref.rows(); ++i) ids.push_back(one.add_node(quadratic_map(ref.row(i).transpose())));
+      one.add_element(shape, ids);
+      expect_in_place_same_as_copy(one, "one element, shape " + std::to_string(int(shape)) + ", order " + std::to_string(p));
+    }
+  }
+}
+
 TEST(Equispaced, AnEquispacedMeshIsNotCopied) {
   const Mesh eq = two_prisms(3);
   const semimesh::io::EquispacedNodes nodes(eq);

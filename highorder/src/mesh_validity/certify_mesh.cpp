@@ -14,11 +14,28 @@ namespace {
 
 // An inherited certificate stands for the element's own when it is the same element (fingerprint)
 // and certify_jacobian would have stopped at its first expansion: above the floor (and so valid).
-bool usable(const InheritedBounds& inherited, const mesh::Mesh& mesh, std::size_t e, double floor) {
-  if (!inherited.present || !inherited.bounds.valid) return false;
+bool usable(const InheritedBounds& inherited, const mesh::Mesh& mesh, double floor) {
   const JacobianBounds& b = inherited.bounds;
-  if (!(b.min_lower > floor * b.max_upper)) return false;
-  return element_fingerprint(mesh, e) == inherited.fingerprint;
+  if (!b.valid || !(b.min_lower > floor * b.max_upper)) return false;
+  return element_fingerprint(mesh, inherited.element) == inherited.fingerprint;
+}
+
+/// The entry of element e in `inherited` (ascending elements), or nullptr.
+const InheritedBounds* entry_of(const std::vector<InheritedBounds>& inherited, std::size_t e) {
+  const auto it = std::lower_bound(inherited.begin(), inherited.end(), e,
+                                   [](const InheritedBounds& b, std::size_t element) { return b.element < element; });
+  return it != inherited.end() && it->element == e ? &*it : nullptr;
+}
+
+void check_inherited(const std::vector<InheritedBounds>& inherited, std::size_t elements) {
+  for (std::size_t i = 0; i < inherited.size(); ++i) {
+    if (inherited[i].element >= elements)
+      throw std::invalid_argument("certify_mesh: inherited bounds for element " + std::to_string(inherited[i].element) +
+                                  " of a mesh of " + std::to_string(elements) + " elements");
+    if (i > 0 && inherited[i].element <= inherited[i - 1].element)
+      throw std::invalid_argument("certify_mesh: inherited bounds not in ascending element order at element " +
+                                  std::to_string(inherited[i].element));
+  }
 }
 
 }  // namespace
@@ -55,17 +72,15 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
       throw std::invalid_argument("certify_mesh: element " + std::to_string(e) + " is a " +
                                   to_string(mesh.elements()[e].shape) + "; only 3D elements can be certified");
 
-  if (inherited && !inherited->empty() && inherited->size() != n)
-    throw std::invalid_argument("certify_mesh: " + std::to_string(inherited->size()) +
-                                " inherited bounds for " + std::to_string(n) + " elements");
-  const bool inherit = inherited && !inherited->empty();
+  if (inherited) check_inherited(*inherited, n);
 
   MeshValidity out;
   out.bounds.resize(n);
   std::atomic<std::size_t> taken{0};
   detail::parallel_for(n, true, [&](std::size_t e) {
-    if (inherit && usable((*inherited)[e], mesh, e, min_scaled_jacobian)) {
-      out.bounds[e] = (*inherited)[e].bounds;
+    const InheritedBounds* entry = inherited ? entry_of(*inherited, e) : nullptr;
+    if (entry && usable(*entry, mesh, min_scaled_jacobian)) {
+      out.bounds[e] = entry->bounds;
       taken.fetch_add(1, std::memory_order_relaxed);
       return;
     }

@@ -559,7 +559,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   check_side_faces(split);                                 // before any output: a crack is refused
   if (first_piece) first_piece->assign(in_.elements().size(), 0);
   const std::size_t elements = copy_nodes_groups_and_regions();  // input node ids stay valid in the output
-  if (inherited) inherited->reserve(elements);                    // filled piece by piece: never regrown
+  if (inherited) inherited->reserve(elements);  // an upper bound: the room never filled is never resident
   const std::vector<std::size_t> first_out = add_elements(position, split.size(), first_piece, progress, inherited);
   add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
   if (stats) *stats = split_stats();
@@ -683,7 +683,6 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
   }
   counter.finish();
   copy_elements(next, in_.elements().size(), first_piece);
-  if (inherited) inherited->resize(out_.elements().size());
   return first_out;
 }
 
@@ -701,10 +700,9 @@ void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<Nod
     out_.add_element(in_.elements()[element].shape, pieces[piece], in_.elements()[element].region);
     if (!inherited || piece >= bounds.size() || !bounds[piece]) continue;
     const std::size_t made = out_.elements().size() - 1;
-    inherited->resize(made + 1);
     // The fingerprint of the piece as made: its shared nodes may come from a neighbour's
     // evaluation of the same point (the same up to rounding, which kPieceMargin covers).
-    (*inherited)[made] = {true, element_fingerprint(out_, made), *bounds[piece]};
+    inherited->push_back({made, element_fingerprint(out_, made), *bounds[piece]});
   }
 }
 

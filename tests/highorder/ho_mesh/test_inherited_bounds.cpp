@@ -90,6 +90,25 @@ TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
     }
 }
 
+// Only the pieces have bounds: a copied element before or after them is certified on its own, and
+// each piece finds its own entry.
+TEST(InheritedBounds, KeptForThePiecesOnlyWhereverTheyAreInTheMesh) {
+  const mesh::Mesh coarse = curved_elements(Shape::Hexahedron, 3, bent);
+  for (std::size_t split_one : {0u, 1u}) {
+    SCOPED_TRACE("split element " + std::to_string(split_one));
+    std::vector<InheritedBounds> inherited;
+    const mesh::Mesh fine = split_layers(coarse, {{split_one, {0, -1}, {0, 0}}}, {{{5, 2.0}, {}}}, nullptr, nullptr,
+                                         {}, &inherited);
+    ASSERT_EQ(fine.elements().size(), 6u);
+    ASSERT_EQ(inherited.size(), 5u);
+    const std::size_t first = split_one == 0 ? 0 : 1;  // the copied element keeps its place in mesh order
+    for (std::size_t k = 0; k < inherited.size(); ++k) EXPECT_EQ(inherited[k].element, first + k);
+    const MeshValidity fast = certify_mesh(fine, 8, 0.0, {}, &inherited);
+    EXPECT_EQ(fast.inherited, 5u);
+    expect_same(fast, certify_mesh(fine, 8, 0.0));
+  }
+}
+
 TEST(InheritedBounds, AFloorAboveTheInheritedRatioSendsThePieceToTheReference) {
   const mesh::Mesh coarse = curved_elements(Shape::Prism, 3, bent);
   std::vector<InheritedBounds> inherited;
@@ -129,9 +148,12 @@ TEST(InheritedBounds, NoneWhereTheInterfacesVaryOrANodeMoved) {
   const MeshValidity fast = certify_mesh(moved, 8, 0.0, {}, &inherited);
   EXPECT_EQ(fast.inherited, moved.elements().size() - 1);
   expect_same(fast, certify_mesh(moved, 8, 0.0));
-  // Bounds for another number of elements are refused.
-  std::vector<InheritedBounds> short_list(inherited.begin(), inherited.end() - 1);
-  EXPECT_THROW(certify_mesh(fine, 8, 0.0, {}, &short_list), std::invalid_argument);
+  // Bounds for an element the mesh does not have, or out of order, are refused.
+  std::vector<InheritedBounds> beyond = inherited;
+  beyond.back().element = fine.elements().size();
+  EXPECT_THROW(certify_mesh(fine, 8, 0.0, {}, &beyond), std::invalid_argument);
+  std::vector<InheritedBounds> reversed(inherited.rbegin(), inherited.rend());
+  EXPECT_THROW(certify_mesh(fine, 8, 0.0, {}, &reversed), std::invalid_argument);
 }
 
 }  // namespace

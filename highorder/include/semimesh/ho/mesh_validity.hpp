@@ -29,9 +29,10 @@ struct MeshValidity {
 
 /// Bounds an element got when it was made (a piece of a split element: certify_pieces), for the
 /// node positions whose fingerprint it carries: they hold for that element while its nodes are
-/// exactly those, whatever the stages after (renumbering, welding) did to the mesh.
+/// exactly those, whatever the stages after (welding, moving nodes) did to the mesh. Kept only for
+/// the elements that have them (a third of the paper's case), in ascending element order.
 struct InheritedBounds {
-  bool present = false;
+  std::size_t element = 0;        ///< the element's index in the mesh
   std::uint64_t fingerprint = 0;  ///< element_fingerprint when the bounds were derived
   JacobianBounds bounds;
 };
@@ -44,8 +45,8 @@ std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e);
 /// min_scaled_jacobian); an element below that floor counts as invalid (see acceptable()).
 /// Throws std::invalid_argument when the mesh holds a 2D element or max_depth < 0. `progress`
 /// receives the fraction of elements certified (step "elements"), from one thread, throttled.
-/// `inherited` (optional, [elements] or empty): an element whose entry is present, whose
-/// fingerprint is still its own and whose inherited bounds decide it at the floor (all above
+/// `inherited` (optional, ascending element indices, each < the number of elements; else
+/// std::invalid_argument): an element that has an entry, whose fingerprint is still its own and whose inherited bounds decide it at the floor (all above
 /// min_scaled_jacobian x their largest: certify_jacobian would not bisect) takes those bounds and
 /// no Bernstein expansion of its own; every other element is certified. With no `inherited` this
 /// is the reference: every element certified on its own nodes.

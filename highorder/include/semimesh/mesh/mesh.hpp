@@ -134,6 +134,10 @@ class Mesh {
   /// without nodes: for a stage that builds a new mesh on an old one's nodes and reads the old one's
   /// topology only (ho::split_layers).
   void take_nodes(Mesh& other);
+  /// Every node's position, to be moved to another node set's positions of the same element maps
+  /// and back (io::EquispacedNodes for the writers): the CAD attachments and the node set are left
+  /// as they are, so nobody else may read the positions until they are back.
+  std::vector<Eigen::Vector3d>& positions_for_resampling() { return nodes_; }
 
   // ---- entities -------------------------------------------------------------------------------
   const std::vector<Edge>& edges() const { return edges_; }

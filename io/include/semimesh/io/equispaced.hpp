@@ -8,14 +8,22 @@
 namespace semimesh::io {
 
 /// The node positions an equispaced mesh with the same element maps has (same node ids), for the
-/// writers: the mesh's own positions when its nodes are equispaced (no copy), else one resampled
-/// position per node, 24 bytes a node instead of a copy of the mesh. Each node is resampled once,
-/// by the entity that owns it (ho::interpolation_matrix of that edge, face or element): the trace
-/// of a Lagrange map on an edge or face depends only on that edge's or face's nodes, so every
-/// element sharing it would compute the same point; vertices do not move.
+/// writers. Each node is resampled once, by the entity that owns it (ho::interpolation_matrix of
+/// that edge, face or element): the trace of a Lagrange map on an edge or face depends only on that
+/// edge's or face's nodes, so every element sharing it would compute the same point; vertices do not
+/// move. Element interiors go first, then faces, then edges: each reads only nodes not yet moved,
+/// which is what lets the positions be resampled where they are.
 class EquispacedNodes {
  public:
+  /// The mesh's own positions when its nodes are equispaced (no copy), else a resampled copy (24
+  /// bytes a node).
   explicit EquispacedNodes(const mesh::Mesh& mesh);
+  struct InPlace {};
+  /// No copy: `mesh`'s own positions are resampled where they are and moved back, to round-off
+  /// (~1e-16 of the coordinates), when this object is destroyed; meanwhile `mesh` must be read
+  /// through this object only (its node set and CAD attachments do not describe them).
+  EquispacedNodes(mesh::Mesh& mesh, InPlace);
+  ~EquispacedNodes();
   EquispacedNodes(const EquispacedNodes&) = delete;
   EquispacedNodes& operator=(const EquispacedNodes&) = delete;
 
@@ -23,8 +31,9 @@ class EquispacedNodes {
   const std::vector<Eigen::Vector3d>& all() const { return *nodes_; }
 
  private:
-  std::vector<Eigen::Vector3d> resampled_;  // empty when the mesh's nodes are equispaced already
+  std::vector<Eigen::Vector3d> resampled_;  // the copy: empty in place or when equispaced already
   const std::vector<Eigen::Vector3d>* nodes_;
+  mesh::Mesh* moved_ = nullptr;             // in place: the mesh whose positions go back
 };
 
 /// The slow, obviously right reference of EquispacedNodes: a copy of `mesh` whose nodes are the

@@ -94,8 +94,8 @@ struct LayerSplit {
 /// (*first_piece)[e] is the output index of input element e's first piece (its copy when not split).
 /// `progress` receives the fraction of split elements done (step "elements"), per block of elements,
 /// from the calling thread.
-/// `inherited` (optional) gets [output elements] the bounds of det J each piece inherits from its
-/// coarse element (certify_pieces), for certify_mesh: present for the pieces of an element whose
+/// `inherited` (optional) gets the bounds of det J pieces inherit from their coarse element
+/// (certify_pieces), by output element in ascending order, for certify_mesh: given for the pieces of an element whose
 /// interfaces are constant over it (no ratio field, or one giving the family's ratio at all its
 /// bottom vertices: each piece is then the coarse map composed with an affine map), and whose
 /// bounds need no bisection; absent for the rest (copied elements, pieces of an element whose
