@@ -3,6 +3,9 @@
 
 #include "cad_info.hpp"
 #include "init_from_cad.hpp"
+#include "model_as_run.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/backends/builtin.hpp"
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/roles.hpp"
@@ -205,6 +208,46 @@ TEST(InitCommand, ABaseOfSeveralFacesGetsTheHTypeACrankedSharpEdgeTheCType) {
     std::ifstream text(toml);
     const std::string written((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
     EXPECT_NE(written.find(k.says), std::string::npos) << name << ":\n" << written;
+  }
+  std::filesystem::remove_all(dir);
+#endif
+}
+
+// The trailing-edge base's faces (detail::trailing_edge_base) on OCC files (the analytic wing has
+// one base face and cannot be split): one face, the two halves of a base split along the span, the
+// two panels' bases of the cranked wing, the four of both; never a skin or the tip.
+TEST(TrailingEdgeBase, GathersTheFacesOfASplitOrCrankedBase) {
+#ifndef SEMIMESH_WRITE_WING_VARIANT
+  GTEST_SKIP() << "no occ backend: write_wing_variant is not built";
+#else
+  const std::filesystem::path dir = semimesh::test::temp_path("te_base_faces");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (const auto& [variant, count] : {std::pair<const char*, std::size_t>{"capped", 1}, {"split_base", 2},
+                                       {"cranked", 2}, {"cranked_split_base", 4}}) {
+    const std::string step = (dir / (std::string(variant) + ".step")).string();
+    const std::string write = std::string(SEMIMESH_WRITE_WING_VARIANT) + " " + variant + " " + step +
+                              " naca.farfield=false naca.span=1 > /dev/null 2>&1";
+    ASSERT_EQ(std::system(write.c_str()), 0) << write;
+    const ModelAsRun loaded = load_model_as_run(backends::default_registry(), "occ", step);
+    const surface::CadRoles roles = surface::detect_cad_roles(*loaded.model);
+    ASSERT_TRUE(roles.te_base) << variant;
+    const nearfield::BodyRoles body{roles.body, roles.wall};
+    const std::vector<int> faces = nearfield::detail::trailing_edge_base(*loaded.model, body, *roles.te_base);
+    EXPECT_EQ(faces.size(), count) << variant;
+    for (int s : faces) {  // narrow faces: the base's, not a skin's or the tip's
+      EXPECT_LT(cad::face_area(loaded.model->surface(s)).area, 0.02) << variant << ": " << s;
+      EXPECT_FALSE(std::count(roles.tip.begin(), roles.tip.end(), s)) << variant << ": " << s;
+    }
+    EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, body, faces, -1), -1) << variant;
+    if (std::string(variant) != "split_base") continue;
+    // Without the tip among the body's faces (as on OpenVSP's M6, whose tip is slivers at the
+    // trailing edge) both the upper skin and the other half border nothing else past the root's
+    // half: the trailing edge goes on into the other half, and that is the face named.
+    nearfield::BodyRoles no_tip = body;
+    for (int t : roles.tip) no_tip.body_surfaces.erase(std::find(no_tip.body_surfaces.begin(), no_tip.body_surfaces.end(), t));
+    const int other = faces[0] == *roles.te_base ? faces[1] : faces[0];
+    EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, no_tip, {*roles.te_base}, -1), other);
   }
   std::filesystem::remove_all(dir);
 #endif

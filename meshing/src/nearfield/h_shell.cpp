@@ -36,6 +36,10 @@ int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const V
 
 namespace {
 
+// Faces whose longest curve, and curves, under this share of the base's longest curve or the
+// crack's length are slivers, not panels (the ONERA M6's tip faces at its trailing edge).
+constexpr double kSliver = 0.1;
+
 bool is_body(const BodyRoles& roles, int s) {
   return std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), s) > 0;
 }
@@ -78,12 +82,23 @@ Vec3 mean_normal(const cad::Surface& face) {
   return sum.normalized();
 }
 
-// Whether face n goes on with the base face s: it faces the same way (their mean normals within 45
-// degrees). A base's skins face across the stream and its tip along the span, at ~90 degrees; its
-// other half, or the next panel's base past a crank, downstream as it does.
+// Whether face n goes on with the base face s: no sliver, and facing the same way (their mean normals
+// within 45 degrees). A base's skins face across the stream and its tip along the span, at ~90
+// degrees; its other half, or the next panel's base past a crank, downstream as it does.
 bool continues_base(const cad::Model& model, int s, int n) {
   constexpr double kSameWay = 0.7071;  // cos 45 degrees
-  return mean_normal(model.surface(s)).dot(mean_normal(model.surface(n))) > kSameWay;
+  return longest_curve(model, n) > kSliver * longest_curve(model, s) &&
+         mean_normal(model.surface(s)).dot(mean_normal(model.surface(n))) > kSameWay;
+}
+
+// How nearly face n faces the way the base faces it borders do: the largest cosine between their
+// mean normals.
+double alignment_with_base(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base, int n) {
+  const std::set<int> around = body_neighbours(model, roles, n);
+  double best = -1.0;
+  for (int s : base)
+    if (around.count(s)) best = std::max(best, mean_normal(model.surface(s)).dot(mean_normal(model.surface(n))));
+  return best;
 }
 
 }  // namespace
@@ -102,7 +117,6 @@ std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& ro
 
 int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base,
                                int crack) {
-  constexpr double kSliver = 0.1;  // of the base's or crack's length: smaller faces and curves are slivers
   if (!base.empty()) {
     std::set<int> around;
     double span = 0.0;
@@ -111,12 +125,17 @@ int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, 
         if (!std::count(base.begin(), base.end(), n)) around.insert(n);
       span = std::max(span, longest_curve(model, s));
     }
+    // Of several candidates (a tip of slivers leaves both a skin and a base's other half bordering
+    // nothing else), the one facing most nearly as the base: where the trailing edge goes on.
+    int next = -1;
+    double next_alignment = -2.0;
     for (int n : around) {
       std::set<int> others = around;
       others.erase(n);
-      if (!borders_any(model, roles, n, others) && longest_curve(model, n) > kSliver * span) return n;
+      if (borders_any(model, roles, n, others) || !(longest_curve(model, n) > kSliver * span)) continue;
+      if (const double a = alignment_with_base(model, roles, base, n); a > next_alignment) next = n, next_alignment = a;
     }
-    return -1;
+    return next;
   }
   if (crack < 0) return -1;
   std::set<int> sides;

@@ -20,9 +20,10 @@ int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const V
 
 /// The trailing-edge base's faces, ascending: `root_face` (the base on the root) and the body faces
 /// reached from it across shared curves that face the way their neighbour in the base does (mean
-/// outward normals within 45 degrees): a base CAD tools split along the span into an upper and a
-/// lower half (OpenVSP), or across it at a crank (one face per panel), or both. The skins beside
-/// the base face across the stream and the tip along the span: they stay out.
+/// outward normals within 45 degrees) and are no slivers (as trailing_edge_continuation's): a base
+/// CAD tools split along the span into an upper and a lower half (OpenVSP), or across it at a crank
+/// (one face per panel), or both. The skins beside the base face across the stream and the tip
+/// along the span: they stay out; so do the tip's slivers at the trailing edge (OpenVSP's M6).
 std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& roles, int root_face);
 
 /// Where the trailing edge goes on past the base faces `base` (blunt; trailing_edge_base) or the
@@ -31,9 +32,11 @@ std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& ro
 /// wing's outboard base, were it not part of the base, would border only its own panel's sides), or
 /// a curve at one of the crack's ends between two body surfaces that are neither of the crack's
 /// sides (the outboard panel's trailing edge; a tip's curves have a side on one hand). Returns that
-/// surface or curve id, -1 when the trailing edge ends at the tip. Faces whose longest curve, and
-/// curves, under a tenth of the base's longest curve or the crack's length are slivers, not panels
-/// (the ONERA M6's tip faces at its trailing edge).
+/// surface or curve id, -1 when the trailing edge ends at the tip; of several such surfaces the one
+/// facing most nearly as the base (OpenVSP's M6 without its base's other half: that half, not the
+/// skin beside it). Faces whose longest curve, and curves, under a tenth of the base's longest
+/// curve or the crack's length are slivers, not panels (the ONERA M6's tip faces at its trailing
+/// edge).
 int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base,
                                int crack);
 
