@@ -5,6 +5,8 @@
 #include "semimesh/cad/error.hpp"
 #include "semimesh/cad/trimmed_area.hpp"
 #include "semimesh/error.hpp"
+#include "semimesh/cad/labels.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
@@ -39,17 +41,22 @@ std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
   return rows;
 }
 
-// The roles the pipeline's "auto" would find, or why there are none.
+// The roles the pipeline's "auto" would find, or why there are none; the trailing-edge base's faces
+// the H-type's wake block stands on (the root's base and those going on with it to the tip).
 struct DetectedRoles {
   std::optional<surface::CadRoles> roles;
   std::string why_not;
+  std::vector<int> te_base_faces;
 };
 
 DetectedRoles detect_roles(const cad::Model& model) {
   try {
-    return {surface::detect_cad_roles(model), {}};
+    DetectedRoles d{surface::detect_cad_roles(model), {}, {}};
+    if (d.roles->te_base)
+      d.te_base_faces = nearfield::detail::trailing_edge_base(model, {d.roles->body, d.roles->wall}, *d.roles->te_base);
+    return d;
   } catch (const surface::CadRoleError& e) {
-    return {std::nullopt, e.what()};
+    return {std::nullopt, e.what(), {}};
   }
 }
 
@@ -62,16 +69,21 @@ std::string ids_json(const std::vector<int>& ids) {
 std::string roles_json(const DetectedRoles& d) {
   if (!d.roles) return "{\"found\":false,\"why_not\":" + json_string(d.why_not) + "}";
   const surface::CadRoles& r = *d.roles;
-  return fmt::format("{{\"found\":true,\"wall\":{},\"body\":{},\"farfield\":{},\"te_base\":{},\"tip\":{},\"span\":{},"
-                     "\"chord\":{}}}",
+  return fmt::format("{{\"found\":true,\"wall\":{},\"body\":{},\"farfield\":{},\"te_base\":{},\"te_base_faces\":{},"
+                     "\"tip\":{},\"span\":{},\"chord\":{}}}",
                      r.wall, ids_json(r.body), ids_json(r.farfield), r.te_base ? std::to_string(*r.te_base) : "null",
-                     ids_json(r.tip), json_number(r.span), json_number(r.chord));
+                     ids_json(d.te_base_faces), ids_json(r.tip), json_number(r.span), json_number(r.chord));
 }
 
 std::string roles_table(const cad::Model& model, const DetectedRoles& d) {
   if (!d.roles) return "roles     not found: " + d.why_not + "\n";
   std::string text = "roles (found from the model, as geometry.body/wall/farfield = \"auto\" would)\n";
   text += surface::describe_cad_roles(model, *d.roles);
+  if (d.te_base_faces.size() > 1) {
+    std::string faces;
+    for (int s : d.te_base_faces) faces += (faces.empty() ? "" : ", ") + cad::surface_label(model, s);
+    text += "te faces  " + faces + ": the base's faces from the root to the tip, the H-type's wake block on all\n";
+  }
   return text;
 }
 

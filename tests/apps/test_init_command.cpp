@@ -208,6 +208,14 @@ TEST(InitCommand, ABaseOfSeveralFacesGetsTheHTypeACrankedSharpEdgeTheCType) {
     std::ifstream text(toml);
     const std::string written((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
     EXPECT_NE(written.find(k.says), std::string::npos) << name << ":\n" << written;
+    // cad-info lists the same base faces by the same ids.
+    const std::string from = "one strip from the root to the tip (", to = "), carries";
+    if (const auto at = written.find(from); at != std::string::npos) {
+      const std::string faces = written.substr(at + from.size(), written.find(to, at) - at - from.size());
+      std::ostringstream info;
+      run_cad_info(backends::default_registry(), CadInfoOptions{"", step, {}, false}, info);
+      EXPECT_NE(info.str().find("te faces  " + faces + ": "), std::string::npos) << name << ": " << faces;
+    }
   }
   std::filesystem::remove_all(dir);
 #endif
