@@ -1,6 +1,12 @@
 #include "cad_info.hpp"
 
+#include "model_as_run.hpp"
+
+#include "semimesh/cad/error.hpp"
 #include "semimesh/cad/trimmed_area.hpp"
+#include "semimesh/error.hpp"
+#include "semimesh/cad/labels.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/pipeline/closed_model.hpp"
 #include "semimesh/surface/cad_roles.hpp"
 
@@ -35,17 +41,22 @@ std::vector<SurfaceRow> surface_rows(const cad::Model& model) {
   return rows;
 }
 
-// The roles the pipeline's "auto" would find, or why there are none.
+// The roles the pipeline's "auto" would find, or why there are none; the trailing-edge base's faces
+// the H-type's wake block stands on (the root's base and those going on with it to the tip).
 struct DetectedRoles {
   std::optional<surface::CadRoles> roles;
   std::string why_not;
+  std::vector<int> te_base_faces;
 };
 
 DetectedRoles detect_roles(const cad::Model& model) {
   try {
-    return {surface::detect_cad_roles(model), {}};
+    DetectedRoles d{surface::detect_cad_roles(model), {}, {}};
+    if (d.roles->te_base)
+      d.te_base_faces = nearfield::detail::trailing_edge_base(model, {d.roles->body, d.roles->wall}, *d.roles->te_base);
+    return d;
   } catch (const surface::CadRoleError& e) {
-    return {std::nullopt, e.what()};
+    return {std::nullopt, e.what(), {}};
   }
 }
 
@@ -58,16 +69,21 @@ std::string ids_json(const std::vector<int>& ids) {
 std::string roles_json(const DetectedRoles& d) {
   if (!d.roles) return "{\"found\":false,\"why_not\":" + json_string(d.why_not) + "}";
   const surface::CadRoles& r = *d.roles;
-  return fmt::format("{{\"found\":true,\"wall\":{},\"body\":{},\"farfield\":{},\"te_base\":{},\"tip\":{},\"span\":{},"
-                     "\"chord\":{}}}",
+  return fmt::format("{{\"found\":true,\"wall\":{},\"body\":{},\"farfield\":{},\"te_base\":{},\"te_base_faces\":{},"
+                     "\"tip\":{},\"span\":{},\"chord\":{}}}",
                      r.wall, ids_json(r.body), ids_json(r.farfield), r.te_base ? std::to_string(*r.te_base) : "null",
-                     ids_json(r.tip), json_number(r.span), json_number(r.chord));
+                     ids_json(d.te_base_faces), ids_json(r.tip), json_number(r.span), json_number(r.chord));
 }
 
 std::string roles_table(const cad::Model& model, const DetectedRoles& d) {
   if (!d.roles) return "roles     not found: " + d.why_not + "\n";
   std::string text = "roles (found from the model, as geometry.body/wall/farfield = \"auto\" would)\n";
   text += surface::describe_cad_roles(model, *d.roles);
+  if (d.te_base_faces.size() > 1) {
+    std::string faces;
+    for (int s : d.te_base_faces) faces += (faces.empty() ? "" : ", ") + cad::surface_label(model, s);
+    text += "te faces  " + faces + ": the base's faces from the root to the tip, the H-type's wake block on all\n";
+  }
   return text;
 }
 
@@ -78,7 +94,7 @@ std::string bbox_json(const cad::BBox& b) {
 }
 
 std::string report_json(const std::string& backend, const cad::Model& model, const std::vector<SurfaceRow>& rows,
-                        const DetectedRoles& roles) {
+                        const DetectedRoles& roles, bool built_at_load) {
   std::string repairs;
   for (const std::string& r : model.repairs()) repairs += (repairs.empty() ? "" : ",") + json_string(r);
   std::string list;
@@ -87,18 +103,24 @@ std::string report_json(const std::string& backend, const cad::Model& model, con
                         json_string(r.name), json_string(r.kind), json_number(r.area.area));
   return fmt::format(
       "{{\"backend\":{},\"vertices\":{},\"curves\":{},\"surfaces\":{},\"bbox\":{},\"closed\":{},\"units\":{},"
-      "\"units_origin\":{},\"repairs\":[{}],"
+      "\"units_origin\":{},\"repairs\":[{}],\"wall_and_box_built\":{},"
       "\"surface_list\":[{}],\"roles\":{}}}\n",
       json_string(backend), model.num_vertices(), model.num_curves(), model.num_surfaces(), bbox_json(model.bbox()),
       model.is_closed() ? "true" : "false", json_string(model.units()), json_string(model.units_origin()), repairs,
-      list, roles_json(roles));
+      built_at_load ? "true" : "false", list, roles_json(roles));
 }
 
-std::string report_table(const std::string& backend, const std::string& source, const cad::Model& model,
+std::string report_table(const std::string& backend, const std::string& source, const ModelAsRun& loaded,
                          const std::vector<SurfaceRow>& rows, const DetectedRoles& roles) {
+  const cad::Model& model = *loaded.model;
   std::string out;
   out += fmt::format("source    {}\n", source.empty() ? "(generated)" : source);
   out += fmt::format("backend   {}\n", backend);
+  if (loaded.root)
+    out += fmt::format("built     the file holds the body only: the wall plane at its root and a box of {} chords "
+                       "around it built at load, as `init --cad` configures `run` (the ids below are the run's); "
+                       "the plane: {}\n",
+                       kBoxChords, loaded.root->why);
   out += fmt::format("units     {}: {} (scale applied at load: {})\n", model.units(),
                      model.units_origin().empty() ? "as the backend says" : model.units_origin(), model.scale_applied());
   for (const std::string& repair : model.repairs()) out += fmt::format("repaired  {}\n", repair);
@@ -132,6 +154,21 @@ std::string report_table(const std::string& backend, const std::string& source, 
   return out;
 }
 
+// A file: the model `run` loads for it (a body-only file with its wall and box), so the ids are the
+// run's. The file as it is when that cannot be built (the roles' row then says why), and for a
+// generator's parameters.
+ModelAsRun model_for_info(const cad::Registry& registry, const std::string& backend, const std::string& path,
+                          const cad::Params& params) {
+  if (!path.empty()) {
+    try {
+      return load_model_as_run(registry, backend, path, params);
+    } catch (const InputError&) {
+    } catch (const cad::CadError&) {
+    }
+  }
+  return {registry.load(backend, cad::Source{path, params}), std::nullopt};
+}
+
 }  // namespace
 
 cad::Params parse_params(const std::vector<std::string>& key_values) {
@@ -153,12 +190,12 @@ std::string choose_backend(const cad::Registry& registry, const CadInfoOptions& 
 
 void run_cad_info(const cad::Registry& registry, const CadInfoOptions& options, std::ostream& out) {
   const std::string backend = choose_backend(registry, options);
-  cad::Source source{options.source, parse_params(options.params)};
-  std::unique_ptr<cad::Model> model = registry.load(backend, source);
-  std::vector<SurfaceRow> rows = surface_rows(*model);
-  const DetectedRoles roles = detect_roles(*model);
-  out << (options.json ? report_json(backend, *model, rows, roles)
-                       : report_table(backend, options.source, *model, rows, roles));
+  const cad::Params params = parse_params(options.params);
+  ModelAsRun loaded = model_for_info(registry, backend, options.source, params);
+  std::vector<SurfaceRow> rows = surface_rows(*loaded.model);
+  const DetectedRoles roles = detect_roles(*loaded.model);
+  out << (options.json ? report_json(backend, *loaded.model, rows, roles, loaded.root.has_value())
+                       : report_table(backend, options.source, loaded, rows, roles));
 }
 
 }  // namespace semimesh::app

@@ -1,19 +1,17 @@
 #include "init_from_cad.hpp"
 
+#include "model_as_run.hpp"
 #include "unit_doubt.hpp"
 
 #include "semimesh/cad/labels.hpp"
 #include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/pipeline/pipeline.hpp"
 #include "semimesh/surface/cad_roles.hpp"
-#include "semimesh/surface/root_plane.hpp"
 #include "semimesh/surface/shell_size_limit.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <utility>
 #include <string>
 
@@ -35,9 +33,6 @@ std::vector<std::string> surface_entries(const cad::Model& model, const std::vec
 // Four significant digits: what a user would write, and plenty for a size.
 double round_to_4_digits(double x) { return std::stod(fmt::format("{:.4g}", x)); }
 
-// The far field around a body-only file: the paper's box is about ten chords on every side.
-constexpr double kBoxChords = 10.0;
-
 // The body's largest edge where no curve names its leading or trailing edge: the paper's sizes
 // (chord-scaled) resolve the chord through le_size and te_size on those curves; without them only
 // the curvature refines, and the flat mid-chord would get two edges.
@@ -49,15 +44,6 @@ bool names_its_edges(const cad::Model& model) {
     for (const char* name : {"leading_edge", "trailing_edge", "te_upper", "te_lower"})
       if (model.curve(c).name() == name) return true;
   return false;
-}
-
-// A point or direction as written in the config: 12 significant digits, round-off zeros as 0.
-std::array<double, 3> rounded(const cad::Vec3& x) {
-  const double scale = std::max(1.0, x.cwiseAbs().maxCoeff());
-  std::array<double, 3> out{};
-  for (int k = 0; k < 3; ++k)
-    out[k] = std::abs(x[k]) < 1e-12 * scale ? 0.0 : std::stod(fmt::format("{:.12g}", x[k]));
-  return out;
 }
 
 void scale_lengths(pipeline::Config& config, double factor) {
@@ -100,22 +86,38 @@ std::pair<int, int> trailing_edge(const cad::Model& model, const surface::CadRol
   return {-1, sharp_curve >= 0 && sharp > 0.5 * (lo + hi) ? sharp_curve : -1};
 }
 
+std::string surface_labels(const cad::Model& model, const std::vector<int>& surfaces) {
+  std::string text;
+  for (int s : surfaces) text += (text.empty() ? "" : ", ") + cad::surface_label(model, s);
+  return text;
+}
+
 // The near field init writes, and the summary line saying why: H where the body's trailing edge
-// (a base or a sharp edge) runs from the root to the tip, C where it goes on past its root face or
-// curve (several spanwise panels: the run's own check, detail::trailing_edge_continuation, would
+// (a base of one or several faces, or a sharp edge) runs from the root to the tip, C where it goes
+// on past its base or root curve (the run's own check, detail::trailing_edge_continuation, would
 // refuse H), else O.
 std::pair<std::string, std::string> near_field_topology(const cad::Model& model, const surface::CadRoles& roles) {
   const auto [base, crack] = trailing_edge(model, roles);
   if (base < 0 && crack < 0)
     return {"O", "nearfield.topology = \"O\": no trailing-edge base nor sharp trailing edge for an H-type wake block.\n"};
   const nearfield::BodyRoles body{roles.body, roles.wall};
-  const int past = nearfield::detail::trailing_edge_continuation(model, body, base, crack);
+  const std::vector<int> faces = base >= 0 ? nearfield::detail::trailing_edge_base(model, body, base) : std::vector<int>{};
+  const int past = nearfield::detail::trailing_edge_continuation(model, body, faces, crack);
+  if (past < 0 && faces.size() > 1)
+    return {"H", fmt::format("nearfield.topology = \"H\": the body's trailing-edge base, of {} faces forming one strip "
+                             "from the root to the tip ({}), carries the wake block.\n",
+                             faces.size(), surface_labels(model, faces))};
   if (past < 0)
     return {"H", "nearfield.topology = \"H\": the body has a trailing-edge base or a sharp trailing edge for the wake block.\n"};
-  return {"C", fmt::format("nearfield.topology = \"C\": the trailing edge goes on past its root face or curve into {}, "
+  if (base >= 0)
+    return {"C", fmt::format("nearfield.topology = \"C\": the trailing edge goes on past its base ({}) into {}, which "
+                             "does not face the way the base does and goes on along the span; the H-type's wake block "
+                             "stands on base faces forming one strip from the root to the tip.\n",
+                             surface_labels(model, faces), cad::surface_label(model, past))};
+  return {"C", fmt::format("nearfield.topology = \"C\": the sharp trailing edge goes on past its root curve into {}, "
                            "which does not touch the root and goes on along the span (several spanwise faces, a crank); "
-                           "the H-type's wake block stands on one trailing-edge face or curve from the root to the tip.\n",
-                           base >= 0 ? cad::surface_label(model, past) : cad::curve_label(model, past))};
+                           "the H-type's wake block stands on one sharp trailing-edge curve from the root to the tip.\n",
+                           cad::curve_label(model, past))};
 }
 
 }  // namespace
@@ -129,28 +131,22 @@ const std::vector<std::string>& length_keys() {
 
 CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_path, const std::string& source_text) {
   const std::string backend = registry.backend_for_path(cad_path);
-  std::unique_ptr<cad::Model> model = registry.load(backend, cad::Source{cad_path, {}});
+  ModelAsRun loaded = load_model_as_run(registry, backend, cad_path);
+  const std::unique_ptr<cad::Model>& model = loaded.model;
   CadConfig out;
   pipeline::Config& c = out.config;
   c.geometry.backend = backend;
   c.geometry.source = source_text;
   std::string domain;
-  if (!surface::has_wall_with_root_loop(*model)) {
-    // The body alone (no wall sewn to it): its root plane becomes geometry.wall_plane and a box
-    // around it the far field, both built at load as `run` will. Unless a wall is there whose seam
-    // hides the root (its planar faces would be taken for root caps).
-    surface::refuse_seam_through_root(*model);
-    const std::optional<surface::RootPlane> root = surface::find_root_plane(*model);
-    if (!root) surface::detect_cad_roles(*model);  // throws, saying what is missing
-    c.geometry.wall_plane.point = rounded(root->point);
-    c.geometry.wall_plane.normal = rounded(root->normal);
+  if (loaded.root) {
+    // The body alone (no wall sewn to it): its root plane is geometry.wall_plane and a box around
+    // it the far field, both built at load as `run` will (and as the model was loaded here).
+    c.geometry.wall_plane.point = rounded(loaded.root->point);
+    c.geometry.wall_plane.normal = rounded(loaded.root->normal);
     c.geometry.farfield_shape.box_chords = kBoxChords;
-    pipeline::GeometryConfig load = c.geometry;
-    load.source = cad_path;
-    model = registry.load(backend, pipeline::cad_source(load));
     domain = fmt::format("geometry.wall_plane: {}; geometry.farfield = {{box_chords = {}}}: the file holds the body "
                          "only, so the wall and a box around the body are built at load.\n",
-                         root->why, kBoxChords);
+                         loaded.root->why, kBoxChords);
   }
   const surface::CadRoles roles = surface::detect_cad_roles(*model);
   c.geometry.units = model->units();

@@ -13,6 +13,7 @@
 #include "semimesh/io/output_set.hpp"
 #include "semimesh/mesh/compact.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/nearfield/h_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 #include "semimesh/pipeline/closed_model.hpp"
@@ -225,12 +226,21 @@ nearfield::WakeParams wake_for(const Config& config, const cad::Model& model, co
   return wake;
 }
 
+// The trailing-edge base's faces the H-type near field sweeps (the root's base and the faces going on
+// with it to the tip: nearfield::detail::trailing_edge_base); a named face off the body alone (the
+// near field refuses it).
+std::vector<int> te_base_faces(const cad::Model& model, const Roles& roles) {
+  if (!std::count(roles.body.begin(), roles.body.end(), *roles.te_base)) return {*roles.te_base};
+  return nearfield::detail::trailing_edge_base(model, {roles.body, roles.wall}, *roles.te_base);
+}
+
 // Prescribed counts on the named section (chordwise) and spanwise curves of NACA wing models.
 surface::ModelMeshOptions mesh_options(const cad::Model& model, const Config& config, const Roles& roles) {
   const SizingConfig& s = config.sizing;
   surface::ModelMeshOptions options;
-  // H-type: the trailing-edge base as structured quads, swept into the wake block.
-  if (roles.te_base) options.structured_surfaces.insert(*roles.te_base);
+  // H-type: the trailing-edge base's faces as structured quads, swept into the wake block.
+  if (roles.te_base)
+    for (int s : te_base_faces(model, roles)) options.structured_surfaces.insert(s);
   auto prescribe = [&](int segments, const char* key, std::initializer_list<const char*> names) {
     if (segments == 0) return;
     int found = 0;

@@ -1,7 +1,11 @@
 // `semimesh init`: the text it writes is read back by the config reader as the defaults, key by key.
 #include "init_command.hpp"
 
+#include "cad_info.hpp"
 #include "init_from_cad.hpp"
+#include "model_as_run.hpp"
+#include "semimesh/cad/trimmed_area.hpp"
+#include "semimesh/nearfield/detail/trailing_edge.hpp"
 #include "semimesh/backends/builtin.hpp"
 #include "semimesh/pipeline/config.hpp"
 #include "semimesh/pipeline/roles.hpp"
@@ -167,12 +171,14 @@ TEST(InitCommand, BodyOnlyFileGetsItsWallPlaneFromTheRootCap) {
   EXPECT_EQ(c.nearfield.topology, "H");
 }
 
-// The near field init writes follows the trailing edge: a one-panel wing whose base (or sharp edge)
-// runs from the root to the tip gets the H-type; a cranked wing, whose trailing edge goes on from
-// the root panel's base (or sharp curve) into the next panel's faces, gets the C-type and the face
-// named (the H-type's wake block stands on one face or curve; on the next panel's layer TetGen
-// crashed). The files are written by tests/occ/write_wing_variant.
-TEST(InitCommand, ATrailingEdgeOfSeveralFacesGetsTheCTypeNearField) {
+// The near field init writes follows the trailing edge: a wing whose base runs from the root to
+// the tip gets the H-type, whether the base is one face, split along the span into a lower and an
+// upper half (as OpenVSP writes it), one face per panel of a cranked wing, or both (the summary
+// says how many faces); a sharp edge of one curve too. A cranked sharp edge, whose trailing edge
+// goes on from the root panel's curve into the next panel's, gets the C-type and the curve named
+// (the H-type's wake block stands on one sharp curve; on the next panel's layer TetGen crashed).
+// The files are written by tests/occ/write_wing_variant.
+TEST(InitCommand, ABaseOfSeveralFacesGetsTheHTypeACrankedSharpEdgeTheCType) {
 #ifndef SEMIMESH_WRITE_WING_VARIANT
   GTEST_SKIP() << "no occ backend: write_wing_variant is not built";
 #else
@@ -183,9 +189,14 @@ TEST(InitCommand, ATrailingEdgeOfSeveralFacesGetsTheCTypeNearField) {
     const char* variant;
     const char* te;
     const char* topology;
+    const char* says;
   };
-  for (const Case& k : {Case{"capped", "blunt", "H"}, Case{"capped", "sharp", "H"}, Case{"cranked", "blunt", "C"},
-                        Case{"cranked", "sharp", "C"}}) {
+  for (const Case& k : {Case{"capped", "blunt", "H", "has a trailing-edge base"},
+                        Case{"capped", "sharp", "H", "a sharp trailing edge for the wake block"},
+                        Case{"cranked", "blunt", "H", "of 2 faces forming one strip"},
+                        Case{"split_base", "blunt", "H", "of 2 faces forming one strip"},
+                        Case{"cranked_split_base", "blunt", "H", "of 4 faces forming one strip"},
+                        Case{"cranked", "sharp", "C", "does not touch the root"}}) {
     const std::string name = std::string(k.variant) + "_" + k.te;
     const std::string step = (dir / (name + ".step")).string(), toml = (dir / (name + ".toml")).string();
     const std::string write = std::string(SEMIMESH_WRITE_WING_VARIANT) + " " + k.variant + " " + step +
@@ -196,8 +207,97 @@ TEST(InitCommand, ATrailingEdgeOfSeveralFacesGetsTheCTypeNearField) {
     EXPECT_EQ(pipeline::load_config(toml).nearfield.topology, k.topology) << name;
     std::ifstream text(toml);
     const std::string written((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(written.find("does not touch the root") != std::string::npos, std::string(k.topology) == "C") << name;
+    EXPECT_NE(written.find(k.says), std::string::npos) << name << ":\n" << written;
+    // cad-info lists the same base faces by the same ids.
+    const std::string from = "one strip from the root to the tip (", to = "), carries";
+    if (const auto at = written.find(from); at != std::string::npos) {
+      const std::string faces = written.substr(at + from.size(), written.find(to, at) - at - from.size());
+      std::ostringstream info;
+      run_cad_info(backends::default_registry(), CadInfoOptions{"", step, {}, false}, info);
+      EXPECT_NE(info.str().find("te faces  " + faces + ": "), std::string::npos) << name << ": " << faces;
+    }
   }
+  std::filesystem::remove_all(dir);
+#endif
+}
+
+// The trailing-edge base's faces (detail::trailing_edge_base) on OCC files (the analytic wing has
+// one base face and cannot be split): one face, the two halves of a base split along the span, the
+// two panels' bases of the cranked wing, the four of both; never a skin or the tip.
+TEST(TrailingEdgeBase, GathersTheFacesOfASplitOrCrankedBase) {
+#ifndef SEMIMESH_WRITE_WING_VARIANT
+  GTEST_SKIP() << "no occ backend: write_wing_variant is not built";
+#else
+  const std::filesystem::path dir = semimesh::test::temp_path("te_base_faces");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (const auto& [variant, count] : {std::pair<const char*, std::size_t>{"capped", 1}, {"split_base", 2},
+                                       {"cranked", 2}, {"cranked_split_base", 4}}) {
+    const std::string step = (dir / (std::string(variant) + ".step")).string();
+    const std::string write = std::string(SEMIMESH_WRITE_WING_VARIANT) + " " + variant + " " + step +
+                              " naca.farfield=false naca.span=1 > /dev/null 2>&1";
+    ASSERT_EQ(std::system(write.c_str()), 0) << write;
+    const ModelAsRun loaded = load_model_as_run(backends::default_registry(), "occ", step);
+    const surface::CadRoles roles = surface::detect_cad_roles(*loaded.model);
+    ASSERT_TRUE(roles.te_base) << variant;
+    const nearfield::BodyRoles body{roles.body, roles.wall};
+    const std::vector<int> faces = nearfield::detail::trailing_edge_base(*loaded.model, body, *roles.te_base);
+    EXPECT_EQ(faces.size(), count) << variant;
+    for (int s : faces) {  // narrow faces: the base's, not a skin's or the tip's
+      EXPECT_LT(cad::face_area(loaded.model->surface(s)).area, 0.02) << variant << ": " << s;
+      EXPECT_FALSE(std::count(roles.tip.begin(), roles.tip.end(), s)) << variant << ": " << s;
+    }
+    EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, body, faces, -1), -1) << variant;
+    const int other = faces.size() == 2 ? (faces[0] == *roles.te_base ? faces[1] : faces[0]) : -1;
+    if (std::string(variant) == "cranked")  // the root panel's base alone: it goes on into the other panel's
+      EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, body, {*roles.te_base}, -1), other);
+    if (std::string(variant) != "split_base") continue;
+    // Without the tip among the body's faces (as on OpenVSP's M6, whose tip is slivers at the
+    // trailing edge) both the upper skin and the other half border nothing else past the root's
+    // half: the trailing edge goes on into the other half, and that is the face named.
+    nearfield::BodyRoles no_tip = body;
+    for (int t : roles.tip) no_tip.body_surfaces.erase(std::find(no_tip.body_surfaces.begin(), no_tip.body_surfaces.end(), t));
+    EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, no_tip, {*roles.te_base}, -1), other);
+  }
+  std::filesystem::remove_all(dir);
+#endif
+}
+
+// The line of `text` that starts with `start` (empty when none).
+std::string line_starting(const std::string& text, const std::string& start) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(start, 0) == 0) return line;
+  return {};
+}
+
+// cad-info and init name every face by the id `run` uses: on a body-only file with a root cap the
+// wall and a box are built at load, which renumbers the faces; cad-info listed the file's ids before
+// (its base was surface 2, init's and run's surface 6).
+TEST(InitCommand, CadInfoAndInitNameTheBaseByTheSameId) {
+#ifndef SEMIMESH_WRITE_WING_VARIANT
+  GTEST_SKIP() << "no occ backend: write_wing_variant is not built";
+#else
+  const std::filesystem::path dir = semimesh::test::temp_path("init_cad_info_ids");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string step = (dir / "wing.step").string(), toml = (dir / "wing.toml").string();
+  const std::string write = std::string(SEMIMESH_WRITE_WING_VARIANT) + " capped " + step +
+                            " naca.farfield=false naca.span=1 > /dev/null 2>&1";
+  ASSERT_EQ(std::system(write.c_str()), 0) << write;
+  std::ostringstream info, out, err;
+  run_cad_info(backends::default_registry(), CadInfoOptions{"", step, {}, false}, info);
+  ASSERT_EQ(run_init_command({toml, false, step}, out, err), 0) << err.str();
+  std::ifstream text(toml);
+  const std::string written((std::istreambuf_iterator<char>(text)), std::istreambuf_iterator<char>());
+  const std::string base = line_starting(info.str(), "te_base   surface ");
+  ASSERT_FALSE(base.empty()) << info.str();
+  EXPECT_NE(written.find("# " + base + "\n"), std::string::npos) << "cad-info: " << base << "\ninit:\n" << written;
+  const std::string wall = line_starting(info.str(), "wall      surface ");
+  EXPECT_NE(written.find("# " + wall + "\n"), std::string::npos) << "cad-info: " << wall << "\ninit:\n" << written;
+  // The id and the name a config entry uses are cad-info's.
+  const pipeline::Config config = pipeline::load_config(toml);
+  EXPECT_NE(base.find("'" + config.wake.te_base + "'"), std::string::npos) << base << " vs " << config.wake.te_base;
   std::filesystem::remove_all(dir);
 #endif
 }

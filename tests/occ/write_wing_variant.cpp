@@ -34,6 +34,10 @@
 //              a planar tip face. naca.chord scales it; in the file's numbers as given (unit MM);
 //   cranked_mm, cranked_m  the same wing at a root chord of 1 m (naca.chord ignored): written in
 //              millimetres (numbers 1000, unit MM) and in metres (numbers 1, unit M).
+//   split_base a body-only wing of chord 1 and span 1 (naca.chord scales it; root capped as in
+//              `capped`) built as one `cranked` panel, its trailing-edge base split along the span at
+//              mid-thickness into a lower and an upper half face, as OpenVSP writes a blunt base;
+//   cranked_split_base  the cranked wing with each panel's base split so (a 2 x 2 base of faces).
 //   bezier_patches  the body with its root capped (as `capped`), every B-spline skin face rewritten
 //              as 6 x 6 Bezier patches the way OpenVSP exports a wing: knots inserted at full
 //              multiplicity (the geometry unchanged) and the patches' parameter lengths cycling
@@ -282,12 +286,16 @@ Handle(Geom_BSplineSurface) crank_panel(const Geom_BSplineSurface& unit, const C
   return new Geom_BSplineSurface(poles, u_knots, v_knots, u_mults, v_mults, unit.UDegree(), 1);
 }
 
-// The bilinear trailing-edge base between the two skins' last pole columns.
-Handle(Geom_BSplineSurface) crank_te_base(const Geom_BSplineSurface& upper, const Geom_BSplineSurface& lower) {
+// The bilinear trailing-edge base between the two skins' last pole columns, from `from` to `to`
+// across it (0: the lower skin's edge, 1: the upper's): [0, 1] whole, [0, 0.5] and [0.5, 1] its
+// lower and upper halves, split along the span at mid-thickness as OpenVSP writes a blunt base.
+Handle(Geom_BSplineSurface) crank_te_base(const Geom_BSplineSurface& upper, const Geom_BSplineSurface& lower,
+                                          double from = 0.0, double to = 1.0) {
   TColgp_Array2OfPnt poles(1, 2, 1, 2);
   for (int j = 1; j <= 2; ++j) {
-    poles.SetValue(1, j, lower.Pole(lower.NbUPoles(), j));
-    poles.SetValue(2, j, upper.Pole(upper.NbUPoles(), j));
+    const gp_XYZ a = lower.Pole(lower.NbUPoles(), j).XYZ(), b = upper.Pole(upper.NbUPoles(), j).XYZ();
+    poles.SetValue(1, j, gp_Pnt(a + from * (b - a)));
+    poles.SetValue(2, j, gp_Pnt(a + to * (b - a)));
   }
   TColStd_Array1OfReal knots(1, 2);
   TColStd_Array1OfInteger mults(1, 2);
@@ -303,7 +311,24 @@ Handle(Geom_BSplineSurface) surface_of(const TopoDS_Face& face) {
   return s;
 }
 
-TopoDS_Shape cranked(const semimesh::mock_cad::NacaWingParams& params) {
+// The straight wing of chord 1 and span 1 as one panel between two crank sections.
+const CrankSection kStraight[] = {{0.0, 0.0, 1.0, 0.0}, {1.0, 0.0, 1.0, 0.0}};
+
+// The trailing-edge base of a panel: one face, or its lower and upper halves (split_base).
+void add_te_base(BRepBuilderAPI_Sewing& sewing, const Geom_BSplineSurface& upper, const Geom_BSplineSurface& lower,
+                 bool split_base) {
+  if (!split_base) {
+    sewing.Add(BRepBuilderAPI_MakeFace(crank_te_base(upper, lower), 1e-9).Face());
+    return;
+  }
+  sewing.Add(BRepBuilderAPI_MakeFace(crank_te_base(upper, lower, 0.0, 0.5), 1e-9).Face());
+  sewing.Add(BRepBuilderAPI_MakeFace(crank_te_base(upper, lower, 0.5, 1.0), 1e-9).Face());
+}
+
+// A body-only wing of panels between `sections` (its root capped), each panel's skins and base
+// their own faces, the base split in halves with `split_base`; a planar tip face.
+TopoDS_Shape paneled(const semimesh::mock_cad::NacaWingParams& params, const CrankSection* sections, int panels,
+                     bool split_base) {
   semimesh::mock_cad::NacaWingParams unit = params;  // the section's poles at chord 1, z = 0
   unit.chord = 1;
   unit.span = 1;
@@ -314,17 +339,24 @@ TopoDS_Shape cranked(const semimesh::mock_cad::NacaWingParams& params) {
   const Handle(Geom_BSplineSurface) unit_upper = surface_of(unit_faces[0]), unit_lower = surface_of(unit_faces[1]);
   BRepBuilderAPI_Sewing sewing(1e-7 * params.chord);
   Handle(Geom_BSplineSurface) upper, lower;
-  for (int panel = 0; panel < 2; ++panel) {
-    upper = crank_panel(*unit_upper, kCrank[panel], kCrank[panel + 1], params.chord);
-    lower = crank_panel(*unit_lower, kCrank[panel], kCrank[panel + 1], params.chord);
+  for (int panel = 0; panel < panels; ++panel) {
+    upper = crank_panel(*unit_upper, sections[panel], sections[panel + 1], params.chord);
+    lower = crank_panel(*unit_lower, sections[panel], sections[panel + 1], params.chord);
     sewing.Add(BRepBuilderAPI_MakeFace(upper, 1e-9).Face());
     sewing.Add(BRepBuilderAPI_MakeFace(lower, 1e-9).Face());
-    if (!params.sharp_te) sewing.Add(BRepBuilderAPI_MakeFace(crank_te_base(*upper, *lower), 1e-9).Face());
+    if (!params.sharp_te) add_te_base(sewing, *upper, *lower, split_base);
   }
   // The tip: the outboard panel's last section, a planar face.
   BRepBuilderAPI_MakeWire outline;
   outline.Add(BRepBuilderAPI_MakeEdge(upper->VIso(1.0)).Edge());
-  if (!params.sharp_te) outline.Add(BRepBuilderAPI_MakeEdge(upper->Value(1, 1), lower->Value(1, 1)).Edge());
+  const gp_Pnt te_upper = upper->Value(1, 1), te_lower = lower->Value(1, 1);
+  const gp_Pnt te_middle(0.5 * (te_upper.XYZ() + te_lower.XYZ()));
+  if (!params.sharp_te && split_base) {
+    outline.Add(BRepBuilderAPI_MakeEdge(te_upper, te_middle).Edge());
+    outline.Add(BRepBuilderAPI_MakeEdge(te_middle, te_lower).Edge());
+  } else if (!params.sharp_te) {
+    outline.Add(BRepBuilderAPI_MakeEdge(te_upper, te_lower).Edge());
+  }
   outline.Add(BRepBuilderAPI_MakeEdge(lower->VIso(1.0)).Edge());
   if (!outline.IsDone()) throw std::runtime_error("cranked: the tip section's outline does not close");
   ShapeFix_Face tip(BRepBuilderAPI_MakeFace(outline.Wire(), /*OnlyPlane=*/true).Face());
@@ -332,6 +364,10 @@ TopoDS_Shape cranked(const semimesh::mock_cad::NacaWingParams& params) {
   sewing.Add(tip.Face());
   sewing.Perform();
   return capped(sewing.SewedShape());
+}
+
+TopoDS_Shape cranked(const semimesh::mock_cad::NacaWingParams& params, bool split_base = false) {
+  return paneled(params, kCrank, 2, split_base);
 }
 
 // A piecewise linear map of parameters: old knot values -> new ones (extended linearly past the ends).
@@ -441,11 +477,13 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_dihedral") return on_fuselage(wing, params.chord, Fuselage::Dihedral);
   if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
   if (name == "cranked") return cranked(params);
+  if (name == "cranked_split_base") return cranked(params, /*split_base=*/true);
+  if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
                               "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, cranked, cranked_mm, "
-                              "cranked_m, bezier_patches)");
+                              "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

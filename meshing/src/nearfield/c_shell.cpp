@@ -128,7 +128,7 @@ WallFrame wall_frame(const cad::Model& model, int wall_surface, const std::vecto
 // then the mesh: the layer's prisms and the junction's hexes.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface, int crack_curve, bool split_bare_corners) {
+                                   const std::set<int>& bare_surfaces, int crack_curve, bool split_bare_corners) {
   using namespace c_type;  // the steps, c_shell_steps.hpp
   detail::check_shell_params(model, roles, params);
   check_junction_params(roles, junction, wall_thickness);
@@ -144,13 +144,14 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   const RootSegments segments(body, wall);
   JunctionNodes j = place_junction_nodes(model, roles, root_surface, body, loop, segments, crack_curve, wall,
                                          delta_wing, delta_wall);
-  if (bare_surface >= 0) level_bare_strip_tops(model, wall, body, loop, bare_surface, segments.triangle_of_edge(), j.at);
+  if (!bare_surfaces.empty())
+    level_bare_strip_tops(model, wall, body, loop, bare_surfaces, segments.triangle_of_edge(), j.at);
   std::vector<CadAttachment> root_cad;
   for (int r : loop) root_cad.push_back(body.cad[r]);
   const auto [strip, tip] = lift_onto_strip(model, wall, loop, j.at, delta_wall, body);
 
   // The wing layer on the lifted mesh, its offsets meeting the halos at the strip tops.
-  const WingLayer layer = wing_layer(model, body, loop, bare_surface, crack_curve);
+  const WingLayer layer = wing_layer(model, body, loop, bare_surfaces, crack_curve);
   const LayerStart start = pin_layer_at_the_halos(layer, body, loop, j, params);
   const detail::LayerOffsets offsets =
       offsets_meeting_the_halo(model, layer.cracked.layer, layer.neighbours, start.normals, start.constraints, params,
@@ -159,9 +160,9 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   JunctionShell shell;
   shell.field.warnings = offsets.warnings;
   shell.field.mesh.reserve(ho::Shape::Prism, body.triangles.size() + loop.size());
-  add_wing_layer(body, layer, offsets, bare_surface, shell);
+  add_wing_layer(body, layer, offsets, bare_surfaces, shell);
   add_junction_wall_nodes(loop, root_cad, j, shell);
-  if (split_bare_corners && bare_surface >= 0) split_bare_root_corners(loop, bare_surface, segments, shell);
+  if (split_bare_corners && !bare_surfaces.empty()) split_bare_root_corners(loop, bare_surfaces, segments, shell);
   add_junction_hexes(model, body, loop, j, start.fan_layer, delta_wing, delta_wall, shell);
   record_thickness_range(offsets, layer.neighbours, params.thickness, shell.field);
   shell.body = std::move(body);
@@ -184,7 +185,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
 NearField build_c_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                         const ShellParams& params, const JunctionParams& junction, double wall_thickness) {
   detail::JunctionShell shell =
-      detail::build_junction_shell(model, meshes, roles, params, junction, wall_thickness, /*bare_surface=*/-1,
+      detail::build_junction_shell(model, meshes, roles, params, junction, wall_thickness, /*bare_surfaces=*/{},
                                    /*crack_curve=*/-1);
   NearField& field = shell.field;
   for (std::size_t i = 0; i < shell.chain.size(); ++i) {

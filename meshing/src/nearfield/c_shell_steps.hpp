@@ -11,6 +11,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -62,14 +63,14 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
                                    const std::vector<int>& loop, const RootSegments& segments, int crack_curve,
                                    const Frame& wall, double delta_wing, double delta_wall);
 
-// The strip tops along a bare surface's root (the H-type's trailing-edge base) raised to one height,
+// The strip tops along the bare surfaces' root (the H-type's trailing-edge base) raised to one height,
 // the highest of them. Nothing stands on that root row but the junction, whose W-H faces there face
 // the far field and carry pyramids: on a swept, cambered base the two corners' strip tops (the
 // halos projected onto the trailing-edge curves) differ in height by several times the base's
 // thickness, which twists those quads until no pyramid apex is valid above them (a NACA 2412 swept
 // 28.6 degrees: the short edge of the quad stood at 60 degrees to the long one).
 void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const BodyMesh& body,
-                           const std::vector<int>& loop, int bare_surface,
+                           const std::vector<int>& loop, const std::set<int>& bare_surfaces,
                            const std::map<std::pair<int, int>, int>& triangle_of_edge,
                            std::vector<JunctionNode>& nodes);
 
@@ -107,8 +108,8 @@ struct WingLayer {
 };
 
 /// The wing layer on `body` (WingLayer): the bare triangles left out, cracked along `crack_curve`.
-WingLayer wing_layer(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop, int bare_surface,
-                     int crack_curve);
+WingLayer wing_layer(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop,
+                     const std::set<int>& bare_surfaces, int crack_curve);
 
 // Where the layer's offsets start from and which stay: node normals ([layer nodes]); isolated nodes
 // pinned where they are, the strip tops (and the fan node's two layer nodes) pinned at their halos,
@@ -134,20 +135,21 @@ detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const Bod
 
 // The wing layer's prisms (region wing_layer): body node i is mesh node i, layer node i's offset
 // mesh node i + offset; each prism's body face a wing boundary face, its outer face skin. The
-// bare triangles off the bare surface are listed (the crack's ends).
-void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::LayerOffsets& offsets, int bare_surface,
-                    detail::JunctionShell& shell);
+// bare triangles off the bare surfaces are listed (the crack's ends).
+void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::LayerOffsets& offsets,
+                    const std::set<int>& bare_surfaces, detail::JunctionShell& shell);
 
 // The junction's wall nodes: the root R and the wall foot L of every root node, and the fan node's
 // second foot (side 1).
 void add_junction_wall_nodes(const std::vector<int>& loop, const std::vector<CadAttachment>& root_cad,
                              const JunctionNodes& j, detail::JunctionShell& shell);
 
-// output.target = "pyfr": the bare surface's root corners (JunctionShell::corners), where one root
-// segment is on the bare surface and the other is not; each corner's bare side gets a copy of the
-// wall foot and of the halo (the strip top's layer node), at the same places.
-void split_bare_root_corners(const std::vector<int>& loop, int bare_surface, const RootSegments& segments,
-                             detail::JunctionShell& shell);
+// output.target = "pyfr": the bare surfaces' root corners (JunctionShell::corners), where one root
+// segment is on a bare surface and the other is not (not where two bare faces meet); each corner's
+// bare side gets a copy of the wall foot and of the halo (the strip top's layer node), at the same
+// places.
+void split_bare_root_corners(const std::vector<int>& loop, const std::set<int>& bare_surfaces,
+                             const RootSegments& segments, detail::JunctionShell& shell);
 
 // Junction hexes R_a R_b W_b W_a L_a L_b H_b H_a on every root segment (region junction, stacks
 // of both families); a -> b along the loop or against it, whichever gives a positive volume. At

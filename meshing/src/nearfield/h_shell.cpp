@@ -36,6 +36,10 @@ int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const V
 
 namespace {
 
+// Faces whose longest curve, and curves, under this share of the base's longest curve or the
+// crack's length are slivers, not panels (the ONERA M6's tip faces at its trailing edge).
+constexpr double kSliver = 0.1;
+
 bool is_body(const BodyRoles& roles, int s) {
   return std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), s) > 0;
 }
@@ -63,19 +67,75 @@ bool borders_any(const cad::Model& model, const BodyRoles& roles, int s, const s
   return false;
 }
 
+// The face's outward normal averaged over a grid of its points (its middle's when the grid misses
+// the trimmed face).
+Vec3 mean_normal(const cad::Surface& face) {
+  constexpr int kGrid = 5;
+  const auto box = face.bounds();
+  Vec3 sum = Vec3::Zero();
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const cad::Vec2 uv(box[0].lo + box[0].length() * (i + 0.5) / kGrid, box[1].lo + box[1].length() * (j + 0.5) / kGrid);
+      if (face.contains(uv)) sum += face.normal(uv);
+    }
+  if (!(sum.norm() > 0.0)) sum = face.normal(cad::Vec2(box[0].lo + 0.5 * box[0].length(), box[1].lo + 0.5 * box[1].length()));
+  return sum.normalized();
+}
+
+// Whether face n goes on with the base face s: no sliver, and facing the same way (their mean normals
+// within 45 degrees). A base's skins face across the stream and its tip along the span, at ~90
+// degrees; its other half, or the next panel's base past a crank, downstream as it does.
+bool continues_base(const cad::Model& model, int s, int n) {
+  constexpr double kSameWay = 0.7071;  // cos 45 degrees
+  return longest_curve(model, n) > kSliver * longest_curve(model, s) &&
+         mean_normal(model.surface(s)).dot(mean_normal(model.surface(n))) > kSameWay;
+}
+
+// How nearly face n faces the way the base faces it borders do: the largest cosine between their
+// mean normals.
+double alignment_with_base(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base, int n) {
+  const std::set<int> around = body_neighbours(model, roles, n);
+  double best = -1.0;
+  for (int s : base)
+    if (around.count(s)) best = std::max(best, mean_normal(model.surface(s)).dot(mean_normal(model.surface(n))));
+  return best;
+}
+
 }  // namespace
 
-int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack) {
-  constexpr double kSliver = 0.1;  // of the base's or crack's length: smaller faces and curves are slivers
-  if (base >= 0) {
-    const std::set<int> around = body_neighbours(model, roles, base);
-    const double span = longest_curve(model, base);
+std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& roles, int root_face) {
+  std::set<int> faces{root_face};
+  std::vector<int> todo{root_face};
+  while (!todo.empty()) {
+    const int s = todo.back();
+    todo.pop_back();
+    for (int n : body_neighbours(model, roles, s))
+      if (!faces.count(n) && continues_base(model, s, n)) faces.insert(n), todo.push_back(n);
+  }
+  return {faces.begin(), faces.end()};
+}
+
+int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base,
+                               int crack) {
+  if (!base.empty()) {
+    std::set<int> around;
+    double span = 0.0;
+    for (int s : base) {
+      for (int n : body_neighbours(model, roles, s))
+        if (!std::count(base.begin(), base.end(), n)) around.insert(n);
+      span = std::max(span, longest_curve(model, s));
+    }
+    // Of several candidates (a tip of slivers leaves both a skin and a base's other half bordering
+    // nothing else), the one facing most nearly as the base: where the trailing edge goes on.
+    int next = -1;
+    double next_alignment = -2.0;
     for (int n : around) {
       std::set<int> others = around;
       others.erase(n);
-      if (!borders_any(model, roles, n, others) && longest_curve(model, n) > kSliver * span) return n;
+      if (borders_any(model, roles, n, others) || !(longest_curve(model, n) > kSliver * span)) continue;
+      if (const double a = alignment_with_base(model, roles, base, n); a > next_alignment) next = n, next_alignment = a;
     }
-    return -1;
+    return next;
   }
   if (crack < 0) return -1;
   std::set<int> sides;
@@ -155,6 +215,7 @@ TrailingEdge find_trailing_edge(const cad::Model& model, const surface::SurfaceM
   const bool blunt = found && std::count(roles.body_surfaces.begin(), roles.body_surfaces.end(), *found) > 0;
   TrailingEdge te;
   te.base = blunt ? *found : -1;
+  if (blunt) te.faces = detail::trailing_edge_base(model, roles, te.base);
   te.crack = !blunt && wake.te_base == "auto" ? detail::sharp_trailing_edge(model, roles, d) : -1;
   if (!blunt && te.crack < 0)
     fail("wake.te_base = \"" + wake.te_base +
@@ -162,34 +223,42 @@ TrailingEdge find_trailing_edge(const cad::Model& model, const surface::SurfaceM
          (wake.te_base == "auto" ? " and no sharp trailing edge (a curve between two body surfaces leaving the wall)"
                                  : "") +
          "; the H-type near field sweeps the wake from the trailing edge");
-  if (const int next = detail::trailing_edge_continuation(model, roles, te.base, te.crack); next >= 0)
+  if (const int next = detail::trailing_edge_continuation(model, roles, te.faces, te.crack); next >= 0)
     fail("the trailing edge goes on past " +
-         (blunt ? surface_label(model, te.base) + " into " + surface_label(model, next)
+         (blunt ? "the base " + surfaces_label(model, te.faces) + " into " + surface_label(model, next) +
+                      ", which does not face the way the base does (mean normals more than 45 degrees apart): the "
+                      "H-type's wake block stands on base faces forming one strip from the root to the tip"
                 : "curve " + std::to_string(te.crack) + " ('" + model.curve(te.crack).name() + "') into curve " +
-                      std::to_string(next) + " ('" + model.curve(next).name() + "')") +
-         " (several spanwise faces, a crank): the H-type's wake block stands on one trailing-edge face or curve from "
-         "the root to the tip; set nearfield.topology = \"C\"");
-  if (blunt) {
-    te.flat = detail::flat_base_corners(model, te.base);
-    const surface::SurfaceMesh& base_mesh = meshes.surfaces.at(te.base);
+                      std::to_string(next) + " ('" + model.curve(next).name() +
+                      "') (several spanwise faces, a crank): the H-type's wake block stands on one sharp "
+                      "trailing-edge curve from the root to the tip") +
+         "; set nearfield.topology = \"C\"");
+  for (int s : te.faces) {
+    const std::set<int> flat = detail::flat_base_corners(model, s);
+    te.flat.insert(flat.begin(), flat.end());
+    const surface::SurfaceMesh& base_mesh = meshes.surfaces.at(s);
     if (base_mesh.quads.empty() || !base_mesh.triangles.empty())
-      fail("the trailing-edge base " + surface_label(model, te.base) + " must be meshed with structured quads only");
+      fail("the trailing-edge base " + surface_label(model, s) + " must be meshed with structured quads only");
   }
   return te;
 }
 
-// The surface meshes with the base's quads as triangle pairs (q0 q1 q2, q0 q2 q3), so the junction
-// machinery sees one triangulated body; quad i becomes triangles 2i and 2i + 1 of the base. A quad
-// at a flat corner is turned to start there, so its diagonal leaves the corner and halves its angle.
-surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, int te, const std::set<int>& flat) {
+// The surface meshes with the base faces' quads as triangle pairs (q0 q1 q2, q0 q2 q3), so the
+// junction machinery sees one triangulated body; quad i of a face becomes its triangles 2i and
+// 2i + 1. A quad at a flat corner is turned to start there, so its diagonal leaves the corner and
+// halves its angle.
+surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, const std::vector<int>& faces,
+                                         const std::set<int>& flat) {
   surface::SurfaceMeshes out = meshes;
-  surface::SurfaceMesh& m = out.surfaces.at(te);
-  for (auto q : m.quads) {
-    for (int k = 0; k < 4 && !flat.count(m.origin[q[0]].vertex); ++k) std::rotate(q.begin(), q.begin() + 1, q.end());
-    m.triangles.push_back({q[0], q[1], q[2]});
-    m.triangles.push_back({q[0], q[2], q[3]});
+  for (int face : faces) {
+    surface::SurfaceMesh& m = out.surfaces.at(face);
+    for (auto q : m.quads) {
+      for (int k = 0; k < 4 && !flat.count(m.origin[q[0]].vertex); ++k) std::rotate(q.begin(), q.begin() + 1, q.end());
+      m.triangles.push_back({q[0], q[1], q[2]});
+      m.triangles.push_back({q[0], q[2], q[3]});
+    }
+    m.quads.clear();
   }
-  m.quads.clear();
   return out;
 }
 
@@ -199,8 +268,9 @@ surface::SurfaceMeshes base_as_triangles(const surface::SurfaceMeshes& meshes, i
 detail::JunctionShell junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes,
                                      const BodyRoles& roles, const ShellParams& params, const JunctionParams& junction,
                                      double wall_thickness, const TrailingEdge& te, bool for_pyfr) {
-  return detail::build_junction_shell(model, te.base >= 0 ? base_as_triangles(meshes, te.base, te.flat) : meshes, roles,
-                                      params, junction, wall_thickness, te.base, te.crack, for_pyfr);
+  return detail::build_junction_shell(model, te.base >= 0 ? base_as_triangles(meshes, te.faces, te.flat) : meshes, roles,
+                                      params, junction, wall_thickness, {te.faces.begin(), te.faces.end()}, te.crack,
+                                      for_pyfr);
 }
 
 // The footprint (wall feet) and its tops (strip tops' offsets, the halos) along the root loop, the
@@ -222,19 +292,21 @@ void record_footprint(const detail::JunctionShell& js, const FanLegs& fan, NearF
   }
 }
 
-// The base's quads (body node ids, lifted), rebuilt from the triangle pairs of base_as_triangles;
-// none for a sharp trailing edge.
-std::vector<Quad> base_quads(const detail::JunctionShell& js, int base) {
-  std::vector<Quad> quads;
+// The base's quads (body node ids, lifted) and their faces, rebuilt from the triangle pairs of
+// base_as_triangles (each face's pairs consecutive); none for a sharp trailing edge.
+std::vector<BaseQuad> base_quads(const detail::JunctionShell& js, const std::vector<int>& faces) {
+  std::vector<BaseQuad> quads;
   std::vector<std::array<int, 3>> pair;
   for (std::size_t t = 0; t < js.body.triangles.size(); ++t) {
-    if (js.body.triangle_surface[t] != base) continue;
+    const int face = js.body.triangle_surface[t];
+    if (!std::count(faces.begin(), faces.end(), face)) continue;
     const auto& v = js.body.triangles[t];
     if (pair.empty()) {
       pair.push_back(v);
     } else {
-      quads.push_back({static_cast<NodeId>(pair[0][0]), static_cast<NodeId>(pair[0][1]),
-                       static_cast<NodeId>(pair[0][2]), static_cast<NodeId>(v[2])});
+      quads.push_back({{static_cast<NodeId>(pair[0][0]), static_cast<NodeId>(pair[0][1]),
+                        static_cast<NodeId>(pair[0][2]), static_cast<NodeId>(v[2])},
+                       face});
       pair.clear();
     }
   }
@@ -242,9 +314,9 @@ std::vector<Quad> base_quads(const detail::JunctionShell& js, int base) {
 }
 
 // The trailing-edge nodes: the base's, or the sharp trailing edge's inner ones.
-std::vector<NodeId> trailing_edge_nodes(const detail::JunctionShell& js, const std::vector<Quad>& base) {
+std::vector<NodeId> trailing_edge_nodes(const detail::JunctionShell& js, const std::vector<BaseQuad>& base) {
   std::vector<NodeId> nodes;
-  for (const auto& q : base) nodes.insert(nodes.end(), q.begin(), q.end());
+  for (const auto& b : base) nodes.insert(nodes.end(), b.q.begin(), b.q.end());
   for (int v = 0; v < js.body.num_nodes(); ++v)
     if (js.crack[v]) nodes.push_back(static_cast<NodeId>(v));
   return nodes;
@@ -265,7 +337,7 @@ const params::Table<WakeParams>& wake_keys() {
       params::real("gap", &WakeParams::gap, "> 0", "H: height of the wake block's root above the wall layer's top"),
       params::real("ratio_end", &WakeParams::ratio_end, ">= 1",
                    "H: the layer ratio at the wake's far end (r at the trailing edge, linear in between)"),
-      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface, by name or \"#id\"; \"auto\": the narrow body face at the root's downstream end, or a sharp trailing edge"),
+      params::string("te_base", &WakeParams::te_base, "non-empty", "H: the squared-off trailing edge's surface on the root, by name or \"#id\" (the body faces continuing it to the tip, facing within 45 degrees of it, join it); \"auto\": the narrow body face at the root's downstream end, or a sharp trailing edge"),
   };
   return table;
 }
@@ -292,7 +364,7 @@ NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& m
   const FanLegs fan = add_fan_middle_leg(model, roles.wall_surface, js);
   record_footprint(js, fan, field);
 
-  const std::vector<Quad> base = base_quads(js, te.base);
+  const std::vector<BaseQuad> base = base_quads(js, te.faces);
   const CutRow cut = wake_cut_row(js, trailing_edge_nodes(js, base), wall_thickness, wake);
   const WakeSections sections = wake_sections(js, te, base, cut);
   const double tolerance = std::max(model.tolerance(), 1e-9 * model.bbox().diagonal());

@@ -37,9 +37,16 @@ bool element_valid(const mesh::Mesh& m, ho::Shape shape, const std::vector<NodeI
 // The trailing edge the wake is swept from: squared-off (its base surface, meshed with structured
 // quads) or, with te_base "auto" and no base found, sharp (a curve between two body surfaces).
 struct TrailingEdge {
-  int base = -1;       ///< the base surface; -1: sharp
-  int crack = -1;      ///< the sharp edge's curve; -1: blunt
-  std::set<int> flat;  ///< the base's flat corners (CAD vertices): swept as prisms
+  int base = -1;           ///< the base surface on the root; -1: sharp
+  std::vector<int> faces;  ///< the base's faces (detail::trailing_edge_base), ascending; empty: sharp
+  int crack = -1;          ///< the sharp edge's curve; -1: blunt
+  std::set<int> flat;      ///< the base faces' flat corners (CAD vertices): swept as prisms
+};
+
+// A quad of the base's mesh and the base face it lies on.
+struct BaseQuad {
+  Quad q;
+  int surface = -1;
 };
 
 // A sharp trailing edge's root (js.fan): its three legs, side 0, middle and side 1 (feet on the
@@ -72,6 +79,7 @@ struct Section {
   std::array<NodeId, 4> q;
   bool layer = false;
   bool triangle = false;  ///< a base triangle (q[3] unused): swept into a prism
+  int surface = -1;       ///< a base piece's base face; -1: a rear interface
 };
 
 struct WakeSections {
@@ -81,7 +89,7 @@ struct WakeSections {
 
 /// The base quads above the cut (a flat corner's as two triangles), then the rear interfaces above
 /// it; the base quads below it exposed. Throws NearFieldError when nothing is swept.
-WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<Quad>& base,
+WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<BaseQuad>& base,
                            const CutRow& cut);
 
 // wake.to_outlet (output.target = "pyfr"): the far field's downstream face, the box's face across
@@ -136,7 +144,7 @@ class WakeSweep {
 // The wake block's elements, station by station behind each section (hexes; prisms behind a flat
 // corner's triangles), turned to sweep along d; the base's pieces faced as wing boundary. Hexes
 // over rear interfaces continue their wing layer (a stack of the wing family); the base's are not
-// split.
+// split. Each element's body surface: its base piece's face, else `base` (the root's base face).
 /// Returns the block's outflow faces when it runs to the far field's downstream face
 /// (wake.to_outlet), made "farfield" boundary faces, wound out of the domain; empty otherwise.
 std::vector<std::vector<NodeId>> add_wake_elements(NearField& field, WakeSweep& sweep,

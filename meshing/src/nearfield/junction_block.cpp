@@ -222,11 +222,11 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
 }
 
 void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const BodyMesh& body,
-                           const std::vector<int>& loop, int bare_surface,
+                           const std::vector<int>& loop, const std::set<int>& bare_surfaces,
                            const std::map<std::pair<int, int>, int>& triangle_of_edge,
                            std::vector<JunctionNode>& nodes) {
   const int n = static_cast<int>(loop.size());
-  auto on_bare = [&](int a, int b) { return body.triangle_surface[triangle_of_edge.at({a, b})] == bare_surface; };
+  auto on_bare = [&](int a, int b) { return bare_surfaces.count(body.triangle_surface[triangle_of_edge.at({a, b})]) > 0; };
   std::vector<int> base;
   double level = -1e300;
   for (int i = 0; i < n; ++i)
@@ -239,8 +239,8 @@ void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const Bod
     j.strip_top = detail::move_to_height(model, wall, j.strip_top, j.strip_top_cad, level);
     if (!(std::abs(wall.height(j.strip_top) - level) <= 1e-6 * level))
       throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
-                           surface_label(model, bare_surface) + " cannot reach the height " + number_label(level) +
-                           " of its neighbours on that surface");
+                           surfaces_label(model, bare_surfaces) + " cannot reach the height " + number_label(level) +
+                           " of its neighbours on the trailing-edge base");
   }
 }
 
@@ -256,13 +256,13 @@ void add_junction_wall_nodes(const std::vector<int>& loop, const std::vector<Cad
   if (j.fan >= 0) shell.fan.foot = {shell.foot_id[j.fan], m.add_node(j.fan_side1.wall_foot, j.fan_side1.wall_foot_cad)};
 }
 
-void split_bare_root_corners(const std::vector<int>& loop, int bare_surface, const RootSegments& segments,
-                             detail::JunctionShell& shell) {
+void split_bare_root_corners(const std::vector<int>& loop, const std::set<int>& bare_surfaces,
+                             const RootSegments& segments, detail::JunctionShell& shell) {
   mesh::Mesh& m = shell.field.mesh;
   const int n = static_cast<int>(loop.size());
   for (int i = 0; i < n; ++i) {
-    const std::array<bool, 2> on_bare{segments.surface(loop[(i + n - 1) % n], loop[i]) == bare_surface,
-                                      segments.surface(loop[i], loop[(i + 1) % n]) == bare_surface};
+    const std::array<bool, 2> on_bare{bare_surfaces.count(segments.surface(loop[(i + n - 1) % n], loop[i])) > 0,
+                                      bare_surfaces.count(segments.surface(loop[i], loop[(i + 1) % n])) > 0};
     if (on_bare[0] == on_bare[1]) continue;
     detail::JunctionShell::Corner c;
     c.index = i;

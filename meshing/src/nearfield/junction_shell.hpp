@@ -10,6 +10,7 @@
 #include "semimesh/nearfield/near_field.hpp"
 
 #include <array>
+#include <set>
 #include <vector>
 
 namespace semimesh::nearfield::detail {
@@ -78,17 +79,17 @@ struct JunctionShell {
 };
 
 /// The wing layer and junction on `roles.body_surfaces` (as build_c_shell), no prisms on the
-/// triangles of `bare_surface` (-1: none), whose nodes off the other surfaces get no offset and do
-/// not count in the thickness figures. Along `crack_curve` (-1: none; a sharp trailing edge) the
+/// triangles of `bare_surfaces` (none: empty; the trailing-edge base's faces), whose nodes off the
+/// other surfaces get no offset and do not count in the thickness figures. Along `crack_curve` (-1: none; a sharp trailing edge) the
 /// layer is cracked open: the curve's inner nodes get one offset per side, each along its own
 /// side's normal, so the layer ends there with two rear interfaces; the triangles touching the
 /// curve's tip end stay bare (JunctionShell::bare), so the crack ends on the layer's edge instead of
 /// closing to a zero-angle wedge; at its root the junction gets two halos (JunctionShell::fan).
-/// With `split_bare_corners` the bare surface's root corners get two halos too, both where the
+/// With `split_bare_corners` the bare surfaces' root corners get two halos too, both where the
 /// one would be (JunctionShell::corners). Throws NearFieldError.
 JunctionShell build_junction_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,
                                    const ShellParams& params, const JunctionParams& junction, double wall_thickness,
-                                   int bare_surface, int crack_curve, bool split_bare_corners = false);
+                                   const std::set<int>& bare_surfaces, int crack_curve, bool split_bare_corners = false);
 
 /// x moved along its CAD entity (a surface or curve) to `target` height above the wall, along the
 /// entity's steepest ascent; updates the attachment.

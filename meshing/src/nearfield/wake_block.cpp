@@ -50,22 +50,22 @@ namespace {
 
 // The base quads above the cut as sections; a quad at a flat corner as two triangles split from
 // the corner (a hex there would have a vanishing Jacobian at the corner once curved).
-void add_base_sections(const mesh::Mesh& m, const std::vector<Quad>& base, const std::set<int>& flat, const CutRow& cut,
-                       WakeSections& out) {
+void add_base_sections(const mesh::Mesh& m, const std::vector<BaseQuad>& base, const std::set<int>& flat,
+                       const CutRow& cut, WakeSections& out) {
   auto at_flat_corner = [&](const Quad& q) {
     return std::any_of(q.begin(), q.end(), [&](NodeId v) {
       const mesh::CadAttachment& a = m.cad_attachment(v);
       return a.kind == mesh::CadAttachment::Vertex && flat.count(a.entity) > 0;
     });
   };
-  for (const auto& q : base) {
+  for (const auto& [q, face] : base) {
     if (!std::all_of(q.begin(), q.end(), [&](NodeId v) { return cut.above(m.node(v)); })) {
       out.exposed_base.push_back(q);
     } else if (at_flat_corner(q)) {  // q starts at its flat corner (base_as_triangles)
-      out.swept.push_back({{q[0], q[1], q[2], mesh::kNoNode}, false, true});
-      out.swept.push_back({{q[0], q[2], q[3], mesh::kNoNode}, false, true});
+      out.swept.push_back({{q[0], q[1], q[2], mesh::kNoNode}, false, true, face});
+      out.swept.push_back({{q[0], q[2], q[3], mesh::kNoNode}, false, true, face});
     } else {
-      out.swept.push_back({q, false});
+      out.swept.push_back({q, false, false, face});
     }
   }
 }
@@ -102,7 +102,7 @@ CutRow wake_cut_row(const detail::JunctionShell& js, const std::vector<NodeId>& 
   return cut;
 }
 
-WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<Quad>& base,
+WakeSections wake_sections(const detail::JunctionShell& js, const TrailingEdge& te, const std::vector<BaseQuad>& base,
                            const CutRow& cut) {
   WakeSections sections;
   add_base_sections(js.field.mesh, base, te.flat, cut, sections);
@@ -204,7 +204,7 @@ std::vector<std::vector<NodeId>> add_wake_elements(NearField& field, WakeSweep& 
              " would be inverted (the block folds); use a smaller widening or a direction closer to the chord");
       m.add_element(shape, h, wake_region);
       if (c.layer) field.stacks.push_back({field.element_surface.size(), {LayerDirection{axis, LayerFamily::Wing}}});
-      field.element_surface.push_back(base);  // -1 for a sharp trailing edge: no base
+      field.element_surface.push_back(c.surface >= 0 ? c.surface : base);  // -1 for a sharp trailing edge: no base
       ++field.wake.hexes;
       if (sweep.to_outlet() && k + 2 == sweep.stations()) {  // the downstream face, wound along d: out of the domain
         outflow.emplace_back(h.begin() + corners, h.end());

@@ -45,14 +45,14 @@ CrackNodes crack_nodes(const cad::Model& model, const BodyMesh& body, int curve,
 // layer does. The end's other triangles (the tip's) keep their prisms: a rounded tip's small faces
 // there are curved, and a tet standing on one bare in the layer's pit folded when curved (the
 // ONERA M6's tip slivers, 0.5 mm wide, at order 2 and 4).
-std::vector<char> bare_triangles(const cad::Model& model, const BodyMesh& body, int bare_surface, int crack_curve,
-                                 const CrackNodes& crack) {
+std::vector<char> bare_triangles(const cad::Model& model, const BodyMesh& body, const std::set<int>& bare_surfaces,
+                                 int crack_curve, const CrackNodes& crack) {
   std::set<int> sides;
   if (crack_curve >= 0)
     for (const cad::SurfaceUse& u : model.surfaces_of_curve(crack_curve)) sides.insert(u.surface);
   std::vector<char> bare(body.triangles.size(), 0);
   for (std::size_t t = 0; t < body.triangles.size(); ++t) {
-    bare[t] = body.triangle_surface[t] == bare_surface;
+    bare[t] = bare_surfaces.count(body.triangle_surface[t]) > 0;
     if (sides.count(body.triangle_surface[t]))
       for (int v : body.triangles[t]) bare[t] |= crack.end[v];
   }
@@ -111,11 +111,11 @@ std::array<int, 2> fan_layer_nodes(const WingLayer& w, const BodyMesh& body, con
 
 }  // namespace
 
-WingLayer wing_layer(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop, int bare_surface,
-                     int crack_curve) {
+WingLayer wing_layer(const cad::Model& model, const BodyMesh& body, const std::vector<int>& loop,
+                     const std::set<int>& bare_surfaces, int crack_curve) {
   WingLayer w;
   w.crack = crack_nodes(model, body, crack_curve, loop);
-  w.bare = bare_triangles(model, body, bare_surface, crack_curve, w.crack);
+  w.bare = bare_triangles(model, body, bare_surfaces, crack_curve, w.crack);
   w.cracked = crack_open(without_bare(body, w.bare), w.crack);
   w.neighbours = node_neighbours(w.cracked.layer);
   const int count = body.num_nodes();
@@ -181,8 +181,8 @@ detail::LayerOffsets offsets_meeting_the_halo(const cad::Model& model, const Bod
   }
 }
 
-void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::LayerOffsets& offsets, int bare_surface,
-                    detail::JunctionShell& shell) {
+void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::LayerOffsets& offsets,
+                    const std::set<int>& bare_surfaces, detail::JunctionShell& shell) {
   NearField& field = shell.field;
   mesh::Mesh& m = field.mesh;
   const BodyMesh& layer = w.cracked.layer;
@@ -205,7 +205,7 @@ void add_wing_layer(const BodyMesh& body, const WingLayer& w, const detail::Laye
     field.skin.push_back({{id(l[0]) + offset, id(l[1]) + offset, id(l[2]) + offset, mesh::kNoNode}, 3});
   }
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
-    if (w.bare[t] && body.triangle_surface[t] != bare_surface) shell.bare.push_back(body.triangles[t]);
+    if (w.bare[t] && !bare_surfaces.count(body.triangle_surface[t])) shell.bare.push_back(body.triangles[t]);
   shell.offset = offset;
 }
 

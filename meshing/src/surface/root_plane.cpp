@@ -125,9 +125,10 @@ std::optional<RootPlane> plane_of_free_loop(const cad::Model& model) {
   const Candidate best = *std::min_element(candidates.begin(), candidates.end(), before);
   RootPlane out = best.plane;
   const std::vector<int>& loop = loops[best.loop];
+  // No curve id: the file's ids are not those of the model built around the body at load.
   out.why = fmt::format("the plane of the body's open root: of its {} open loop(s) of free curves, each in a plane, the "
-                        "longest or nearest the origin of equal ones ({} curve(s): curve {} ...)",
-                        loops.size(), loop.size(), loop.front());
+                        "longest or nearest the origin of equal ones ({} curve(s))",
+                        loops.size(), loop.size());
   return out;
 }
 
@@ -135,7 +136,6 @@ std::optional<RootPlane> plane_of_free_loop(const cad::Model& model) {
 std::optional<RootPlane> plane_of_cap(const cad::Model& model) {
   const double tolerance = flatness_tolerance(model);
   struct Cap {
-    int surface;
     double area;
     RootPlane plane;
   };
@@ -149,7 +149,7 @@ std::optional<RootPlane> plane_of_cap(const cad::Model& model) {
     const cad::Vec3 point = surface.point(mid), n = surface.normal(mid);
     const bool above = body_on_one_side(model, point, n, tolerance);
     if (!above && !body_on_one_side(model, point, -n, tolerance)) continue;
-    caps.push_back({s, surface.exact_area().value_or(0.0), {point, above ? n : cad::Vec3(-n), ""}});
+    caps.push_back({surface.exact_area().value_or(0.0), {point, above ? n : cad::Vec3(-n), ""}});
   }
   if (caps.empty()) return std::nullopt;
   const auto before = [](const Cap& a, const Cap& b) {
@@ -159,9 +159,11 @@ std::optional<RootPlane> plane_of_cap(const cad::Model& model) {
   };
   const Cap best = *std::min_element(caps.begin(), caps.end(), before);
   RootPlane out = best.plane;
-  out.why = fmt::format("the plane of surface {} ('{}'): of the body's {} planar cap(s) (faces with all of the body on "
-                        "one side) the largest, or nearest the origin of equal ones",
-                        best.surface, model.surface(best.surface).name(), caps.size());
+  // No face id: the file's ids are not those of the model built around the body at load, where
+  // the wall takes the cap's place.
+  out.why = fmt::format("the plane of the body's root cap: of its {} planar cap(s) (faces with all of the body on one "
+                        "side) the largest, or nearest the origin of equal ones, of area {:.6g}",
+                        caps.size(), best.area);
   return out;
 }
 

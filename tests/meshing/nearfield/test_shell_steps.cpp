@@ -99,7 +99,7 @@ TEST(TrailingEdgeContinuation, NoneOnAOnePanelWing) {
       for (const std::string name : {"upper", "lower", "te_base", "tip"})
         if (auto s = model->find_surface(name)) roles.body_surfaces.push_back(*s);
       roles.wall_surface = *model->find_surface("wall");
-      const int base = sharp ? -1 : *model->find_surface("te_base");
+      const std::vector<int> base = sharp ? std::vector<int>{} : std::vector<int>{*model->find_surface("te_base")};
       const int crack = sharp ? curve_named(*model, "trailing_edge") : -1;
       EXPECT_EQ(detail::trailing_edge_continuation(*model, roles, base, crack), -1)
           << "sharp " << sharp << " round " << round;

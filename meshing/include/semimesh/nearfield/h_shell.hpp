@@ -4,7 +4,9 @@
 //
 // Construction:
 //  - the C-type wing layer and root junction (c_shell.hpp) with the trailing-edge base bare: the base
-//    (meshed with structured quads) is lifted and carries junction hexes along its root like the
+//    (one face, or several forming one strip from the root to the tip: detail::trailing_edge_base,
+//    e.g. a lower and an upper half, or one per panel of a cranked wing; each meshed with
+//    structured quads, conforming across their shared curves) is lifted and carries junction hexes along its root like the
 //    rest of the wing, but no prisms; the upper and lower layers end at the trailing edge with
 //    their own normals (no rounding around it). Each has a rear interface, the quads (a, b, b', a')
 //    over its trailing-edge edges a-b up to its outer edge a'-b' (the tip's layer likewise over the
@@ -92,11 +94,12 @@ const params::Table<WakeParams>& wake_keys();
 /// is at x, given the wake block (for the ratio along it). Empty: the layer is not split.
 using LayerFractions = std::function<std::vector<double>(const Eigen::Vector3d& x, const WakeBlock& wake)>;
 
-/// Body surface meshes (the trailing-edge base `wake.te_base` meshed with structured quads, the
-/// rest with triangles) -> wing prisms, junction hexes and wake hexes (order 1). `box` bounds the
+/// Body surface meshes (the trailing-edge base `wake.te_base` and the faces going on with it to the
+/// tip meshed with structured quads, the rest with triangles) -> wing prisms, junction hexes and wake hexes (order 1). `box` bounds the
 /// domain (the far field's box); `fractions` the wing layer's split (see LayerFractions). Throws NearFieldError naming the key and value, or the surface,
 /// when: no trailing-edge base is found among the body surfaces (nor, for te_base "auto", a sharp
-/// trailing edge), the direction points upstream
+/// trailing edge), the trailing edge goes on past the base's faces or the sharp curve (naming the
+/// faces and the one it goes on into, or the curves), the direction points upstream
 /// (x <= 0) or into the wall, the gap leaves no trailing-edge row below the tip, the wake leaves
 /// the box, a wake hex would be inverted (widening or direction), or the C-type junction fails.
 NearField build_h_shell(const cad::Model& model, const surface::SurfaceMeshes& meshes, const BodyRoles& roles,

@@ -18,16 +18,27 @@ namespace semimesh::nearfield::detail {
 /// edge is the other one of a wing's section); -1 when there is none.
 int sharp_trailing_edge(const cad::Model& model, const BodyRoles& roles, const Vec3& d);
 
-/// Where the trailing edge goes on past the base surface `base` (blunt) or the sharp edge's curve
-/// `crack` (-1 for the other): a body surface across one of the base's curves that borders none
-/// of the base's other body neighbours (a tip borders the sides; a cranked wing's outboard base
-/// borders only its own panel's sides), or a curve at one of the crack's ends between two body
-/// surfaces that are neither of the crack's sides (the outboard panel's trailing edge; a tip's
-/// curves have a side on one hand). Returns that surface or curve id, -1 when the trailing edge
-/// ends at the tip. Faces whose longest curve, and curves, under a tenth of the base's longest
+/// The trailing-edge base's faces, ascending: `root_face` (the base on the root) and the body faces
+/// reached from it across shared curves that face the way their neighbour in the base does (mean
+/// outward normals within 45 degrees) and are no slivers (as trailing_edge_continuation's): a base
+/// CAD tools split along the span into an upper and a lower half (OpenVSP), or across it at a crank
+/// (one face per panel), or both. The skins beside the base face across the stream and the tip
+/// along the span: they stay out; so do the tip's slivers at the trailing edge (OpenVSP's M6).
+std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& roles, int root_face);
+
+/// Where the trailing edge goes on past the base faces `base` (blunt; trailing_edge_base) or the
+/// sharp edge's curve `crack` (empty or -1 for the other): a body surface across one of the base's
+/// curves that borders none of the base's other body neighbours (a tip borders the sides; a cranked
+/// wing's outboard base, were it not part of the base, would border only its own panel's sides), or
+/// a curve at one of the crack's ends between two body surfaces that are neither of the crack's
+/// sides (the outboard panel's trailing edge; a tip's curves have a side on one hand). Returns that
+/// surface or curve id, -1 when the trailing edge ends at the tip; of several such surfaces the one
+/// facing most nearly as the base (OpenVSP's M6 without its base's other half: that half, not the
+/// skin beside it). Faces whose longest curve, and curves, under a tenth of the base's longest
 /// curve or the crack's length are slivers, not panels (the ONERA M6's tip faces at its trailing
-/// edge); no angle to tune.
-int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, int base, int crack);
+/// edge).
+int trailing_edge_continuation(const cad::Model& model, const BodyRoles& roles, const std::vector<int>& base,
+                               int crack);
 
 /// The trailing-edge base's flat corners: CAD vertices where its two curves meet at more than 150
 /// degrees inside the face (a revolved tip's rounded trailing edge continues the base's sides
