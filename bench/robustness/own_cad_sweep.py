@@ -55,6 +55,8 @@ def summary_value(stdout, label):
 def sweep_one(args, name, cad, order, out):
     work = os.path.join(out, name)
     config = os.path.join(work, "c.toml")
+    if os.path.exists(config):
+        os.remove(config)  # init refuses to overwrite a file
     init, init_s = timed([args.semimesh, "init", "--cad", cad, "-o", config])
     if init.returncode != 0:
         return [name, "-", f"init {init.returncode}", "", "", "", f"{init_s:.1f}", "", "", init.stderr.strip()[:160]]
