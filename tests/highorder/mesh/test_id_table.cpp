@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -44,6 +46,38 @@ TEST(IdTable, FindsEveryIdAfterGrowingAndNoAbsentKey) {
   EXPECT_EQ(k.table.size(), k.keys.size());
   EXPECT_EQ(k.find((std::uint64_t{5} << 32) | 200), IdTable::kNone);
   EXPECT_EQ(Keys{}.find(7), IdTable::kNone);  // an empty table has no slot to probe
+}
+
+// Keys whose hashes share the slot index's bits but not the tag (the hash's top bits), and keys
+// whose hashes are equal in both: each found by its own key, the absent one not found.
+TEST(IdTable, TellsKeysApartWhateverBitsOfTheirHashesAreEqual) {
+  std::vector<std::uint64_t> keys;
+  IdTable table;
+  std::vector<std::uint64_t> hashes;
+  for (std::uint64_t k = 0; k < 64; ++k) hashes.push_back((k << 58) | 5);  // one index, 64 tags
+  for (std::uint64_t k = 0; k < 64; ++k) hashes.push_back(5);              // one index, one tag
+  auto hash_of = [&](std::uint32_t id) { return hashes[id]; };
+  for (std::uint32_t id = 0; id < hashes.size(); ++id) {
+    ASSERT_EQ(table.find_or_insert(hashes[id], [&](std::uint32_t i) { return i == id; }, id, hash_of), IdTable::kNone);
+    keys.push_back(id);
+  }
+  for (std::uint32_t id = 0; id < hashes.size(); ++id)
+    ASSERT_EQ(table.find(hashes[id], [&](std::uint32_t i) { return i == id; }), id);
+  EXPECT_EQ(table.find(5, [](std::uint32_t) { return false; }), IdTable::kNone);
+}
+
+TEST(IdTable, RefusesAnIdAboveItsLimitNamingIt) {
+  IdTable table;
+  auto no_key = [](std::uint32_t) { return false; };
+  auto hash_of = [](std::uint32_t id) { return IdTable::mix(id); };
+  EXPECT_EQ(table.find_or_insert(IdTable::mix(1), no_key, IdTable::kMaxId, hash_of), IdTable::kNone);
+  EXPECT_EQ(table.find(IdTable::mix(1), [](std::uint32_t id) { return id == IdTable::kMaxId; }), IdTable::kMaxId);
+  try {
+    table.find_or_insert(IdTable::mix(2), no_key, IdTable::kMaxId + 1, hash_of);
+    FAIL() << "no error";
+  } catch (const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(IdTable::kMaxId + 1)), std::string::npos) << e.what();
+  }
 }
 
 TEST(IdTable, CostsAtMostElevenBytesAnIdAndAReservedTableDoesNotGrow) {
