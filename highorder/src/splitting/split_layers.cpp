@@ -2,6 +2,7 @@
 
 #include "parallel_for.hpp"
 #include "reference_lattice.hpp"
+#include "sparse_rows.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
 
@@ -142,9 +143,9 @@ class Splitter {
   int layers(std::size_t element, int slot) const {
     return plans_[element].direction[slot] < 0 ? 1 : families_[plans_[element].family[slot]].distribution.layers;
   }
-  /// Basis values at every sub-node of every piece for elements of this shape and plan whose
-  /// families have constant ratios (cached).
-  const Eigen::MatrixXd& uniform_values(Shape shape, const Plan& plan);
+  /// Basis values (their entries that are not 0: sparse_rows.hpp) at every sub-node of every piece
+  /// for elements of this shape and plan whose families have constant ratios (cached).
+  const detail::SparseRows& uniform_values(Shape shape, const Plan& plan);
   /// Reference points of every node of every piece, piece (k_a, k_b) at rows (k_b N_a + k_a) nodes;
   /// `interface(s, r, k)` gives interface k of direction slot s at reference point r.
   template <typename Interface>
@@ -184,7 +185,7 @@ class Splitter {
   mesh::Mesh out_;
   std::vector<Plan> plans_;  // [input elements]
   std::map<Shape, ShapeData> shapes_;
-  std::map<std::tuple<Shape, int, int, int, int>, Eigen::MatrixXd> uniform_;
+  std::map<std::tuple<Shape, int, int, int, int>, detail::SparseRows> uniform_;
   // The nodes made so far, by where they are (key_of): on a coarse edge or face shared with
   // neighbours, in a block of slots of that entity in `slots_` (4 bytes a node: a map of every key
   // held ~1 GB on the paper's case; a vector per entity ~50 MB of headers and allocations), made at
@@ -254,7 +255,7 @@ Eigen::MatrixX3d Splitter::sub_points(const ShapeData& data, const Plan& plan, c
   return q;
 }
 
-const Eigen::MatrixXd& Splitter::uniform_values(Shape shape, const Plan& plan) {
+const detail::SparseRows& Splitter::uniform_values(Shape shape, const Plan& plan) {
   const auto key = std::make_tuple(shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1]);
   auto it = uniform_.find(key);
   if (it != uniform_.end()) return it->second;
@@ -266,7 +267,7 @@ const Eigen::MatrixXd& Splitter::uniform_values(Shape shape, const Plan& plan) {
   }
   const Eigen::MatrixX3d q =
       sub_points(data, plan, [&](int slot, const Eigen::RowVector3d&, int k) { return z[slot][k]; });
-  return uniform_.emplace(key, data.basis.values(q)).first->second;
+  return uniform_.emplace(key, detail::sparse_rows(data.basis.values(q))).first->second;
 }
 
 double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int family) const {
@@ -361,9 +362,8 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     return z;
   };
   if (z_of_vertex[0].empty() && z_of_vertex[1].empty()) {
-    out.x =
-        uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])) *
-        X;
+    out.x = detail::multiply(
+        uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])), X);
     // Constant interfaces: each piece is chi composed with an affine map, so its det J is chi's restricted.
     if (inherit_) out.bounds = certify_pieces(el.shape, in_.order(), in_.node_set(), X, piece_boxes(element, uniform));
   } else {

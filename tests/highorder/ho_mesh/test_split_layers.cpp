@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -65,6 +66,52 @@ TEST(SplitLayers, PrismNodesLieOnTheCoarseMap) {
     }
     EXPECT_LT(worst, 1e-12);  // the map is in the element's space: exact up to round-off
   }
+}
+
+// Every piece of a prism or hex split in one or two directions, orders 1-4, both node sets, is the
+// coarse map at the piece's reference nodes, computed here by the dense evaluation (map_points):
+// the split sums only the basis values that are not 0 (sparse_rows.hpp).
+TEST(SplitLayers, PiecesAreTheCoarseMapAtTheirReferenceNodesInEveryPlan) {
+  const Map bent = [](const Eigen::Vector3d& q) {
+    return Eigen::Vector3d(q(0) + 0.1 * std::sin(q(1) + q(2)), q(1) + 0.05 * q(0) * q(2), 0.3 * q(2) + 0.1 * std::cos(q(0)));
+  };
+  struct Plan {
+    Shape shape;
+    std::array<int, 2> direction;
+  };
+  const std::vector<Plan> plans{{Shape::Prism, {2, -1}},      {Shape::Hexahedron, {0, -1}}, {Shape::Hexahedron, {1, -1}},
+                                {Shape::Hexahedron, {2, -1}}, {Shape::Hexahedron, {2, 1}},  {Shape::Hexahedron, {0, 2}}};
+  const std::array<int, 2> layers{4, 3};
+  const std::array<double, 2> ratio{1.7, 1.3};
+  for (const Plan& plan : plans)
+    for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL})
+      for (int P = 1; P <= 4; ++P) {
+        SCOPED_TRACE(to_string(plan.shape) + " directions " + std::to_string(plan.direction[0]) + "," +
+                     std::to_string(plan.direction[1]) + " P" + std::to_string(P) + (set == NodeSet::GLL ? " GLL" : ""));
+        const mesh::Mesh coarse = single_element(plan.shape, P, set, bent);
+        const mesh::Mesh fine = split_layers(coarse, {{0, plan.direction, {0, 1}}},
+                                             {{{layers[0], ratio[0]}, {}}, {{layers[1], ratio[1]}, {}}}, nullptr, nullptr);
+        const bool two = plan.direction[1] >= 0;
+        ASSERT_EQ(fine.elements().size(), std::size_t(layers[0] * (two ? layers[1] : 1)));
+        const LagrangeBasis basis(plan.shape, P, set);
+        const Eigen::MatrixX3d Xc = coarse.element_coordinates(0), r = basis.nodes();
+        const std::array<std::vector<double>, 2> z{expected_interfaces(layers[0], ratio[0]),
+                                                   expected_interfaces(layers[1], ratio[1])};
+        const auto along = [](const std::vector<double>& zs, int k, double t) { return zs[k] + 0.5 * (t + 1.0) * (zs[k + 1] - zs[k]); };
+        for (std::size_t e = 0; e < fine.elements().size(); ++e) {
+          double best = 1e9;  // the piece (k_a, k_b) whose reference nodes it has
+          for (int a = 0; a < layers[0]; ++a)
+            for (int b = 0; b < (two ? layers[1] : 1); ++b) {
+              Eigen::MatrixX3d q = r;
+              for (Eigen::Index i = 0; i < q.rows(); ++i) {
+                q(i, plan.direction[0]) = plan.shape == Shape::Prism ? along(z[0], a, r(i, 2)) : along(z[0], a, r(i, plan.direction[0]));
+                if (two) q(i, plan.direction[1]) = along(z[1], b, r(i, plan.direction[1]));
+              }
+              best = std::min(best, (fine.element_coordinates(e) - map_points(basis, Xc, q)).cwiseAbs().maxCoeff());
+            }
+          EXPECT_LT(best, 1e-13) << "piece " << e;
+        }
+      }
 }
 
 TEST(SplitLayers, FirstCellHeightsFollowTheRatio) {
