@@ -75,10 +75,14 @@ Vec3 halo_over_the_strip_top(const cad::Model& model, const std::vector<int>& bo
 }
 
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
-// plane away from the body (bisecting the two root segments' outward normals).
+// plane away from the body (bisecting the two root segments' outward normals). A sharp trailing
+// edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces places
+// them against the rear interfaces standing on the strip top (over a strip top raised forward along
+// a tapered wing's edge, the skins crossed near the fan: TetGen refused the far field).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
                                  const std::map<int, int>& root_surface, const BodyMesh& body, int r,
-                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall) {
+                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall,
+                                 bool fan) {
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal_at(j.root), delta_wing, delta_wall);
@@ -111,7 +115,8 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   if (wall.height(j.strip_top) < delta_wall) {
     j.strip_top_cad = from_root;
     j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
-    j.halo = halo_over_the_strip_top(model, roles.body_surfaces, wall, j.strip_top, outward, delta_wing, delta_wall);
+    if (!fan)
+      j.halo = halo_over_the_strip_top(model, roles.body_surfaces, wall, j.strip_top, outward, delta_wing, delta_wall);
   }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
@@ -220,14 +225,14 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
     if (i == j.fan) {
       j.at[i] = place_junction_node(model, roles, root_surface, body, r, segments.outward(prev, r), wall, delta_wing,
-                                    delta_wall);
+                                    delta_wall, true);
       j.fan_side1 = place_junction_node(model, roles, root_surface, body, r, segments.outward(r, next), wall,
-                                        delta_wing, delta_wall);
+                                        delta_wing, delta_wall, true);
       continue;
     }
     j.at[i] = place_junction_node(model, roles, root_surface, body, r,
                                   (segments.outward(prev, r) + segments.outward(r, next)).normalized(), wall,
-                                  delta_wing, delta_wall);
+                                  delta_wing, delta_wall, false);
   }
   if (j.fan >= 0) {
     const int prev = loop[(j.fan + n - 1) % n], r = loop[j.fan], next = loop[(j.fan + 1) % n];
