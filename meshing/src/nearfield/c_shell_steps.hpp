@@ -57,7 +57,11 @@ struct JunctionNodes {
 
 /// Halo, strip top and wall foot of every root node, each over the bisector of its two root
 /// segments' outward directions (the fan node's sides over their own, kept off the sharp edge's
-/// rear interfaces). Throws NearFieldError where a strip top falls off its face or has no height.
+/// rear interfaces). A strip top raised from its root along the wing (where the halo's foot lies
+/// below delta_wall) gets its halo, and the halo its foot, over it rather than over the root: on a
+/// swept wing it stands downstream of the root (not at a sharp trailing edge's root, whose halos
+/// are placed against the rear interfaces). Throws NearFieldError where a strip top falls off its
+/// face or has no height.
 JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& roles,
                                    const std::map<int, int>& root_surface, const BodyMesh& body,
                                    const std::vector<int>& loop, const RootSegments& segments, int crack_curve,

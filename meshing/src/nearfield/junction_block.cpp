@@ -46,26 +46,46 @@ bool hex_corners_valid(const std::array<Vec3, 8>& x) {
 // The wall foot L below halo j.halo of root j.root, `outward` the direction in the wall plane away
 // from the body. Where the wing leans over the fluid, the halo's feet come close to the root: the
 // hex would be a sliver there, folded by the curved root. Its wall strip keeps the width delta_wing
-// (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall.
+// (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall. Along
+// the root the foot stays under the halo (a halo over a swept strip top stands downstream of the
+// root: the wall layer's column there must not lean along the root either).
 void place_wall_foot(const cad::Model& model, int wall_surface, const Vec3& outward, const Frame& wall,
                      double delta_wing, double delta_wall, JunctionNode& j) {
-  const double out = (j.halo - delta_wall * wall.normal_at(j.root) - j.root).dot(outward);
+  const Vec3 below = j.halo - delta_wall * wall.normal_at(j.root);
+  const double out = (below - j.root).dot(outward);
   const cad::Surface& face = model.surface(wall_surface);
-  const Vec3 above_foot = j.root + std::max(out, delta_wing) * outward;
+  const Vec3 above_foot = below + std::max(0.0, delta_wing - out) * outward;
   const auto foot = wall.curved ? face.project(above_foot, wall.root_uv) : face.project(above_foot);
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
 }
 
+// A strip top raised from its root along the wing (in the wing's parameters, as the body mesh is
+// lifted) stands where the wing's section is at that height: on a swept wing delta_wall tan(sweep)
+// downstream of the root. The halo is then the medial point over the strip top, not over the root:
+// over the root, the column strip top -> halo leaned along the root by that much, while the layer's
+// columns in the row above stand along the wing's normals, and the prisms between them folded
+// wherever that row lies closer than the lean (the ONERA M6 at coarse sizes, 30 degrees of sweep:
+// a lean of 0.58 delta_wall against rows 0.2-0.4 delta_wall higher).
+Vec3 halo_over_the_strip_top(const cad::Model& model, const std::vector<int>& body_surfaces, const Frame& wall,
+                             const Vec3& strip_top, const Vec3& outward, double delta_wing, double delta_wall) {
+  const Frame::Above above = wall.above(strip_top);
+  const Vec3 under = strip_top - above.height * above.normal;
+  return medial_halo(model, body_surfaces, under, outward, above.normal, delta_wing, delta_wall);
+}
+
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
-// plane away from the body (bisecting the two root segments' outward normals).
+// plane away from the body (bisecting the two root segments' outward normals). A sharp trailing
+// edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces places
+// them against the rear interfaces standing on the strip top (over a strip top raised forward along
+// a tapered wing's edge, the skins crossed near the fan: TetGen refused the far field).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
                                  const std::map<int, int>& root_surface, const BodyMesh& body, int r,
-                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall) {
+                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall,
+                                 bool fan) {
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal_at(j.root), delta_wing, delta_wall);
-  place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
   const CadAttachment& at = body.cad[r];
   // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
   // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
@@ -95,10 +115,13 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   if (wall.height(j.strip_top) < delta_wall) {
     j.strip_top_cad = from_root;
     j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
+    if (!fan)
+      j.halo = halo_over_the_strip_top(model, roles.body_surfaces, wall, j.strip_top, outward, delta_wing, delta_wall);
   }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
+  place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
   return j;
 }
 
@@ -202,14 +225,14 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
     if (i == j.fan) {
       j.at[i] = place_junction_node(model, roles, root_surface, body, r, segments.outward(prev, r), wall, delta_wing,
-                                    delta_wall);
+                                    delta_wall, true);
       j.fan_side1 = place_junction_node(model, roles, root_surface, body, r, segments.outward(r, next), wall,
-                                        delta_wing, delta_wall);
+                                        delta_wing, delta_wall, true);
       continue;
     }
     j.at[i] = place_junction_node(model, roles, root_surface, body, r,
                                   (segments.outward(prev, r) + segments.outward(r, next)).normalized(), wall,
-                                  delta_wing, delta_wall);
+                                  delta_wing, delta_wall, false);
   }
   if (j.fan >= 0) {
     const int prev = loop[(j.fan + n - 1) % n], r = loop[j.fan], next = loop[(j.fan + 1) % n];
