@@ -5,7 +5,7 @@
   - random curved pyramids of order 4: the certified ratio has the sign of det J sampled on a dense
     grid through Gmsh's own basis (getBasisFunctions "GradLagrange") and, when valid, is at most the
     sampled ratio and close to it.
-It also prints what Gmsh 4.8's own plugin says of some of them (wrong from order 4 on; not asserted).
+It also prints what Gmsh 4.8's own plugin says of some of them (wrong from order 2 on; not asserted).
 
 usage: verify_pyramid_bounds.py
 """
