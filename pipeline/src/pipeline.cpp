@@ -40,6 +40,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <limits>
 #include <memory>
@@ -319,7 +320,13 @@ double reference_length(const GeometryConfig& g, const std::vector<const surface
   return hi > lo ? hi - lo : 1.0;
 }
 
+// The largest resident size of this process's own memory: VmHWM of /proc/self/status. Not
+// getrusage's ru_maxrss, which Linux carries over an exec from the process that forked it (a run
+// started by a Python script holding 500 MB reported 500 MB).
 double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kilobytes
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_maxrss / 1024.0;  // Linux reports kilobytes
