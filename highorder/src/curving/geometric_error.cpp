@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -36,6 +37,14 @@ GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, 
   if (samples_per_edge < 1) throw std::invalid_argument("geometric_error: samples_per_edge must be >= 1");
   GeometricError err;
   double sum_squares = 0.0;
+  // The basis at the sample points, once per face shape (the same matrix for every face).
+  std::map<Shape, Eigen::MatrixXd> phi_of;
+  const auto sample_basis = [&](Shape shape) -> const Eigen::MatrixXd& {
+    auto it = phi_of.find(shape);
+    if (it == phi_of.end())
+      it = phi_of.emplace(shape, LagrangeBasis(shape, mesh.order(), mesh.node_set()).values(sample_points(shape, samples_per_edge))).first;
+    return it->second;
+  };
   for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = mesh.boundary_faces()[b];
     const int nv = num_vertices(bf.shape);
@@ -54,8 +63,7 @@ GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, 
       uv.row(j) = detail::surface_parameter(model, place.id, mesh.cad_attachment(ids[j]), X.row(j).transpose())
                       .transpose();
     detail::continuous_parameters(surface, uv, static_cast<int>(uv.rows()), nv);
-    const LagrangeBasis basis(bf.shape, mesh.order(), mesh.node_set());
-    const Eigen::MatrixXd phi = basis.values(sample_points(bf.shape, samples_per_edge));
+    const Eigen::MatrixXd& phi = sample_basis(bf.shape);
     const Eigen::MatrixX3d points = phi * X;
     const Eigen::MatrixX2d guesses = phi * uv;
     for (Eigen::Index k = 0; k < points.rows(); ++k) {

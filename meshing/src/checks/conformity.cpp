@@ -65,18 +65,20 @@ std::vector<unsigned> element_face_cycle(const mesh::Mesh& mesh, const Occurrenc
   return cycle;
 }
 
-// All node ids (vertices and high-order nodes) a user gives the face, sorted.
-std::vector<NodeId> face_node_set(const mesh::Mesh& mesh, const Occurrence& o) {
-  std::vector<NodeId> nodes;
+// All node ids (vertices and high-order nodes) a user gives the face, sorted, into `nodes`. The
+// buffers are reused (one set per thread): this runs for every use of every face.
+void face_node_set(const mesh::Mesh& mesh, const Occurrence& o, std::vector<NodeId>& nodes) {
   if (o.boundary) {
     nodes = mesh.boundary_face_nodes(o.owner);
   } else {
+    thread_local std::vector<NodeId> all;
+    mesh.element_nodes(o.owner, all);
     const mesh::Element& element = mesh.elements()[o.owner];
-    const std::vector<NodeId> all = mesh.element_nodes(o.owner);
-    for (int i : detail::nodes_on_faces(element.shape, mesh.order(), mesh.node_set())[o.local]) nodes.push_back(all[i]);
+    const std::vector<int>& on_face = detail::nodes_on_faces(element.shape, mesh.order(), mesh.node_set())[o.local];
+    nodes.resize(on_face.size());
+    for (std::size_t k = 0; k < on_face.size(); ++k) nodes[k] = all[static_cast<std::size_t>(on_face[k])];
   }
   std::sort(nodes.begin(), nodes.end());
-  return nodes;
 }
 
 // Classifies the uses of one face; adds at most one problem per face (the most severe).
@@ -99,8 +101,12 @@ void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses
   };
   auto nodes_differ = [&]() {
     if (mesh.order() == 1) return false;  // the nodes are the vertices, equal by construction of the key
-    const std::vector<NodeId> first = face_node_set(mesh, *uses.front());
-    return std::any_of(uses.begin() + 1, uses.end(), [&](const Occurrence* o) { return face_node_set(mesh, *o) != first; });
+    thread_local std::vector<NodeId> first, other;
+    face_node_set(mesh, *uses.front(), first);
+    return std::any_of(uses.begin() + 1, uses.end(), [&](const Occurrence* o) {
+      face_node_set(mesh, *o, other);
+      return other != first;
+    });
   };
 
   using Kind = FaceProblem::Kind;

@@ -292,6 +292,53 @@ TEST(Volume, ExactRuleMatchesTheGenerousReferenceOnEveryShapeAndOrder) {
       }
 }
 
+// The default rule integrates prisms and hexahedra by factors (sum factorisation); the quadrature
+// of every element with the full (points, nodes) products is its reference: the same points and
+// weights, so equal to rounding on curved elements of every shape, order and node set.
+TEST(Volume, FactoredQuadratureMatchesTheFullQuadratureOnEveryShapeAndOrder) {
+  for (ho::Shape shape : {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron})
+    for (int order = 1; order <= 6; ++order)
+      for (ho::NodeSet set : {ho::NodeSet::Equispaced, ho::NodeSet::GLL}) {
+        SCOPED_TRACE(ho::to_string(shape) + " order " + std::to_string(order));
+        const Mesh m = bent_element(shape, order, set);
+        const double exact = mesh_volume(m, VolumeRule::Exact).element_volume;
+        const double reference = mesh_volume(m, VolumeRule::Quadrature).element_volume;
+        EXPECT_NEAR(exact, reference, 1e-14 * std::abs(reference));
+      }
+}
+
+// One element of `shape` whose nodes are the affine image x = A r + b of its reference nodes (det A = 2).
+Mesh affine_element(ho::Shape shape, int order, ho::NodeSet set) {
+  Eigen::Matrix3d a;
+  a << 1.0, 0.3, 0.0, 0.0, 2.0, 0.5, 0.0, 0.0, 1.0;
+  Mesh m(order, set);
+  const Eigen::MatrixX3d r = ho::reference_nodes(shape, order, set);
+  std::vector<NodeId> ids;
+  for (Eigen::Index i = 0; i < r.rows(); ++i) ids.push_back(m.add_node(a * Eigen::Vector3d(r.row(i)) + Eigen::Vector3d(3, -1, 2)));
+  m.add_element(shape, ids);
+  return m;
+}
+
+// The closed form of affine elements (det A times the reference volume) against the quadrature of
+// the same elements, and both against the volumes by hand; the bent elements above are not affine
+// and go through the quadrature in both rules.
+TEST(Volume, ClosedFormOfAffineElementsMatchesTheQuadratureOnEveryShapeAndOrder) {
+  const std::map<ho::Shape, double> by_hand = {{ho::Shape::Tetrahedron, 2.0 / 6.0},
+                                               {ho::Shape::Pyramid, 2.0 * 4.0 / 3.0},
+                                               {ho::Shape::Prism, 2.0},
+                                               {ho::Shape::Hexahedron, 16.0}};
+  for (const auto& [shape, volume] : by_hand)
+    for (int order = 1; order <= 6; ++order)
+      for (ho::NodeSet set : {ho::NodeSet::Equispaced, ho::NodeSet::GLL}) {
+        SCOPED_TRACE(ho::to_string(shape) + " order " + std::to_string(order));
+        const Mesh m = affine_element(shape, order, set);
+        const double closed = mesh_volume(m, VolumeRule::Exact).element_volume;
+        const double reference = mesh_volume(m, VolumeRule::Quadrature).element_volume;
+        EXPECT_NEAR(closed, reference, 1e-13 * volume);
+        EXPECT_NEAR(closed, volume, 1e-13 * volume);
+      }
+}
+
 TEST(Volume, AMissingElementShowsInTheBoundaryVolume) {
   TwoTets t;
   // Boundary faces of the first tet are there, so without the second the closed volume is 1/6 +

@@ -24,11 +24,15 @@ struct MeshVolume {
   double boundary_relative_error() const;   ///< |element - boundary| / |boundary|
 };
 
-/// Quadrature of the element volumes. Exact: per shape the fewest Gauss points that integrate the
-/// polynomial det J of a tet, prism or hex exactly. Generous: every shape with the points of the
-/// largest degree any shape's det J reaches, plus two (the reference Exact is tested against: the
-/// same integrals, so equal to rounding).
-enum class VolumeRule { Exact, Generous };
+/// How the element volumes are integrated. Exact: an affine element (ho::affine_jacobian) in closed
+/// form, det A times the reference volume; every other one with the fewest Gauss points per shape
+/// that integrate the polynomial det J of a tet, prism or hex exactly. Quadrature: that quadrature
+/// on every element, affine or not (the reference the closed form is tested against). Generous:
+/// every shape with the points of the largest degree any shape's det J reaches, plus two (the
+/// reference the exact quadrature is tested against). All three give the same integrals, so agree
+/// to rounding on polynomial det J (an element the affine test accepts may deviate from affine by
+/// 1e-10 of its size, which moves its det J by at most 3e-6 relative: validity.hpp).
+enum class VolumeRule { Exact, Quadrature, Generous };
 
 /// Integrates every element and every boundary face of `mesh` (any order; quadrature exact for the
 /// polynomial det J of tets, prisms and hexes; faces always with the generous rule).
