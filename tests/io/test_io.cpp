@@ -19,6 +19,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/stat.h>
+#include <utility>
+#include <vector>
 #include <unistd.h>
 
 namespace {
@@ -441,18 +443,26 @@ void expect_same_as_reference(const Mesh& gll, const std::string& what) {
     ASSERT_LT((nodes[i] - reference.node(i)).norm(), 1e-12) << what << " node " << i;
 }
 
-TEST(Equispaced, EachNodeResampledByItsOwnerMatchesWholeElementResampling) {
+// GLL meshes of orders 2-6 to resample: two prisms sharing a face, and one element of each 3D
+// shape, all on a quadratic map; each with what it is.
+std::vector<std::pair<Mesh, std::string>> gll_meshes() {
+  std::vector<std::pair<Mesh, std::string>> meshes;
   for (int p = 2; p <= 6; ++p) {
-    expect_same_as_reference(two_prisms(p, NodeSet::GLL), "two prisms, order " + std::to_string(p));
+    meshes.emplace_back(two_prisms(p, NodeSet::GLL), "two prisms, order " + std::to_string(p));
     for (Shape shape : {Shape::Tetrahedron, Shape::Pyramid, Shape::Prism, Shape::Hexahedron}) {
       Mesh one(p, NodeSet::GLL);
       const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(shape, p, NodeSet::GLL);
       std::vector<NodeId> ids;
       for (int i = 0; i < ref.rows(); ++i) ids.push_back(one.add_node(quadratic_map(ref.row(i).transpose())));
       one.add_element(shape, ids);
-      expect_same_as_reference(one, "one element, shape " + std::to_string(int(shape)) + ", order " + std::to_string(p));
+      meshes.emplace_back(std::move(one), "one element, shape " + std::to_string(int(shape)) + ", order " + std::to_string(p));
     }
   }
+  return meshes;
+}
+
+TEST(Equispaced, EachNodeResampledByItsOwnerMatchesWholeElementResampling) {
+  for (const auto& [mesh, what] : gll_meshes()) expect_same_as_reference(mesh, what);
 }
 
 // In place (the pipeline's writers): the same positions as the copy, bit for bit, read from the
@@ -472,17 +482,7 @@ void expect_in_place_same_as_copy(const Mesh& gll, const std::string& what) {
 }
 
 TEST(Equispaced, InPlaceMatchesTheCopyAndMovesTheNodesBack) {
-  for (int p = 2; p <= 6; ++p) {
-    expect_in_place_same_as_copy(two_prisms(p, NodeSet::GLL), "two prisms, order " + std::to_string(p));
-    for (Shape shape : {Shape::Tetrahedron, Shape::Pyramid, Shape::Prism, Shape::Hexahedron}) {
-      Mesh one(p, NodeSet::GLL);
-      const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(shape, p, NodeSet::GLL);
-      std::vector<NodeId> ids;
-      for (int i = 0; i < ref.rows(); ++i) ids.push_back(one.add_node(quadratic_map(ref.row(i).transpose())));
-      one.add_element(shape, ids);
-      expect_in_place_same_as_copy(one, "one element, shape " + std::to_string(int(shape)) + ", order " + std::to_string(p));
-    }
-  }
+  for (const auto& [mesh, what] : gll_meshes()) expect_in_place_same_as_copy(mesh, what);
 }
 
 TEST(Equispaced, AnEquispacedMeshIsNotCopied) {

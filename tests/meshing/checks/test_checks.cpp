@@ -222,14 +222,22 @@ TEST(Conformity, BruteForceAgreesOnALargerDamagedMesh) {
 }
 
 // Unit-measure reference elements mapped by x -> A x + b (det A = 2).
-Mesh single_element(ho::Shape shape) {
+// One element of `shape` whose nodes are the affine image x = A r + b of its reference nodes (det A = 2).
+Mesh affine_element(ho::Shape shape, int order, ho::NodeSet set) {
   Eigen::Matrix3d a;
   a << 1.0, 0.3, 0.0, 0.0, 2.0, 0.5, 0.0, 0.0, 1.0;
-  Mesh m(1);
-  const Eigen::MatrixX3d ref = ho::reference_vertices(shape);
-  std::vector<NodeId> v;
-  for (int i = 0; i < ref.rows(); ++i) v.push_back(m.add_node(a * Eigen::Vector3d(ref.row(i)) + Eigen::Vector3d(3, -1, 2)));
-  m.add_element(shape, v);
+  Mesh m(order, set);
+  const Eigen::MatrixX3d r = ho::reference_nodes(shape, order, set);
+  std::vector<NodeId> ids;
+  for (Eigen::Index i = 0; i < r.rows(); ++i) ids.push_back(m.add_node(a * Eigen::Vector3d(r.row(i)) + Eigen::Vector3d(3, -1, 2)));
+  m.add_element(shape, ids);
+  return m;
+}
+
+// The linear affine element of `shape` with each of its faces a boundary face of group "outer".
+Mesh single_element(ho::Shape shape) {
+  Mesh m = affine_element(shape, 1, ho::NodeSet::Equispaced);
+  const std::vector<NodeId> v = m.element_nodes(0);
   for (const auto& f : ho::faces(shape)) {
     std::vector<NodeId> fv;
     for (int i : f) fv.push_back(v[i]);
@@ -307,17 +315,6 @@ TEST(Volume, FactoredQuadratureMatchesTheFullQuadratureOnEveryShapeAndOrder) {
       }
 }
 
-// One element of `shape` whose nodes are the affine image x = A r + b of its reference nodes (det A = 2).
-Mesh affine_element(ho::Shape shape, int order, ho::NodeSet set) {
-  Eigen::Matrix3d a;
-  a << 1.0, 0.3, 0.0, 0.0, 2.0, 0.5, 0.0, 0.0, 1.0;
-  Mesh m(order, set);
-  const Eigen::MatrixX3d r = ho::reference_nodes(shape, order, set);
-  std::vector<NodeId> ids;
-  for (Eigen::Index i = 0; i < r.rows(); ++i) ids.push_back(m.add_node(a * Eigen::Vector3d(r.row(i)) + Eigen::Vector3d(3, -1, 2)));
-  m.add_element(shape, ids);
-  return m;
-}
 
 // The closed form of affine elements (det A times the reference volume) against the quadrature of
 // the same elements, and both against the volumes by hand; the bent elements above are not affine
