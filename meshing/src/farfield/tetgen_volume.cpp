@@ -1,6 +1,7 @@
 #include "tetgen_volume.hpp"
 
 #include "semimesh/farfield/detail/boundary_crossing.hpp"
+#include "semimesh/farfield/detail/short_edge.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 
@@ -43,6 +44,25 @@ std::string locate_problem(const TetgenInput& input) {
   std::ostringstream out;
   out << "; boundary triangle " << crossing->edge_triangle << " crosses boundary triangle " << crossing->pierced_triangle
       << " at (" << crossing->point.x() << ", " << crossing->point.y() << ", " << crossing->point.z() << ")";
+  return out.str();
+}
+
+// TetGen 1.5.0 replaces an input point by a neighbour closer than its tolerance (-T, 1e-8, which
+// we keep) times the diagonal of the input's bounding box, warning only; the boundary's facets then
+// repeat a point and it fails, crashing as it reports. Seen at 10^7 elements: a wake of 117 cells
+// growing by 1.15 starts with a cell of 2.4e-8, under the 3.1e-7 of a box of diagonal 30.6, and
+// TetGen replaced 152,130 of the 1.58 M boundary points. Such neighbours are ends of an edge.
+constexpr double kTetgenRelativeTolerance = 1e-8;
+
+// The refusal of a boundary with an edge TetGen would collapse, saying where the edge is.
+std::string describe_short_edge(const TetgenInput& input, const ShortEdge& edge) {
+  const Eigen::Vector3d& at = input.points[edge.from];
+  std::ostringstream out;
+  out << "the far-field boundary has an edge of length " << edge.length << " at (" << at.x() << ", " << at.y()
+      << ", " << at.z() << "), shorter than TetGen's merge distance " << edge.tolerance << " (" << kTetgenRelativeTolerance
+      << " of the boundary's bounding-box diagonal): TetGen would merge its ends and fail. Coarsen what makes it "
+         "(a wake's first streamwise cell is length * (growth - 1) / (growth^layers - 1): with more layers, lower "
+         "its growth)";
   return out.str();
 }
 
@@ -150,6 +170,8 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
 }  // namespace
 
 TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
+  if (const auto edge = find_edge_below_tolerance(input.points, input.triangles, kTetgenRelativeTolerance))
+    throw FarFieldError(describe_short_edge(input, *edge));
   const int num_points = static_cast<int>(input.points.size());
   tetgenio in;
   in.firstnumber = 0;

@@ -27,9 +27,11 @@ struct TetgenOutput {
 /// added on the boundary (Y). Sizes follow from the boundary by the radius-edge bound alone: tets
 /// start at the size of the boundary triangles they touch and grow away from them.
 /// TetGen runs in a child process (see tetgen_volume.cpp: TetGen 1.5.0 crashes while reporting
-/// errors). Throws FarFieldError with TetGen's failure explained (self-intersecting boundary,
-/// facets too close, ...) and, when the boundary crosses itself, the two triangles and the point;
-/// or when TetGen moved or dropped an input point. `quiet`: TetGen's own messages (a failed
+/// errors). Throws FarFieldError, before TetGen runs, when a boundary edge is shorter than the
+/// distance at which TetGen merges points (1e-8 of the boundary's bounding-box diagonal); with
+/// TetGen's failure explained (self-intersecting boundary, facets too close, ...) and, when the
+/// boundary crosses itself, the two triangles and the point; or when TetGen moved or dropped an
+/// input point. `quiet`: TetGen's own messages (a failed
 /// assertion's, on stderr) are dropped, for a first try that a second one follows.
 TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false);
 

@@ -273,5 +273,23 @@ TEST(FarField, SkinThroughTheBoxIsReportedAsTetGenFailure) {
   }
 }
 
+// A boundary point closer to its neighbour than TetGen's merge distance (1e-8 of the boundary's
+// bounding-box diagonal, 9.7e-8 here): TetGen would merge the two and fail (at 10^7 elements it
+// crashed); the far field refuses the boundary first and says why. The -x face's centre moves along
+// its diagonal to 1e-9 from the corner: the face's triangles keep their orientation.
+TEST(FarField, EdgeShorterThanTetGensMergeDistanceIsReported) {
+  const auto model = box_model();
+  CubeSkin cube = cube_skin(0.5, 1.0, 2);
+  const Vector3d corner(-0.5, -0.5, 0.0), centre(-0.5, 0.0, 0.5);
+  for (NodeId i = 0; i < cube.nf.mesh.num_nodes(); ++i)
+    if ((cube.nf.mesh.node(i) - centre).norm() < 1e-12) cube.nf.mesh.place_node(i, corner + 1e-9 * (centre - corner).normalized());
+  try {
+    build_far_field(*model, cube.nf, {}, box_surfaces(*model), *model->find_surface("wall"));
+    FAIL() << "expected FarFieldError";
+  } catch (const FarFieldError& e) {
+    EXPECT_NE(std::string(e.what()).find("shorter than TetGen's merge distance"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace semimesh::farfield
