@@ -105,12 +105,12 @@ double alignment_with_base(const cad::Model& model, const BodyRoles& roles, cons
 
 std::vector<int> trailing_edge_base(const cad::Model& model, const BodyRoles& roles, int root_face) {
   std::set<int> faces{root_face};
-  std::vector<int> todo{root_face};
-  while (!todo.empty()) {
-    const int s = todo.back();
-    todo.pop_back();
+  std::vector<int> to_visit{root_face};
+  while (!to_visit.empty()) {
+    const int s = to_visit.back();
+    to_visit.pop_back();
     for (int n : body_neighbours(model, roles, s))
-      if (!faces.count(n) && continues_base(model, s, n)) faces.insert(n), todo.push_back(n);
+      if (!faces.count(n) && continues_base(model, s, n)) faces.insert(n), to_visit.push_back(n);
   }
   return {faces.begin(), faces.end()};
 }
