@@ -22,6 +22,9 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
                              const cad::Params& params) {
   ModelAsRun out{registry.load(backend, cad::Source{path, params}), std::nullopt};
   if (surface::has_wall_with_root_loop(*out.model)) return out;
+  // Separate parts reaching into each other are no body on a wall, whatever else they look like
+  // (a wing's own trailing-edge seam meeting its open root would pass for a fuselage's).
+  surface::refuse_overlapping_parts(*out.model);
   // A wall may be there whose seam hides the root (its planar faces would be taken for root caps).
   surface::refuse_seam_through_root(*out.model);
   std::optional<surface::RootPlane> root = surface::find_root_plane(*out.model);

@@ -26,6 +26,9 @@
 //              normal turns along the root and the junction's angles differ on each side;
 //   fuselage_seam_on_crest the cylinder with its seam along its top, through the wing's root (bad
 //              input: the root is then no hole of the wall).
+//   fuselage_unjoined the wing sunk into the cylinder as for `fuselage`, the two solids side by side in
+//              the file, not fused, no box: an assembly of overlapping parts as OpenVSP exports one
+//              (bad input: needs naca.farfield=false).
 //   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
 //              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
 //              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
@@ -223,11 +226,10 @@ TopoDS_Shape fuselage_solid(Fuselage kind, double chord) {
   return BRepBuilderAPI_NurbsConvert(revolved, /*Copy=*/true).Shape();
 }
 
-// A wing-fuselage model: the box minus (wing sunk into the fuselage, fused to it). The wing is
-// capped and moved down so that its root section lies inside the fuselage: the Boolean finds the
-// root curve, the exact intersection of the skin with the fuselage.
-TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord, Fuselage kind) {
-  const double radius = 1.5 * chord, sunk = 0.3 * chord;
+// The wing as a solid, capped and moved down so that its root section lies inside the fuselage
+// (radius 1.5 chords, its crest at z = 0), leaning sideways for Fuselage::Dihedral.
+TopoDS_Shape sunk_wing(const TopoDS_Shape& body, double chord, Fuselage kind) {
+  const double sunk = 0.3 * chord;
   TopoDS_Shell skin;
   for (TopExp_Explorer shell(capped(body), TopAbs_SHELL); shell.More(); shell.Next()) skin = TopoDS::Shell(shell.Current());
   ShapeFix_Solid solid;
@@ -237,7 +239,15 @@ TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord, Fuselage kind) 
     lean.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp::DX()), 10 * M_PI / 180);
     wing = BRepBuilderAPI_Transform(wing, lean, /*copy=*/true).Shape();
   }
-  BRepAlgoAPI_Fuse fused(wing, fuselage_solid(kind, chord));
+  return wing;
+}
+
+// A wing-fuselage model: the box minus (wing sunk into the fuselage, fused to it). The wing is
+// capped and moved down so that its root section lies inside the fuselage: the Boolean finds the
+// root curve, the exact intersection of the skin with the fuselage.
+TopoDS_Shape on_fuselage(const TopoDS_Shape& body, double chord, Fuselage kind) {
+  const double radius = 1.5 * chord;
+  BRepAlgoAPI_Fuse fused(sunk_wing(body, chord, kind), fuselage_solid(kind, chord));
   if (!fused.IsDone()) throw std::runtime_error("fuselage: the Boolean fuse of wing and cylinder failed");
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(-10 * chord, -10 * chord, -radius - 10 * chord),
                                                gp_Pnt(11 * chord, 10 * chord, 10 * chord)).Shape();
@@ -476,13 +486,15 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_bspline") return on_fuselage(wing, params.chord, Fuselage::BSpline);
   if (name == "fuselage_dihedral") return on_fuselage(wing, params.chord, Fuselage::Dihedral);
   if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
+  if (name == "fuselage_unjoined")
+    return compound_of({sunk_wing(wing, params.chord, Fuselage::Cylinder), fuselage_solid(Fuselage::Cylinder, params.chord)});
   if (name == "cranked") return cranked(params);
   if (name == "cranked_split_base") return cranked(params, /*split_base=*/true);
   if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, cranked, cranked_mm, "
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, cranked, cranked_mm, "
                               "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 

@@ -136,10 +136,56 @@ std::optional<int> seam_through_root(const cad::Model& model, int s) {
   return std::nullopt;
 }
 
+// The model's parts: faces joined through the curves they share, each part's faces ascending, the
+// parts in the order of their first face.
+std::vector<std::vector<int>> parts_of(const cad::Model& model) {
+  std::vector<int> root(model.num_surfaces());
+  for (int s = 0; s < model.num_surfaces(); ++s) root[s] = s;
+  auto find = [&](int s) {
+    while (root[s] != s) s = root[s] = root[root[s]];
+    return s;
+  };
+  for (int c = 0; c < model.num_curves(); ++c) {
+    const std::vector<cad::SurfaceUse>& uses = model.surfaces_of_curve(c);
+    for (std::size_t k = 1; k < uses.size(); ++k) root[find(uses[k].surface)] = find(uses[0].surface);
+  }
+  std::map<int, std::vector<int>> by_root;
+  for (int s = 0; s < model.num_surfaces(); ++s) by_root[find(s)].push_back(s);
+  std::vector<std::vector<int>> parts;
+  for (auto& [r, faces] : by_root) parts.push_back(std::move(faces));
+  std::sort(parts.begin(), parts.end());
+  return parts;
+}
+
+// A part's bounding box, from its curves and a grid over each face.
+cad::BBox part_box(const cad::Model& model, const std::vector<int>& faces) {
+  cad::BBox box;
+  for (int s : faces)
+    for (const Vec3& p : face_samples(model, s)) box.add(p);
+  return box;
+}
+
+// Whether two boxes share a box thicker than `margin` along every axis: parts inside one another
+// in part (a wing sunk into a fuselage), not merely touching along a face (a tip cap left unsewn).
+bool overlap(const cad::BBox& a, const cad::BBox& b, double margin) {
+  return ((a.hi.cwiseMin(b.hi) - a.lo.cwiseMax(b.lo)).array() > margin).all();
+}
+
+// "[surface 0 ('fuselage'), surface 3 ('wing') and 4 more, within (x0, y0, z0) .. (x1, y1, z1)]".
+std::string part_label(const cad::Model& model, const std::vector<int>& faces, const cad::BBox& box) {
+  constexpr std::size_t kNamed = 3;
+  std::vector<int> named(faces.begin(), faces.begin() + std::min(faces.size(), kNamed));
+  std::string text = labels(model, named);
+  if (faces.size() > kNamed) text += fmt::format(" and {} more", faces.size() - kNamed);
+  return fmt::format("[{}, within ({:.6g}, {:.6g}, {:.6g}) .. ({:.6g}, {:.6g}, {:.6g})]", text, box.lo.x(), box.lo.y(),
+                     box.lo.z(), box.hi.x(), box.hi.y(), box.hi.z());
+}
+
 int find_wall(const cad::Model& model) {
   std::vector<int> walls;
   for (int s = 0; s < model.num_surfaces(); ++s)
     if (holds_a_body(model, s)) walls.push_back(s);
+  if (walls.empty()) refuse_overlapping_parts(model);
   if (walls.empty()) refuse_seam_through_root(model);
   if (walls.empty())
     fail("no face holds a body's root loop as an inner loop: the model has no wall the body stands on "
@@ -188,6 +234,25 @@ Extent extent(const std::vector<Vec3>& points, const Vec3& direction, const Vec3
 }
 
 }  // namespace
+
+void refuse_overlapping_parts(const cad::Model& model) {
+  const std::vector<std::vector<int>> parts = parts_of(model);
+  if (parts.size() < 2) return;
+  std::vector<cad::BBox> boxes;
+  for (const std::vector<int>& part : parts) boxes.push_back(part_box(model, part));
+  const double margin = 1e-3 * model.bbox().diagonal();
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    for (std::size_t j = i + 1; j < parts.size(); ++j)
+      if (overlap(boxes[i], boxes[j], margin))
+        fail(fmt::format(
+            "the model falls apart into {} parts that share no curve, and two of them overlap: "
+            "{} and {}; a body must share its root curves with the wall it stands on. An assembly of "
+            "overlapping parts (a wing reaching into a fuselage or a hub, as OpenVSP and other design tools "
+            "export) must be joined first: unite the wing with the fuselage in a CAD tool (a Boolean union, "
+            "keeping one wing), or give the wing alone with geometry.wall_plane; parts meant to touch that "
+            "do not (faces left unsewn) need geometry.sew_tolerance above their gap",
+            parts.size(), part_label(model, parts[i], boxes[i]), part_label(model, parts[j], boxes[j])));
+}
 
 void refuse_seam_through_root(const cad::Model& model) {
   for (int s = 0; s < model.num_surfaces(); ++s)

@@ -45,6 +45,12 @@ struct CadRoles {
 /// that reaches behind the wall, no face left for the far field).
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall = std::nullopt);
 
+/// Throws CadRoleError when the model falls apart into parts (faces joined through shared curves)
+/// of which two overlap (their bounding boxes share a box of some thickness along every axis): an
+/// assembly whose wing stands in a fuselage without being joined to it (an OpenVSP export). The
+/// message names both parts and the remedies. Parts apart (two wings side by side) pass.
+void refuse_overlapping_parts(const cad::Model& model);
+
 /// Throws CadRoleError when a periodic face's seam runs into a body's root (a fuselage exported with
 /// its seam along its crest): the root is then no hole of the wall, and neither the wall nor the
 /// body-only route (a root plane) can be found; the message names the face, the seam and the remedy.
