@@ -23,9 +23,19 @@ void check_ratio_line(Section& s, const std::string& section, const std::optiona
 
 // geometry.wall_plane and geometry.farfield = {box | sphere | box_chords}: complete, together, and
 // for a generated wing (which stands on z = 0 and has a box) the plane z = 0 and a box.
-void check_generated_domain(const GeometryConfig& geo, Section& plane, Section& far, Section& sphere) {
+void check_generated_domain(const GeometryConfig& geo, Section& plane, Section& join, Section& far, Section& sphere) {
   const WallPlaneConfig& w = geo.wall_plane;
   const FarFieldShapeConfig& f = geo.farfield_shape;
+  if (geo.join.given()) {
+    join.require(geo.join.body.has_value(), "body", "together with geometry.join.wall: the body's faces in the file");
+    join.require(geo.join.wall.has_value(), "wall", "together with geometry.join.body: the wall part's faces in the file");
+    join.require(!w.given(), "wall", "unset with [geometry.wall_plane]: an assembly's body stands on its wall part");
+    join.require(!geo.source.empty() && geo.backend == "occ", "body",
+                 "a CAD file's faces (source = \"...\", backend = \"occ\"): the parts are joined by OpenCASCADE");
+    join.require(f.box || f.sphere.centre, "body",
+                 "together with geometry.farfield = {box = [...]} or {sphere = {centre, radius}} (box_chords measures "
+                 "a root the parts do not have before they are joined)");
+  }
   if (w.given()) {
     plane.require(w.point.has_value(), "normal", "together with geometry.wall_plane.point");
     plane.require(w.normal.has_value(), "point", "together with geometry.wall_plane.normal (into the fluid)");
@@ -43,7 +53,7 @@ void check_generated_domain(const GeometryConfig& geo, Section& plane, Section& 
     far.require(shapes == 1, "box", "one of box, sphere or box_chords");
   }
   if (f.box_chords) far.require(shapes == 1, "box_chords", "one of box, sphere or box_chords");
-  if (!w.given() && !f.given()) return;
+  if (geo.join.given() || (!w.given() && !f.given())) return;
   if (f.given())
     plane.require(w.given(), "point",
                   "geometry.wall_plane = {point, normal} together with geometry.farfield = {...}: a body-only file "
@@ -106,8 +116,8 @@ void check_geometry(Config& c, const std::map<std::string, Section*>& sections, 
                "0 for backend \"" + geo.backend + "\"" + (geo.source.empty() ? "" : " with a source file") +
                    " (the dihedral is the analytic backend's: backend = \"naca\", no source)");
 
-  check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.farfield"),
-                         *sections.at("geometry.farfield.sphere"));
+  check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.join"),
+                         *sections.at("geometry.farfield"), *sections.at("geometry.farfield.sphere"));
 }
 
 // [nearfield]: the H-type needs a wall layer; the junction's angles in order.

@@ -54,6 +54,20 @@ params::Table<Config> wall_plane_keys() {
   return table;
 }
 
+params::Table<Config> join_keys() {
+  params::Table<JoinConfig> j = {
+      params::strings("body", &JoinConfig::body, "non-empty",
+                      "the body's faces in the file (a wing reaching into the wall part): ids (\"#7\", as "
+                      "`semimesh cad-info FILE` numbers them) or names (every face of the name)"),
+      params::strings("wall", &JoinConfig::wall, "non-empty", "the wall part's faces in the file (a fuselage, a hub): ids or names"),
+  };
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::join, j);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
 params::Table<Config> farfield_shape_keys() {
   params::Table<FarFieldShapeConfig> f = {
       params::reals("box", &FarFieldShapeConfig::box, "", "[xmin, ymin, zmin, xmax, ymax, zmax], each min < max"),
@@ -223,6 +237,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"geometry", geometry_keys()},
       {"geometry.naca", naca_keys()},
       {"geometry.wall_plane", wall_plane_keys()},
+      {"geometry.join", join_keys()},
       {"geometry.farfield", farfield_shape_keys(), true, true},
       {"geometry.farfield.sphere", farfield_sphere_keys()},
       {"nearfield", nearfield_keys()},

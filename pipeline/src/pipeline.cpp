@@ -149,13 +149,25 @@ std::array<double, 6> generated_box(const GeometryConfig& g) {
   return {x_lo - margin, -0.5 * c - margin, 0.0, x_hi + margin, 0.5 * c + margin, w.span + margin};
 }
 
-// geometry.wall_plane and geometry.farfield = {...} as the occ backend's parameters.
+// A list as one parameter, an entry per line.
+std::string lines_text(const std::vector<std::string>& entries) {
+  std::string text;
+  for (const std::string& e : entries) text += e + "\n";
+  return text;
+}
+
+// geometry.wall_plane or geometry.join, and geometry.farfield = {...}, as the occ backend's parameters.
 void set_domain_params(const GeometryConfig& g, cad::Params& params) {
   const FarFieldShapeConfig& f = g.farfield_shape;
-  std::array<double, 6> plane{};
-  std::copy(g.wall_plane.point->begin(), g.wall_plane.point->end(), plane.begin());
-  std::copy(g.wall_plane.normal->begin(), g.wall_plane.normal->end(), plane.begin() + 3);
-  params.set("occ.wall_plane", numbers_text(plane.data(), 6));
+  if (g.join.given()) {
+    params.set("occ.join_body", lines_text(g.join.body.value_or(std::vector<std::string>{})));
+    params.set("occ.join_wall", lines_text(g.join.wall.value_or(std::vector<std::string>{})));
+  } else {
+    std::array<double, 6> plane{};
+    std::copy(g.wall_plane.point->begin(), g.wall_plane.point->end(), plane.begin());
+    std::copy(g.wall_plane.normal->begin(), g.wall_plane.normal->end(), plane.begin() + 3);
+    params.set("occ.wall_plane", numbers_text(plane.data(), 6));
+  }
   if (f.box) params.set("occ.farfield_box", numbers_text(f.box->data(), 6));
   if (f.box_chords) params.set("occ.farfield_box_chords", fmt::format("{}", *f.box_chords));
   if (f.sphere.centre) {
@@ -193,7 +205,7 @@ cad::Source cad_source(const GeometryConfig& g) {
     source.params.set("occ.scale", fmt::format("{}", g.scale));
     if (g.units != "auto") source.params.set("occ.units", g.units);
     if (g.sew_tolerance) source.params.set("occ.sew_tolerance", fmt::format("{}", *g.sew_tolerance));
-    if (g.wall_plane.given()) set_domain_params(g, source.params);
+    if (g.wall_plane.given() || g.join.given()) set_domain_params(g, source.params);
   } else if (g.wall_plane.given()) {
     throw ConfigError("config error: geometry.wall_plane: backend '" + g.backend +
                       "' cannot build a wall and a far field around a body-only file (backend \"occ\" can)");

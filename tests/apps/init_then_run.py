@@ -3,6 +3,7 @@
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
                    [--init-says TEXT ...] [--init-refuses-with TEXT] [--run-says TEXT ...]
+                   [--config TOML]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
@@ -11,6 +12,8 @@ report.json); with --gmsh, Gmsh's own certified Jacobian bounds of every element
 .msh must be positive too (tests/pipeline/gmsh_validity.py). --init-says: init's output (the
 config's header comments and its warnings) must hold TEXT. --init-refuses-with: init must exit 1
 with TEXT on stderr and write no config (nothing is run). --run-says: the run's summary must hold TEXT.
+--config: run TOML (copied to DIR/wing.toml, its geometry.source set to FILE) instead of init's
+config: a file init refuses but a user's own config meshes (an assembly joined by geometry.join).
 """
 import argparse
 import json
@@ -35,6 +38,7 @@ def main():
     parser.add_argument("--init-refuses-with", help="init must exit 1 with this text on stderr")
     parser.add_argument("--run-refuses-with", help="run must exit 1 with this text on stderr, writing no mesh")
     parser.add_argument("--run-says", action="append", default=[], help="text the run's summary must hold")
+    parser.add_argument("--config", help="a config to run instead of init's (its source set to FILE)")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -44,7 +48,12 @@ def main():
             print("FAIL: write_wing_variant exited with %d\n%s" % (done.returncode, done.stderr))
             return 1
     config = os.path.join(args.workdir, "wing.toml")
-    done = subprocess.run([args.exe, "init", "--cad", args.cad, "-o", config], capture_output=True, text=True)
+    if args.config:
+        shutil.copyfile(args.config, config)
+        args.set.insert(0, "geometry.source=" + os.path.abspath(args.cad))
+        done = subprocess.CompletedProcess([], 0, "", "")
+    else:
+        done = subprocess.run([args.exe, "init", "--cad", args.cad, "-o", config], capture_output=True, text=True)
     if args.init_refuses_with is not None:
         print(done.stderr)
         if done.returncode != 1 or args.init_refuses_with not in done.stderr:

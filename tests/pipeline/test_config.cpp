@@ -474,6 +474,31 @@ TEST(Config, WallPlaneAndFarFieldErrorsNameTheKey) {
   EXPECT_NE(e.find("unknown key geometry.farfield.cylinder"), std::string::npos) << e;
 }
 
+// An assembly's parts to join (geometry.join): both, with a far field box or sphere, for a CAD file.
+TEST(Config, JoinNamesBothPartsAndABoxForACadFile) {
+  const std::string file = "[geometry]\nbackend = \"occ\"\nsource = \"vsp.stp\"\n";
+  const std::string box = "farfield = { box = [-8, -8, -8, 9, 9, 8] }\n";
+  const std::string join = "[geometry.join]\nbody = [\"#3\", \"wing\"]\nwall = [\"#0\"]\n";
+  const Config c = parse_config(file + box + join, "case.toml");
+  EXPECT_EQ(c.geometry.join.body, (std::vector<std::string>{"#3", "wing"}));
+  EXPECT_EQ(c.geometry.join.wall, (std::vector<std::string>{"#0"}));
+  EXPECT_FALSE(parse_config(file + box + "wall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n", "case.toml")
+                   .geometry.join.given());
+  std::string e = error_of(file + join);  // no far field
+  EXPECT_NE(e.find("geometry.join.body"), std::string::npos) << e;
+  EXPECT_NE(e.find("geometry.farfield = {box = [...]}"), std::string::npos) << e;
+  e = error_of(file + "farfield = { box_chords = 20 }\n" + join);
+  EXPECT_NE(e.find("box_chords measures a root"), std::string::npos) << e;
+  e = error_of(file + box + "[geometry.join]\nbody = [\"#3\"]\n");
+  EXPECT_NE(e.find("geometry.join.wall"), std::string::npos) << e;
+  e = error_of(file + box + "[geometry.join]\nbody = []\nwall = [\"#0\"]\n");
+  EXPECT_NE(e.find("geometry.join.body"), std::string::npos) << e;
+  e = error_of(file + box + "wall_plane = { point = [0, 0, 0], normal = [0, 1, 0] }\n" + join);
+  EXPECT_NE(e.find("unset with [geometry.wall_plane]"), std::string::npos) << e;
+  e = error_of("[geometry]\nbackend = \"naca\"\n" + box + join);
+  EXPECT_NE(e.find("a CAD file's faces"), std::string::npos) << e;
+}
+
 // geometry.farfield holds one of box | sphere | box_chords: a --set of one replaces the file's
 // other (it used to be added beside it and the run refused both); a --set inside the table replaces
 // a file's surface names. The wall plane's pieces are set one by one, the other kept.

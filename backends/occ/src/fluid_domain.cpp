@@ -4,6 +4,7 @@
 
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_FindPlane.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -12,6 +13,10 @@
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <BRepLib.hxx>
 #include <Geom_Plane.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
@@ -48,10 +53,20 @@ std::string length_text(double x) {
   return out.str();
 }
 
+// The area a planar cap encloses.
+double area_of(const TopoDS_Face& face) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  return std::abs(props.Mass());
+}
+
 // The free loops of a shell (edges that bound one of its faces only), each closed by a planar face
 // through it, sewn on: an open root (the root section as free curves in the wall plane) or an open
-// flat tip becomes a closed body. A free loop that is not closed or not planar is refused by place.
-TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double tolerance, std::vector<std::string>& repairs) {
+// flat tip becomes a closed body. A free loop that is not closed or not planar, or that encloses no
+// area (a section pinched to zero thickness, its loop running out and back along itself), is
+// refused by place. `what` names the key and the part: "geometry.wall_plane: the body".
+TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double tolerance, const std::string& what,
+                                      std::vector<std::string>& repairs) {
   ShapeAnalysis_FreeBounds bounds(shell, tolerance, /*splitclosed=*/false, /*splitopen=*/true);
   const TopoDS_Compound& closed = bounds.GetClosedWires();
   const TopoDS_Compound& open = bounds.GetOpenWires();
@@ -59,7 +74,7 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
     Bnd_Box b;
     BRepBndLib::Add(open, b);
     const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
-    refuse("geometry.wall_plane: the body's free edges near (" + length_text(c.X()) + ", " + length_text(c.Y()) + ", " +
+    refuse(what + "'s free edges near (" + length_text(c.X()) + ", " + length_text(c.Y()) + ", " +
            length_text(c.Z()) + ") form no closed loop, so no face can close the body there (sew it with "
            "geometry.sew_tolerance, or close it in a CAD tool)");
   }
@@ -76,14 +91,18 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
       Bnd_Box b;
       BRepBndLib::Add(w.Current(), b);
       const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
-      refuse("geometry.wall_plane: the body is open along a loop of free edges around (" + length_text(c.X()) + ", " +
+      refuse(what + " is open along a loop of free edges around (" + length_text(c.X()) + ", " +
              length_text(c.Y()) + ", " + length_text(c.Z()) + ") that does not lie in one plane; only a planar "
              "opening (an open root or flat tip) is closed here: close it in a CAD tool");
     }
-    sewing.Add(cap.Face());
     Bnd_Box b;
     BRepBndLib::Add(wire, b);
     const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
+    if (area_of(cap.Face()) <= tolerance * std::sqrt(b.SquareExtent()))
+      refuse(what + " is open along a loop of free edges around (" + length_text(c.X()) + ", " + length_text(c.Y()) +
+             ", " + length_text(c.Z()) + ") that encloses no area (a section pinched to zero thickness): no face can "
+             "close it; close the part in a CAD tool");
+    sewing.Add(cap.Face());
     int edges = 0;
     for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edges;
     repairs.push_back("closed an open flat loop of " + std::to_string(edges) + " free edge(s) around (" +
@@ -94,24 +113,25 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
 }
 
 // The body as solids with their normals pointing out of them: its solids, else its shells (open
-// ones closed across their planar openings) made solid.
-TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance, std::vector<std::string>& repairs) {
+// ones closed across their planar openings) made solid. `what` as for with_planar_loops_capped.
+TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance, const std::string& what,
+                         std::vector<std::string>& repairs) {
   TopoDS_Compound solids;
   BRep_Builder builder;
   builder.MakeCompound(solids);
   int count = 0;
   for (TopExp_Explorer s(body, TopAbs_SOLID); s.More(); s.Next(), ++count) builder.Add(solids, s.Current());
   for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next()) {
-    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance, repairs);
+    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance, what, repairs);
     for (TopExp_Explorer sh(closed, TopAbs_SHELL); sh.More(); sh.Next(), ++count) {
       BRepBuilderAPI_MakeSolid make(TopoDS::Shell(sh.Current()));
-      if (!make.IsDone()) refuse("geometry.wall_plane: the body's shell cannot be made a solid (is it closed?)");
+      if (!make.IsDone()) refuse(what + "'s shell cannot be made a solid (is it closed?)");
       TopoDS_Solid solid = make.Solid();
       BRepLib::OrientClosedSolid(solid);
       builder.Add(solids, solid);
     }
   }
-  if (count == 0) refuse("geometry.wall_plane: the CAD file holds no closed body (no solid, no shell) to stand on the plane");
+  if (count == 0) refuse(what + ": no closed part (no solid, no shell) in the CAD file");
   return solids;
 }
 
@@ -229,15 +249,27 @@ TopoDS_Shape run(Operation& op, const TopoDS_Shape& object, const TopoDS_Shape& 
   if (!op.IsDone() || op.HasErrors()) {
     std::ostringstream report;
     op.DumpErrors(report);
-    refuse("geometry.wall_plane / geometry.farfield: OCCT's Boolean operation (" + what + ") failed: " + report.str());
+    refuse("geometry.wall_plane | geometry.join / geometry.farfield: OCCT's Boolean operation (" + what + ") failed: " +
+           report.str());
   }
   return op.Shape();
 }
 
-// The faces of the result that come from `face` through the cut (itself when left as it was).
-TopTools_ListOfShape images(BRepAlgoAPI_Cut& cut, const TopoDS_Shape& face) {
-  TopTools_ListOfShape out = cut.Modified(face);
-  if (out.IsEmpty() && !cut.IsDeleted(face)) out.Append(face);
+// The faces of the result that come from `face` through the operation (itself when left as it was).
+TopTools_ListOfShape images(BRepAlgoAPI_BooleanOperation& op, const TopoDS_Shape& face) {
+  TopTools_ListOfShape out = op.Modified(face);
+  if (out.IsEmpty() && !op.IsDeleted(face)) out.Append(face);
+  return out;
+}
+
+// The same through two operations, `first` then `second`.
+TopTools_ListOfShape images(BRepAlgoAPI_BooleanOperation& first, BRepAlgoAPI_BooleanOperation& second,
+                            const TopoDS_Shape& face) {
+  TopTools_ListOfShape out;
+  for (const TopoDS_Shape& image : images(first, face)) {
+    TopTools_ListOfShape of_image = images(second, image);
+    out.Append(of_image);
+  }
   return out;
 }
 
@@ -265,11 +297,78 @@ FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const T
   return names;
 }
 
+// The faces of `shape` an entry names, numbered as the model numbers them (model_from_shape:
+// TopExp::MapShapes): "#<id>", "face_<id>", or a name the file gives (every face of that name).
+std::vector<TopoDS_Face> named_faces(const TopTools_IndexedMapOfShape& faces, const FaceNames& names,
+                                     const std::string& entry, const std::string& key) {
+  std::vector<TopoDS_Face> out;
+  const std::string id_text = entry.rfind('#', 0) == 0 ? entry.substr(1)
+                              : entry.rfind("face_", 0) == 0 ? entry.substr(5)
+                                                             : std::string();
+  if (!id_text.empty() && id_text.find_first_not_of("0123456789") == std::string::npos) {
+    const int id = std::stoi(id_text);
+    if (id >= faces.Extent())
+      refuse(key + ": no face " + entry + ": the file has " + std::to_string(faces.Extent()) + " faces, #0 .. #" +
+             std::to_string(faces.Extent() - 1) + " (semimesh cad-info FILE lists them)");
+    out.push_back(TopoDS::Face(faces(id + 1)));
+    return out;
+  }
+  for (int i = 1; i <= faces.Extent(); ++i)
+    for (const auto& [face, name] : names)
+      if (name == entry && face.IsSame(faces(i))) {
+        out.push_back(TopoDS::Face(faces(i)));
+        break;
+      }
+  if (out.empty()) refuse(key + ": no face named '" + entry + "' in the file (semimesh cad-info FILE lists them)");
+  return out;
+}
+
+// The faces a part's entries name, as one shell (they were sewn at load: neighbours share edges).
+TopoDS_Shell part_shell(const TopTools_IndexedMapOfShape& faces, const FaceNames& names,
+                        const std::vector<std::string>& entries, const std::string& key,
+                        TopTools_IndexedMapOfShape& taken) {
+  if (entries.empty()) refuse(key + ": no faces given");
+  TopoDS_Shell shell;
+  BRep_Builder builder;
+  builder.MakeShell(shell);
+  for (const std::string& entry : entries)
+    for (const TopoDS_Face& face : named_faces(faces, names, entry, key)) {
+      if (taken.Contains(face)) refuse(key + ": face " + entry + " is named twice (in geometry.join.body and .wall, or twice)");
+      taken.Add(face);
+      builder.Add(shell, face);
+    }
+  return shell;
+}
+
+// Names of the joined domain's faces: the body's as carried through the union and the cut, "wall"
+// for what is left of the wall part, the rest far field.
+FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepAlgoAPI_Cut& cut,
+                       const TopoDS_Shape& body, const TopoDS_Shape& wall, const FaceNames& file_names) {
+  FaceNames names;
+  TopTools_IndexedMapOfShape from_body, from_wall;
+  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next())
+    for (const TopoDS_Shape& image : images(fuse, cut, f.Current())) from_body.Add(image);
+  for (TopExp_Explorer f(wall, TopAbs_FACE); f.More(); f.Next())
+    for (const TopoDS_Shape& image : images(fuse, cut, f.Current())) from_wall.Add(image);
+  for (const auto& [face, name] : file_names)
+    for (const TopoDS_Shape& image : images(fuse, cut, face))
+      if (from_body.Contains(image)) names.emplace_back(image, name);
+  int walls = 0, outer = 0;
+  for (TopExp_Explorer f(domain, TopAbs_FACE); f.More(); f.Next()) {
+    if (from_body.Contains(f.Current())) continue;
+    if (from_wall.Contains(f.Current()))
+      names.emplace_back(f.Current(), walls++ ? "wall_" + std::to_string(walls) : std::string("wall"));
+    else
+      names.emplace_back(f.Current(), "farfield_" + std::to_string(outer++));
+  }
+  return names;
+}
+
 }  // namespace
 
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
                           FaceNames& names, std::vector<std::string>& repairs) {
-  const TopoDS_Shape solids = body_solids(body, tolerance, repairs);
+  const TopoDS_Shape solids = body_solids(body, tolerance, "geometry.wall_plane: the body", repairs);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
   const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);
@@ -286,6 +385,47 @@ TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const
   solid.Next();
   if (solid.More()) refuse(wall.label + ": the fluid domain falls apart into several pieces");
   names = domain_names(fluid, cut, solids, names, wall, tolerance);
+  return fluid;
+}
+
+}  // namespace semimesh::occ
+
+namespace semimesh::occ {
+
+TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin& parts, const FarFieldShape& far,
+                                   double tolerance, FaceNames& names, std::vector<std::string>& repairs) {
+  if (far.box_chords)
+    refuse(far.label + ": geometry.join needs the far field as a box or a sphere (box_chords measures a root the "
+                       "parts do not have before they are joined)");
+  TopTools_IndexedMapOfShape faces, taken;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  const TopoDS_Shell body_faces = part_shell(faces, names, parts.body, "geometry.join.body", taken);
+  const TopoDS_Shell wall_faces = part_shell(faces, names, parts.wall, "geometry.join.wall", taken);
+  const TopoDS_Shape body = body_solids(body_faces, tolerance, "geometry.join.body: the body", repairs);
+  const TopoDS_Shape wall = body_solids(wall_faces, tolerance, "geometry.join.wall: the wall", repairs);
+  if (const int left_out = faces.Extent() - taken.Extent(); left_out > 0)
+    repairs.push_back("left out " + std::to_string(left_out) + " face(s) of the file that geometry.join does not name");
+
+  BRepExtrema_DistShapeShape apart(body, wall);
+  if (apart.IsDone() && apart.Value() > tolerance) {
+    const gp_Pnt p = apart.PointOnShape1(1);
+    refuse("geometry.join: the body does not reach the wall: it comes within " + length_text(apart.Value()) +
+           " of it, at (" + length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+  }
+  const TopoDS_Shape outer = far_solid(far, gp::DZ(), body, {});
+  require_inside(body, outer, far, tolerance);
+
+  // The union first: the root curve is the parts' exact intersection.
+  BRepAlgoAPI_Fuse fuse;
+  const TopoDS_Shape joined = run(fuse, body, wall, 0.1 * tolerance, "body and wall joined");
+  BRepAlgoAPI_Cut cut;
+  const TopoDS_Shape domain = run(cut, outer, joined, 0.1 * tolerance, "far field minus the joined parts");
+  TopExp_Explorer solid(domain, TopAbs_SOLID);
+  if (!solid.More()) refuse("geometry.join: the Boolean operations left no fluid domain");
+  const TopoDS_Shape fluid = solid.Current();
+  solid.Next();
+  if (solid.More()) refuse("geometry.join: the fluid domain falls apart into several pieces (does the far field cut the body?)");
+  names = joined_names(fluid, fuse, cut, body, wall, names);
   return fluid;
 }
 

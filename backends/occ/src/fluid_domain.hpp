@@ -43,4 +43,20 @@ struct FarFieldShape {
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
                           FaceNames& names, std::vector<std::string>& repairs);
 
+/// The parts of an assembly to join (geometry.join): the body's and the wall's faces of the file,
+/// each a face id ("#7", as `semimesh cad-info` numbers the file's faces) or a face name.
+struct PartsToJoin {
+  std::vector<std::string> body, wall;
+};
+
+/// The fluid domain of an assembly whose body (a wing) reaches into its wall (a fuselage, a hub)
+/// without being joined to it, as OpenVSP exports one: the far field minus the union of the two
+/// parts (each made a solid, flat open loops capped), every other face of the file left out. The
+/// body's faces keep their names, the wall's become "wall" ("wall_<k>" when cut in several), the
+/// far field's "farfield_<k>". Throws cad::CadError(BadParameter) naming the key when a face is
+/// unknown or named twice, a part is not closed, the body does not reach into the wall, or the far
+/// field does not hold the body; a far field of box_chords is refused (no root to measure yet).
+TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin& parts, const FarFieldShape& far,
+                                   double tolerance, FaceNames& names, std::vector<std::string>& repairs);
+
 }  // namespace semimesh::occ

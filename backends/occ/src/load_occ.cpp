@@ -97,21 +97,8 @@ std::string list_text(const double* x, std::size_t n) {
   return text + "]";
 }
 
-// occ.wall_plane and one occ.farfield_*: the fluid domain is built around a body-only file.
-std::optional<std::pair<WallPlane, FarFieldShape>> domain_request(const cad::Params& params) {
-  const bool far = params.has("occ.farfield_box") || params.has("occ.farfield_sphere") || params.has("occ.farfield_box_chords");
-  if (!params.has("occ.wall_plane") && !far) return std::nullopt;
-  if (!params.has("occ.wall_plane") || !far)
-    throw CadError(CadError::Kind::BadParameter,
-                   "parameters 'occ.wall_plane' (geometry.wall_plane) and one of 'occ.farfield_box', "
-                   "'occ.farfield_sphere', 'occ.farfield_box_chords' (geometry.farfield = {box | sphere | box_chords}) "
-                   "go together: the wall and the far field are built around a body-only file");
-  const auto w = numbers<6>(params, "occ.wall_plane", "6 numbers: point x, y, z, normal x, y, z");
-  const gp_Vec normal(w[3], w[4], w[5]);
-  if (normal.Magnitude() == 0.0)
-    throw CadError(CadError::Kind::BadParameter, "parameter 'occ.wall_plane': the normal is zero");
-  WallPlane wall{gp_Pnt(w[0], w[1], w[2]), gp_Dir(normal),
-                 "geometry.wall_plane = {point = " + list_text(w.data(), 3) + ", normal = " + list_text(w.data() + 3, 3) + "}"};
+// One occ.farfield_*: the far field built around a body-only file or joined parts.
+std::optional<FarFieldShape> far_field_request(const cad::Params& params) {
   FarFieldShape shape;
   if (params.has("occ.farfield_box")) {
     shape.box = numbers<6>(params, "occ.farfield_box", "6 numbers: xmin, ymin, zmin, xmax, ymax, zmax");
@@ -124,19 +111,69 @@ std::optional<std::pair<WallPlane, FarFieldShape>> domain_request(const cad::Par
     const auto& s = *shape.sphere;
     if (!(s[3] > 0.0)) throw CadError(CadError::Kind::BadParameter, "parameter 'occ.farfield_sphere': expected a radius > 0");
     shape.label = "geometry.farfield = {sphere = {centre = " + list_text(s.data(), 3) + ", radius = " + number_label(s[3]) + "}}";
-  } else {
+  } else if (params.has("occ.farfield_box_chords")) {
     shape.box_chords = params.get_double("occ.farfield_box_chords", 0.0);
     if (!(*shape.box_chords > 0.0))
       throw CadError(CadError::Kind::BadParameter, "parameter 'occ.farfield_box_chords': expected a number > 0");
     shape.label = "geometry.farfield = {box_chords = " + number_label(*shape.box_chords) + "}";
+  } else {
+    return std::nullopt;
   }
-  return std::make_pair(wall, shape);
+  return shape;
+}
+
+// A parameter holding a list, one entry per line.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
+}
+
+// What to build around the file's shape: nothing, a wall plane and a far field (a body-only file),
+// or the join of two of its parts inside a far field (an assembly).
+struct DomainRequest {
+  std::optional<WallPlane> wall_plane;
+  std::optional<PartsToJoin> join;
+  FarFieldShape far;
+};
+
+std::optional<DomainRequest> domain_request(const cad::Params& params) {
+  const std::optional<FarFieldShape> far = far_field_request(params);
+  const bool join = params.has("occ.join_body") || params.has("occ.join_wall");
+  const bool plane = params.has("occ.wall_plane");
+  if (!plane && !join && !far) return std::nullopt;
+  if (plane && join)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameters 'occ.wall_plane' (geometry.wall_plane) and 'occ.join_*' (geometry.join) exclude each "
+                   "other: a body-only file stands on a plane, an assembly's body on the wall part it is joined to");
+  if ((!plane && !join) || !far)
+    throw CadError(CadError::Kind::BadParameter,
+                   "parameters 'occ.wall_plane' (geometry.wall_plane) or 'occ.join_body' and 'occ.join_wall' "
+                   "(geometry.join), and one of 'occ.farfield_box', 'occ.farfield_sphere', 'occ.farfield_box_chords' "
+                   "(geometry.farfield = {box | sphere | box_chords}) go together: the far field is built around a "
+                   "body-only file or the joined parts of an assembly");
+  DomainRequest request{std::nullopt, std::nullopt, *far};
+  if (join) {
+    request.join = PartsToJoin{lines_of(params.get_string("occ.join_body", "")), lines_of(params.get_string("occ.join_wall", ""))};
+    return request;
+  }
+  const auto w = numbers<6>(params, "occ.wall_plane", "6 numbers: point x, y, z, normal x, y, z");
+  const gp_Vec normal(w[3], w[4], w[5]);
+  if (normal.Magnitude() == 0.0)
+    throw CadError(CadError::Kind::BadParameter, "parameter 'occ.wall_plane': the normal is zero");
+  request.wall_plane = WallPlane{gp_Pnt(w[0], w[1], w[2]), gp_Dir(normal),
+                                 "geometry.wall_plane = {point = " + list_text(w.data(), 3) + ", normal = " +
+                                     list_text(w.data() + 3, 3) + "}"};
+  return request;
 }
 
 std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   const cad::Params& params = source.params;
   params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside",
-                        "occ.wall_plane", "occ.farfield_box", "occ.farfield_sphere", "occ.farfield_box_chords"},
+                        "occ.wall_plane", "occ.farfield_box", "occ.farfield_sphere", "occ.farfield_box_chords",
+                        "occ.join_body", "occ.join_wall"},
                        kBackend);
   const auto domain = domain_request(params);
   const double scale = params.get_double("occ.scale", 1.0);
@@ -169,7 +206,8 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   if (params.get_bool("occ.heal", true)) shape = heal_shape(shape, tolerance, read.face_names);
   if (domain) {
     try {
-      shape = fluid_domain(shape, domain->first, domain->second, 10.0 * tolerance, read.face_names, repairs);
+      shape = domain->join ? fluid_domain_of_parts(shape, *domain->join, domain->far, 10.0 * tolerance, read.face_names, repairs)
+                           : fluid_domain(shape, *domain->wall_plane, domain->far, 10.0 * tolerance, read.face_names, repairs);
     } catch (const CadError& error) {
       throw CadError(error.kind(), "'" + source.path + "': " + error.what());
     }

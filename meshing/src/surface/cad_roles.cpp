@@ -235,6 +235,13 @@ Extent extent(const std::vector<Vec3>& points, const Vec3& direction, const Vec3
 
 }  // namespace
 
+// The faces as geometry.join entries: ["#0", "#1", "#2"].
+std::string join_entries(const std::vector<int>& faces) {
+  std::string text;
+  for (int s : faces) text += fmt::format("{}\"#{}\"", text.empty() ? "" : ", ", s);
+  return "[" + text + "]";
+}
+
 void refuse_overlapping_parts(const cad::Model& model) {
   const std::vector<std::vector<int>> parts = parts_of(model);
   if (parts.size() < 2) return;
@@ -243,15 +250,23 @@ void refuse_overlapping_parts(const cad::Model& model) {
   const double margin = 1e-3 * model.bbox().diagonal();
   for (std::size_t i = 0; i < parts.size(); ++i)
     for (std::size_t j = i + 1; j < parts.size(); ++j)
-      if (overlap(boxes[i], boxes[j], margin))
+      if (overlap(boxes[i], boxes[j], margin)) {
+        // The smaller part is the body (a wing in a fuselage, a blade on a hub).
+        const bool i_smaller = boxes[i].diagonal() < boxes[j].diagonal();
+        const std::vector<int>& body = parts[i_smaller ? i : j];
+        const std::vector<int>& wall = parts[i_smaller ? j : i];
         fail(fmt::format(
             "the model falls apart into {} parts that share no curve, and two of them overlap: "
             "{} and {}; a body must share its root curves with the wall it stands on. An assembly of "
             "overlapping parts (a wing reaching into a fuselage or a hub, as OpenVSP and other design tools "
-            "export) must be joined first: unite the wing with the fuselage in a CAD tool (a Boolean union, "
-            "keeping one wing), or give the wing alone with geometry.wall_plane; parts meant to touch that "
-            "do not (faces left unsewn) need geometry.sew_tolerance above their gap",
-            parts.size(), part_label(model, parts[i], boxes[i]), part_label(model, parts[j], boxes[j])));
+            "export) is joined at load when its parts are named: geometry.join = {{body = {}, wall = {}}} with "
+            "geometry.farfield = {{box = [...]}} crossing the wall part's ends (the faces are the file's, as "
+            "`semimesh cad-info FILE` lists them; leave out the other wing and the tails); or unite the parts in a "
+            "CAD tool. Parts meant to touch that do not (faces left unsewn) need geometry.sew_tolerance above "
+            "their gap",
+            parts.size(), part_label(model, parts[i], boxes[i]), part_label(model, parts[j], boxes[j]),
+            join_entries(body), join_entries(wall)));
+      }
 }
 
 void refuse_seam_through_root(const cad::Model& model) {

@@ -101,6 +101,16 @@ Key<P> strings(std::string name, std::vector<std::string> P::*m, std::string ran
           [m](P& p, const Value& v) { p.*m = std::get<std::vector<std::string>>(v); }};
 }
 
+template <class P>
+Key<P> strings(std::string name, std::optional<std::vector<std::string>> P::*m, std::string range, std::string doc) {
+  return {std::move(name), Type::Strings, std::move(range), std::move(doc), 0, true,
+          [m](const P& p) { return p.*m ? Value(*(p.*m)) : Value(); },
+          [m](P& p, const Value& v) {
+            if (std::holds_alternative<std::vector<std::string>>(v)) p.*m = std::get<std::vector<std::string>>(v);
+            else p.*m = std::nullopt;
+          }};
+}
+
 template <class P, std::size_t N>
 Key<P> reals(std::string name, std::array<double, N> P::*m, std::string range, std::string doc) {
   return {std::move(name), Type::Reals, std::move(range), std::move(doc), N, false,

@@ -57,6 +57,15 @@ struct WallPlaneConfig {
   bool given() const { return point || normal; }
 };
 
+/// [geometry.join]: an assembly whose body reaches into its wall without being joined to it (an
+/// OpenVSP export): the file's faces of each part, by id ("#7") or name; joined at load, every
+/// other face left out. Both keys or neither.
+struct JoinConfig {
+  std::optional<std::vector<std::string>> body;
+  std::optional<std::vector<std::string>> wall;
+  bool given() const { return body || wall; }
+};
+
 /// [geometry.farfield.sphere]
 struct FarFieldSphereConfig {
   std::optional<std::array<double, 3>> centre;
@@ -84,8 +93,10 @@ struct GeometryConfig {
   std::vector<std::string> body = {"auto"};
   std::string wall = "auto";
   std::vector<std::string> farfield = {"auto"};
-  /// A body-only file: the wall and the far field built by the backend (both or neither).
+  /// A body-only file: the wall and the far field built by the backend (both or neither); or an
+  /// assembly: its parts joined and the far field built around them.
   WallPlaneConfig wall_plane;
+  JoinConfig join;
   FarFieldShapeConfig farfield_shape;
 };
 

@@ -1,0 +1,168 @@
+// An assembly whose body reaches into its wall part without being joined to it (occ.join_body,
+// occ.join_wall with a far field box): the parts joined by OCCT's Booleans at load, and the bad
+// input it refuses, each naming the key.
+#include "semimesh/cad/error.hpp"
+#include "semimesh/cad/labels.hpp"
+#include "semimesh/occ/occ_backend.hpp"
+#include "temp_path.hpp"
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <GeomConvert.hxx>
+#include <GeomFill_Generator.hxx>
+#include <Geom_Ellipse.hxx>
+#include <Precision.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace semimesh::occ {
+namespace {
+
+// A cylinder of radius 1 along x from -5 to 5, its crest on z = 0, its seam along its bottom (the
+// "fuselage").
+TopoDS_Shape fuselage() {
+  return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-5, 0, -1), gp::DX(), -gp::DZ()), 1.0, 10.0).Shape();
+}
+
+// The parts side by side in one BREP file, not joined.
+std::string file_of(const TopoDS_Shape& body, const TopoDS_Shape& wall, const std::string& name) {
+  TopoDS_Compound parts;
+  BRep_Builder builder;
+  builder.MakeCompound(parts);
+  builder.Add(parts, body);
+  builder.Add(parts, wall);
+  const std::string path = semimesh::test::temp_path(name).string();
+  EXPECT_TRUE(BRepTools::Write(parts, path.c_str()));
+  return path;
+}
+
+// A block 1 x 0.2 x 2.3 (the "wing", faces #0-#5) standing 0.3 deep in the fuselage (faces #6-#8:
+// side and flat ends); `lift` raises the block.
+std::string assembly_file(double lift = 0.0) {
+  const TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, -0.1, -0.3 + lift), gp_Pnt(1, 0.1, 2 + lift)).Shape();
+  return file_of(block, fuselage(), lift == 0.0 ? "assembly.brep" : "assembly_apart.brep");
+}
+
+const std::vector<std::pair<std::string, std::string>> kJoin = {
+    {"occ.join_body", "#0\n#1\n#2\n#3\n#4\n#5\n"}, {"occ.join_wall", "#6\n#7\n#8\n"}, {"occ.farfield_box", "-4,-4,-4,4,4,4"}};
+
+std::unique_ptr<cad::Model> load_assembly(const std::vector<std::pair<std::string, std::string>>& params, double lift = 0.0) {
+  cad::Source source{assembly_file(lift), {}};
+  for (const auto& [key, value] : params) source.params.set(key, value);
+  return load_occ(source);
+}
+
+std::string assembly_error_of(std::vector<std::pair<std::string, std::string>> params, double lift = 0.0) {
+  try {
+    load_assembly(params, lift);
+  } catch (const cad::CadError& e) {
+    EXPECT_EQ(e.kind(), cad::CadError::Kind::BadParameter);
+    return e.what();
+  }
+  ADD_FAILURE() << "no CadError";
+  return {};
+}
+
+std::vector<std::pair<std::string, std::string>> join_with(std::vector<std::pair<std::string, std::string>> params,
+                                                           const std::string& key, const std::string& value) {
+  for (auto& [k, v] : params)
+    if (k == key) {
+      v = value;
+      return params;
+    }
+  params.emplace_back(key, value);
+  return params;
+}
+
+TEST(OccJoinParts, TheWallHoldsTheBodysRootAsAHole) {
+  const auto model = load_assembly(kJoin);
+  // The box's six faces, the cylinder's side between them, the block's four sides and its top (its
+  // bottom lies inside the cylinder): 12 faces, every curve bounding two of them.
+  EXPECT_EQ(model->num_surfaces(), 12);
+  for (int c = 0; c < model->num_curves(); ++c) {
+    EXPECT_EQ(model->surfaces_of_curve(c).size(), 2u) << cad::curve_label(*model, c);
+  }
+  const std::optional<int> wall = model->find_surface("wall");
+  ASSERT_TRUE(wall.has_value());
+  EXPECT_EQ(model->loops(*wall).size(), 2u) << "the outer boundary and the block's root";
+  EXPECT_FALSE(model->surface(*wall).is_planar());
+  int far = 0;
+  for (int s = 0; s < model->num_surfaces(); ++s) far += model->surface(s).name().rfind("farfield_", 0) == 0;
+  EXPECT_EQ(far, 6);
+  // The root curve is the exact intersection: its points on the cylinder and on the block's sides.
+  for (const cad::CurveUse& use : model->loops(*wall)[1].uses) {
+    const cad::Curve& curve = model->curve(use.curve);
+    const cad::Interval b = curve.bounds();
+    for (int i = 0; i <= 8; ++i) {
+      const cad::Vec3 p = curve.point(b.lo + b.length() * i / 8);
+      EXPECT_NEAR(std::hypot(p.y(), p.z() + 1.0), 1.0, 1e-6) << "on the cylinder";
+      EXPECT_TRUE(std::abs(std::abs(p.y()) - 0.1) < 1e-6 || std::abs(p.x()) < 1e-6 || std::abs(p.x() - 1) < 1e-6)
+          << "on a side of the block";
+    }
+  }
+}
+
+TEST(OccJoinParts, FacesLeftOutAreSaid) {
+  // The block's top named twice would be refused; the cylinder's flat ends left out of the wall part:
+  // they lie outside the box, so the domain is the same, and the repair says two faces were left out.
+  const auto model = load_assembly(join_with(kJoin, "occ.join_wall", "#6\n"));
+  EXPECT_TRUE(model->find_surface("wall").has_value());
+  EXPECT_TRUE(std::any_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+    return r.find("left out 2 face(s)") != std::string::npos;
+  }));
+}
+
+TEST(OccJoinParts, BadPartsAreRefusedNamingTheKey) {
+  EXPECT_NE(assembly_error_of(join_with(kJoin, "occ.join_body", "#0\n#99\n")).find("geometry.join.body: no face #99"), std::string::npos);
+  EXPECT_NE(assembly_error_of(join_with(kJoin, "occ.join_body", "wing\n")).find("geometry.join.body: no face named 'wing'"),
+            std::string::npos);
+  EXPECT_NE(assembly_error_of(join_with(kJoin, "occ.join_wall", "#5\n#6\n#7\n#8\n")).find("named twice"), std::string::npos);
+  EXPECT_NE(assembly_error_of(kJoin, /*lift=*/3.0).find("geometry.join: the body does not reach the wall"), std::string::npos);
+  // The wing's bottom face left out: the block is open along a planar loop, closed again by a cap.
+  EXPECT_NO_THROW(load_assembly(join_with(kJoin, "occ.join_body", "#0\n#1\n#2\n#3\n#5\n")));
+}
+
+TEST(OccJoinParts, TheFarFieldMustBeABoxOrASphereHoldingTheBody) {
+  auto chords = join_with(kJoin, "occ.farfield_box_chords", "3");
+  chords.erase(std::remove_if(chords.begin(), chords.end(), [](const auto& kv) { return kv.first == "occ.farfield_box"; }),
+               chords.end());
+  EXPECT_NE(assembly_error_of(chords).find("box or a sphere"), std::string::npos);
+  EXPECT_NE(assembly_error_of(join_with(kJoin, "occ.farfield_box", "-4,-4,-4,4,4,1")).find("does not contain the body"), std::string::npos);
+  EXPECT_NE(assembly_error_of(join_with(kJoin, "occ.wall_plane", "0,0,0,0,0,1")).find("exclude each other"), std::string::npos);
+  auto no_far = kJoin;
+  no_far.pop_back();
+  EXPECT_NE(assembly_error_of(no_far).find("go together"), std::string::npos);
+}
+
+// A "wing" lofted from a section pinched flat at its root (an ellipse of minor radius 1e-9, inside
+// the fuselage) to an open elliptic tip: its root loop runs out and back along itself, enclosing no
+// area, so no face closes it (an OpenVSP wing whose root section has zero thickness). Before the
+// check, a cap of zero area was sewn on and the Booleans returned a domain with dangling curves.
+TEST(OccJoinParts, APinchedOpenLoopIsRefused) {
+  GeomFill_Generator loft;
+  for (const auto& [z, minor] : {std::pair{-0.3, 1e-9}, std::pair{2.0, 0.1}})
+    loft.AddCurve(GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(gp_Pnt(0.5, 0, z), gp::DZ(), gp::DX()), 0.5, minor)));
+  loft.Perform(Precision::Confusion());
+  const TopoDS_Face skin = BRepBuilderAPI_MakeFace(loft.Surface(), Precision::Confusion()).Face();
+  cad::Source source{file_of(skin, fuselage(), "assembly_pinched.brep"), {}};
+  source.params.set("occ.join_body", "#0\n");
+  source.params.set("occ.join_wall", "#1\n#2\n#3\n");
+  source.params.set("occ.farfield_box", "-4,-4,-4,4,4,4");
+  try {
+    load_occ(source);
+    ADD_FAILURE() << "no CadError";
+  } catch (const cad::CadError& e) {
+    EXPECT_NE(std::string(e.what()).find("geometry.join.body: the body is open along a loop"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("encloses no area"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::occ
