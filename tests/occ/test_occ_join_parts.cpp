@@ -26,9 +26,10 @@ namespace semimesh::occ {
 namespace {
 
 // A cylinder of radius 1 along x from -5 to 5, its crest on z = 0, its seam along its bottom (the
-// "fuselage").
-TopoDS_Shape fuselage() {
-  return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-5, 0, -1), gp::DX(), -gp::DZ()), 1.0, 10.0).Shape();
+// "fuselage") or along its crest.
+TopoDS_Shape fuselage(bool seam_on_crest = false) {
+  return BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(-5, 0, -1), gp::DX(), seam_on_crest ? gp::DZ() : -gp::DZ()), 1.0, 10.0)
+      .Shape();
 }
 
 // The parts side by side in one BREP file, not joined.
@@ -45,9 +46,10 @@ std::string file_of(const TopoDS_Shape& body, const TopoDS_Shape& wall, const st
 
 // A block 1 x 0.2 x 2.3 (the "wing", faces #0-#5) standing 0.3 deep in the fuselage (faces #6-#8:
 // side and flat ends); `lift` raises the block.
-std::string assembly_file(double lift = 0.0) {
+std::string assembly_file(double lift = 0.0, bool seam_on_crest = false) {
   const TopoDS_Shape block = BRepPrimAPI_MakeBox(gp_Pnt(0, -0.1, -0.3 + lift), gp_Pnt(1, 0.1, 2 + lift)).Shape();
-  return file_of(block, fuselage(), lift == 0.0 ? "assembly.brep" : "assembly_apart.brep");
+  return file_of(block, fuselage(seam_on_crest),
+                 seam_on_crest ? "assembly_crest.brep" : lift == 0.0 ? "assembly.brep" : "assembly_apart.brep");
 }
 
 const std::vector<std::pair<std::string, std::string>> kJoin = {
@@ -107,6 +109,31 @@ TEST(OccJoinParts, TheWallHoldsTheBodysRootAsAHole) {
           << "on a side of the block";
     }
   }
+}
+
+// A fuselage whose seam runs along its crest, through the block's root: joined as it is, the root
+// loop would be cut open along the seam and become part of the wall's outer boundary. The wall is
+// re-seamed on its far side first (the same cylinder turned half a turn about its axis).
+TEST(OccJoinParts, AWallSeamThroughTheRootIsMovedAway) {
+  cad::Source source{assembly_file(0.0, /*seam_on_crest=*/true), {}};
+  for (const auto& [key, value] : kJoin) source.params.set(key, value);
+  const auto model = load_occ(source);
+  const std::optional<int> wall = model->find_surface("wall");
+  ASSERT_TRUE(wall.has_value());
+  EXPECT_EQ(model->loops(*wall).size(), 2u) << "the root is a hole of the wall";
+  EXPECT_TRUE(std::any_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+    return r.find("moved the seam of 1 face(s)") != std::string::npos;
+  }));
+  // The seam now runs along the bottom (z = -2), away from the root.
+  int seams = 0;
+  for (int c = 0; c < model->num_curves(); ++c) {
+    const auto& uses = model->surfaces_of_curve(c);
+    if (uses.size() != 2 || uses[0].surface != *wall || uses[1].surface != *wall) continue;
+    ++seams;
+    const cad::Interval b = model->curve(c).bounds();
+    EXPECT_NEAR(model->curve(c).point(0.5 * (b.lo + b.hi)).z(), -2.0, 1e-9) << cad::curve_label(*model, c);
+  }
+  EXPECT_EQ(seams, 1);
 }
 
 TEST(OccJoinParts, FacesLeftOutAreSaid) {

@@ -1,5 +1,7 @@
 #include "fluid_domain.hpp"
 
+#include "seam_away.hpp"
+
 #include "semimesh/cad/error.hpp"
 
 #include <BRepAlgoAPI_Common.hxx>
@@ -340,6 +342,16 @@ TopoDS_Shell part_shell(const TopTools_IndexedMapOfShape& faces, const FaceNames
   return shell;
 }
 
+// The faces of `shape` in one shell: its own when it is one (sewing one face returns the face).
+TopoDS_Shell one_shell(const TopoDS_Shape& shape) {
+  if (TopExp_Explorer shell(shape, TopAbs_SHELL); shell.More()) return TopoDS::Shell(shell.Current());
+  TopoDS_Shell shell;
+  BRep_Builder builder;
+  builder.MakeShell(shell);
+  for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) builder.Add(shell, f.Current());
+  return shell;
+}
+
 // Names of the joined domain's faces: the body's as carried through the union and the cut, "wall"
 // for what is left of the wall part, the rest far field.
 FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepAlgoAPI_Cut& cut,
@@ -402,7 +414,11 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   const TopoDS_Shell body_faces = part_shell(faces, names, parts.body, "geometry.join.body", taken);
   const TopoDS_Shell wall_faces = part_shell(faces, names, parts.wall, "geometry.join.wall", taken);
   const TopoDS_Shape body = body_solids(body_faces, tolerance, "geometry.join.body: the body", repairs);
-  const TopoDS_Shape wall = body_solids(wall_faces, tolerance, "geometry.join.wall: the wall", repairs);
+  // The wall's seams away from the body: through the root they would cut it open (no hole).
+  const Bnd_Box body_box = global_box(body);
+  const gp_Pnt body_centre = body_box.CornerMin().XYZ() * 0.5 + body_box.CornerMax().XYZ() * 0.5;
+  const TopoDS_Shape wall = body_solids(one_shell(with_seams_away_from(wall_faces, body_centre, tolerance, repairs)),
+                                        tolerance, "geometry.join.wall: the wall", repairs);
   if (const int left_out = faces.Extent() - taken.Extent(); left_out > 0)
     repairs.push_back("left out " + std::to_string(left_out) + " face(s) of the file that geometry.join does not name");
 
