@@ -69,11 +69,13 @@ std::string describe_short_edge(const TetgenInput& input, const ShortEdge& edge)
 
 // A tet whose six times volume is under this share of its longest edge cubed is flat to round-off
 // (the far field's sound tets, slivers included, stay above ~1e-7; round-off gives ~1e-16).
-// TetGen leaves such tets where input points are exactly coplanar and cocircular (see
-// far_field.cpp, vary_apex_heights); their sign is round-off, which any later move of a vertex by
-// round-off turns over (the weld puts the pre-cut skin's nodes on the split's, ~1e-16 away:
-// fuselage sweep seed 5 run 18, four tets on the V of the sharp edge's layer edges where the
-// wake's outflow face meets its tip face, inverted after the weld).
+// TetGen leaves such tets where boundary points are coplanar, even collinear, but for round-off
+// (far_field.cpp, vary_apex_heights: where it cannot refine one it aborts); their sign is
+// round-off, which any later move of a vertex by round-off turns over. Fuselage sweep seed 5
+// run 18: the V of a sharp edge's two layer edges where the wake's outflow face meets its tip face,
+// cut at equal steps (the wake's layer ratio 1 there); five tets 6 V / L^3 ~ 1e-16 on its cut
+// nodes (one with a point TetGen added), and the weld, putting those nodes on the split's
+// (~4e-16 away), turned some over.
 constexpr double kFlatRelativeVolume = 1e-12;
 
 // The refusal of TetGen's answer with a flat tet, saying where it is.
@@ -85,9 +87,9 @@ std::string describe_flat_tet(const std::vector<Eigen::Vector3d>& points, const 
   std::ostringstream out;
   out << "TetGen made a tetrahedron of zero volume to round-off (6 V / L^3 = " << flat.relative << ") at ("
       << centre.x() << ", " << centre.y() << ", " << centre.z() << "), " << on_boundary
-      << " of its 4 vertices on the boundary: boundary points there are exactly coplanar and cocircular (skin "
-         "strips that are translated copies, as a wake block's where its layer ratio is 1), and its sign would "
-         "turn with round-off. Change the sizes or layers slightly (e.g. wake.ratio_end)";
+      << " of its 4 vertices on the boundary, where boundary points are coplanar or collinear but for round-off "
+         "(as the nodes cut on a sharp trailing edge's layer edges at the wake's outflow end); its sign would turn "
+         "with round-off. Change the sizes or layers slightly (e.g. wake.ratio_end, wake.layers)";
   return out.str();
 }
 
