@@ -12,6 +12,7 @@ add_library(semimesh_farfield
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/pyramid_apex.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/boundary_crossing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/short_edge.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/farfield/flat_tet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/tetgen_volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/far_field.cpp)
 add_library(semimesh::farfield ALIAS semimesh_farfield)

@@ -429,7 +429,8 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unor
 }
 
 // TetGen on the input, and once more with the apexes' heights varied when it fails (a zero-volume
-// tet among exactly degenerate points); the first failure is the one reported when both fail.
+// tet among exactly degenerate points, which it aborts on, or answers with when round-off makes it
+// not quite flat: run_tetgen refuses that answer); the first failure is the one reported when both fail.
 TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
                                        const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh) {
   if (pyramids.empty()) return run_tetgen(input);

@@ -1,6 +1,7 @@
 #include "tetgen_volume.hpp"
 
 #include "semimesh/farfield/detail/boundary_crossing.hpp"
+#include "semimesh/farfield/detail/flat_tet.hpp"
 #include "semimesh/farfield/detail/short_edge.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
@@ -63,6 +64,32 @@ std::string describe_short_edge(const TetgenInput& input, const ShortEdge& edge)
       << " of the boundary's bounding-box diagonal): TetGen would merge its ends and fail. Coarsen what makes it "
          "(a wake's first streamwise cell is length * (growth - 1) / (growth^layers - 1): with more layers, lower "
          "its growth)";
+  return out.str();
+}
+
+// A tet whose six times volume is under this share of its longest edge cubed is flat to round-off
+// (the far field's sound tets, slivers included, stay above ~1e-7; round-off gives ~1e-16).
+// TetGen leaves such tets where boundary points are coplanar, even collinear, but for round-off
+// (far_field.cpp, vary_apex_heights: where it cannot refine one it aborts); their sign is
+// round-off, which any later move of a vertex by round-off turns over. Fuselage sweep seed 5
+// run 18: the V of a sharp edge's two layer edges where the wake's outflow face meets its tip face,
+// cut at equal steps (the wake's layer ratio 1 there); five tets 6 V / L^3 ~ 1e-16 on its cut
+// nodes (one with a point TetGen added), and the weld, putting those nodes on the split's
+// (~4e-16 away), turned some over.
+constexpr double kFlatRelativeVolume = 1e-12;
+
+// The refusal of TetGen's answer with a flat tet, saying where it is.
+std::string describe_flat_tet(const std::vector<Eigen::Vector3d>& points, const std::array<int, 4>& tet,
+                              const FlatTet& flat, int num_boundary_points) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  int on_boundary = 0;
+  for (int v : tet) centre += 0.25 * points[v], on_boundary += v < num_boundary_points;
+  std::ostringstream out;
+  out << "TetGen made a tetrahedron of zero volume to round-off (6 V / L^3 = " << flat.relative << ") at ("
+      << centre.x() << ", " << centre.y() << ", " << centre.z() << "), " << on_boundary
+      << " of its 4 vertices on the boundary, where boundary points are coplanar or collinear but for round-off "
+         "(as the nodes cut on a sharp trailing edge's layer edges at the wake's outflow end); its sign would turn "
+         "with round-off. Change the sizes or layers slightly (e.g. wake.ratio_end, wake.layers)";
   return out.str();
 }
 
@@ -227,6 +254,8 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
     if (volume6 < 0) std::swap(tet[2], tet[3]);
     result.tets[t] = tet;
   }
+  if (const auto flat = find_flat_tet(result.points, result.tets, kFlatRelativeVolume))
+    throw FarFieldError(describe_flat_tet(result.points, result.tets[flat->tet], *flat, num_points));
   return result;
 }
 

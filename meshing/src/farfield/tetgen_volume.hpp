@@ -30,8 +30,9 @@ struct TetgenOutput {
 /// errors). Throws FarFieldError, before TetGen runs, when a boundary edge is shorter than the
 /// distance at which TetGen merges points (1e-8 of the boundary's bounding-box diagonal); with
 /// TetGen's failure explained (self-intersecting boundary, facets too close, ...) and, when the
-/// boundary crosses itself, the two triangles and the point; or when TetGen moved or dropped an
-/// input point. `quiet`: TetGen's own messages (a failed
+/// boundary crosses itself, the two triangles and the point; when TetGen moved or dropped an
+/// input point; or when a tet of its answer is flat to round-off (6 V under 1e-12 of its longest
+/// edge cubed: its sign is round-off, and the weld's round-off moves turn it over), naming where. `quiet`: TetGen's own messages (a failed
 /// assertion's, on stderr) are dropped, for a first try that a second one follows.
 TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false);
 
