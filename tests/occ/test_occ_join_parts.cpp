@@ -149,6 +149,13 @@ TEST_P(OccJoinSeam, AWallSeamThroughTheRootIsMovedAway) {
 INSTANTIATE_TEST_SUITE_P(CylinderAndBSpline, OccJoinSeam, ::testing::Bool(),
                          [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "BSpline" : "Cylinder"; });
 
+TEST(OccJoinParts, ASeamAwayFromTheRootIsKept) {
+  const auto model = load_assembly(kJoin);
+  EXPECT_TRUE(std::none_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+    return r.find("moved the seam") != std::string::npos;
+  }));
+}
+
 TEST(OccJoinParts, FacesLeftOutAreSaid) {
   // The block's top named twice would be refused; the cylinder's flat ends left out of the wall part:
   // they lie outside the box, so the domain is the same, and the repair says two faces were left out.

@@ -122,12 +122,14 @@ std::optional<FarFieldShape> far_field_request(const cad::Params& params) {
   return shape;
 }
 
-// A parameter holding a list, one entry per line.
-std::vector<std::string> lines_of(const std::string& text) {
+// A parameter holding a list: one entry per line (as the pipeline writes it, names may hold
+// commas), or comma-separated when on one line (as typed: cad-info --param occ.join_body=#1,#2).
+std::vector<std::string> entries_of(const std::string& text) {
+  const char separator = text.find('\n') != std::string::npos ? '\n' : ',';
   std::vector<std::string> out;
   std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) out.push_back(line);
+  for (std::string entry; std::getline(in, entry, separator);)
+    if (!entry.empty()) out.push_back(entry);
   return out;
 }
 
@@ -156,7 +158,7 @@ std::optional<DomainRequest> domain_request(const cad::Params& params) {
                    "body-only file or the joined parts of an assembly");
   DomainRequest request{std::nullopt, std::nullopt, *far};
   if (join) {
-    request.join = PartsToJoin{lines_of(params.get_string("occ.join_body", "")), lines_of(params.get_string("occ.join_wall", ""))};
+    request.join = PartsToJoin{entries_of(params.get_string("occ.join_body", "")), entries_of(params.get_string("occ.join_wall", ""))};
     return request;
   }
   const auto w = numbers<6>(params, "occ.wall_plane", "6 numbers: point x, y, z, normal x, y, z");

@@ -76,7 +76,8 @@ Handle(Geom_Surface) started_at(const Handle(Geom_Surface)& surface, bool in_u, 
 }
 
 // The face rebuilt with its seam half a period from `away_from`'s foot, or nothing when it does not
-// wrap around or its surface cannot be re-parametrised.
+// wrap around, its seam lies a quarter of a period or more from the foot already, or its surface
+// cannot be re-parametrised.
 std::optional<TopoDS_Face> reseamed(const TopoDS_Face& face, const gp_Pnt& away_from, double tolerance) {
   Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = trimmed->BasisSurface();
@@ -90,8 +91,11 @@ std::optional<TopoDS_Face> reseamed(const TopoDS_Face& face, const gp_Pnt& away_
   double u, v;
   foot.LowerDistanceParameters(u, v);
   const double lo = closed_u ? su0 : sv0, period = closed_u ? su1 - su0 : sv1 - sv0;
-  double origin = (closed_u ? u : v) + 0.5 * period;
-  origin = lo + std::fmod(std::fmod(origin - lo, period) + period, period);
+  const double foot_at = closed_u ? u : v;
+  // Already on the far side (a quarter of a turn or more from the foot): kept as it is.
+  const double from_seam = std::fmod(std::fmod(foot_at - lo, period) + period, period);
+  if (std::min(from_seam, period - from_seam) >= 0.25 * period) return std::nullopt;
+  const double origin = lo + std::fmod(from_seam + 0.5 * period, period);
   const Handle(Geom_Surface) moved = started_at(surface, closed_u, origin);
   if (moved.IsNull()) return std::nullopt;
   // The face's own extent along the other parameter; the whole new period along the closed one.
