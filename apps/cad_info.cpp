@@ -121,6 +121,8 @@ std::string report_table(const std::string& backend, const std::string& source, 
                        "around it built at load, as `init --cad` configures `run` (the ids below are the run's); "
                        "the plane: {}\n",
                        kBoxChords, loaded.root->why);
+  if (loaded.join)
+    out += fmt::format("built     {}, as `init --cad` configures `run` (the ids below are the run's)\n", loaded.join->why);
   out += fmt::format("units     {}: {} (scale applied at load: {})\n", model.units(),
                      model.units_origin().empty() ? "as the backend says" : model.units_origin(), model.scale_applied());
   for (const std::string& repair : model.repairs()) out += fmt::format("repaired  {}\n", repair);
@@ -194,7 +196,7 @@ void run_cad_info(const cad::Registry& registry, const CadInfoOptions& options, 
   ModelAsRun loaded = model_for_info(registry, backend, options.source, params);
   std::vector<SurfaceRow> rows = surface_rows(*loaded.model);
   const DetectedRoles roles = detect_roles(*loaded.model);
-  out << (options.json ? report_json(backend, *loaded.model, rows, roles, loaded.root.has_value())
+  out << (options.json ? report_json(backend, *loaded.model, rows, roles, loaded.root.has_value() || loaded.join.has_value())
                        : report_table(backend, options.source, loaded, rows, roles));
 }
 

@@ -148,6 +148,13 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
                          "only, so the wall and a box around the body are built at load.\n",
                          loaded.root->why, kBoxChords);
   }
+  if (loaded.join) {
+    // Two overlapping parts (a wing sunk into a fuselage, not joined): joined at load as `run` will.
+    c.geometry.join.body = loaded.join->body;
+    c.geometry.join.wall = loaded.join->wall;
+    c.geometry.farfield_shape.box = loaded.join->box;
+    domain = "geometry.join, geometry.farfield = {box}: " + loaded.join->why + ".\n";
+  }
   const surface::CadRoles roles = surface::detect_cad_roles(*model);
   c.geometry.units = model->units();
   const std::optional<UnitDoubt> doubt = doubt_unit(roles.chord, model->units());

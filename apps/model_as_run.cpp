@@ -4,6 +4,7 @@
 #include "semimesh/surface/cad_roles.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,12 +19,75 @@ std::array<double, 3> rounded(const cad::Vec3& x) {
   return out;
 }
 
+namespace {
+
+std::vector<std::string> join_entries(const std::vector<int>& faces) {
+  std::vector<std::string> out;
+  for (int s : faces) out.push_back("#" + std::to_string(s));
+  return out;
+}
+
+std::string lines_text(const std::vector<std::string>& entries) {
+  std::string text;
+  for (const std::string& e : entries) text += e + "\n";
+  return text;
+}
+
+// Where a wall part's end is cut: this share of its length inside it (a fuselage's flat or
+// tapering end is left out with the box).
+constexpr double kWallEndInset = 0.02;
+
+// The join of an assembly's two overlapping parts, the box kBoxChords of the body's streamwise (x)
+// extent around it, clipped inside the wall part's ends along the wall part's longest axis so that
+// the box crosses it (a fuselage runs through it). Nothing when the clipped box would cut the body.
+std::optional<AssemblyJoin> assembly_join(const surface::OverlappingParts& parts) {
+  const cad::BBox& b = parts.body_box;
+  const cad::BBox& w = parts.wall_box;
+  const double chord = b.hi.x() - b.lo.x();
+  if (!(chord > 0.0)) return std::nullopt;
+  AssemblyJoin join;
+  join.body = join_entries(parts.body);
+  join.wall = join_entries(parts.wall);
+  int axis = 0;
+  (w.hi - w.lo).maxCoeff(&axis);
+  for (int k = 0; k < 3; ++k) {
+    join.box[k] = b.lo[k] - kBoxChords * chord;
+    join.box[k + 3] = b.hi[k] + kBoxChords * chord;
+  }
+  const double inset = kWallEndInset * (w.hi[axis] - w.lo[axis]);
+  join.box[axis] = std::max(join.box[axis], w.lo[axis] + inset);
+  join.box[axis + 3] = std::min(join.box[axis + 3], w.hi[axis] - inset);
+  if (!(join.box[axis] < b.lo[axis] && join.box[axis + 3] > b.hi[axis])) return std::nullopt;
+  for (double& x : join.box) x = std::stod(fmt::format("{:.6g}", x));
+  const char* names = "xyz";
+  join.why = fmt::format("the file holds two overlapping parts that share no curve: the body {} joined to the wall "
+                         "part {} at load; the far field a box {} chords of the body's x extent around it, cut {} % "
+                         "inside the wall part's ends along {} (its longest axis)",
+                         fmt::join(join.body, ", "), fmt::join(join.wall, ", "), kBoxChords, 100 * kWallEndInset,
+                         names[axis]);
+  return join;
+}
+
+}  // namespace
+
 ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& backend, const std::string& path,
                              const cad::Params& params) {
-  ModelAsRun out{registry.load(backend, cad::Source{path, params}), std::nullopt};
+  ModelAsRun out{registry.load(backend, cad::Source{path, params}), std::nullopt, std::nullopt};
   if (surface::has_wall_with_root_loop(*out.model)) return out;
   // Separate parts reaching into each other are no body on a wall, whatever else they look like
-  // (a wing's own trailing-edge seam meeting its open root would pass for a fuselage's).
+  // (a wing's own trailing-edge seam meeting its open root would pass for a fuselage's): two of
+  // them are joined as `run` will join them; more are left to the user to choose from.
+  if (const std::optional<surface::OverlappingParts> parts = surface::find_overlapping_parts(*out.model);
+      parts && parts->count == 2 && !params.has("occ.join_body"))
+    if (std::optional<AssemblyJoin> join = assembly_join(*parts)) {
+      cad::Source source{path, params};
+      source.params.set("occ.join_body", lines_text(join->body));
+      source.params.set("occ.join_wall", lines_text(join->wall));
+      source.params.set("occ.farfield_box", fmt::format("{}", fmt::join(join->box, ",")));
+      out.model = registry.load(backend, source);
+      out.join = std::move(join);
+      return out;
+    }
   surface::refuse_overlapping_parts(*out.model);
   // A wall may be there whose seam hides the root (its planar faces would be taken for root caps).
   surface::refuse_seam_through_root(*out.model);

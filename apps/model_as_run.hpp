@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace semimesh::app {
 
@@ -24,15 +25,27 @@ inline constexpr double kBoxChords = 10.0;
 /// A point or direction as written in the config: 12 significant digits, round-off zeros as 0.
 std::array<double, 3> rounded(const cad::Vec3& x);
 
+/// An assembly of two overlapping parts (a wing sunk into a fuselage, not joined): the parts'
+/// faces as geometry.join entries ("#7", the file's ids) and the box init gives them.
+struct AssemblyJoin {
+  std::vector<std::string> body, wall;
+  std::array<double, 6> box{};
+  std::string why;  ///< how the box was chosen, for init's header and cad-info
+};
+
 struct ModelAsRun {
   std::unique_ptr<cad::Model> model;
   /// Body-only: the root plane found in the file (built at load as the wall, rounded as init
   /// writes it); nothing when the file has its own wall.
   std::optional<surface::RootPlane> root;
+  /// An assembly of two overlapping parts, joined at load; nothing otherwise.
+  std::optional<AssemblyJoin> join;
 };
 
 /// Loads `path` with `backend` and `params`, then, for a body-only file, again with the wall plane
-/// and the box built (the file's other parameters kept). Throws the loader's error, and the role
+/// and the box built, or for an assembly of exactly two overlapping parts, again with them joined in
+/// a box kBoxChords of the body's streamwise extent around it, cut inside the wall part's ends along
+/// its longest axis (the file's other parameters kept). Throws the loader's error, and the role
 /// detection's when a body-only file has no root plane or a wall's seam hides the root.
 ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& backend, const std::string& path,
                              const cad::Params& params = {});

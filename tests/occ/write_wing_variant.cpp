@@ -28,7 +28,9 @@
 //              input: the root is then no hole of the wall).
 //   fuselage_unjoined the wing sunk into the cylinder as for `fuselage`, the two solids side by side in
 //              the file, not fused, no box: an assembly of overlapping parts as OpenVSP exports one
-//              (bad input: needs naca.farfield=false).
+//              (needs naca.farfield=false);
+//   fuselage_unjoined_fin the same with a second wing hanging from the fuselage's keel (turned half a
+//              turn about its axis): three parts, which to join is the user's choice.
 //   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
 //              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
 //              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
@@ -488,13 +490,20 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
   if (name == "fuselage_unjoined")
     return compound_of({sunk_wing(wing, params.chord, Fuselage::Cylinder), fuselage_solid(Fuselage::Cylinder, params.chord)});
+  if (name == "fuselage_unjoined_fin") {
+    const TopoDS_Shape sunk = sunk_wing(wing, params.chord, Fuselage::Cylinder);
+    gp_Trsf half_turn;
+    half_turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, -1.5 * params.chord), gp::DX()), M_PI);
+    return compound_of({sunk, BRepBuilderAPI_Transform(sunk, half_turn, /*copy=*/true).Shape(),
+                        fuselage_solid(Fuselage::Cylinder, params.chord)});
+  }
   if (name == "cranked") return cranked(params);
   if (name == "cranked_split_base") return cranked(params, /*split_base=*/true);
   if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, cranked, cranked_mm, "
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, cranked, cranked_mm, "
                               "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 

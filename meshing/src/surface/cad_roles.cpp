@@ -242,9 +242,9 @@ std::string join_entries(const std::vector<int>& faces) {
   return "[" + text + "]";
 }
 
-void refuse_overlapping_parts(const cad::Model& model) {
+std::optional<OverlappingParts> find_overlapping_parts(const cad::Model& model) {
   const std::vector<std::vector<int>> parts = parts_of(model);
-  if (parts.size() < 2) return;
+  if (parts.size() < 2) return std::nullopt;
   std::vector<cad::BBox> boxes;
   for (const std::vector<int>& part : parts) boxes.push_back(part_box(model, part));
   const double margin = 1e-3 * model.bbox().diagonal();
@@ -252,21 +252,25 @@ void refuse_overlapping_parts(const cad::Model& model) {
     for (std::size_t j = i + 1; j < parts.size(); ++j)
       if (overlap(boxes[i], boxes[j], margin)) {
         // The smaller part is the body (a wing in a fuselage, a blade on a hub).
-        const bool i_smaller = boxes[i].diagonal() < boxes[j].diagonal();
-        const std::vector<int>& body = parts[i_smaller ? i : j];
-        const std::vector<int>& wall = parts[i_smaller ? j : i];
-        fail(fmt::format(
-            "the model falls apart into {} parts that share no curve, and two of them overlap: "
-            "{} and {}; a body must share its root curves with the wall it stands on. An assembly of "
-            "overlapping parts (a wing reaching into a fuselage or a hub, as OpenVSP and other design tools "
-            "export) is joined at load when its parts are named: geometry.join = {{body = {}, wall = {}}} with "
-            "geometry.farfield = {{box = [...]}} crossing the wall part's ends (the faces are the file's, as "
-            "`semimesh cad-info FILE` lists them; leave out the other wing and the tails); or unite the parts in a "
-            "CAD tool. Parts meant to touch that do not (faces left unsewn) need geometry.sew_tolerance above "
-            "their gap",
-            parts.size(), part_label(model, parts[i], boxes[i]), part_label(model, parts[j], boxes[j]),
-            join_entries(body), join_entries(wall)));
+        const std::size_t body = boxes[i].diagonal() < boxes[j].diagonal() ? i : j, wall = i + j - body;
+        return OverlappingParts{parts[body], parts[wall], boxes[body], boxes[wall], static_cast<int>(parts.size())};
       }
+  return std::nullopt;
+}
+
+void refuse_overlapping_parts(const cad::Model& model) {
+  const std::optional<OverlappingParts> parts = find_overlapping_parts(model);
+  if (!parts) return;
+  fail(fmt::format(
+      "the model falls apart into {} parts that share no curve, and two of them overlap: {} and {}; a body must "
+      "share its root curves with the wall it stands on. An assembly of overlapping parts (a wing reaching into a "
+      "fuselage or a hub, as OpenVSP and other design tools export) is joined at load when its parts are named: "
+      "geometry.join = {{body = {}, wall = {}}} with geometry.farfield = {{box = [...]}} crossing the wall part's "
+      "ends (the faces are the file's, as `semimesh cad-info FILE` lists them; leave out the other wing and the "
+      "tails); or unite the parts in a CAD tool. Parts meant to touch that do not (faces left unsewn) need "
+      "geometry.sew_tolerance above their gap",
+      parts->count, part_label(model, parts->body, parts->body_box), part_label(model, parts->wall, parts->wall_box),
+      join_entries(parts->body), join_entries(parts->wall)));
 }
 
 void refuse_seam_through_root(const cad::Model& model) {

@@ -45,6 +45,18 @@ struct CadRoles {
 /// that reaches behind the wall, no face left for the far field).
 CadRoles detect_cad_roles(const cad::Model& model, std::optional<int> wall = std::nullopt);
 
+/// Two parts of a model that share no curve but overlap (their bounding boxes share a box of some
+/// thickness along every axis): the smaller taken for the body, the other for its wall part.
+struct OverlappingParts {
+  std::vector<int> body, wall;  ///< surface ids, ascending
+  cad::BBox body_box, wall_box;
+  int count = 0;                ///< how many parts the model falls apart into
+};
+
+/// The first two overlapping parts of a model that falls apart into several (faces joined through
+/// shared curves), or nothing.
+std::optional<OverlappingParts> find_overlapping_parts(const cad::Model& model);
+
 /// Throws CadRoleError when the model falls apart into parts (faces joined through shared curves)
 /// of which two overlap (their bounding boxes share a box of some thickness along every axis): an
 /// assembly whose wing stands in a fuselage without being joined to it (an OpenVSP export). The
