@@ -126,6 +126,7 @@ int main(int argc, char** argv) {
   if (parse(argc, argv, o) != 0) return 1;
   std::mt19937 rng(o.seed);
   std::map<int, int> by_exit;
+  int config_errors = 0;  // runs the config refused (e.g. the OCC backend with an analytic fuselage wall)
   std::vector<std::string> reports;
   double total_seconds = 0.0;
   fmt::print("robustness sweep: {} runs, seed {}, OCC every {}\n", o.runs, o.seed, o.occ_every);
@@ -136,13 +137,14 @@ int main(int argc, char** argv) {
     const Outcome r = run(command);
     total_seconds += r.seconds;
     ++by_exit[r.exit_code];
+    config_errors += !lines_with(r.output, "semimesh: config error").empty();
     const auto jacobian = lines_with(r.output, "min scaled Jacobian");
     fmt::print("run {:3} {} exit {} {:6.1f} s {}\n", i, occ ? "occ " : "naca", r.exit_code, r.seconds,
                jacobian.empty() ? std::string() : jacobian.front());
     std::fflush(stdout);
     if (r.exit_code == 0 && !std::getenv("BENCH_PRINT_ALL")) continue;
     std::string report = fmt::format("run {} exit {}:\n  {}\n", i, r.exit_code, command);
-    for (const char* prefix : {"semimesh: error", "semimesh: internal", "semimesh: validity", "element "})
+    for (const char* prefix : {"semimesh: error", "semimesh: config error", "semimesh: internal", "semimesh: validity", "element "})
       for (const std::string& line : lines_with(r.output, prefix)) report += "  " + line + "\n";
     reports.push_back(report);
   }
@@ -150,6 +152,9 @@ int main(int argc, char** argv) {
   for (const std::string& r : reports) fmt::print("{}", r);
   fmt::print("\npassed (exit 0): {} of {} ({:.1f}%)\n", by_exit[0], o.runs, 100.0 * by_exit[0] / o.runs);
   for (const auto& [code, count] : by_exit) fmt::print("exit {}: {}\n", code, count);
+  if (config_errors > 0)
+    fmt::print("of which config errors: {} (the configuration refused, no mesh tried: e.g. --occ-every with a config "
+               "whose wall only the analytic backend has)\n", config_errors);
   fmt::print("total {:.0f} s, mean {:.1f} s per run\n", total_seconds, total_seconds / o.runs);
   return 0;
 }
