@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace semimesh::app {
 
@@ -31,6 +32,16 @@ std::string lines_text(const std::vector<std::string>& entries) {
   std::string text;
   for (const std::string& e : entries) text += e + "\n";
   return text;
+}
+
+// Whether every curve of the part's faces bounds two face uses (a seam counts twice): a closed part,
+// not faces of one body left unsewn (an upper and a lower skin overlap too).
+bool closed_part(const cad::Model& model, const std::vector<int>& faces) {
+  std::set<int> curves;
+  for (int s : faces)
+    for (const cad::Loop& loop : model.loops(s))
+      for (const cad::CurveUse& use : loop.uses) curves.insert(use.curve);
+  return std::all_of(curves.begin(), curves.end(), [&](int c) { return model.surfaces_of_curve(c).size() == 2; });
 }
 
 // Where a wall part's end is cut: this share of its length inside it (a fuselage's flat or
@@ -78,7 +89,8 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
   // (a wing's own trailing-edge seam meeting its open root would pass for a fuselage's): two of
   // them are joined as `run` will join them; more are left to the user to choose from.
   if (const std::optional<surface::OverlappingParts> parts = surface::find_overlapping_parts(*out.model);
-      parts && parts->count == 2 && !params.has("occ.join_body"))
+      parts && parts->count == 2 && !params.has("occ.join_body") && closed_part(*out.model, parts->body) &&
+      closed_part(*out.model, parts->wall))
     if (std::optional<AssemblyJoin> join = assembly_join(*parts)) {
       cad::Source source{path, params};
       source.params.set("occ.join_body", lines_text(join->body));

@@ -43,7 +43,7 @@ struct ModelAsRun {
 };
 
 /// Loads `path` with `backend` and `params`, then, for a body-only file, again with the wall plane
-/// and the box built, or for an assembly of exactly two overlapping parts, again with them joined in
+/// and the box built, or for an assembly of exactly two overlapping closed parts, again with them joined in
 /// a box kBoxChords of the body's streamwise extent around it, cut inside the wall part's ends along
 /// its longest axis (the file's other parameters kept). Throws the loader's error, and the role
 /// detection's when a body-only file has no root plane or a wall's seam hides the root.
