@@ -30,7 +30,10 @@
 //              the file, not fused, no box: an assembly of overlapping parts as OpenVSP exports one
 //              (needs naca.farfield=false);
 //   fuselage_unjoined_fin the same with a second wing hanging from the fuselage's keel (turned half a
-//              turn about its axis): three parts, which to join is the user's choice.
+//              turn about its axis): three parts, which to join is the user's choice;
+//   fuselage_bspline_unjoined the wing and the B-spline body of revolution of `fuselage_bspline`,
+//              not joined, the body's seam along its crest through the wing's root (OpenVSP writes a
+//              fuselage's seam along one of its sides).
 //   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
 //              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
 //              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
@@ -201,7 +204,7 @@ enum class Fuselage { Cylinder, BSpline, Dihedral, SeamOnCrest };
 // 24 chords (through the box): a cylinder, or a B-spline body of revolution swelling from 1.1
 // chords at its ends to 1.5 at the wing. The seam at the bottom (the axis system's x direction
 // -z), away from the root, unless asked on the crest.
-TopoDS_Shape fuselage_solid(Fuselage kind, double chord) {
+TopoDS_Shape fuselage_solid(Fuselage kind, double chord, bool spline_seam_on_crest = false) {
   const double radius = 1.5 * chord, length = 24 * chord, start = -0.5 * length + 0.5 * chord;
   const gp_Ax2 axis(gp_Pnt(start, 0, -radius), gp::DX(), kind == Fuselage::SeamOnCrest ? gp::DZ() : -gp::DZ());
   if (kind != Fuselage::BSpline) return BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
@@ -211,7 +214,9 @@ TopoDS_Shape fuselage_solid(Fuselage kind, double chord) {
   const double xs[] = {start, -5 * chord, 0.0, chord, 5 * chord, start + length};
   const double rs[] = {1.1, 1.4, 1.5, 1.5, 1.4, 1.1};
   Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, 6);
-  for (int i = 0; i < 6; ++i) points->SetValue(i + 1, gp_Pnt(xs[i], 0, -radius - rs[i] * chord));
+  // The profile below the axis (the seam at the bottom) or above it (the seam on the crest).
+  const double side = spline_seam_on_crest ? 1.0 : -1.0;
+  for (int i = 0; i < 6; ++i) points->SetValue(i + 1, gp_Pnt(xs[i], 0, -radius + side * rs[i] * chord));
   GeomAPI_Interpolate interpolate(points, /*PeriodicFlag=*/false, 1e-9);
   interpolate.Load(gp_Vec(1, 0, 0), gp_Vec(1, 0, 0));
   interpolate.Perform();
@@ -490,6 +495,9 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_seam_on_crest") return on_fuselage(wing, params.chord, Fuselage::SeamOnCrest);
   if (name == "fuselage_unjoined")
     return compound_of({sunk_wing(wing, params.chord, Fuselage::Cylinder), fuselage_solid(Fuselage::Cylinder, params.chord)});
+  if (name == "fuselage_bspline_unjoined")
+    return compound_of({sunk_wing(wing, params.chord, Fuselage::BSpline),
+                        fuselage_solid(Fuselage::BSpline, params.chord, /*spline_seam_on_crest=*/true)});
   if (name == "fuselage_unjoined_fin") {
     const TopoDS_Shape sunk = sunk_wing(wing, params.chord, Fuselage::Cylinder);
     gp_Trsf half_turn;
@@ -503,7 +511,7 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, cranked, cranked_mm, "
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, cranked, cranked_mm, "
                               "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 
