@@ -44,14 +44,35 @@ bool closed_part(const cad::Model& model, const std::vector<int>& faces) {
   return std::all_of(curves.begin(), curves.end(), [&](int c) { return model.surfaces_of_curve(c).size() == 2; });
 }
 
-// Where a wall part's end is cut: this share of its length inside it (a fuselage's flat or
-// tapering end is left out with the box).
+// Where a wall part's end is cut: at least this share of its length inside it (a fuselage's flat
+// end is left out with the box), and further in while the wall there leans more than kCutLean from
+// square to the cut (a nose or tail cone: the wall layer meets the box's faces within 0.1 rad).
 constexpr double kWallEndInset = 0.02;
+constexpr double kCutLean = 0.05;
+
+// The most the wall part's normals lean along `axis` (radians from square to a cut across it) at
+// the section `at`, sampled on a grid of each face within `band` of it; 0 where none is sampled.
+double lean_at(const cad::Model& model, const std::vector<int>& faces, int axis, double at, double band) {
+  constexpr int kGrid = 64;
+  double lean = 0.0;
+  for (int s : faces) {
+    const cad::Surface& face = model.surface(s);
+    const auto box = face.bounds();
+    for (int i = 0; i <= kGrid; ++i)
+      for (int j = 0; j <= kGrid; ++j) {
+        const cad::Vec2 uv(box[0].lo + box[0].length() * i / kGrid, box[1].lo + box[1].length() * j / kGrid);
+        if (!face.contains(uv) || std::abs(face.point(uv)[axis] - at) > band) continue;
+        const double along = std::abs(face.normal(uv)[axis]);
+        if (std::isfinite(along)) lean = std::max(lean, std::asin(std::min(1.0, along)));
+      }
+  }
+  return lean;
+}
 
 // The join of an assembly's two overlapping parts, the box kBoxChords of the body's streamwise (x)
 // extent around it, clipped inside the wall part's ends along the wall part's longest axis so that
 // the box crosses it (a fuselage runs through it). Nothing when the clipped box would cut the body.
-std::optional<AssemblyJoin> assembly_join(const surface::OverlappingParts& parts) {
+std::optional<AssemblyJoin> assembly_join(const cad::Model& model, const surface::OverlappingParts& parts) {
   const cad::BBox& b = parts.body_box;
   const cad::BBox& w = parts.wall_box;
   const double chord = b.hi.x() - b.lo.x();
@@ -65,17 +86,24 @@ std::optional<AssemblyJoin> assembly_join(const surface::OverlappingParts& parts
     join.box[k] = b.lo[k] - kBoxChords * chord;
     join.box[k + 3] = b.hi[k] + kBoxChords * chord;
   }
-  const double inset = kWallEndInset * (w.hi[axis] - w.lo[axis]);
-  join.box[axis] = std::max(join.box[axis], w.lo[axis] + inset);
-  join.box[axis + 3] = std::min(join.box[axis + 3], w.hi[axis] - inset);
+  const double length = w.hi[axis] - w.lo[axis], step = kWallEndInset * length;
+  join.box[axis] = std::max(join.box[axis], w.lo[axis] + step);
+  join.box[axis + 3] = std::min(join.box[axis + 3], w.hi[axis] - step);
+  // Each end moved in towards the body, a chord short of it at most, while the wall leans there.
+  while (join.box[axis] + step < b.lo[axis] - chord && lean_at(model, parts.wall, axis, join.box[axis], step) > kCutLean)
+    join.box[axis] += step;
+  while (join.box[axis + 3] - step > b.hi[axis] + chord &&
+         lean_at(model, parts.wall, axis, join.box[axis + 3], step) > kCutLean)
+    join.box[axis + 3] -= step;
   if (!(join.box[axis] < b.lo[axis] && join.box[axis + 3] > b.hi[axis])) return std::nullopt;
   for (double& x : join.box) x = std::stod(fmt::format("{:.6g}", x));
   const char* names = "xyz";
   join.why = fmt::format("the file holds two overlapping parts that share no curve: the body {} joined to the wall "
-                         "part {} at load; the far field a box {} chords of the body's x extent around it, cut {} % "
-                         "inside the wall part's ends along {} (its longest axis)",
-                         fmt::join(join.body, ", "), fmt::join(join.wall, ", "), kBoxChords, 100 * kWallEndInset,
-                         names[axis]);
+                         "part {} at load; the far field a box {} chords of the body's x extent around it, its "
+                         "ends along {} (the wall part's longest axis) at {} and {}: at least {} % of its length "
+                         "inside its ends, where it leans less than {} rad from square to them",
+                         fmt::join(join.body, ", "), fmt::join(join.wall, ", "), kBoxChords, names[axis],
+                         join.box[axis], join.box[axis + 3], 100 * kWallEndInset, kCutLean);
   return join;
 }
 
@@ -91,7 +119,7 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
   if (const std::optional<surface::OverlappingParts> parts = surface::find_overlapping_parts(*out.model);
       parts && parts->count == 2 && !params.has("occ.join_body") && closed_part(*out.model, parts->body) &&
       closed_part(*out.model, parts->wall))
-    if (std::optional<AssemblyJoin> join = assembly_join(*parts)) {
+    if (std::optional<AssemblyJoin> join = assembly_join(*out.model, *parts)) {
       cad::Source source{path, params};
       source.params.set("occ.join_body", lines_text(join->body));
       source.params.set("occ.join_wall", lines_text(join->wall));

@@ -33,7 +33,10 @@
 //              turn about its axis): three parts, which to join is the user's choice;
 //   fuselage_bspline_unjoined the wing and the B-spline body of revolution of `fuselage_bspline`,
 //              not joined, the body's seam along its crest through the wing's root (OpenVSP writes a
-//              fuselage's seam along one of its sides).
+//              fuselage's seam along one of its sides);
+//   fuselage_nosed_unjoined the same with a nose cone 8 chords ahead of the wing (0.05 chord at its
+//              tip), inside the 10 chords init's box would reach: init's box ends where the body is
+//              near-cylindrical, not across the cone.
 //   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
 //              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
 //              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
@@ -198,30 +201,36 @@ TopoDS_Shape in_hemisphere(const TopoDS_Shape& body, double chord) {
   return sewing.SewedShape();
 }
 
-enum class Fuselage { Cylinder, BSpline, Dihedral, SeamOnCrest };
+enum class Fuselage { Cylinder, BSpline, Dihedral, SeamOnCrest, Nosed };
 
 // A fuselage of radius 1.5 chords at the wing, its axis along x through z = -1.5 chords, running
 // 24 chords (through the box): a cylinder, or a B-spline body of revolution swelling from 1.1
 // chords at its ends to 1.5 at the wing. The seam at the bottom (the axis system's x direction
-// -z), away from the root, unless asked on the crest.
+// -z), away from the root, unless asked on the crest. Nosed: the B-spline body with a nose cone
+// from 0.05 chord at x = -8 chords to 1.4 at -4, the wing's box (10 chords) reaching past it.
 TopoDS_Shape fuselage_solid(Fuselage kind, double chord, bool spline_seam_on_crest = false) {
   const double radius = 1.5 * chord, length = 24 * chord, start = -0.5 * length + 0.5 * chord;
   const gp_Ax2 axis(gp_Pnt(start, 0, -radius), gp::DX(), kind == Fuselage::SeamOnCrest ? gp::DZ() : -gp::DZ());
-  if (kind != Fuselage::BSpline) return BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
+  if (kind != Fuselage::BSpline && kind != Fuselage::Nosed) return BRepPrimAPI_MakeCylinder(axis, radius, length).Shape();
   // The profile in the plane y = 0 below the axis (the revolution's seam), parallel to the axis at
   // its ends (the box's faces there meet the wall square, as the wall layer needs), revolved a
   // full turn, then made a B-spline.
-  const double xs[] = {start, -5 * chord, 0.0, chord, 5 * chord, start + length};
-  const double rs[] = {1.1, 1.4, 1.5, 1.5, 1.4, 1.1};
-  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, 6);
+  const bool nosed = kind == Fuselage::Nosed;
+  const std::vector<double> xs = nosed ? std::vector<double>{-8 * chord, -6 * chord, -4 * chord, 0.0, chord, 5 * chord,
+                                                             start + length}
+                                       : std::vector<double>{start, -5 * chord, 0.0, chord, 5 * chord, start + length};
+  const std::vector<double> rs = nosed ? std::vector<double>{0.05, 1.0, 1.4, 1.5, 1.5, 1.4, 1.1}
+                                       : std::vector<double>{1.1, 1.4, 1.5, 1.5, 1.4, 1.1};
+  const int n = static_cast<int>(xs.size());
+  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, n);
   // The profile below the axis (the seam at the bottom) or above it (the seam on the crest).
   const double side = spline_seam_on_crest ? 1.0 : -1.0;
-  for (int i = 0; i < 6; ++i) points->SetValue(i + 1, gp_Pnt(xs[i], 0, -radius + side * rs[i] * chord));
+  for (int i = 0; i < n; ++i) points->SetValue(i + 1, gp_Pnt(xs[i], 0, -radius + side * rs[i] * chord));
   GeomAPI_Interpolate interpolate(points, /*PeriodicFlag=*/false, 1e-9);
   interpolate.Load(gp_Vec(1, 0, 0), gp_Vec(1, 0, 0));
   interpolate.Perform();
   const Handle(Geom_BSplineCurve) profile = interpolate.Curve();
-  const gp_Pnt a(start, 0, -radius), b(start + length, 0, -radius);
+  const gp_Pnt a(xs.front(), 0, -radius), b(xs.back(), 0, -radius);
   BRepBuilderAPI_MakeWire wire;
   wire.Add(BRepBuilderAPI_MakeEdge(a, profile->StartPoint()).Edge());
   wire.Add(BRepBuilderAPI_MakeEdge(profile).Edge());
@@ -498,6 +507,9 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "fuselage_bspline_unjoined")
     return compound_of({sunk_wing(wing, params.chord, Fuselage::BSpline),
                         fuselage_solid(Fuselage::BSpline, params.chord, /*spline_seam_on_crest=*/true)});
+  if (name == "fuselage_nosed_unjoined")
+    return compound_of({sunk_wing(wing, params.chord, Fuselage::BSpline),
+                        fuselage_solid(Fuselage::Nosed, params.chord, /*spline_seam_on_crest=*/true)});
   if (name == "fuselage_unjoined_fin") {
     const TopoDS_Shape sunk = sunk_wing(wing, params.chord, Fuselage::Cylinder);
     gp_Trsf half_turn;
@@ -511,7 +523,7 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, cranked, cranked_mm, "
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, fuselage_nosed_unjoined, cranked, cranked_mm, "
                               "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 
