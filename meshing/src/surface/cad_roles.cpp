@@ -259,18 +259,32 @@ std::optional<OverlappingParts> find_overlapping_parts(const cad::Model& model) 
 }
 
 void refuse_overlapping_parts(const cad::Model& model) {
-  const std::optional<OverlappingParts> parts = find_overlapping_parts(model);
-  if (!parts) return;
-  fail(fmt::format(
-      "the model falls apart into {} parts that share no curve, and two of them overlap: {} and {}; a body must "
-      "share its root curves with the wall it stands on. An assembly of overlapping parts (a wing reaching into a "
-      "fuselage or a hub, as OpenVSP and other design tools export) is joined at load when its parts are named: "
-      "geometry.join = {{body = {}, wall = {}}} with geometry.farfield = {{box = [...]}} crossing the wall part's "
-      "ends (the faces are the file's, as `semimesh cad-info FILE` lists them; leave out the other wing and the "
-      "tails); or unite the parts in a CAD tool. Parts meant to touch that do not (faces left unsewn) need "
-      "geometry.sew_tolerance above their gap",
-      parts->count, part_label(model, parts->body, parts->body_box), part_label(model, parts->wall, parts->wall_box),
-      join_entries(parts->body), join_entries(parts->wall)));
+  const std::optional<OverlappingParts> pair = find_overlapping_parts(model);
+  if (!pair) return;
+  const std::string why =
+      "a body must share its root curves with the wall it stands on. An assembly of overlapping parts (a wing "
+      "reaching into a fuselage or a hub, as OpenVSP and other design tools export) is joined at load when its "
+      "parts are named: ";
+  const std::string rest =
+      " with geometry.farfield = {box = [...]} crossing the wall part's ends (the faces are the file's, as "
+      "`semimesh cad-info FILE` lists them); or unite the parts in a CAD tool. Parts meant to touch that do not "
+      "(faces left unsewn) need geometry.sew_tolerance above their gap";
+  if (pair->count == 2)
+    fail(fmt::format("the model falls apart into 2 parts that share no curve, and they overlap: {} and {}; {}"
+                     "geometry.join = {{body = {}, wall = {}}}{}",
+                     part_label(model, pair->body, pair->body_box), part_label(model, pair->wall, pair->wall_box), why,
+                     join_entries(pair->body), join_entries(pair->wall), rest));
+  // More parts (the other wing, the tails, a fairing): which to join is the user's choice.
+  constexpr std::size_t kListed = 8;
+  const std::vector<std::vector<int>> parts = parts_of(model);
+  std::string list;
+  for (std::size_t k = 0; k < std::min(parts.size(), kListed); ++k)
+    list += (k ? ", " : "") + part_label(model, parts[k], part_box(model, parts[k]));
+  if (parts.size() > kListed) list += fmt::format(" and {} more", parts.size() - kListed);
+  fail(fmt::format("the model falls apart into {} parts that share no curve, some of which overlap: {}; {}"
+                   "geometry.join = {{body = [one wing's faces], wall = [the fuselage's faces]}}, e.g. for the first "
+                   "overlapping pair found {{body = {}, wall = {}}}, every other face left out,{}",
+                   parts.size(), list, why, join_entries(pair->body), join_entries(pair->wall), rest));
 }
 
 void refuse_seam_through_root(const cad::Model& model) {
