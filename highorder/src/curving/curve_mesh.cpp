@@ -375,8 +375,11 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
       },
       [&](std::size_t e, VolumeNodes& v) {
         const Shape shape = in_.elements()[e].shape;
-        for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
-          v.ids[j] = out_.add_node(v.x.row(j).transpose());
+        const std::vector<int>& interior = detail::harmonic_extension(shape, P, params_.node_set).interior;
+        // Never reallocate under the threads reading the nodes (the room was counted above).
+        if (out_.num_nodes() + interior.size() > out_.nodes().capacity())
+          throw std::logic_error("curve_mesh: no room left for the inner nodes of element " + std::to_string(e));
+        for (int j : interior) v.ids[j] = out_.add_node(v.x.row(j).transpose());
         out_.add_element(shape, v.ids, in_.elements()[e].region);
       },
       volume_progress_, "volumes");

@@ -680,6 +680,9 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
       [&](std::size_t i) { return place_sub_nodes(ascending[i], interfaces[i - interfaces_first]); },
       [&](std::size_t i, const SplitGeometry& geometry) {
         const std::size_t e = ascending[i];
+        // Never reallocate under the threads reading the nodes: at most a node per row of x is new.
+        if (out_.num_nodes() + static_cast<std::size_t>(geometry.x.rows()) > out_.nodes().capacity())
+          throw std::logic_error(caller_ + ": no room left for the nodes of element " + std::to_string(e));
         copy_elements(next, e, first_piece);
         split_element(e, geometry);
         first_out[position[e]] = out_.elements().size();
