@@ -634,34 +634,49 @@ double curved_wall_volume_gap(const cad::Surface& wall, const surface::SurfaceMe
   return gap;
 }
 
+// The checks' serial passes: conformity, and the element volume against box minus body. They read
+// result.mesh and write result.conformity, result.volume and result.expected_volume_tolerance only.
+void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces, RunResult& result) {
+  result.conformity = checks::check_conformity(result.mesh);
+  std::vector<const surface::SurfaceMesh*> body, box;
+  for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
+  for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
+  const bool curved_far_field = std::any_of(g.roles.farfield.begin(), g.roles.farfield.end(),
+                                            [&](int s) { return !g.model->surface(s).is_planar(); });
+  // A curved far field (a sphere) is triangulated by the far-field stage at its own sizes, and
+  // where nodes lie on its CAD curved at order > 1: the box it bounds is the mesh's own far-field
+  // faces', not the surface stage's triangulation's (equal to round-off on planar faces only).
+  if (curved_far_field) box.clear();
+  const cad::Surface& wall = g.model->surface(g.roles.wall);
+  const surface::SurfaceMesh& wall_mesh = surfaces.surfaces[g.roles.wall];
+  result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh)
+                                   : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh);
+  // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
+  // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
+  double gap = 0.0;
+  if (result.mesh.order() > 1) gap += kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume);
+  if (!wall.is_planar()) gap += curved_wall_volume_gap(wall, wall_mesh, result.mesh);
+  if (gap > 0) result.expected_volume_tolerance = gap / result.volume.expected_volume();
+}
+
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
-    // Rough shares of the stage's time: the certification of every element is most of it.
-    if (report) report(0.0, "conformity");
-    result.conformity = checks::check_conformity(result.mesh);
-    if (report) report(0.05, "volume");
-    std::vector<const surface::SurfaceMesh*> body, box;
-    for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
-    for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
-    const bool curved_far_field = std::any_of(g.roles.farfield.begin(), g.roles.farfield.end(),
-                                              [&](int s) { return !g.model->surface(s).is_planar(); });
-    // A curved far field (a sphere) is triangulated by the far-field stage at its own sizes, and
-    // where nodes lie on its CAD curved at order > 1: the box it bounds is the mesh's own far-field
-    // faces', not the surface stage's triangulation's (equal to round-off on planar faces only).
-    if (curved_far_field) box.clear();
-    const cad::Surface& wall = g.model->surface(g.roles.wall);
-    const surface::SurfaceMesh& wall_mesh = surfaces.surfaces[g.roles.wall];
-    result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh)
-                                     : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh);
-    // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
-    // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
-    double gap = 0.0;
-    if (result.mesh.order() > 1) gap += kCurvedBodyVolumeFraction * std::abs(result.volume.body_volume);
-    if (!wall.is_planar()) gap += curved_wall_volume_gap(wall, wall_mesh, result.mesh);
-    if (gap > 0) result.expected_volume_tolerance = gap / result.volume.expected_volume();
-    result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
-                                             progress_part(report, 0.1, 0.9), &inherited);
+    // Conformity and volume are serial passes that only read the mesh, the certification an
+    // OpenMP loop: they run side by side on another thread, each filling its own figures, so that
+    // the serial passes no longer leave a core idle (the same figures, in less wall time).
+    if (report) report(0.0, "conformity, volume and certification");
+    std::future<void> serial_checks =
+        std::async(std::launch::async, [&] { conformity_and_volume(g, surfaces, result); });
+    std::exception_ptr validity_error;
+    try {
+      result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
+                                               progress_part(report, 0.0, 0.9), &inherited);
+    } catch (...) {
+      validity_error = std::current_exception();
+    }
+    serial_checks.get();  // its error first, as when it ran first
+    if (validity_error) std::rethrow_exception(validity_error);
     if (report) report(0.9, "geometric error");
     std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
     curved.push_back(g.roles.wall);
@@ -675,6 +690,7 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
   for (const mesh::BoundaryFace& f : result.mesh.boundary_faces())
     ++result.boundary_faces_by_group[result.mesh.group_names()[f.group]];
 }
+
 
 }  // namespace
 

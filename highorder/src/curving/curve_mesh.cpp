@@ -26,6 +26,14 @@ using mesh::NodeId;
 // the placed positions; large enough that the threads rarely wait at a block's end).
 constexpr std::size_t kBlock = 4096;
 
+// Nodes inside a volume element of this shape and order (none on its edges or faces).
+std::size_t interior_node_count(Shape shape, int order) {
+  const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
+  return static_cast<std::size_t>(std::count_if(layout.slots.begin(), layout.slots.end(), [](const mesh::NodeSlot& s) {
+    return s.kind == mesh::NodeSlot::Interior;
+  }));
+}
+
 class Curver {
  public:
   Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params, ProgressCallback progress)
@@ -180,10 +188,12 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
   std::vector<double> fraction(P - 1);  // of the interior nodes, from vertex 0 to vertex 1
   for (int i = 0; i < P - 1; ++i) fraction[i] = 0.5 * (seg(i + 2, 0) + 1.0);
 
-  // Positions in parallel, then the nodes in edge order (ids independent of the thread count).
+  // Positions in parallel, then the nodes in edge order (ids independent of the thread count); a
+  // block's nodes are made while the next block is placed (place_edge reads the input mesh and the
+  // CAD only).
   edge_interior_.resize(in_.edges().size());
-  detail::parallel_blocks(
-      in_.edges().size(), model_.thread_safe(), kBlock,
+  detail::overlapped_blocks(
+      in_.edges().size(), model_.thread_safe(), kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) { return place_edge(e, fraction, on_boundary[e] != 0); },
       [&](std::size_t e, const EdgeNodes& placed) {
         note(placed);
@@ -336,15 +346,24 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   curve_edges(edge_on_boundary);
   curve_faces(face_on_boundary);
 
-  // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order.
+  // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order; a
+  // block's nodes and elements are made while the next block is extended, which reads the edges'
+  // and faces' nodes only: room is reserved for the interior nodes, so that adding them never
+  // moves those.
   const int P = params_.order;
   const std::size_t num_elements = in_.elements().size();
+  // (Counted from the node layouts, not the harmonic extensions: those are built on first use
+  // inside the parallel loop, where Eigen's products run on one thread; built here, outside it,
+  // they would take Eigen's multi-threaded blocking and differ in the last bits.)
+  std::size_t interior_nodes = 0;
+  for (const mesh::Element& el : in_.elements()) interior_nodes += interior_node_count(el.shape, P);
+  out_.reserve_nodes(out_.num_nodes() + interior_nodes);
   struct VolumeNodes {
     std::vector<NodeId> ids;  // canonical, kNoNode for the interior until made
     Eigen::MatrixXd x;        // (nodes, 3), interior rows filled
   };
-  detail::parallel_blocks(
-      num_elements, true, kBlock,
+  detail::overlapped_blocks(
+      num_elements, true, kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
         VolumeNodes v{element_node_ids(e), {}};
         const detail::HarmonicExtension& ext = detail::harmonic_extension(in_.elements()[e].shape, P, params_.node_set);
@@ -356,8 +375,11 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
       },
       [&](std::size_t e, VolumeNodes& v) {
         const Shape shape = in_.elements()[e].shape;
-        for (int j : detail::harmonic_extension(shape, P, params_.node_set).interior)
-          v.ids[j] = out_.add_node(v.x.row(j).transpose());
+        const std::vector<int>& interior = detail::harmonic_extension(shape, P, params_.node_set).interior;
+        // Never reallocate under the threads reading the nodes (the room was counted above).
+        if (out_.num_nodes() + interior.size() > out_.nodes().capacity())
+          throw std::logic_error("curve_mesh: no room left for the inner nodes of element " + std::to_string(e));
+        for (int j : interior) v.ids[j] = out_.add_node(v.x.row(j).transpose());
         out_.add_element(shape, v.ids, in_.elements()[e].region);
       },
       volume_progress_, "volumes");

@@ -10,7 +10,6 @@
 #include <array>
 #include <limits>
 #include <optional>
-#include <set>
 #include <vector>
 
 namespace semimesh::ho {
@@ -29,24 +28,25 @@ struct ExposedFace {
   double size = 0.0;       // longest edge: the reach of its bulge into the far field
 };
 
-// The face entities the region's elements use.
-std::set<std::uint32_t> faces_of_region(const mesh::Mesh& m, int region) {
-  std::set<std::uint32_t> out;
+// Which face entities the region's elements use, a flag per face: a std::set of them (every face of
+// the far field's tetrahedra) took ~0.4 s of one core per call on the paper's case, twice a run.
+std::vector<char> faces_of_region(const mesh::Mesh& m, int region) {
+  std::vector<char> used(m.faces().size(), 0);
   for (const mesh::Element& el : m.elements())
     if (el.region == region)
-      for (std::size_t k = 0; k < faces(el.shape).size(); ++k) out.insert(el.faces[k]);
-  return out;
+      for (std::size_t k = 0; k < faces(el.shape).size(); ++k) used[el.faces[k]] = 1;
+  return used;
 }
 
 std::vector<ExposedFace> curved_exposed_faces(const mesh::Mesh& m, int group, int region) {
-  const std::set<std::uint32_t> used = faces_of_region(m, region);
+  const std::vector<char> used = faces_of_region(m, region);
   const LagrangeBasis linear(Shape::Triangle, 1, NodeSet::Equispaced);
   const Eigen::MatrixX3d reference = reference_nodes(Shape::Triangle, m.order(), m.node_set());
   const Eigen::MatrixXd straight = linear.values(reference);
   std::vector<ExposedFace> out;
   for (std::size_t b = 0; b < m.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = m.boundary_faces()[b];
-    if (bf.group != group || bf.shape != Shape::Triangle || !used.count(bf.face)) continue;
+    if (bf.group != group || bf.shape != Shape::Triangle || !used[bf.face]) continue;
     ExposedFace f;
     const std::vector<NodeId> ids = m.boundary_face_nodes(b);
     f.nodes.resize(static_cast<Eigen::Index>(ids.size()), 3);

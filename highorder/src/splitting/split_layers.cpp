@@ -194,6 +194,7 @@ class Splitter {
   std::vector<std::uint32_t> edge_block_, face_block_;  // [input edges], [input faces]: first slot, or kNoBlock
   std::vector<NodeId> slots_;
   std::size_t edge_block_size_ = 0, face_block_size_ = 0;
+  std::size_t nodes_bound_ = 0;  // the most nodes the output can have: room reserved for them
   std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
   std::vector<NodeId> face_vertices_;                          // scratch of node_for
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
@@ -637,6 +638,7 @@ std::size_t Splitter::copy_nodes_groups_and_regions() {
     nodes += pieces * static_cast<std::size_t>(num_nodes(in_.elements()[e].shape, in_.order()));
     elements += pieces - 1;
   }
+  nodes_bound_ = nodes;
   if (!in_.elements().empty()) out_.reserve(in_.elements().front().shape, elements);
   if (give_nodes_) {
     give_nodes_->reserve_nodes(nodes);
@@ -660,28 +662,35 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
   for (std::size_t e = 0; e < in_.elements().size(); ++e)
     if (position[e] >= 0) ascending.push_back(e);
   std::vector<std::size_t> first_out(split_count);
-  std::size_t next = 0;                                             // next input element to emit
-  ProgressCounter counter(progress, ascending.size(), "elements");  // reported per block, from this thread
-  for (std::size_t first = 0; first < ascending.size(); first += kSplitBlock) {
-    const std::size_t count = std::min(kSplitBlock, ascending.size() - first);
-    std::vector<VertexInterfaces> interfaces(count);
-    for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k]);
-    std::vector<SplitGeometry> geometry(count);
-    detail::parallel_for(count, true,
-                         [&](std::size_t k) { geometry[k] = place_sub_nodes(ascending[first + k], interfaces[k]); });
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t e = ascending[first + k];
-      copy_elements(next, e, first_piece);
-      split_element(e, geometry[k]);
-      first_out[position[e]] = out_.elements().size();
-      if (first_piece) (*first_piece)[e] = out_.elements().size();
-      add_pieces(e, pieces_, geometry[k].bounds, inherited);
-      next = e + 1;
-    }
-    counter.add(count);
-    counter.report_if_due();
-  }
-  counter.finish();
+  std::size_t next = 0;  // next input element to emit
+  // One block's pieces are made (serially) while the next block's nodes are placed: place_sub_nodes
+  // reads the input, the caches made by plan_elements and the coarse nodes of the output, which
+  // split_element appends to without reallocating (copy_nodes_groups_and_regions reserved room for
+  // every node). The ratio field is called serially, a block ahead (prepare).
+  if (out_.nodes().capacity() < nodes_bound_) throw std::logic_error(caller_ + ": the output's nodes are not reserved");
+  std::vector<VertexInterfaces> interfaces;  // of the block being placed
+  std::size_t interfaces_first = 0;
+  detail::overlapped_blocks(
+      ascending.size(), true, kSplitBlock,
+      [&](std::size_t first, std::size_t count) {
+        interfaces.resize(count);
+        for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k]);
+        interfaces_first = first;
+      },
+      [&](std::size_t i) { return place_sub_nodes(ascending[i], interfaces[i - interfaces_first]); },
+      [&](std::size_t i, const SplitGeometry& geometry) {
+        const std::size_t e = ascending[i];
+        // Never reallocate under the threads reading the nodes: at most a node per row of x is new.
+        if (out_.num_nodes() + static_cast<std::size_t>(geometry.x.rows()) > out_.nodes().capacity())
+          throw std::logic_error(caller_ + ": no room left for the nodes of element " + std::to_string(e));
+        copy_elements(next, e, first_piece);
+        split_element(e, geometry);
+        first_out[position[e]] = out_.elements().size();
+        if (first_piece) (*first_piece)[e] = out_.elements().size();
+        add_pieces(e, pieces_, geometry.bounds, inherited);
+        next = e + 1;
+      },
+      progress, "elements");
   copy_elements(next, in_.elements().size(), first_piece);
   return first_out;
 }
