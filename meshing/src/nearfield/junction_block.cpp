@@ -74,6 +74,16 @@ Vec3 halo_over_the_strip_top(const cad::Model& model, const std::vector<int>& bo
   return medial_halo(model, body_surfaces, under, outward, above.normal, delta_wing, delta_wall);
 }
 
+// The halo placed from its root, its foot on the wing moved to the strip top: the halo from the
+// root moved along the wall as far (the column strip top -> halo keeps the wing's normal, not
+// leaning along the root: see halo_over_the_strip_top); it stays where it is when the foot does.
+Vec3 halo_moved_with_its_foot(const cad::Model& model, const std::vector<int>& body_surfaces, const Frame& wall,
+                              const Vec3& root, const Vec3& foot, const Vec3& strip_top, const Vec3& outward,
+                              double delta_wing, double delta_wall) {
+  const Vec3 n = wall.normal_at(root), shift = strip_top - foot;
+  return medial_halo(model, body_surfaces, root + shift - shift.dot(n) * n, outward, n, delta_wing, delta_wall);
+}
+
 // Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
 // plane away from the body (bisecting the two root segments' outward normals). A sharp trailing
 // edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces places
@@ -89,12 +99,20 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   const CadAttachment& at = body.cad[r];
   // Where the halo's foot sinks below delta_wall: the point at that height straight up the wing
   // from the root (in the entity's parameters), so neighbouring strip tops keep the roots' order (a
-  // foot projected onto the edge of its face, raised, could land on the next root's own).
-  CadAttachment from_root;
+  // foot projected onto the edge of its face, raised, could land on the next root's own). Above
+  // it, at the foot's height, straight up the wing from where the halo's shadow on the wall meets
+  // the root's face: the foot itself on a straight wing, but on a swept one the foot stands nearly
+  // straight over its root, delta_wall tan(sweep) upstream of the wing's section there, while its
+  // neighbours below delta_wall and the lifted wing nodes move along the sections (robustness
+  // sweep, H-type seed 77 run 10: two strip tops swapped places along the root and the lifted
+  // triangle between them folded).
+  CadAttachment from_root, from_shadow;  // from_shadow: on a face only (a curve is its own line up)
+  Vec3 foot, shadow_on_face;
+  const Vec3 shadow = j.halo - delta_wall * wall.normal_at(j.root);
   const int c = at.kind == CadAttachment::Vertex ? spanwise_curve(model, at.entity, roles.wall_surface) : -1;
   if (c >= 0) {
     const auto p = model.curve(c).project(j.halo);
-    j.strip_top = p.point;
+    foot = p.point;
     j.strip_top_cad = {CadAttachment::Curve, c, p.t, 0.0};
     from_root = {CadAttachment::Curve, c, model.curve(c).project(j.root).t, 0.0};
   } else {
@@ -102,21 +120,31 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
     if (it == root_surface.end())
       throw NearFieldError("near field: the root node at " + point_label(j.root) + " is not on a body-wall curve");
     const cad::Surface& face = model.surface(it->second);
-    const auto p = face.project(j.halo, face.project(j.root).uv);
+    const cad::Vec2 root_uv = face.project(j.root).uv;
+    const auto p = face.project(j.halo, root_uv);
     if (!p.inside)
       throw NearFieldError("near field: the top of the root strip above " + point_label(j.root) + " falls off " +
                            surface_label(model, it->second) + " (wall layer thickness " + number_label(delta_wall) +
                            ", thickness " + number_label(delta_wing) + "); use a thinner wall layer or near field");
-    j.strip_top = p.point;
+    foot = p.point;
     j.strip_top_cad = {CadAttachment::Surface, it->second, p.uv.x(), p.uv.y()};
-    const cad::Vec2 root_uv = face.project(j.root).uv;
     from_root = {CadAttachment::Surface, it->second, root_uv.x(), root_uv.y()};
+    const auto q = face.project(shadow, root_uv);
+    shadow_on_face = q.point;
+    from_shadow = {CadAttachment::Surface, it->second, q.uv.x(), q.uv.y()};
   }
-  if (wall.height(j.strip_top) < delta_wall) {
+  j.strip_top = foot;
+  if (wall.height(foot) < delta_wall) {
     j.strip_top_cad = from_root;
     j.strip_top = detail::move_to_height(model, wall, j.root, j.strip_top_cad, delta_wall);
     if (!fan)
       j.halo = halo_over_the_strip_top(model, roles.body_surfaces, wall, j.strip_top, outward, delta_wing, delta_wall);
+  } else if (c < 0) {
+    j.strip_top_cad = from_shadow;
+    j.strip_top = detail::move_to_height(model, wall, shadow_on_face, j.strip_top_cad, wall.height(foot));
+    if (!fan)
+      j.halo = halo_moved_with_its_foot(model, roles.body_surfaces, wall, j.root, foot, j.strip_top, outward,
+                                        delta_wing, delta_wall);
   }
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
