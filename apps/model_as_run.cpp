@@ -28,12 +28,6 @@ std::vector<std::string> join_entries(const std::vector<int>& faces) {
   return out;
 }
 
-std::string lines_text(const std::vector<std::string>& entries) {
-  std::string text;
-  for (const std::string& e : entries) text += e + "\n";
-  return text;
-}
-
 // Whether every curve of the part's faces bounds two face uses (a seam counts twice): a closed part,
 // not faces of one body left unsewn (an upper and a lower skin overlap too).
 bool closed_part(const cad::Model& model, const std::vector<int>& faces) {
@@ -120,10 +114,15 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
       parts && parts->count == 2 && !params.has("occ.join_body") && closed_part(*out.model, parts->body) &&
       closed_part(*out.model, parts->wall))
     if (std::optional<AssemblyJoin> join = assembly_join(*out.model, *parts)) {
-      cad::Source source{path, params};
-      source.params.set("occ.join_body", lines_text(join->body));
-      source.params.set("occ.join_wall", lines_text(join->wall));
-      source.params.set("occ.farfield_box", fmt::format("{}", fmt::join(join->box, ",")));
+      pipeline::GeometryConfig load;
+      load.backend = backend;
+      load.source = path;
+      load.join.body = join->body;
+      load.join.wall = join->wall;
+      load.farfield_shape.box = join->box;
+      cad::Source source = pipeline::cad_source(load);
+      for (const auto& [key, value] : params.all())
+        if (!source.params.has(key)) source.params.set(key, value);
       out.model = registry.load(backend, source);
       out.join = std::move(join);
       return out;
