@@ -122,6 +122,7 @@ TEST(OccJoinParts, TheWallHoldsTheBodysRootAsAHole) {
 // A fuselage whose seam runs along its crest, through the block's root: joined as it is, the root
 // loop would be cut open along the seam and become part of the wall's outer boundary. The wall is
 // re-seamed on its far side first (the same cylinder turned half a turn about its axis).
+// The parameter: a B-spline fuselage (not re-seamed yet: below).
 class OccJoinSeam : public ::testing::TestWithParam<bool> {};
 
 TEST_P(OccJoinSeam, AWallSeamThroughTheRootIsMovedAway) {
@@ -146,8 +147,22 @@ TEST_P(OccJoinSeam, AWallSeamThroughTheRootIsMovedAway) {
   EXPECT_EQ(seams, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(CylinderAndBSpline, OccJoinSeam, ::testing::Bool(),
-                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "BSpline" : "Cylinder"; });
+INSTANTIATE_TEST_SUITE_P(Cylinder, OccJoinSeam, ::testing::Values(false));
+
+// A B-spline fuselage keeps its seam (seam_away.cpp: re-seamed, its wall layer folded at orders
+// 3-4 near the new seam): joined with the seam through the root, the wall holds no hole, which the
+// roles then refuse by name.
+TEST(OccJoinParts, ABSplineWallKeepsItsSeam) {
+  cad::Source source{assembly_file(0.0, /*seam_on_crest=*/true, /*spline=*/true), {}};
+  for (const auto& [key, value] : kJoin) source.params.set(key, value);
+  const auto model = load_occ(source);
+  EXPECT_TRUE(std::none_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+    return r.find("moved the seam") != std::string::npos;
+  }));
+  const std::optional<int> wall = model->find_surface("wall");
+  ASSERT_TRUE(wall.has_value());
+  EXPECT_EQ(model->loops(*wall).size(), 1u) << "the root joined to the outer boundary along the seam";
+}
 
 TEST(OccJoinParts, ASeamAwayFromTheRootIsKept) {
   const auto model = load_assembly(kJoin);

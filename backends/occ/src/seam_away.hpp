@@ -16,10 +16,10 @@ namespace semimesh::occ {
 /// `part` (a shell or solid's faces) with every face that covers its surface's whole period in one
 /// parameter (its boundary that parameter's seam and the other parameter's two iso-lines) and whose
 /// seam lies within a quarter of a period of the foot of `away_from` on it rebuilt on the same
-/// surface re-parametrised so that the seam lies half a period away from that foot; the faces are sewn again within `tolerance`. B-spline surfaces (made periodic,
-/// a knot inserted there and made the origin) and surfaces of revolution, cylinders, cones, spheres
-/// and tori (turned about their axis) are re-seamed; other faces are kept as they are. Each move is
-/// said in `repairs`.
+/// surface re-parametrised so that the seam lies half a period away from that foot; the faces are
+/// sewn again within `tolerance`. Surfaces of revolution, cylinders, cones, spheres and tori are
+/// turned about their axis; other faces (B-splines: not yet, see seam_away.cpp) are kept as they
+/// are. Each move is said in `repairs`.
 TopoDS_Shape with_seams_away_from(const TopoDS_Shape& part, const gp_Pnt& away_from, double tolerance,
                                   std::vector<std::string>& repairs);
 
