@@ -101,6 +101,19 @@ std::optional<AssemblyJoin> assembly_join(const cad::Model& model, const surface
   return join;
 }
 
+// The file loaded again with what `load` builds around it (a wall plane and a box, or a join),
+// as `run` will load it: the parameters init writes, the caller's other ones kept.
+std::unique_ptr<cad::Model> load_built(const cad::Registry& registry, const std::string& backend,
+                                       const std::string& path, const cad::Params& params,
+                                       pipeline::GeometryConfig load) {
+  load.backend = backend;
+  load.source = path;
+  cad::Source source = pipeline::cad_source(load);
+  for (const auto& [key, value] : params.all())
+    if (!source.params.has(key)) source.params.set(key, value);
+  return registry.load(backend, source);
+}
+
 }  // namespace
 
 ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& backend, const std::string& path,
@@ -115,15 +128,10 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
       closed_part(*out.model, parts->wall))
     if (std::optional<AssemblyJoin> join = assembly_join(*out.model, *parts)) {
       pipeline::GeometryConfig load;
-      load.backend = backend;
-      load.source = path;
       load.join.body = join->body;
       load.join.wall = join->wall;
       load.farfield_shape.box = join->box;
-      cad::Source source = pipeline::cad_source(load);
-      for (const auto& [key, value] : params.all())
-        if (!source.params.has(key)) source.params.set(key, value);
-      out.model = registry.load(backend, source);
+      out.model = load_built(registry, backend, path, params, std::move(load));
       out.join = std::move(join);
       return out;
     }
@@ -133,15 +141,10 @@ ModelAsRun load_model_as_run(const cad::Registry& registry, const std::string& b
   std::optional<surface::RootPlane> root = surface::find_root_plane(*out.model);
   if (!root) surface::detect_cad_roles(*out.model);  // throws, saying what is missing
   pipeline::GeometryConfig load;
-  load.backend = backend;
-  load.source = path;
   load.wall_plane.point = rounded(root->point);
   load.wall_plane.normal = rounded(root->normal);
   load.farfield_shape.box_chords = kBoxChords;
-  cad::Source source = pipeline::cad_source(load);
-  for (const auto& [key, value] : params.all())
-    if (!source.params.has(key)) source.params.set(key, value);
-  out.model = registry.load(backend, source);
+  out.model = load_built(registry, backend, path, params, std::move(load));
   out.root = std::move(root);
   return out;
 }
