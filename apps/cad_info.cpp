@@ -168,7 +168,7 @@ ModelAsRun model_for_info(const cad::Registry& registry, const std::string& back
     } catch (const cad::CadError&) {
     }
   }
-  return {registry.load(backend, cad::Source{path, params}), std::nullopt};
+  return {registry.load(backend, cad::Source{path, params}), std::nullopt, std::nullopt};
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
                    [--init-says TEXT ...] [--init-refuses-with TEXT] [--run-says TEXT ...]
-                   [--config TOML]
+                   [--config TOML] [--group-on-plane GROUP=AXIS:VALUE]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
@@ -14,6 +14,9 @@ config's header comments and its warnings) must hold TEXT. --init-refuses-with: 
 with TEXT on stderr and write no config (nothing is run). --run-says: the run's summary must hold TEXT.
 --config: run TOML (copied to DIR/wing.toml, its geometry.source set to FILE) instead of init's
 config: a file init refuses but a user's own config meshes (an assembly joined by geometry.join).
+--group-on-plane (with --gmsh): read by Gmsh, the .msh's boundary group GROUP has faces, every node
+of them on the plane AXIS = VALUE, and no face of another group lies on that plane (a half model's
+symmetry plane, farfield.symmetry).
 """
 import argparse
 import json
@@ -21,6 +24,47 @@ import os
 import shutil
 import subprocess
 import sys
+
+
+def group_alone_on_plane(msh, spec):
+    """Whether GROUP of GROUP=AXIS:VALUE has faces all on the plane and no other group's face lies on it."""
+    import gmsh
+    group, plane = spec.split("=")
+    axis, value = "xyz".index(plane.split(":")[0]), float(plane.split(":")[1])
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(msh)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        position = dict(zip(tags, coords.reshape(-1, 3)[:, axis]))
+        size = max(abs(c) for c in coords) or 1.0
+        on_plane = lambda nodes: all(abs(position[n] - value) <= 1e-9 * size for n in nodes)
+        faces_on_plane = {}
+        for dim, tag in gmsh.model.getPhysicalGroups(2):
+            name = gmsh.model.getPhysicalName(dim, tag)
+            on, off = 0, 0
+            for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+                types, _, nodes = gmsh.model.mesh.getElements(dim, entity)
+                for element_type, element_nodes in zip(types, nodes):
+                    per = gmsh.model.mesh.getElementProperties(element_type)[3]
+                    for k in range(0, len(element_nodes), per):
+                        if on_plane(element_nodes[k:k + per]):
+                            on += 1
+                        else:
+                            off += 1
+            faces_on_plane[name] = (on, off)
+    finally:
+        gmsh.finalize()
+    print("faces on the plane, off it, by group: %s" % faces_on_plane)
+    on, off = faces_on_plane.get(group, (0, 0))
+    if on == 0 or off != 0:
+        print("FAIL: group '%s' has %d faces on the plane %s and %d off it" % (group, on, plane, off))
+        return False
+    others = [name for name, (n, _) in faces_on_plane.items() if name != group and n > 0]
+    if others:
+        print("FAIL: groups %s have faces on the plane %s too" % (others, plane))
+        return False
+    return True
 
 
 def main():
@@ -39,6 +83,7 @@ def main():
     parser.add_argument("--run-refuses-with", help="run must exit 1 with this text on stderr, writing no mesh")
     parser.add_argument("--run-says", action="append", default=[], help="text the run's summary must hold")
     parser.add_argument("--config", help="a config to run instead of init's (its source set to FILE)")
+    parser.add_argument("--group-on-plane", help="GROUP=AXIS:VALUE: the .msh group lying on that plane, alone")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -115,6 +160,9 @@ def main():
         print("gmsh: %d elements certified, min J / max J %.3g" % (sum(ratios["counts"].values()), worst))
         if worst <= 0:
             print("FAIL: Gmsh finds elements with a Jacobian that is not positive")
+            return 1
+        if args.group_on_plane and not group_alone_on_plane(os.path.join(args.workdir, "out", meshes[0]),
+                                                            args.group_on_plane):
             return 1
     print("ok")
     return 0

@@ -138,8 +138,19 @@ void continuous_parameters(const cad::Surface& surface, Eigen::Ref<Eigen::Matrix
 cad::Vec2 into_box(const cad::Surface& surface, cad::Vec2 uv) {
   const auto box = surface.bounds();
   for (int d = 0; d < 2; ++d)
-    if (const std::optional<double> period = surface.period(d))
-      uv[d] -= std::floor((uv[d] - box[d].lo) / *period) * *period;
+    if (const std::optional<double> period = surface.period(d)) {
+      const cad::Interval& b = box[d];
+      const auto outside = [&](double u) { return std::max({b.lo - u, u - b.hi, 0.0}); };
+      // The shift by whole periods that lands nearest the box: on a face less than a period wide (a
+      // fuselage cut at its plane of symmetry) a parameter at the box's low end computed as a
+      // period past it, floored by round-off to the shift before, would land a period past the box's
+      // other end, the far side of the surface.
+      const double shifted = uv[d] - std::floor((uv[d] - b.lo) / *period) * *period;
+      double best = shifted;
+      for (const double other : {shifted - *period, shifted + *period})
+        if (outside(other) < outside(best)) best = other;
+      uv[d] = best;
+    }
   return uv;
 }
 

@@ -116,6 +116,13 @@ int Mesh::group_index(const std::string& name) {
   return static_cast<int>(groups_.size()) - 1;
 }
 
+void Mesh::set_boundary_group(std::size_t face, const std::string& group) {
+  if (face >= boundary_.size())
+    throw std::out_of_range("Mesh::set_boundary_group: boundary face " + std::to_string(face) + " does not exist (" +
+                            std::to_string(boundary_.size()) + " faces)");
+  boundary_[face].group = static_cast<std::uint16_t>(group_index(group));
+}
+
 void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   elements_.reserve(num_elements);
   // Each edge and interior face is shared by several elements; these are upper bounds.

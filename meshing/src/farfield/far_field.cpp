@@ -3,6 +3,7 @@
 #include "semimesh/cad/labels.hpp"
 
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
+#include "semimesh/farfield/detail/symmetry_faces.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/nearfield/pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
@@ -33,6 +34,10 @@ const params::Table<FarFieldParams>& far_field_keys() {
       params::real("radius_edge_ratio", &FarFieldParams::radius_edge_ratio, ">= 1",
                    "TetGen quality bound (-q); 1.5 to 2 is usual"),
       params::real("max_volume", &FarFieldParams::max_volume, ">= 0", "TetGen volume bound (-a); 0: none"),
+      params::string("symmetry", &FarFieldParams::symmetry,
+                     "\"none\" | \"xmin\" | \"xmax\" | \"ymin\" | \"ymax\" | \"zmin\" | \"zmax\"",
+                     "a half model: the box's side on the plane of symmetry, whose faces (the wall layer's "
+                     "where it meets it too) go to boundary group \"symmetry\"; none: all are \"farfield\""),
   };
   return table;
 }
@@ -546,6 +551,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   for (const Triangle& t : box) mesh.add_boundary_face("farfield", ho::Shape::Triangle, {t[0], t[1], t[2]});
   stats.wall_triangles = static_cast<int>(wall.size());
   stats.box_triangles = static_cast<int>(box.size());
+  if (params.symmetry != "none") stats.symmetry_faces = move_symmetry_faces(mesh, params.symmetry, tolerance);
   report(1.0, "");
   return {std::move(mesh), stats, std::move(stacks)};
 }

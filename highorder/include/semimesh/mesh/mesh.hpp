@@ -119,6 +119,9 @@ class Mesh {
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
   std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
+  /// Moves boundary face `face` to group `group` (created on first use): a far-field face found to
+  /// lie on a symmetry plane. Throws std::out_of_range for a face that does not exist.
+  void set_boundary_group(std::size_t face, const std::string& group);
   /// Index of a group, creating it if new.
   int group_index(const std::string& name);
   /// Index of a region, creating it if new.

@@ -14,6 +14,7 @@
 #include "semimesh/progress.hpp"
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace semimesh::farfield {
@@ -30,6 +31,7 @@ struct FarFieldParams {
   double growth = 1.2;
   double radius_edge_ratio = 1.5;
   double max_volume = 0.0;
+  std::string symmetry = "none";
 };
 
 /// One row per key of FarFieldParams (semimesh/params/table.hpp).
@@ -41,6 +43,7 @@ struct FarFieldStats {
   int wall_triangles = 0;
   int box_triangles = 0;
   int wall_layer_prisms = 0;
+  int symmetry_faces = 0;  ///< far-field faces moved to group "symmetry" (farfield.symmetry)
   double seconds_tetgen = 0;
 };
 
