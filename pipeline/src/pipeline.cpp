@@ -384,6 +384,7 @@ Geometry load_geometry(const Config& config, Progress& progress, RunResult& resu
     require_closed(*model, config.geometry.sew_tolerance);
     return model;
   });
+  result.model_repairs = g.model->repairs();
   g.roles = stage("roles", progress, result, [&] { return resolve_roles(*g.model, config); });
   return g;
 }

@@ -35,6 +35,7 @@ std::string json_counts(const std::map<std::string, std::size_t>& counts) {
 
 std::string summary_table(const RunResult& r) {
   std::string t;
+  for (const std::string& repair : r.model_repairs) t += fmt::format("CAD as loaded: {}\n", repair);
   t += fmt::format("{:<28} {:>12}\n", "elements (order " + std::to_string(r.mesh.order()) + ")", r.mesh.elements().size());
   for (const auto& [type, count] : r.elements_by_type) t += fmt::format("  {:<26} {:>12}\n", type, count);
   if (r.elements_by_region.size() > 1)
@@ -174,6 +175,7 @@ std::string report_json(const RunResult& r, const Config& config) {
        }) + ",\n";
   j += fmt::format("  \"total_seconds\": {},\n", json_number(r.total_seconds()));
   j += fmt::format("  \"peak_memory_mb\": {},\n", json_number(r.peak_memory_mb));
+  j += "  \"model_repairs\": " + json_list(r.model_repairs, json_string) + ",\n";
   j += "  \"warnings\": " + json_list(r.warnings, json_string) + ",\n";
   j += "  \"pictures\": " + json_list(r.pictures, json_string) + ",\n";
   j += "  \"files\": " + json_list(r.written_files, json_string) + "\n}\n";

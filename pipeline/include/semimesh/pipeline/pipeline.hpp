@@ -110,6 +110,7 @@ struct RunResult {
   /// Tolerance of the element volume against box - body of the linear surface meshes: round-off for
   /// a linear mesh; a curved body's volume differs from its triangulation's (see pipeline.cpp).
   double expected_volume_tolerance = kExpectedVolumeTolerance;
+  std::vector<std::string> model_repairs;  ///< what the backend repaired or built at load (cad::Model::repairs)
   std::vector<std::string> warnings;       ///< near-field warnings and departures from the config
   std::vector<std::string> written_files;  ///< empty when the checks failed and allow_invalid is off
   std::vector<std::string> pictures;       ///< of written_files, the SVG pictures (output.pictures)
