@@ -153,6 +153,7 @@ CadConfig config_for_cad(const cad::Registry& registry, const std::string& cad_p
     c.geometry.join.body = loaded.join->body;
     c.geometry.join.wall = loaded.join->wall;
     c.geometry.farfield_shape.box = loaded.join->box;
+    c.farfield.symmetry = loaded.join->symmetry;
     domain = "geometry.join, geometry.farfield = {box}: " + loaded.join->why + ".\n";
   }
   const surface::CadRoles roles = surface::detect_cad_roles(*model);

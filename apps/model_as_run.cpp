@@ -90,14 +90,29 @@ std::optional<AssemblyJoin> assembly_join(const cad::Model& model, const surface
          lean_at(model, parts.wall, axis, join.box[axis + 3], step) > kCutLean)
     join.box[axis + 3] -= step;
   if (!(join.box[axis] < b.lo[axis] && join.box[axis + 3] > b.hi[axis])) return std::nullopt;
-  for (double& x : join.box) x = std::stod(fmt::format("{:.6g}", x));
+  // A body running through the wall part across its length (a full-span wing through a fuselage)
+  // stands on it twice: the box keeps the side above the wall part's middle plane across that
+  // axis, the plane of symmetry of an aircraft's fuselage, and that side is its symmetry plane.
   const char* names = "xyz";
+  std::string half;
+  for (int a = 0; a < 3; ++a)
+    if (a != axis && b.lo[a] < w.lo[a] && b.hi[a] > w.hi[a]) {
+      const double middle = 0.5 * (w.lo[a] + w.hi[a]);
+      join.box[a] = std::abs(middle) < 1e-9 * (w.hi - w.lo).norm() ? 0.0 : middle;
+      join.symmetry = std::string(1, names[a]) + "min";
+      half = fmt::format("; the body runs through the wall part along {}: a half model, the box's side {} on the "
+                         "wall part's middle plane {} = {:.6g} (farfield.symmetry = \"{}\": its faces the boundary "
+                         "group \"symmetry\")",
+                         names[a], join.symmetry, names[a], join.box[a], join.symmetry);
+      break;
+    }
+  for (double& x : join.box) x = std::stod(fmt::format("{:.6g}", x));
   join.why = fmt::format("the file holds two overlapping parts that share no curve: the body {} joined to the wall "
                          "part {} at load; the far field a box {} chords of the body's x extent around it, its "
                          "ends along {} (the wall part's longest axis) at {} and {}: at least {} % of its length "
                          "inside its ends, where it leans less than {} rad from square to them",
                          fmt::join(join.body, ", "), fmt::join(join.wall, ", "), kBoxChords, names[axis],
-                         join.box[axis], join.box[axis + 3], 100 * kWallEndInset, kCutLean);
+                         join.box[axis], join.box[axis + 3], 100 * kWallEndInset, kCutLean) + half;
   return join;
 }
 

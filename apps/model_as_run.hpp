@@ -30,6 +30,9 @@ std::array<double, 3> rounded(const cad::Vec3& x);
 struct AssemblyJoin {
   std::vector<std::string> body, wall;
   std::array<double, 6> box{};
+  /// "none", or the box's side on the body's plane of symmetry when the body runs through the wall
+  /// part (a full-span wing through a fuselage): a half model, as farfield.symmetry names it.
+  std::string symmetry = "none";
   std::string why;  ///< how the box was chosen, for init's header and cad-info
 };
 

@@ -37,6 +37,10 @@
 //   fuselage_nosed_unjoined the same with a nose cone 8 chords ahead of the wing (0.05 chord at its
 //              tip), inside the 10 chords init's box would reach: init's box ends where the body is
 //              near-cylindrical, not across the cone.
+//   fuselage_through the wing and its mirror image through the fuselage's axis fused into one solid
+//              running through the cylinder (a full-span wing, as OpenVSP exports one), and the
+//              cylinder: two parts; init makes a half model (the box's side on the plane through
+//              the fuselage's axis).
 //   cranked    a body-only wing with a crank (root cap as in `capped`): an inboard panel (z from 0 to
 //              0.8 chord, leading-edge sweep 10 degrees, chord 1 -> 0.75) and an outboard panel (to
 //              z = 2 chords, sweep 35 degrees, chord 0.75 -> 0.35), twisted about the quarter chord
@@ -244,8 +248,8 @@ TopoDS_Shape fuselage_solid(Fuselage kind, double chord, bool spline_seam_on_cre
 
 // The wing as a solid, capped and moved down so that its root section lies inside the fuselage
 // (radius 1.5 chords, its crest at z = 0), leaning sideways for Fuselage::Dihedral.
-TopoDS_Shape sunk_wing(const TopoDS_Shape& body, double chord, Fuselage kind) {
-  const double sunk = 0.3 * chord;
+TopoDS_Shape sunk_wing(const TopoDS_Shape& body, double chord, Fuselage kind, double sunk_chords = 0.3) {
+  const double sunk = sunk_chords * chord;
   TopoDS_Shell skin;
   for (TopExp_Explorer shell(capped(body), TopAbs_SHELL); shell.More(); shell.Next()) skin = TopoDS::Shell(shell.Current());
   ShapeFix_Solid solid;
@@ -517,13 +521,25 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
     return compound_of({sunk, BRepBuilderAPI_Transform(sunk, half_turn, /*copy=*/true).Shape(),
                         fuselage_solid(Fuselage::Cylinder, params.chord)});
   }
+  if (name == "fuselage_through") {  // one wing through the fuselage, both halves one solid
+    // Each half 1.6 chords longer, sunk 1.6 chords: past the axis, where the two halves overlap.
+    semimesh::mock_cad::NacaWingParams longer = params;
+    longer.span += 1.6 * params.chord;
+    const TopoDS_Shape sunk =
+        sunk_wing(semimesh::occ::make_naca_wing_shape(longer), params.chord, Fuselage::Cylinder, 1.6);
+    gp_Trsf half_turn;
+    half_turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, -1.5 * params.chord), gp::DX()), M_PI);
+    BRepAlgoAPI_Fuse span(sunk, BRepBuilderAPI_Transform(sunk, half_turn, /*copy=*/true).Shape());
+    if (!span.IsDone()) throw std::runtime_error("fuselage_through: the Boolean fuse of the two halves failed");
+    return compound_of({span.Shape(), fuselage_solid(Fuselage::Cylinder, params.chord)});
+  }
   if (name == "cranked") return cranked(params);
   if (name == "cranked_split_base") return cranked(params, /*split_base=*/true);
   if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
-                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, fuselage_nosed_unjoined, cranked, cranked_mm, "
+                              "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, fuselage_nosed_unjoined, fuselage_through, cranked, cranked_mm, "
                               "cranked_m, split_base, cranked_split_base, bezier_patches)");
 }
 

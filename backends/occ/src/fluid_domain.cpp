@@ -378,6 +378,30 @@ FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepA
 
 }  // namespace
 
+// What of the body stands out of the wall part is inside the far field, each piece of it (a full-span
+// wing through a fuselage stands out twice) wholly inside or, for a half model's box on the plane of
+// symmetry, wholly outside (the other wing); none crossing its boundary, one at least inside.
+void require_exposed_inside(const TopoDS_Shape& body, const TopoDS_Shape& wall, const TopoDS_Shape& far_field,
+                            const FarFieldShape& far, double tolerance) {
+  BRepAlgoAPI_Cut cut;
+  const TopoDS_Shape exposed = run(cut, body, wall, 0.1 * tolerance, "the body outside the wall part");
+  TopExp_Explorer shell(far_field, TopAbs_SHELL);
+  int inside = 0;
+  for (TopExp_Explorer solid(exposed, TopAbs_SOLID); solid.More(); solid.Next()) {
+    BRepExtrema_DistShapeShape distance(solid.Current(), shell.Current());
+    if (!distance.IsDone()) refuse(far.label + ": the distance from the body to the far field cannot be computed");
+    if (distance.Value() <= tolerance) {
+      const gp_Pnt p = distance.PointOnShape1(1);
+      refuse(far.label + ": the far field does not contain the body: its boundary crosses or touches the body at (" +
+             length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+    }
+    TopExp_Explorer vertex(solid.Current(), TopAbs_VERTEX);
+    BRepClass3d_SolidClassifier where(far_field, BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())), tolerance);
+    if (where.State() == TopAbs_IN) ++inside;
+  }
+  if (inside == 0) refuse(far.label + ": the far field does not contain the body: the body lies outside it");
+}
+
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
                           FaceNames& names, std::vector<std::string>& repairs) {
   const TopoDS_Shape solids = body_solids(body, tolerance, "geometry.wall_plane: the body", repairs);
@@ -429,7 +453,7 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
            " of it, at (" + length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
   }
   const TopoDS_Shape outer = far_solid(far, gp::DZ(), body, {});
-  require_inside(body, outer, far, tolerance);
+  require_exposed_inside(body, wall, outer, far, tolerance);
 
   // The union first: the root curve is the parts' exact intersection.
   BRepAlgoAPI_Fuse fuse;
