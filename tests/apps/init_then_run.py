@@ -3,7 +3,7 @@
   init_then_run.py --exe SEMIMESH --cad FILE --workdir DIR [--set KEY=VALUE ...] [--regions A,B,...]
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
                    [--init-says TEXT ...] [--init-refuses-with TEXT] [--run-says TEXT ...]
-                   [--config TOML] [--group-on-plane GROUP=AXIS:VALUE]
+                   [--config TOML] [--group-on-plane GROUP=AXIS:VALUE] [--min-jacobian REGION=VALUE ...]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
@@ -17,6 +17,7 @@ config: a file init refuses but a user's own config meshes (an assembly joined b
 --group-on-plane (with --gmsh): read by Gmsh, the .msh's boundary group GROUP has faces, every node
 of them on the plane AXIS = VALUE, and no face of another group lies on that plane (a half model's
 symmetry plane, farfield.symmetry).
+--min-jacobian: the region's min scaled Jacobian (report.json) must be at least VALUE.
 """
 import argparse
 import json
@@ -84,6 +85,7 @@ def main():
     parser.add_argument("--run-says", action="append", default=[], help="text the run's summary must hold")
     parser.add_argument("--config", help="a config to run instead of init's (its source set to FILE)")
     parser.add_argument("--group-on-plane", help="GROUP=AXIS:VALUE: the .msh group lying on that plane, alone")
+    parser.add_argument("--min-jacobian", action="append", default=[], help="REGION=VALUE: its least scaled Jacobian")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -143,7 +145,14 @@ def main():
             print("FAIL: the run's summary does not say '%s'" % text)
             return 1
     with open(os.path.join(args.workdir, "out", "report.json")) as f:
-        regions = json.load(f)["elements_by_region"]
+        report = json.load(f)
+    regions = report["elements_by_region"]
+    for bound in args.min_jacobian:
+        region, value = bound.split("=")
+        least = report["min_scaled_jacobian_by_region"].get(region)
+        if least is None or least < float(value):
+            print("FAIL: region '%s' has min scaled Jacobian %s, below %s" % (region, least, value))
+            return 1
     for region in filter(None, args.regions.split(",")):
         if regions.get(region, 0) <= 0:
             print("FAIL: no elements in region '%s': %s" % (region, regions))

@@ -366,11 +366,16 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
       num_elements, true, kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
         VolumeNodes v{element_node_ids(e), {}};
-        const detail::HarmonicExtension& ext = detail::harmonic_extension(in_.elements()[e].shape, P, params_.node_set);
-        if (ext.interior.empty()) return v;
+        const Shape shape = in_.elements()[e].shape;
+        const detail::HarmonicExtension& isotropic = detail::harmonic_extension(shape, P, params_.node_set);
+        if (isotropic.interior.empty()) return v;
         v.x = Eigen::MatrixXd::Zero(v.ids.size(), 3);
-        for (int j : ext.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
-        extend_harmonically(ext, v.x);
+        for (int j : isotropic.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
+        // A prism is a layer element: its interior follows its thinness (prism_lateral_weight).
+        extend_harmonically(shape == Shape::Prism
+                                ? detail::prism_extension(P, params_.node_set, detail::prism_lateral_weight(v.x))
+                                : isotropic,
+                            v.x);
         return v;
       },
       [&](std::size_t e, VolumeNodes& v) {

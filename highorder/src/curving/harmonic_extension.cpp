@@ -8,6 +8,7 @@
 
 #include <Eigen/Cholesky>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -16,7 +17,7 @@
 namespace semimesh::ho::detail {
 namespace {
 
-HarmonicExtension build_extension(Shape shape, int order, NodeSet set) {
+HarmonicExtension build_extension(Shape shape, int order, NodeSet set, double lateral) {
   HarmonicExtension h;
   const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
   const auto inside = dimension(shape) == 3 ? mesh::NodeSlot::Interior : mesh::NodeSlot::Face;
@@ -31,7 +32,8 @@ HarmonicExtension build_extension(Shape shape, int order, NodeSet set) {
   const auto grads = basis.gradients(q.points);
   const int n = basis.size();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int c = 0; c < dimension(shape); ++c) K += grads[c].transpose() * q.weights.asDiagonal() * grads[c];
+  for (int c = 0; c < dimension(shape); ++c)
+    K += (c < 2 ? lateral : 1.0) * grads[c].transpose() * q.weights.asDiagonal() * grads[c];
 
   const int ni = static_cast<int>(h.interior.size()), nb = static_cast<int>(h.boundary.size());
   Eigen::MatrixXd Kii(ni, ni), Kib(ni, nb);
@@ -45,13 +47,41 @@ HarmonicExtension build_extension(Shape shape, int order, NodeSet set) {
 
 }  // namespace
 
-const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set) {
+namespace {
+
+const HarmonicExtension& cached_extension(Shape shape, int order, NodeSet set, double lateral) {
   static std::mutex mutex;
-  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
+  static std::map<std::tuple<Shape, int, NodeSet, double>, std::unique_ptr<HarmonicExtension>> cache;
   std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set));
+  auto& slot = cache[{shape, order, set, lateral}];
+  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set, lateral));
   return *slot;
+}
+
+}  // namespace
+
+const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set) {
+  return cached_extension(shape, order, set, 1.0);
+}
+
+const HarmonicExtension& prism_extension(int order, NodeSet set, double lateral) {
+  return cached_extension(Shape::Prism, order, set, lateral);
+}
+
+double prism_lateral_weight(const Eigen::MatrixXd& x) {
+  constexpr int kSteps = 5;  // the thinnest weight: 4^-5
+  double delta = 0.0, length = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    delta += (x.row(k + 3) - x.row(k)).norm();
+    length += (x.row((k + 1) % 3) - x.row(k)).norm() + (x.row(3 + (k + 1) % 3) - x.row(3 + k)).norm();
+  }
+  delta /= 3.0;
+  length /= 6.0;
+  if (!(delta > 0.0) || !(length > 0.0)) return 1.0;
+  const double weight = std::pow(delta / (2.0 * length), 2);
+  int step = 0;
+  while (step < kSteps && weight < std::pow(4.0, -step)) ++step;
+  return std::pow(4.0, -step);
 }
 
 void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values) {
