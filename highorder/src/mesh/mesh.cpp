@@ -3,12 +3,16 @@
 #include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
+#include <future>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace semimesh::mesh {
 namespace {
+
+// Elements whose old node lists replace_nodes holds at once, per block (two blocks: ~8 MB at order 4).
+constexpr std::size_t kRebuildBlock = 8192;
 
 std::string point_text(const Eigen::Vector3d& x) {
   std::ostringstream out;
@@ -491,16 +495,35 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
   interior_pool_.reserve(old.interior_pool_.size());
   edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
   face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
-  std::vector<NodeId> ids;
+  // The old node lists are made a block ahead on another thread (a third of the rebuild's time):
+  // it reads the old entities, `to` and the elements of its block only; this thread links the
+  // block before, writing the new entities and that block's elements.
   const std::size_t count = elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
-  for (std::size_t e = 0; e < count; ++e) {
-    if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
-    const Element was = elements_[e];
-    old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
-                 was.face_orientation.data(), was.first_node, ids);
-    for (NodeId& id : ids) id = to[id];
-    elements_[e] = linked_element(was.shape, ids, was.region, e);
+  const auto old_node_lists = [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
+    lists.resize(std::min(kRebuildBlock, count - first));
+    for (std::size_t k = 0; k < lists.size(); ++k) {
+      const Element& was = elements_[first + k];
+      old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
+                   was.face_orientation.data(), was.first_node, lists[k]);
+      for (NodeId& id : lists[k]) id = to[id];
+    }
+  };
+  std::vector<std::vector<NodeId>> current, next;
+  if (count > 0) old_node_lists(0, current);
+  for (std::size_t first = 0; first < count; first += kRebuildBlock) {
+    std::future<void> ahead;  // joined before leaving, also when linking throws
+    if (first + kRebuildBlock < count)
+      ahead = std::async(std::launch::async, [&, next_first = first + kRebuildBlock] { old_node_lists(next_first, next); });
+    for (std::size_t k = 0; k < current.size(); ++k) {
+      const std::size_t e = first + k;
+      if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
+      const Element& was = elements_[e];
+      elements_[e] = linked_element(was.shape, current[k], was.region, e);
+    }
+    if (ahead.valid()) ahead.get();
+    std::swap(current, next);
   }
+  std::vector<NodeId> ids;
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
     ids = old.boundary_face_nodes(b);
     for (NodeId& id : ids) id = to[id];
