@@ -14,6 +14,28 @@ namespace {
 // Elements whose old node lists replace_nodes holds at once, per block (two blocks: ~8 MB at order 4).
 constexpr std::size_t kRebuildBlock = 8192;
 
+// link(i, nodes) for i in [0, count) in order on this thread, the node lists made by
+// node_lists(first, lists) (a block's, from index `first`) a block ahead on another thread (a third
+// of a rebuild's time): node_lists must not read what link writes. An error of link's leaves after
+// the block ahead is made.
+template <typename NodeLists, typename Link>
+void link_in_blocks(std::size_t count, const NodeLists& node_lists, const Link& link) {
+  std::vector<std::vector<NodeId>> current, next;
+  const auto make = [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
+    lists.resize(std::min(kRebuildBlock, count - first));
+    node_lists(first, lists);
+  };
+  if (count > 0) make(0, current);
+  for (std::size_t first = 0; first < count; first += kRebuildBlock) {
+    std::future<void> ahead;  // joined before leaving, also when link throws
+    if (first + kRebuildBlock < count)
+      ahead = std::async(std::launch::async, [&, next_first = first + kRebuildBlock] { make(next_first, next); });
+    for (std::size_t k = 0; k < current.size(); ++k) link(first + k, current[k]);
+    if (ahead.valid()) ahead.get();
+    std::swap(current, next);
+  }
+}
+
 std::string point_text(const Eigen::Vector3d& x) {
   std::ostringstream out;
   out << "(" << x.x() << ", " << x.y() << ", " << x.z() << ")";
@@ -251,6 +273,22 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
   const std::size_t index = elements_.size();
   elements_.push_back(linked_element(shape, canonical_nodes, region, index));
   return index;
+}
+
+void Mesh::add_elements_of(const Mesh& other, std::size_t first, std::size_t end) {
+  if (&other == this) throw std::invalid_argument("Mesh::add_elements_of: the other mesh is this one");
+  if (first > end || end > other.elements_.size())
+    throw std::out_of_range("Mesh::add_elements_of: elements [" + std::to_string(first) + ", " + std::to_string(end) +
+                            ") of a mesh of " + std::to_string(other.elements_.size()));
+  link_in_blocks(
+      end - first,
+      [&](std::size_t from, std::vector<std::vector<NodeId>>& lists) {
+        for (std::size_t k = 0; k < lists.size(); ++k) other.element_nodes(first + from + k, lists[k]);
+      },
+      [&](std::size_t i, const std::vector<NodeId>& ids) {
+        const Element& el = other.elements_[first + i];
+        add_element(el.shape, ids, el.region);
+      });
 }
 
 Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
@@ -495,34 +533,25 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
   interior_pool_.reserve(old.interior_pool_.size());
   edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
   face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
-  // The old node lists are made a block ahead on another thread (a third of the rebuild's time):
-  // it reads the old entities, `to` and the elements of its block only; this thread links the
-  // block before, writing the new entities and that block's elements.
+  // The old node lists a block ahead (link_in_blocks): they read the old entities, `to` and the
+  // elements of their block only; this thread links the block before, writing the new entities
+  // and that block's elements.
   const std::size_t count = elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
-  const auto old_node_lists = [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
-    lists.resize(std::min(kRebuildBlock, count - first));
-    for (std::size_t k = 0; k < lists.size(); ++k) {
-      const Element& was = elements_[first + k];
-      old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
-                   was.face_orientation.data(), was.first_node, lists[k]);
-      for (NodeId& id : lists[k]) id = to[id];
-    }
-  };
-  std::vector<std::vector<NodeId>> current, next;
-  if (count > 0) old_node_lists(0, current);
-  for (std::size_t first = 0; first < count; first += kRebuildBlock) {
-    std::future<void> ahead;  // joined before leaving, also when linking throws
-    if (first + kRebuildBlock < count)
-      ahead = std::async(std::launch::async, [&, next_first = first + kRebuildBlock] { old_node_lists(next_first, next); });
-    for (std::size_t k = 0; k < current.size(); ++k) {
-      const std::size_t e = first + k;
-      if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
-      const Element& was = elements_[e];
-      elements_[e] = linked_element(was.shape, current[k], was.region, e);
-    }
-    if (ahead.valid()) ahead.get();
-    std::swap(current, next);
-  }
+  link_in_blocks(
+      count,
+      [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
+        for (std::size_t k = 0; k < lists.size(); ++k) {
+          const Element& was = elements_[first + k];
+          old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
+                       was.face_orientation.data(), was.first_node, lists[k]);
+          for (NodeId& id : lists[k]) id = to[id];
+        }
+      },
+      [&](std::size_t e, const std::vector<NodeId>& ids) {
+        if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
+        const Element& was = elements_[e];
+        elements_[e] = linked_element(was.shape, ids, was.region, e);
+      });
   std::vector<NodeId> ids;
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
     ids = old.boundary_face_nodes(b);

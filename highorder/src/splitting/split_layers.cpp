@@ -696,10 +696,9 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
 }
 
 void Splitter::copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece) {
-  for (std::size_t e = from; e < end; ++e) {
-    if (first_piece) (*first_piece)[e] = out_.elements().size();
-    out_.add_element(in_.elements()[e].shape, in_.element_nodes(e), in_.elements()[e].region);
-  }
+  if (first_piece)
+    for (std::size_t e = from; e < end; ++e) (*first_piece)[e] = out_.elements().size() + (e - from);
+  out_.add_elements_of(in_, from, end);
 }
 
 void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,

@@ -337,6 +337,53 @@ TEST(Compact, ReplacingNodesInPlaceThrowsTheFreshBuildsErrorFromALateBlock) {
   EXPECT_EQ(in_place, fresh);
 }
 
+// A mesh with the nodes (the first `nodes` of them), regions and the first `elements` elements of
+// `m`, each added by add_element.
+Mesh first_elements_of(const Mesh& m, std::size_t nodes, std::size_t elements) {
+  Mesh out(m.order(), m.node_set());
+  for (NodeId v = 0; v < nodes; ++v) out.add_node(m.node(v), m.cad_attachment(v));
+  out.copy_regions_from(m);
+  for (std::size_t e = 0; e < elements; ++e)
+    out.add_element(m.elements()[e].shape, m.element_nodes(e), m.elements()[e].region);
+  return out;
+}
+
+TEST(Compact, AddingAnotherMeshsElementsOverManyBlocksIsAddingThemOneByOne) {
+  const ManyTets t = many_doubled_tets(18);
+  const Mesh& m = t.mesh;
+  const Mesh expected = first_elements_of(m, m.num_nodes(), m.elements().size());
+  Mesh out = first_elements_of(m, m.num_nodes(), 1000);
+  out.add_elements_of(m, 1000, 1000);  // none
+  out.add_elements_of(m, 1000, m.elements().size());
+  expect_same_entities(out, expected);
+  EXPECT_THROW(out.add_elements_of(m, 5, 4), std::out_of_range);
+  EXPECT_THROW(out.add_elements_of(m, 0, m.elements().size() + 1), std::out_of_range);
+  EXPECT_THROW(out.add_elements_of(out, 0, 1), std::invalid_argument);
+}
+
+TEST(Compact, AddingAnotherMeshsElementsThrowsTheOneByOneErrorFromALateBlock) {
+  const ManyTets t = many_doubled_tets(18);
+  const Mesh& m = t.mesh;
+  // Without the last node the elements use: the first element naming it fails, in a late block.
+  NodeId last_used = 0;
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    for (NodeId v : m.element_nodes(e)) last_used = std::max(last_used, v);
+  std::string one_by_one, in_blocks;
+  try {
+    first_elements_of(m, last_used, m.elements().size());
+  } catch (const std::invalid_argument& e) {
+    one_by_one = e.what();
+  }
+  Mesh out = first_elements_of(m, last_used, 0);
+  try {
+    out.add_elements_of(m, 0, m.elements().size());
+  } catch (const std::invalid_argument& e) {
+    in_blocks = e.what();
+  }
+  EXPECT_NE(one_by_one.find("unknown node id"), std::string::npos) << one_by_one;
+  EXPECT_EQ(in_blocks, one_by_one);
+}
+
 TEST(Compact, ReplacingNodesInPlaceRefusesABadMapWithoutChangingTheMesh) {
   DoubledFace d = two_order3_hexes_with_a_doubled_face();
   const std::vector<Eigen::Vector3d> before = d.mesh.nodes();

@@ -116,6 +116,10 @@ class Mesh {
   /// nodes given for it must be the stored ones or sit at the same place (else the elements do
   /// not conform: std::invalid_argument naming the element and the entity). Returns its index.
   std::size_t add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region = 0);
+  /// add_element of elements [first, end) of `other` (a mesh whose node ids mean the same nodes
+  /// here), in order, with their regions: the same elements, entities and errors; their node lists
+  /// are read from `other` a block ahead on another thread.
+  void add_elements_of(const Mesh& other, std::size_t first, std::size_t end);
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
   std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
