@@ -437,7 +437,7 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
   if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
   const DirectionData& side = direction_of(element, s);
   for (int v : side.bottom)
-    if (data.lattice[v] == h)
+    if (data.lattice[v][0] == h[0] && data.lattice[v][1] == h[1] && data.lattice[v][2] == h[2])  // no memcmp call
       return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
   for (const auto& e : side.bottom_edges) {
     const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
