@@ -64,10 +64,11 @@ class Curver {
   void curve_faces(const std::vector<char>& on_boundary);
   /// Canonical node ids of element e with kNoNode for its volume-interior nodes.
   std::vector<NodeId> element_node_ids(std::size_t e) const;
-  /// Canonical node ids of a 2D shape with these vertices, from the edge nodes already made and,
-  /// when `face` >= 0, that face's interior nodes seen with orientation `code`.
-  std::vector<NodeId> planar_nodes(Shape shape, const NodeId* vertices, long face, int code) const;
-  NodeId edge_node(NodeId a, NodeId b, const mesh::NodeSlot& slot) const;
+  /// Canonical node ids of a 2D shape with these vertices and edges (the input's ids, in the order
+  /// of the shape's edges, as a mesh::Face or BoundaryFace stores them), from the edge nodes
+  /// already made and, when `face` >= 0, that face's interior nodes seen with orientation `code`.
+  std::vector<NodeId> planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face,
+                                   int code) const;
 
   const mesh::Mesh& in_;
   const cad::Model& model_;
@@ -84,13 +85,8 @@ class Curver {
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
 };
 
-NodeId Curver::edge_node(NodeId a, NodeId b, const mesh::NodeSlot& slot) const {
-  const long e = in_.find_edge(a, b);
-  if (e < 0) throw std::logic_error("curve_mesh: edge " + std::to_string(a) + "-" + std::to_string(b) + " not found");
-  return edge_interior_[e][slot.slot[a > b ? 1 : 0]];
-}
-
-std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, long face, int code) const {
+std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face,
+                                         int code) const {
   const mesh::NodeLayout& layout = mesh::node_layout(shape, params_.order);
   std::vector<NodeId> ids(layout.slots.size(), mesh::kNoNode);
   for (std::size_t i = 0; i < ids.size(); ++i) {
@@ -99,7 +95,7 @@ std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, lo
       ids[i] = vertices[s.local];
     } else if (s.kind == mesh::NodeSlot::Edge) {
       const auto& e = edges(shape)[s.local];
-      ids[i] = edge_node(vertices[e[0]], vertices[e[1]], s);
+      ids[i] = edge_interior_[edge_ids[s.local]][s.slot[vertices[e[0]] > vertices[e[1]] ? 1 : 0]];
     } else if (face >= 0) {
       ids[i] = face_interior_[face][s.slot[code]];
     }
@@ -211,7 +207,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
   FaceNodes out;
   if (ext.interior.empty()) return out;
-  const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), -1, 0);
+  const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), face.edges.data(), -1, 0);
   const int n = static_cast<int>(ids.size());
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
   for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
@@ -391,7 +387,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
     out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
-                           planar_nodes(bf.shape, bf.vertices.data(), bf.face, bf.face_orientation));
+                           planar_nodes(bf.shape, bf.vertices.data(), bf.edges.data(), bf.face, bf.face_orientation));
   }
   if (stats) *stats = stats_;
   return std::move(out_);

@@ -3,12 +3,38 @@
 #include "semimesh/mesh/node_layout.hpp"
 
 #include <algorithm>
+#include <future>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace semimesh::mesh {
 namespace {
+
+// Elements whose old node lists replace_nodes holds at once, per block (two blocks: ~8 MB at order 4).
+constexpr std::size_t kRebuildBlock = 8192;
+
+// link(i, nodes) for i in [0, count) in order on this thread, the node lists made by
+// node_lists(first, lists) (a block's, from index `first`) a block ahead on another thread (a third
+// of a rebuild's time): node_lists must not read what link writes. An error of link's leaves after
+// the block ahead is made.
+template <typename NodeLists, typename Link>
+void link_in_blocks(std::size_t count, const NodeLists& node_lists, const Link& link) {
+  std::vector<std::vector<NodeId>> current, next;
+  const auto make = [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
+    lists.resize(std::min(kRebuildBlock, count - first));
+    node_lists(first, lists);
+  };
+  if (count > 0) make(0, current);
+  for (std::size_t first = 0; first < count; first += kRebuildBlock) {
+    std::future<void> ahead;  // joined before leaving, also when link throws
+    if (first + kRebuildBlock < count)
+      ahead = std::async(std::launch::async, [&, next_first = first + kRebuildBlock] { make(next_first, next); });
+    for (std::size_t k = 0; k < current.size(); ++k) link(first + k, current[k]);
+    if (ahead.valid()) ahead.get();
+    std::swap(current, next);
+  }
+}
 
 std::string point_text(const Eigen::Vector3d& x) {
   std::ostringstream out;
@@ -32,6 +58,14 @@ std::array<NodeId, 4> face_key(const NodeId* v, int n) {
   return key;
 }
 
+// Key comparisons written out: std::array's operator== calls memcmp for these few bytes, ~1 s of
+// the paper's case in the serial passes that build the entities.
+bool same_edge(const std::array<NodeId, 2>& a, const std::array<NodeId, 2>& b) { return a[0] == b[0] && a[1] == b[1]; }
+
+bool same_face(const std::array<NodeId, 4>& a, const std::array<NodeId, 4>& b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3];
+}
+
 std::uint64_t face_key_hash(const std::array<NodeId, 4>& k) {
   const std::uint64_t low = (static_cast<std::uint64_t>(k[0]) << 32) | k[1];
   const std::uint64_t high = (static_cast<std::uint64_t>(k[2]) << 32) | k[3];
@@ -40,6 +74,37 @@ std::uint64_t face_key_hash(const std::array<NodeId, 4>& k) {
 
 std::string element_name(ho::Shape shape, std::size_t index) {
   return ho::to_string(shape) + " " + std::to_string(index);
+}
+
+// [shape][face][k]: the shape's local edge that is edge k of its face f (k in the order of the
+// face's own shape's edges): a new face takes its edges' ids from its element's, no lookup.
+using FaceEdges = std::vector<std::array<int, 4>>;
+
+FaceEdges face_edges(ho::Shape shape) {
+  FaceEdges table;
+  if (ho::dimension(shape) != 3) return table;
+  const auto& shape_edges = ho::edges(shape);
+  for (const std::vector<int>& f : ho::faces(shape)) {
+    const int n = static_cast<int>(f.size());
+    std::array<int, 4> row{-1, -1, -1, -1};
+    const auto& own = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
+    for (std::size_t k = 0; k < own.size(); ++k) {
+      const int a = f[own[k][0]], b = f[own[k][1]];
+      for (std::size_t e = 0; e < shape_edges.size(); ++e)
+        if ((shape_edges[e][0] == a && shape_edges[e][1] == b) || (shape_edges[e][0] == b && shape_edges[e][1] == a))
+          row[k] = static_cast<int>(e);
+    }
+    table.push_back(row);
+  }
+  return table;
+}
+
+const FaceEdges& face_edges_of(ho::Shape shape) {
+  static const std::array<FaceEdges, 7> tables = {
+      face_edges(ho::Shape::Segment),     face_edges(ho::Shape::Triangle), face_edges(ho::Shape::Quadrilateral),
+      face_edges(ho::Shape::Tetrahedron), face_edges(ho::Shape::Pyramid),  face_edges(ho::Shape::Prism),
+      face_edges(ho::Shape::Hexahedron)};
+  return tables[static_cast<int>(shape)];
 }
 
 }  // namespace
@@ -137,31 +202,35 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
 }
 
-void Mesh::check_same_node(NodeId stored, NodeId given, const std::string& who) const {
+std::string Mesh::Named::text() const {
+  return group ? "boundary " + element_name(shape, index) + " of group '" + *group + "'" : element_name(shape, index);
+}
+
+void Mesh::check_same_node(NodeId stored, NodeId given, const Named& who) const {
   if (stored == given) return;
   const Eigen::Vector3d& a = nodes_[stored];
   const Eigen::Vector3d& b = nodes_[given];
   const double scale = std::max({1.0, a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
   if ((a - b).norm() > 1e-9 * scale)
-    throw std::invalid_argument(who + ": node " + std::to_string(given) + " at " + point_text(b) +
+    throw std::invalid_argument(who.text() + ": node " + std::to_string(given) + " at " + point_text(b) +
                                 " is not at the place of node " + std::to_string(stored) + " at " + point_text(a) +
                                 " that the shared entity already owns (non-conforming elements or a wrong node order)");
 }
 
 void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,
                          std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids,
-                         std::uint8_t* codes, const std::string& who) {
+                         std::uint8_t* codes, const Named& who) {
   const NodeLayout& layout = node_layout(shape, order_);
   if (canonical.size() != layout.slots.size())
-    throw std::invalid_argument(who + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
+    throw std::invalid_argument(who.text() + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
                                 std::to_string(order_) + ", got " + std::to_string(canonical.size()));
   for (NodeId id : canonical)
-    if (id >= nodes_.size()) throw std::invalid_argument(who + ": unknown node id " + std::to_string(id));
+    if (id >= nodes_.size()) throw std::invalid_argument(who.text() + ": unknown node id " + std::to_string(id));
   const int nv = ho::num_vertices(shape);
   for (int a = 0; a < nv; ++a)
     for (int b = a + 1; b < nv; ++b)
       if (vertices[a] == vertices[b])
-        throw std::invalid_argument(who + ": vertex " + std::to_string(vertices[a]) + " appears twice");
+        throw std::invalid_argument(who.text() + ": vertex " + std::to_string(vertices[a]) + " appears twice");
 
   const auto& local_edges = ho::edges(shape);
   reversed = 0;
@@ -171,14 +240,16 @@ void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, 
     if (a > b) reversed |= static_cast<std::uint16_t>(1u << e);
   }
   if (ho::dimension(shape) == 2) {
-    face_ids[0] = find_or_add_face(vertices, nv, codes[0], who);
+    face_ids[0] = find_or_add_face(vertices, nv, edge_ids, codes[0], who);
   } else {
     const auto& local_faces = ho::faces(shape);
+    const FaceEdges& local_face_edges = face_edges_of(shape);
     for (std::size_t f = 0; f < local_faces.size(); ++f) {
       std::array<NodeId, 4> fv{};
+      std::array<std::uint32_t, 4> fe{};
       const int n = static_cast<int>(local_faces[f].size());
-      for (int k = 0; k < n; ++k) fv[k] = vertices[local_faces[f][k]];
-      face_ids[f] = find_or_add_face(fv.data(), n, codes[f], who);
+      for (int k = 0; k < n; ++k) fv[k] = vertices[local_faces[f][k]], fe[k] = edge_ids[local_face_edges[f][k]];
+      face_ids[f] = find_or_add_face(fv.data(), n, fe.data(), codes[f], who);
     }
   }
   // New entities hold kNoNode placeholders: the first element to see a node stores it, later
@@ -211,12 +282,28 @@ std::size_t Mesh::add_element(ho::Shape shape, const std::vector<NodeId>& canoni
   return index;
 }
 
+void Mesh::add_elements_of(const Mesh& other, std::size_t first, std::size_t end) {
+  if (&other == this) throw std::invalid_argument("Mesh::add_elements_of: the other mesh is this one");
+  if (first > end || end > other.elements_.size())
+    throw std::out_of_range("Mesh::add_elements_of: elements [" + std::to_string(first) + ", " + std::to_string(end) +
+                            ") of a mesh of " + std::to_string(other.elements_.size()));
+  link_in_blocks(
+      end - first,
+      [&](std::size_t from, std::vector<std::vector<NodeId>>& lists) {
+        for (std::size_t k = 0; k < lists.size(); ++k) other.element_nodes(first + from + k, lists[k]);
+      },
+      [&](std::size_t i, const std::vector<NodeId>& ids) {
+        const Element& el = other.elements_[first + i];
+        add_element(el.shape, ids, el.region);
+      });
+}
+
 Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
                              std::size_t index) {
-  const std::string who = element_name(shape, index);
+  const Named who{shape, index, nullptr};
   const int nv = ho::num_vertices(shape);
   if (canonical_nodes.size() < static_cast<std::size_t>(nv))
-    throw std::invalid_argument(who + ": fewer nodes than vertices");
+    throw std::invalid_argument(who.text() + ": fewer nodes than vertices");
   Element el;
   el.shape = shape;
   el.region = static_cast<std::uint16_t>(region);
@@ -238,10 +325,10 @@ std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
     throw std::invalid_argument("Mesh::add_boundary_face: group '" + group + "': " + ho::to_string(shape) +
                                 " is not a triangle or quadrilateral");
   const std::size_t index = boundary_.size();
-  const std::string who = "boundary " + element_name(shape, index) + " of group '" + group + "'";
+  const Named who{shape, index, &group};
   const int nv = ho::num_vertices(shape);
   if (canonical_nodes.size() < static_cast<std::size_t>(nv))
-    throw std::invalid_argument(who + ": fewer nodes than vertices");
+    throw std::invalid_argument(who.text() + ": fewer nodes than vertices");
   BoundaryFace bf;
   bf.shape = shape;
   std::copy(canonical_nodes.begin(), canonical_nodes.begin() + nv, bf.vertices.begin());
@@ -258,7 +345,7 @@ std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
   const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
   const auto id = static_cast<std::uint32_t>(edges_.size());
   const std::uint32_t found = edge_index_.find_or_insert(
-      IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; }, id,
+      IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return same_edge(edges_[e].vertices, key); }, id,
       [&](std::uint32_t e) { return edge_hash(e); });
   if (found != IdTable::kNone) return found;
   Edge edge;
@@ -269,8 +356,8 @@ std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
   return id;
 }
 
-std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code,
-                                     const std::string& who) {
+std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, const std::uint32_t* edge_ids,
+                                     std::uint8_t& code, const Named& who) {
   const std::array<NodeId, 4> key = face_key(local_vertices, n);
   const auto id = static_cast<std::uint32_t>(faces_.size());
   const std::uint32_t found = face_index_.find_or_insert(
@@ -280,12 +367,11 @@ std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::u
     Face face;
     std::copy(local_vertices, local_vertices + n, face.vertices.begin());
     face.num_vertices = static_cast<std::uint8_t>(n);
-    // The face's edges exist already (link_entities finds an element's edges first); kept so that
-    // face_nodes needs no lookup.
+    // The face's edges (link_entities found them first); kept so that face_nodes needs no lookup.
     const auto& local_edges = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
     for (std::size_t e = 0; e < local_edges.size(); ++e) {
       const NodeId a = local_vertices[local_edges[e][0]], b = local_vertices[local_edges[e][1]];
-      face.edges[e] = static_cast<std::uint32_t>(find_edge(a, b));
+      face.edges[e] = edge_ids[e];
       if (a > b) face.edge_reversed |= static_cast<std::uint8_t>(1u << e);
     }
     face.first_node = static_cast<std::uint32_t>(face_pool_.size());
@@ -296,20 +382,20 @@ std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, std::u
   }
   const int c = face_orientation_code(local_vertices, faces_[found].vertices.data(), n);
   if (c < 0)
-    throw std::invalid_argument(who + ": face " + std::to_string(found) +
+    throw std::invalid_argument(who.text() + ": face " + std::to_string(found) +
                                 " has the same vertices in a different cycle (twisted quadrilateral)");
   code = static_cast<std::uint8_t>(c);
   return found;
 }
 
 bool Mesh::has_face_key(std::uint32_t face, const std::array<NodeId, 4>& key) const {
-  return face_key(faces_[face].vertices.data(), faces_[face].num_vertices) == key;
+  return same_face(face_key(faces_[face].vertices.data(), faces_[face].num_vertices), key);
 }
 
 long Mesh::find_edge(NodeId a, NodeId b) const {
   const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
   const std::uint32_t found =
-      edge_index_.find(IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return edges_[e].vertices == key; });
+      edge_index_.find(IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return same_edge(edges_[e].vertices, key); });
   return found == IdTable::kNone ? -1 : static_cast<long>(found);
 }
 
@@ -454,16 +540,26 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
   interior_pool_.reserve(old.interior_pool_.size());
   edge_index_.reserve(old.edges_.size(), [&](std::uint32_t e) { return edge_hash(e); });
   face_index_.reserve(old.faces_.size(), [&](std::uint32_t f) { return face_hash(f); });
-  std::vector<NodeId> ids;
+  // The old node lists a block ahead (link_in_blocks): they read the old entities, `to` and the
+  // elements of their block only; this thread links the block before, writing the new entities
+  // and that block's elements.
   const std::size_t count = elements_.size(), report_every = std::max<std::size_t>(1, count / 100);
-  for (std::size_t e = 0; e < count; ++e) {
-    if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
-    const Element was = elements_[e];
-    old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
-                 was.face_orientation.data(), was.first_node, ids);
-    for (NodeId& id : ids) id = to[id];
-    elements_[e] = linked_element(was.shape, ids, was.region, e);
-  }
+  link_in_blocks(
+      count,
+      [&](std::size_t first, std::vector<std::vector<NodeId>>& lists) {
+        for (std::size_t k = 0; k < lists.size(); ++k) {
+          const Element& was = elements_[first + k];
+          old.assemble(was.shape, was.vertices.data(), was.edges.data(), was.edge_reversed, was.faces.data(),
+                       was.face_orientation.data(), was.first_node, lists[k]);
+          for (NodeId& id : lists[k]) id = to[id];
+        }
+      },
+      [&](std::size_t e, const std::vector<NodeId>& ids) {
+        if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
+        const Element& was = elements_[e];
+        elements_[e] = linked_element(was.shape, ids, was.region, e);
+      });
+  std::vector<NodeId> ids;
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {
     ids = old.boundary_face_nodes(b);
     for (NodeId& id : ids) id = to[id];

@@ -437,7 +437,7 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
   if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
   const DirectionData& side = direction_of(element, s);
   for (int v : side.bottom)
-    if (data.lattice[v] == h)
+    if (data.lattice[v][0] == h[0] && data.lattice[v][1] == h[1] && data.lattice[v][2] == h[2])  // no memcmp call
       return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
   for (const auto& e : side.bottom_edges) {
     const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
@@ -696,10 +696,9 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
 }
 
 void Splitter::copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece) {
-  for (std::size_t e = from; e < end; ++e) {
-    if (first_piece) (*first_piece)[e] = out_.elements().size();
-    out_.add_element(in_.elements()[e].shape, in_.element_nodes(e), in_.elements()[e].region);
-  }
+  if (first_piece)
+    for (std::size_t e = from; e < end; ++e) (*first_piece)[e] = out_.elements().size() + (e - from);
+  out_.add_elements_of(in_, from, end);
 }
 
 void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,

@@ -14,6 +14,8 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -194,14 +196,8 @@ Mesh built_afresh(const Mesh& m, const std::vector<NodeId>& to) {
   return out;
 }
 
-TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
-  DoubledFace d = two_order3_hexes_with_a_doubled_face();
-  const Mesh expected = built_afresh(d.mesh, d.to);
-  ASSERT_EQ(d.mesh.faces().size(), 12u);
-  d.mesh.replace_nodes(d.to);
-  const Mesh& m = d.mesh;
-  EXPECT_EQ(m.num_nodes(), 2u * 64 - 16);
-  EXPECT_EQ(m.faces().size(), 11u);
+// Every entity, pool and element of `m` as in `expected`, and the lookups rebuilt.
+void expect_same_entities(const Mesh& m, const Mesh& expected) {
   EXPECT_EQ(m.nodes(), expected.nodes());
   EXPECT_EQ(m.edge_pool(), expected.edge_pool());
   EXPECT_EQ(m.face_pool(), expected.face_pool());
@@ -218,8 +214,8 @@ TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
     EXPECT_EQ(m.faces()[f].edge_reversed, expected.faces()[f].edge_reversed) << f;
     EXPECT_EQ(m.faces()[f].first_node, expected.faces()[f].first_node) << f;
   }
-  ASSERT_EQ(m.elements().size(), 2u);
-  for (std::size_t e = 0; e < 2; ++e) {
+  ASSERT_EQ(m.elements().size(), expected.elements().size());
+  for (std::size_t e = 0; e < m.elements().size(); ++e) {
     EXPECT_EQ(m.elements()[e].vertices, expected.elements()[e].vertices) << e;
     EXPECT_EQ(m.elements()[e].edges, expected.elements()[e].edges) << e;
     EXPECT_EQ(m.elements()[e].edge_reversed, expected.elements()[e].edge_reversed) << e;
@@ -228,12 +224,164 @@ TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
     EXPECT_EQ(m.elements()[e].region, expected.elements()[e].region) << e;
     EXPECT_EQ(m.element_nodes(e), expected.element_nodes(e)) << e;
   }
-  ASSERT_EQ(m.boundary_faces().size(), 1u);
-  EXPECT_EQ(m.boundary_face_nodes(0), expected.boundary_face_nodes(0));
+  ASSERT_EQ(m.boundary_faces().size(), expected.boundary_faces().size());
+  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
+    EXPECT_EQ(m.boundary_face_nodes(b), expected.boundary_face_nodes(b)) << b;
   EXPECT_EQ(m.group_names(), expected.group_names());
-  const auto& quad = m.boundary_faces()[0].vertices;
-  EXPECT_EQ(m.find_face({quad[0], quad[1], quad[2], quad[3]}), static_cast<long>(m.boundary_faces()[0].face))
-      << "the lookup tables are rebuilt too";
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    const auto& v = m.faces()[f].vertices;
+    const std::vector<NodeId> vertices(v.begin(), v.begin() + m.faces()[f].num_vertices);
+    ASSERT_EQ(m.find_face(vertices), static_cast<long>(f)) << "the lookup tables are rebuilt too";
+  }
+}
+
+TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  const Mesh expected = built_afresh(d.mesh, d.to);
+  ASSERT_EQ(d.mesh.faces().size(), 12u);
+  d.mesh.replace_nodes(d.to);
+  const Mesh& m = d.mesh;
+  EXPECT_EQ(m.num_nodes(), 2u * 64 - 16);
+  EXPECT_EQ(m.faces().size(), 11u);
+  ASSERT_EQ(m.elements().size(), 2u);
+  ASSERT_EQ(m.boundary_faces().size(), 1u);
+  expect_same_entities(m, expected);
+}
+
+// Order-2 tets, six to a unit cube, on n x n x n cubes, every node made twice (the second copies
+// first, and an orphan between them): the elements on cubes of even x use the first copies, the
+// others the second, so that the welded mesh joins them; the faces at x = 0 are boundary faces.
+// More elements than replace_nodes assembles ahead at once: its blocks meet many times.
+struct ManyTets {
+  Mesh mesh{2};
+  std::vector<NodeId> to;  ///< every second copy onto its first
+  std::vector<NodeId> first, second;
+};
+
+ManyTets many_doubled_tets(int n) {
+  ManyTets t;
+  Mesh& m = t.mesh;
+  const int points = 2 * n + 1;  // a lattice of half steps: vertices and edge midpoints
+  auto at = [&](int i, int j, int k) { return (static_cast<std::size_t>(i) * points + j) * points + k; };
+  const std::size_t count = static_cast<std::size_t>(points) * points * points;
+  for (std::vector<NodeId>* copy : {&t.second, &t.first}) {
+    for (int i = 0; i < points; ++i)
+      for (int j = 0; j < points; ++j)
+        for (int k = 0; k < points; ++k) copy->push_back(m.add_node(Eigen::Vector3d(i, j, k) / 2.0));
+    if (copy == &t.second) m.add_node(Eigen::Vector3d(-9, -9, -9));  // orphan
+  }
+  t.to.resize(m.num_nodes());
+  for (NodeId v = 0; v < m.num_nodes(); ++v) t.to[v] = v;
+  for (std::size_t p = 0; p < count; ++p) t.to[t.second[p]] = t.first[p];
+  const int farfield = m.region_index("farfield");
+  // The six tets of the Kuhn split of a cube: the paths from corner 000 to 111 along the axes.
+  const int paths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int ci = 0; ci < n; ++ci)
+    for (int cj = 0; cj < n; ++cj)
+      for (int ck = 0; ck < n; ++ck) {
+        const std::vector<NodeId>& ids = ci % 2 == 0 ? t.first : t.second;
+        for (const auto& path : paths) {
+          std::array<std::array<int, 3>, 4> v;
+          v[0] = {2 * ci, 2 * cj, 2 * ck};
+          for (int s = 0; s < 3; ++s) v[s + 1] = v[s], v[s + 1][path[s]] += 2;
+          auto node = [&](const std::array<int, 3>& a) { return ids[at(a[0], a[1], a[2])]; };
+          auto mid = [&](int a, int b) {
+            return ids[at((v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2, (v[a][2] + v[b][2]) / 2)];
+          };
+          // Gmsh order-2 tet: vertices, then edges 0-1, 1-2, 2-0, 3-0, 3-2, 3-1.
+          m.add_element(Shape::Tetrahedron,
+                        {node(v[0]), node(v[1]), node(v[2]), node(v[3]), mid(0, 1), mid(1, 2), mid(2, 0), mid(3, 0),
+                         mid(3, 2), mid(3, 1)},
+                        ci % 2 == 0 ? 0 : farfield);
+        }
+      }
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    const auto& v = m.faces()[f].vertices;
+    bool at_x0 = true;
+    for (int k = 0; k < m.faces()[f].num_vertices; ++k) at_x0 = at_x0 && m.node(v[k]).x() == 0.0;
+    if (at_x0) m.add_boundary_face("wall", Shape::Triangle, m.face_nodes(f));
+  }
+  return t;
+}
+
+TEST(Compact, ReplacingNodesInPlaceOverManyBlocksGivesTheEntitiesOfAFreshBuild) {
+  ManyTets t = many_doubled_tets(18);
+  ASSERT_GT(t.mesh.elements().size(), 30000u) << "several of replace_nodes' blocks";
+  const Mesh expected = built_afresh(t.mesh, t.to);
+  std::vector<double> reported;
+  t.mesh.replace_nodes(t.to, {}, [&](double f) { reported.push_back(f); });
+  EXPECT_EQ(t.mesh.num_nodes(), t.first.size());
+  expect_same_entities(t.mesh, expected);
+  ASSERT_FALSE(reported.empty());
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  EXPECT_EQ(reported.back(), 1.0);
+}
+
+TEST(Compact, ReplacingNodesInPlaceThrowsTheFreshBuildsErrorFromALateBlock) {
+  ManyTets t = many_doubled_tets(18);
+  // The last element's vertex 1 onto its vertex 0: it then names one vertex twice.
+  const std::vector<NodeId> last = t.mesh.element_nodes(t.mesh.elements().size() - 1);
+  t.to[last[1]] = t.to[last[0]];
+  std::string fresh, in_place;
+  try {
+    built_afresh(t.mesh, t.to);
+  } catch (const std::invalid_argument& e) {
+    fresh = e.what();
+  }
+  try {
+    t.mesh.replace_nodes(t.to);
+  } catch (const std::invalid_argument& e) {
+    in_place = e.what();
+  }
+  EXPECT_NE(fresh.find("appears twice"), std::string::npos) << fresh;
+  EXPECT_EQ(in_place, fresh);
+}
+
+// A mesh with the nodes (the first `nodes` of them), regions and the first `elements` elements of
+// `m`, each added by add_element.
+Mesh first_elements_of(const Mesh& m, std::size_t nodes, std::size_t elements) {
+  Mesh out(m.order(), m.node_set());
+  for (NodeId v = 0; v < nodes; ++v) out.add_node(m.node(v), m.cad_attachment(v));
+  out.copy_regions_from(m);
+  for (std::size_t e = 0; e < elements; ++e)
+    out.add_element(m.elements()[e].shape, m.element_nodes(e), m.elements()[e].region);
+  return out;
+}
+
+TEST(Compact, AddingAnotherMeshsElementsOverManyBlocksIsAddingThemOneByOne) {
+  const ManyTets t = many_doubled_tets(18);
+  const Mesh& m = t.mesh;
+  const Mesh expected = first_elements_of(m, m.num_nodes(), m.elements().size());
+  Mesh out = first_elements_of(m, m.num_nodes(), 1000);
+  out.add_elements_of(m, 1000, 1000);  // none
+  out.add_elements_of(m, 1000, m.elements().size());
+  expect_same_entities(out, expected);
+  EXPECT_THROW(out.add_elements_of(m, 5, 4), std::out_of_range);
+  EXPECT_THROW(out.add_elements_of(m, 0, m.elements().size() + 1), std::out_of_range);
+  EXPECT_THROW(out.add_elements_of(out, 0, 1), std::invalid_argument);
+}
+
+TEST(Compact, AddingAnotherMeshsElementsThrowsTheOneByOneErrorFromALateBlock) {
+  const ManyTets t = many_doubled_tets(18);
+  const Mesh& m = t.mesh;
+  // Without the last node the elements use: the first element naming it fails, in a late block.
+  NodeId last_used = 0;
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    for (NodeId v : m.element_nodes(e)) last_used = std::max(last_used, v);
+  std::string one_by_one, in_blocks;
+  try {
+    first_elements_of(m, last_used, m.elements().size());
+  } catch (const std::invalid_argument& e) {
+    one_by_one = e.what();
+  }
+  Mesh out = first_elements_of(m, last_used, 0);
+  try {
+    out.add_elements_of(m, 0, m.elements().size());
+  } catch (const std::invalid_argument& e) {
+    in_blocks = e.what();
+  }
+  EXPECT_NE(one_by_one.find("unknown node id"), std::string::npos) << one_by_one;
+  EXPECT_EQ(in_blocks, one_by_one);
 }
 
 TEST(Compact, ReplacingNodesInPlaceRefusesABadMapWithoutChangingTheMesh) {

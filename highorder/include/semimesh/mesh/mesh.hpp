@@ -116,6 +116,10 @@ class Mesh {
   /// nodes given for it must be the stored ones or sit at the same place (else the elements do
   /// not conform: std::invalid_argument naming the element and the entity). Returns its index.
   std::size_t add_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region = 0);
+  /// add_element of elements [first, end) of `other` (a mesh whose node ids mean the same nodes
+  /// here), in order, with their regions: the same elements, entities and errors; their node lists
+  /// are read from `other` a block ahead on another thread.
+  void add_elements_of(const Mesh& other, std::size_t first, std::size_t end);
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
   std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
@@ -191,14 +195,24 @@ class Mesh {
   std::size_t memory_bytes() const;
 
  private:
+  /// An element or boundary face as errors name it: the text is made for a message only (building
+  /// it for every element cost an allocation each).
+  struct Named {
+    ho::Shape shape;
+    std::size_t index;
+    const std::string* group;  ///< a boundary face's group; null for an element
+    std::string text() const;
+  };
   std::uint32_t find_or_add_edge(NodeId a, NodeId b);
-  std::uint32_t find_or_add_face(const NodeId* local_vertices, int n, std::uint8_t& code, const std::string& who);
+  /// `edge_ids`: the ids of the face's edges, in the order of its shape's edges (a new face keeps them).
+  std::uint32_t find_or_add_face(const NodeId* local_vertices, int n, const std::uint32_t* edge_ids, std::uint8_t& code,
+                                 const Named& who);
   /// Finds/creates the edges and faces of an element or boundary face and stores (or checks) the
   /// nodes it gives for them. For 2D shapes the single face is the shape itself.
   void link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,
                      std::uint32_t* edge_ids, std::uint16_t& reversed, std::uint32_t* face_ids, std::uint8_t* codes,
-                     const std::string& who);
-  void check_same_node(NodeId stored, NodeId given, const std::string& who) const;
+                     const Named& who);
+  void check_same_node(NodeId stored, NodeId given, const Named& who) const;
   /// add_element's element (its entities found or created, its interior nodes appended), not yet
   /// stored; `index` names it in errors.
   Element linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region, std::size_t index);
