@@ -214,18 +214,28 @@ TopoDS_Shape far_solid(const FarFieldShape& far, const gp_Dir& normal, const Top
       .Solid();
 }
 
-void require_inside(const TopoDS_Shape& body, const TopoDS_Shape& far_field, const FarFieldShape& far, double tolerance) {
+// Each solid of `body` inside the far field, none crossing or touching its boundary. With
+// `others_outside` (the pieces of a joined body standing out of its wall part: a full-span wing
+// through a fuselage stands out twice, and a half model's box keeps one) a piece may lie wholly
+// outside instead, one at least inside.
+void require_inside(const TopoDS_Shape& body, const TopoDS_Shape& far_field, const FarFieldShape& far, double tolerance,
+                    bool others_outside = false) {
   TopExp_Explorer shell(far_field, TopAbs_SHELL);
-  BRepExtrema_DistShapeShape distance(body, shell.Current());
-  if (!distance.IsDone()) refuse(far.label + ": the distance from the body to the far field cannot be computed");
-  if (distance.Value() <= tolerance) {
-    const gp_Pnt p = distance.PointOnShape1(1);
-    refuse(far.label + ": the far field does not contain the body: its boundary crosses or touches the body at (" +
-           length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+  int inside = 0, outside = 0;
+  for (TopExp_Explorer solid(body, TopAbs_SOLID); solid.More(); solid.Next()) {
+    BRepExtrema_DistShapeShape distance(solid.Current(), shell.Current());
+    if (!distance.IsDone()) refuse(far.label + ": the distance from the body to the far field cannot be computed");
+    if (distance.Value() <= tolerance) {
+      const gp_Pnt p = distance.PointOnShape1(1);
+      refuse(far.label + ": the far field does not contain the body: its boundary crosses or touches the body at (" +
+             length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+    }
+    TopExp_Explorer vertex(solid.Current(), TopAbs_VERTEX);
+    BRepClass3d_SolidClassifier where(far_field, BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())), tolerance);
+    ++(where.State() == TopAbs_IN ? inside : outside);
   }
-  TopExp_Explorer vertex(body, TopAbs_VERTEX);
-  BRepClass3d_SolidClassifier inside(far_field, BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())), tolerance);
-  if (inside.State() != TopAbs_IN) refuse(far.label + ": the far field does not contain the body: the body lies outside it");
+  if (inside == 0 || (outside > 0 && !others_outside))
+    refuse(far.label + ": the far field does not contain the body: the body lies outside it");
 }
 
 // A box standing on the wall plane on its fluid side, larger than everything else: the half space.
@@ -378,30 +388,6 @@ FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepA
 
 }  // namespace
 
-// What of the body stands out of the wall part is inside the far field, each piece of it (a full-span
-// wing through a fuselage stands out twice) wholly inside or, for a half model's box on the plane of
-// symmetry, wholly outside (the other wing); none crossing its boundary, one at least inside.
-void require_exposed_inside(const TopoDS_Shape& body, const TopoDS_Shape& wall, const TopoDS_Shape& far_field,
-                            const FarFieldShape& far, double tolerance) {
-  BRepAlgoAPI_Cut cut;
-  const TopoDS_Shape exposed = run(cut, body, wall, 0.1 * tolerance, "the body outside the wall part");
-  TopExp_Explorer shell(far_field, TopAbs_SHELL);
-  int inside = 0;
-  for (TopExp_Explorer solid(exposed, TopAbs_SOLID); solid.More(); solid.Next()) {
-    BRepExtrema_DistShapeShape distance(solid.Current(), shell.Current());
-    if (!distance.IsDone()) refuse(far.label + ": the distance from the body to the far field cannot be computed");
-    if (distance.Value() <= tolerance) {
-      const gp_Pnt p = distance.PointOnShape1(1);
-      refuse(far.label + ": the far field does not contain the body: its boundary crosses or touches the body at (" +
-             length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
-    }
-    TopExp_Explorer vertex(solid.Current(), TopAbs_VERTEX);
-    BRepClass3d_SolidClassifier where(far_field, BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current())), tolerance);
-    if (where.State() == TopAbs_IN) ++inside;
-  }
-  if (inside == 0) refuse(far.label + ": the far field does not contain the body: the body lies outside it");
-}
-
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
                           FaceNames& names, std::vector<std::string>& repairs) {
   const TopoDS_Shape solids = body_solids(body, tolerance, "geometry.wall_plane: the body", repairs);
@@ -453,7 +439,9 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
            " of it, at (" + length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
   }
   const TopoDS_Shape outer = far_solid(far, gp::DZ(), body, {});
-  require_exposed_inside(body, wall, outer, far, tolerance);
+  BRepAlgoAPI_Cut standing_out;
+  require_inside(run(standing_out, body, wall, 0.1 * tolerance, "the body outside the wall part"), outer, far, tolerance,
+                 /*others_outside=*/true);
 
   // The union first: the root curve is the parts' exact intersection.
   BRepAlgoAPI_Fuse fuse;
