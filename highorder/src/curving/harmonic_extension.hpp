@@ -22,6 +22,17 @@ struct HarmonicExtension {
 /// every 3D shape (the pyramid's rational basis is integrated approximately).
 const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set);
 
+/// The extension curve_mesh gives a face off the CAD and a volume (and extend_inward): transfinite
+/// for the quadrilateral (Coons: the blend of its opposite edges less the bilinear blend of its
+/// corners) and the prism (the Boolean sum of the linear blend of its two triangles across zeta and
+/// the triangle's harmonic extension of each level's ring of boundary nodes), harmonic for the other
+/// shapes. A layer prism is thin across zeta: the harmonic extension in its reference element took
+/// its curved base's bulge out within about a base's width of reference zeta (a slope ~pi/2 times
+/// the bulge at the base, against 1/2 for the linear blend), so its first split sub-layer lost a
+/// tenth of the bulge and folded on a wall curved across wide triangles. Both reproduce affine and
+/// bilinear maps as the harmonic extension does.
+const HarmonicExtension& inner_extension(Shape shape, int order, NodeSet set);
+
 /// values: (num_nodes, k) with the boundary rows set; fills the interior rows.
 void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values);
 
