@@ -34,6 +34,7 @@ VARIANTS = {
     "fuselage_bspline": ("fuselage_bspline", "step", ["naca.span=1", "naca.farfield=false"]),
     "fuselage_dihedral": ("fuselage_dihedral", "step", ["naca.span=1", "naca.farfield=false"]),
     "fuselage_unjoined": ("fuselage_unjoined", "step", ["naca.span=1", "naca.farfield=false"]),
+    "fuselage_bspline_unjoined": ("fuselage_bspline_unjoined", "step", ["naca.span=1", "naca.farfield=false"]),
     "fuselage_nosed_unjoined": ("fuselage_nosed_unjoined", "step", ["naca.span=1", "naca.farfield=false"]),
     "cranked": ("cranked", "step", []),
     "cranked_split_base": ("cranked_split_base", "step", []),

@@ -16,6 +16,10 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <gtest/gtest.h>
@@ -121,8 +125,8 @@ TEST(OccJoinParts, TheWallHoldsTheBodysRootAsAHole) {
 
 // A fuselage whose seam runs along its crest, through the block's root: joined as it is, the root
 // loop would be cut open along the seam and become part of the wall's outer boundary. The wall is
-// re-seamed on its far side first (the same cylinder turned half a turn about its axis).
-// The parameter: a B-spline fuselage (not re-seamed yet: below).
+// re-seamed on its far side first: the same cylinder turned half a turn about its axis, the same
+// B-spline with its origin half a period round (the parameter: a B-spline fuselage).
 class OccJoinSeam : public ::testing::TestWithParam<bool> {};
 
 TEST_P(OccJoinSeam, AWallSeamThroughTheRootIsMovedAway) {
@@ -135,33 +139,66 @@ TEST_P(OccJoinSeam, AWallSeamThroughTheRootIsMovedAway) {
   EXPECT_TRUE(std::any_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
     return r.find("moved the seam of 1 face(s)") != std::string::npos;
   }));
-  // The seam now runs along the bottom (z = -2), away from the root.
+  // The seam now runs along the bottom (z = -2), half a turn from the root.
   int seams = 0;
   for (int c = 0; c < model->num_curves(); ++c) {
     const auto& uses = model->surfaces_of_curve(c);
     if (uses.size() != 2 || uses[0].surface != *wall || uses[1].surface != *wall) continue;
     ++seams;
     const cad::Interval b = model->curve(c).bounds();
-    EXPECT_NEAR(model->curve(c).point(0.5 * (b.lo + b.hi)).z(), -2.0, 1e-7) << cad::curve_label(*model, c);
+    for (int i = 0; i <= 4; ++i) {
+      const cad::Vec3 p = model->curve(c).point(b.lo + b.length() * i / 4);
+      EXPECT_NEAR(p.z(), -2.0, 1e-7) << cad::curve_label(*model, c);
+      EXPECT_NEAR(p.y(), 0.0, 1e-7) << cad::curve_label(*model, c);
+    }
   }
   EXPECT_EQ(seams, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cylinder, OccJoinSeam, ::testing::Values(false));
+INSTANTIATE_TEST_SUITE_P(CylinderAndBSpline, OccJoinSeam, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "BSpline" : "Cylinder"; });
 
-// A B-spline fuselage keeps its seam (seam_away.cpp: re-seamed, its wall layer folded at orders
-// 3-4 near the new seam): joined with the seam through the root, the wall holds no hole, which the
-// roles then refuse by name.
-TEST(OccJoinParts, ABSplineWallKeepsItsSeam) {
+// The re-seamed B-spline wall is the file's surface, only started elsewhere (its seam half a turn
+// round: AWallSeamThroughTheRootIsMovedAway/BSpline): its points lie on the file's fuselage and the
+// file's points (between the box's ends) on it, to 1e-9.
+TEST(OccJoinParts, ABSplineWallIsReseamedExactly) {
   cad::Source source{assembly_file(0.0, /*seam_on_crest=*/true, /*spline=*/true), {}};
   for (const auto& [key, value] : kJoin) source.params.set(key, value);
   const auto model = load_occ(source);
-  EXPECT_TRUE(std::none_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
-    return r.find("moved the seam") != std::string::npos;
+  EXPECT_TRUE(std::any_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+    return r.find("moved the seam of 1 face(s)") != std::string::npos;
   }));
   const std::optional<int> wall = model->find_surface("wall");
   ASSERT_TRUE(wall.has_value());
-  EXPECT_EQ(model->loops(*wall).size(), 1u) << "the root joined to the outer boundary along the seam";
+  EXPECT_EQ(model->loops(*wall).size(), 2u) << "the root is a hole of the wall";
+  const cad::Surface& surface = model->surface(*wall);
+  EXPECT_EQ(surface.kind(), cad::SurfaceKind::BSpline);
+  // The file's fuselage: radius 1 about the line y = 0, z = -1 (its points measured against it),
+  // and its own B-spline side, sampled at parameters.
+  const TopoDS_Shape file = spline_fuselage(/*seam_on_crest=*/true);
+  Handle(Geom_Surface) side;
+  for (TopExp_Explorer f(file, TopAbs_FACE); f.More(); f.Next()) {
+    const Handle(Geom_Surface) s = BRep_Tool::Surface(TopoDS::Face(f.Current()));
+    if (s->IsUClosed() || s->IsUPeriodic()) side = s;
+  }
+  ASSERT_FALSE(side.IsNull());
+  const auto box = surface.bounds();
+  double u0, u1, v0, v1;
+  side->Bounds(u0, u1, v0, v1);
+  double worst_on_file = 0.0, worst_on_wall = 0.0;
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      const cad::Vec3 p = surface.point({box[0].lo + box[0].length() * i / 16, box[1].lo + box[1].length() * j / 8});
+      GeomAPI_ProjectPointOnSurf onto(gp_Pnt(p.x(), p.y(), p.z()), side);
+      ASSERT_GT(onto.NbPoints(), 0);
+      worst_on_file = std::max(worst_on_file, onto.LowerDistance());
+      const gp_Pnt q = side->Value(u0 + (u1 - u0) * i / 16, v0 + (v1 - v0) * (0.1 + 0.8 * j / 8));
+      if (std::abs(q.X()) > 3.9) continue;  // past the box's ends
+      const cad::Vec3 x(q.X(), q.Y(), q.Z());
+      worst_on_wall = std::max(worst_on_wall, (surface.point(surface.project(x).uv) - x).norm());
+    }
+  EXPECT_LT(worst_on_file, 1e-9);
+  EXPECT_LT(worst_on_wall, 1e-9);
 }
 
 TEST(OccJoinParts, ASeamAwayFromTheRootIsKept) {

@@ -513,7 +513,7 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
                         fuselage_solid(Fuselage::BSpline, params.chord, /*spline_seam_on_crest=*/true)});
   if (name == "fuselage_nosed_unjoined")
     return compound_of({sunk_wing(wing, params.chord, Fuselage::BSpline),
-                        fuselage_solid(Fuselage::Nosed, params.chord)});
+                        fuselage_solid(Fuselage::Nosed, params.chord, /*spline_seam_on_crest=*/true)});
   if (name == "fuselage_unjoined_fin") {
     const TopoDS_Shape sunk = sunk_wing(wing, params.chord, Fuselage::Cylinder);
     gp_Trsf half_turn;

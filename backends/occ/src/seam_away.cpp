@@ -5,6 +5,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_ElementarySurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_SurfaceOfRevolution.hxx>
@@ -39,11 +40,8 @@ bool wraps_around(const TopoDS_Face& face) {
 
 // A surface turning about an axis (cylinder, cone, sphere, torus, surface of revolution: U is the
 // angle from its reference direction) turned by `angle`, so that its seam moves by it and the shape
-// stays; nothing for another kind. B-spline surfaces are not re-seamed yet: made periodic with a
-// knot at the new seam as origin (then clamped again), a rational body of revolution
-// (write_wing_variant fuselage_bspline_unjoined) meshed at order 2, but at orders 3-4 the wall
-// layer's prisms folded a few degrees from the new seam; such a wall keeps its seam and the roles
-// refuse it by name, as a file already joined with its seam through the root.
+// stays; a B-spline surface made periodic in U with a knot at `u0 + angle` as its origin (its U
+// parameter is not the angle, but a parameter offset all the same); nothing for another kind.
 Handle(Geom_Surface) turned(const Handle(Geom_Surface)& surface, double angle) {
   if (auto elementary = Handle(Geom_ElementarySurface)::DownCast(surface->Copy())) {
     elementary->Rotate(elementary->Axis(), angle);
@@ -52,6 +50,22 @@ Handle(Geom_Surface) turned(const Handle(Geom_Surface)& surface, double angle) {
   if (auto revolution = Handle(Geom_SurfaceOfRevolution)::DownCast(surface->Copy())) {
     revolution->Rotate(revolution->Axis(), angle);
     return revolution;
+  }
+  if (auto spline = Handle(Geom_BSplineSurface)::DownCast(surface->Copy())) {
+    double u0, u1, v0, v1;
+    spline->Bounds(u0, u1, v0, v1);
+    const double origin = u0 + angle;
+    if (!spline->IsUPeriodic()) {
+      if (!spline->IsUClosed()) return nullptr;
+      spline->SetUPeriodic();
+    }
+    spline->InsertUKnot(origin, 1, Precision::PConfusion());
+    for (int k = 1; k <= spline->NbUKnots(); ++k)
+      if (std::abs(spline->UKnot(k) - origin) < Precision::PConfusion()) {
+        spline->SetUOrigin(k);
+        return spline;
+      }
+    return nullptr;
   }
   return nullptr;
 }

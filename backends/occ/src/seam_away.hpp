@@ -18,8 +18,9 @@ namespace semimesh::occ {
 /// seam lies within a quarter of a period of the foot of `away_from` on it rebuilt on the same
 /// surface re-parametrised so that the seam lies half a period away from that foot; the faces are
 /// sewn again within `tolerance`. Surfaces of revolution, cylinders, cones, spheres and tori are
-/// turned about their axis; other faces (B-splines: not yet, see seam_away.cpp) are kept as they
-/// are. Each move is said in `repairs`.
+/// turned about their axis; B-spline surfaces are made periodic (when closed) and given their
+/// origin at a knot inserted there (the same surface, exactly); other faces are kept as they are.
+/// Each move is said in `repairs`.
 TopoDS_Shape with_seams_away_from(const TopoDS_Shape& part, const gp_Pnt& away_from, double tolerance,
                                   std::vector<std::string>& repairs);
 

@@ -211,7 +211,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   const int n = static_cast<int>(ids.size());
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
   for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
-  extend_harmonically(ext, X);
+  extend_harmonically(detail::inner_extension(shape, P, params_.node_set), X);
   out.att.resize(n);
 
   std::vector<CadAttachment> corner_att;
@@ -362,21 +362,16 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
       num_elements, true, kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
         VolumeNodes v{element_node_ids(e), {}};
-        const Shape shape = in_.elements()[e].shape;
-        const detail::HarmonicExtension& isotropic = detail::harmonic_extension(shape, P, params_.node_set);
-        if (isotropic.interior.empty()) return v;
+        const detail::HarmonicExtension& ext = detail::inner_extension(in_.elements()[e].shape, P, params_.node_set);
+        if (ext.interior.empty()) return v;
         v.x = Eigen::MatrixXd::Zero(v.ids.size(), 3);
-        for (int j : isotropic.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
-        // A prism is a layer element: its interior follows its thinness (prism_lateral_weight).
-        extend_harmonically(shape == Shape::Prism
-                                ? detail::prism_extension(P, params_.node_set, detail::prism_lateral_weight(v.x))
-                                : isotropic,
-                            v.x);
+        for (int j : ext.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
+        extend_harmonically(ext, v.x);
         return v;
       },
       [&](std::size_t e, VolumeNodes& v) {
         const Shape shape = in_.elements()[e].shape;
-        const std::vector<int>& interior = detail::harmonic_extension(shape, P, params_.node_set).interior;
+        const std::vector<int>& interior = detail::inner_extension(shape, P, params_.node_set).interior;
         // Never reallocate under the threads reading the nodes (the room was counted above).
         if (out_.num_nodes() + interior.size() > out_.nodes().capacity())
           throw std::logic_error("curve_mesh: no room left for the inner nodes of element " + std::to_string(e));

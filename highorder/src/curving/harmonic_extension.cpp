@@ -8,16 +8,20 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 namespace semimesh::ho::detail {
 namespace {
 
-HarmonicExtension build_extension(Shape shape, int order, NodeSet set, double lateral) {
+HarmonicExtension build_extension(Shape shape, int order, NodeSet set) {
   HarmonicExtension h;
   const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
   const auto inside = dimension(shape) == 3 ? mesh::NodeSlot::Interior : mesh::NodeSlot::Face;
@@ -32,8 +36,7 @@ HarmonicExtension build_extension(Shape shape, int order, NodeSet set, double la
   const auto grads = basis.gradients(q.points);
   const int n = basis.size();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
-  for (int c = 0; c < dimension(shape); ++c)
-    K += (c < 2 ? lateral : 1.0) * grads[c].transpose() * q.weights.asDiagonal() * grads[c];
+  for (int c = 0; c < dimension(shape); ++c) K += grads[c].transpose() * q.weights.asDiagonal() * grads[c];
 
   const int ni = static_cast<int>(h.interior.size()), nb = static_cast<int>(h.boundary.size());
   Eigen::MatrixXd Kii(ni, ni), Kib(ni, nb);
@@ -45,43 +48,95 @@ HarmonicExtension build_extension(Shape shape, int order, NodeSet set, double la
   return h;
 }
 
+// Canonical indices of an element's reference nodes by their coordinates (the node sets place a
+// prism's levels on the triangle's nodes and a quadrilateral's rows on the segment's).
+class NodeFinder {
+ public:
+  explicit NodeFinder(const Eigen::MatrixX3d& nodes) {
+    for (int i = 0; i < nodes.rows(); ++i) index_[key(nodes(i, 0), nodes(i, 1), nodes(i, 2))] = i;
+  }
+  int at(double x, double y, double z) const {
+    const auto it = index_.find(key(x, y, z));
+    if (it == index_.end())
+      throw std::logic_error("inner_extension: no reference node at (" + std::to_string(x) + ", " + std::to_string(y) +
+                             ", " + std::to_string(z) + ")");
+    return it->second;
+  }
+
+ private:
+  static std::array<long long, 3> key(double x, double y, double z) {
+    return {std::llround(x * 1e9), std::llround(y * 1e9), std::llround(z * 1e9)};
+  }
+  std::map<std::array<long long, 3>, int> index_;
+};
+
+// The transfinite extension of a quadrilateral or prism (inner_extension), its rows summed from
+// weights on boundary nodes.
+HarmonicExtension build_transfinite(Shape shape, int order, NodeSet set) {
+  const HarmonicExtension& harmonic = harmonic_extension(shape, order, set);
+  HarmonicExtension h{harmonic.interior, harmonic.boundary, Eigen::MatrixXd::Zero(harmonic.interior.size(), harmonic.boundary.size())};
+  if (h.interior.empty()) return h;
+  std::map<int, int> column;  // canonical index of a boundary node -> its column
+  for (std::size_t j = 0; j < h.boundary.size(); ++j) column[h.boundary[j]] = static_cast<int>(j);
+  const Eigen::MatrixX3d X = reference_nodes(shape, order, set);
+  const NodeFinder find(X);
+  // A prism's triangles lie at zeta = -1 and 1; each level's nodes at the triangle's.
+  const HarmonicExtension& triangle = harmonic_extension(Shape::Triangle, order, set);
+  const Eigen::MatrixX3d T = reference_nodes(Shape::Triangle, order, set);
+  const NodeFinder on_triangle(T);
+  for (std::size_t r = 0; r < h.interior.size(); ++r) {
+    const auto add = [&](int node, double weight) {
+      const auto it = column.find(node);
+      if (it == column.end()) throw std::logic_error("inner_extension: node " + std::to_string(node) + " is not on the boundary");
+      h.extension(r, it->second) += weight;
+    };
+    const int i = h.interior[r];
+    if (shape == Shape::Quadrilateral) {
+      const double x = X(i, 0), y = X(i, 1), a = 0.5 * (x + 1.0), b = 0.5 * (y + 1.0);
+      add(find.at(x, -1, 0), 1.0 - b);
+      add(find.at(x, 1, 0), b);
+      add(find.at(-1, y, 0), 1.0 - a);
+      add(find.at(1, y, 0), a);
+      add(find.at(-1, -1, 0), -(1.0 - a) * (1.0 - b));
+      add(find.at(1, -1, 0), -a * (1.0 - b));
+      add(find.at(1, 1, 0), -a * b);
+      add(find.at(-1, 1, 0), -(1.0 - a) * b);
+      continue;
+    }
+    const double u = X(i, 0), v = X(i, 1), z = X(i, 2), s = 0.5 * (z + 1.0);
+    const int m = static_cast<int>(std::find(triangle.interior.begin(), triangle.interior.end(), on_triangle.at(u, v, 0)) -
+                                   triangle.interior.begin());
+    for (std::size_t c = 0; c < triangle.boundary.size(); ++c) {
+      const double e = triangle.extension(m, c), tu = T(triangle.boundary[c], 0), tv = T(triangle.boundary[c], 1);
+      add(find.at(tu, tv, z), e);
+      add(find.at(tu, tv, -1), -(1.0 - s) * e);
+      add(find.at(tu, tv, 1), -s * e);
+    }
+    add(find.at(u, v, -1), 1.0 - s);
+    add(find.at(u, v, 1), s);
+  }
+  return h;
+}
+
 }  // namespace
 
-namespace {
-
-const HarmonicExtension& cached_extension(Shape shape, int order, NodeSet set, double lateral) {
+const HarmonicExtension& inner_extension(Shape shape, int order, NodeSet set) {
+  if (shape != Shape::Quadrilateral && shape != Shape::Prism) return harmonic_extension(shape, order, set);
   static std::mutex mutex;
-  static std::map<std::tuple<Shape, int, NodeSet, double>, std::unique_ptr<HarmonicExtension>> cache;
+  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
   std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{shape, order, set, lateral}];
-  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set, lateral));
+  auto& slot = cache[{shape, order, set}];
+  if (!slot) slot = std::make_unique<HarmonicExtension>(build_transfinite(shape, order, set));
   return *slot;
 }
 
-}  // namespace
-
 const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set) {
-  return cached_extension(shape, order, set, 1.0);
-}
-
-const HarmonicExtension& prism_extension(int order, NodeSet set, double lateral) {
-  return cached_extension(Shape::Prism, order, set, lateral);
-}
-
-double prism_lateral_weight(const Eigen::MatrixXd& x) {
-  constexpr int kSteps = 5;  // the thinnest weight: 4^-5
-  double delta = 0.0, length = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    delta += (x.row(k + 3) - x.row(k)).norm();
-    length += (x.row((k + 1) % 3) - x.row(k)).norm() + (x.row(3 + (k + 1) % 3) - x.row(3 + k)).norm();
-  }
-  delta /= 3.0;
-  length /= 6.0;
-  if (!(delta > 0.0) || !(length > 0.0)) return 1.0;
-  const double weight = std::pow(delta / (2.0 * length), 2);
-  int step = 0;
-  while (step < kSteps && weight < std::pow(4.0, -step)) ++step;
-  return std::pow(4.0, -step);
+  static std::mutex mutex;
+  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = cache[{shape, order, set}];
+  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set));
+  return *slot;
 }
 
 void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values) {
@@ -97,7 +152,7 @@ void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values) {
 namespace semimesh::ho {
 
 void extend_inward(Shape shape, int order, NodeSet set, Eigen::MatrixXd& x) {
-  detail::extend_harmonically(detail::harmonic_extension(shape, order, set), x);
+  detail::extend_harmonically(detail::inner_extension(shape, order, set), x);
 }
 
 }  // namespace semimesh::ho

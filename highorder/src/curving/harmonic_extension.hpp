@@ -22,19 +22,16 @@ struct HarmonicExtension {
 /// every 3D shape (the pyramid's rational basis is integrated approximately).
 const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set);
 
-/// A prism's extension for the energy whose weight along its triangles (u, v) is `lateral` times its
-/// weight across them (w): the reference Dirichlet energy of a prism as thin as the layer elements
-/// are (lateral = 1: harmonic_extension's). Cached like it, per weight.
-const HarmonicExtension& prism_extension(int order, NodeSet set, double lateral);
-
-/// The weight for a prism whose vertices are rows 0-5 of x (canonical order: bottom triangle, then
-/// top): the physical Dirichlet energy pulled back to the reference prism (triangle legs 1, height 2)
-/// weighs (u, v) by (delta / 2L)^2 against w, delta the mean vertical edge, L the mean triangle edge.
-/// The isotropic reference energy damps a curved triangle face within the first rows of nodes of a
-/// thin prism (its bulge reaches the next row a third as much, which folds the prism at order >= 3
-/// on a fuselage's wall layer); this one carries it through the layer. Rounded down to a power of 4
-/// in [4^-5, 1], so that few extensions are built and the same prism always takes the same one.
-double prism_lateral_weight(const Eigen::MatrixXd& x);
+/// The extension curve_mesh gives a face off the CAD and a volume (and extend_inward): transfinite
+/// for the quadrilateral (Coons: the blend of its opposite edges less the bilinear blend of its
+/// corners) and the prism (the Boolean sum of the linear blend of its two triangles across zeta and
+/// the triangle's harmonic extension of each level's ring of boundary nodes), harmonic for the other
+/// shapes. A layer prism is thin across zeta: the harmonic extension in its reference element took
+/// its curved base's bulge out within about a base's width of reference zeta (a slope ~pi/2 times
+/// the bulge at the base, against 1/2 for the linear blend), so its first split sub-layer lost a
+/// tenth of the bulge and folded on a wall curved across wide triangles. Both reproduce affine and
+/// bilinear maps as the harmonic extension does.
+const HarmonicExtension& inner_extension(Shape shape, int order, NodeSet set);
 
 /// values: (num_nodes, k) with the boundary rows set; fills the interior rows.
 void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values);

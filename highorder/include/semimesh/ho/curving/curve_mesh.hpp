@@ -7,9 +7,11 @@
 //  2. faces: interior nodes of a boundary face on a CAD surface start from the harmonic extension
 //     of the face's boundary (u, v) (then S(u, v)), and are optimised by the spring network of the
 //     face's own node lattice with the edge nodes fixed; other faces (the skin, internal faces) take
-//     the harmonic extension of their boundary nodes in 3D, so a face with straight edges stays flat;
-//  3. volumes: interior nodes are the harmonic extension of the curved boundary nodes (exact for
-//     the element's linear map, which is harmonic, and smooth otherwise).
+//     the extension of their boundary nodes in 3D (harmonic; transfinite for a quadrilateral), so a
+//     face with straight edges stays flat;
+//  3. volumes: interior nodes are the extension of the curved boundary nodes (harmonic; transfinite
+//     for a prism, so a thin layer prism carries its curved base's bulge linearly across to its top:
+//     curving/harmonic_extension.hpp), exact for the element's linear map and smooth otherwise.
 // Spring optimisation: every free node is pulled by springs to its lattice neighbours with weights
 // that make the node set's own reference positions the equilibrium (force balance exact for an
 // affine face); the squared force imbalance is minimised by damped Gauss-Newton in (u, v). It stops
