@@ -142,7 +142,7 @@ SurfaceProjection leave_pole(const Surface& s, SurfaceProjection found,
 
 SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) const {
   const auto box = bounds();
-  Vec2 uv;
+  Vec2 uv(box[0].lo, box[1].lo);  // the sampling below always improves on it
   if (guess) {
     uv = *guess;
   } else {

@@ -249,8 +249,9 @@ TEST(TrailingEdgeBase, GathersTheFacesOfASplitOrCrankedBase) {
     }
     EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, body, faces, -1), -1) << variant;
     const int other = faces.size() == 2 ? (faces[0] == *roles.te_base ? faces[1] : faces[0]) : -1;
-    if (std::string(variant) == "cranked")  // the root panel's base alone: it goes on into the other panel's
+    if (std::string(variant) == "cranked") {  // the root panel's base alone: it goes on into the other panel's
       EXPECT_EQ(nearfield::detail::trailing_edge_continuation(*loaded.model, body, {*roles.te_base}, -1), other);
+    }
     if (std::string(variant) != "split_base") continue;
     // Without the tip among the body's faces (as on OpenVSP's M6, whose tip is slivers at the
     // trailing edge) both the upper skin and the other half border nothing else past the root's
