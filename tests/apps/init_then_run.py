@@ -4,6 +4,7 @@
                    [--writer WRITE_WING_VARIANT --variant NAME [--naca KEY=VALUE ...]] [--gmsh]
                    [--init-says TEXT ...] [--init-refuses-with TEXT] [--run-says TEXT ...]
                    [--config TOML] [--group-on-plane GROUP=AXIS:VALUE] [--min-jacobian REGION=VALUE ...]
+                   [--solver-rules]
 
 With --writer, FILE is first written by tests/occ/write_wing_variant (the occ backend's B-spline
 NACA wing as a file of the named kind). Writes DIR/wing.toml with init, runs it into DIR/out, and
@@ -18,6 +19,8 @@ config: a file init refuses but a user's own config meshes (an assembly joined b
 of them on the plane AXIS = VALUE, and no face of another group lies on that plane (a half model's
 symmetry plane, farfield.symmetry).
 --min-jacobian: the region's min scaled Jacobian (report.json) must be at least VALUE.
+--solver-rules: every Nektar++ XML written meets Nektar++'s load-time rules (tests/io/nektar_rules.py)
+and every ASCII MSH PyFR's reader's (tests/io/pyfr_rules.py); at least one file is checked.
 """
 import argparse
 import json
@@ -86,6 +89,7 @@ def main():
     parser.add_argument("--config", help="a config to run instead of init's (its source set to FILE)")
     parser.add_argument("--group-on-plane", help="GROUP=AXIS:VALUE: the .msh group lying on that plane, alone")
     parser.add_argument("--min-jacobian", action="append", default=[], help="REGION=VALUE: its least scaled Jacobian")
+    parser.add_argument("--solver-rules", action="store_true", help="Nektar++'s and PyFR's rules on the files")
     args = parser.parse_args()
     shutil.rmtree(args.workdir, ignore_errors=True)
     os.makedirs(args.workdir)
@@ -173,8 +177,33 @@ def main():
         if args.group_on_plane and not group_alone_on_plane(os.path.join(args.workdir, "out", meshes[0]),
                                                             args.group_on_plane):
             return 1
+    if args.solver_rules and not meets_solver_rules(os.path.join(args.workdir, "out")):
+        return 1
     print("ok")
     return 0
+
+
+def meets_solver_rules(out):
+    """Whether the written .xml meet Nektar++'s rules and the ASCII .msh PyFR's (one file at least)."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "io"))
+    import nektar_rules
+    import pyfr_rules
+    checked = 0
+    for name in sorted(os.listdir(out)):
+        path = os.path.join(out, name)
+        with open(path, "rb") as f:
+            ascii_msh = name.endswith(".msh") and f.read(64).startswith(b"$MeshFormat\n4.1 0")
+        rules = nektar_rules if name.endswith(".xml") else pyfr_rules if ascii_msh else None
+        if rules is None:
+            continue
+        checked += 1
+        if rules.main(["rules", path]) != 0:
+            print("FAIL: %s breaks %s" % (name, rules.__name__))
+            return False
+    if checked == 0:
+        print("FAIL: --solver-rules, but no Nektar++ XML or ASCII MSH was written")
+        return False
+    return True
 
 
 if __name__ == "__main__":
