@@ -1,4 +1,5 @@
 #include "harmonic_extension.hpp"
+#include "per_element_type.hpp"
 
 #include "semimesh/ho/curving/extend_inward.hpp"
 
@@ -12,11 +13,8 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 
 namespace semimesh::ho::detail {
 namespace {
@@ -122,21 +120,13 @@ HarmonicExtension build_transfinite(Shape shape, int order, NodeSet set) {
 
 const HarmonicExtension& inner_extension(Shape shape, int order, NodeSet set) {
   if (shape != Shape::Quadrilateral && shape != Shape::Prism) return harmonic_extension(shape, order, set);
-  static std::mutex mutex;
-  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<HarmonicExtension>(build_transfinite(shape, order, set));
-  return *slot;
+  static PerElementType<HarmonicExtension> table;
+  return table.get(shape, order, set, build_transfinite);
 }
 
 const HarmonicExtension& harmonic_extension(Shape shape, int order, NodeSet set) {
-  static std::mutex mutex;
-  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<HarmonicExtension>> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<HarmonicExtension>(build_extension(shape, order, set));
-  return *slot;
+  static PerElementType<HarmonicExtension> table;
+  return table.get(shape, order, set, build_extension);
 }
 
 void extend_harmonically(const HarmonicExtension& h, Eigen::MatrixXd& values) {

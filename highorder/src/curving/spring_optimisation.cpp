@@ -1,4 +1,5 @@
 #include "spring_optimisation.hpp"
+#include "per_element_type.hpp"
 
 #include "splitting/reference_lattice.hpp"
 
@@ -66,12 +67,8 @@ SpringNetwork build_network(Shape shape, int order, NodeSet set) {
 }
 
 const SpringNetwork& spring_network(Shape shape, int order, NodeSet set) {
-  static std::mutex mutex;
-  static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<SpringNetwork>> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto& slot = cache[{shape, order, set}];
-  if (!slot) slot = std::make_unique<SpringNetwork>(build_network(shape, order, set));
-  return *slot;
+  static PerElementType<SpringNetwork> table;
+  return table.get(shape, order, set, build_network);
 }
 
 }  // namespace
