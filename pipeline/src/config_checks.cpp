@@ -118,6 +118,18 @@ void check_geometry(Config& c, const std::map<std::string, Section*>& sections, 
 
   check_generated_domain(geo, *sections.at("geometry.wall_plane"), *sections.at("geometry.join"),
                          *sections.at("geometry.farfield"), *sections.at("geometry.farfield.sphere"));
+
+  // The cut is made on the CAD file's body before the far field is built around it.
+  Section& cut = *sections.at("geometry.body_cut");
+  if (geo.body_cut.given()) {
+    cut.require(geo.body_cut.point.has_value(), "normal", "together with geometry.body_cut.point");
+    cut.require(geo.body_cut.normal.has_value(), "point", "together with geometry.body_cut.normal");
+    const auto n = geo.body_cut.normal.value_or(std::array<double, 3>{1, 0, 0});
+    cut.require(n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0, "normal", "a non-zero vector (towards the part taken away)");
+    cut.require(!geo.source.empty() && geo.backend == "occ" && (geo.wall_plane.given() || geo.join.given()), "point",
+                "a CAD file's body the far field is built around (backend = \"occ\", source = \"...\", with "
+                "[geometry.wall_plane] or [geometry.join])");
+  }
 }
 
 // [nearfield]: the H-type needs a wall layer; the junction's angles in order.

@@ -54,6 +54,19 @@ params::Table<Config> wall_plane_keys() {
   return table;
 }
 
+params::Table<Config> body_cut_keys() {
+  params::Table<WallPlaneConfig> c = {
+      params::reals("point", &WallPlaneConfig::point, "", "a point of the cutting plane (model units)"),
+      params::reals("normal", &WallPlaneConfig::normal, "",
+                    "the plane's normal, pointing to the part of the body to take away (non-zero)"),
+  };
+  params::Table<GeometryConfig> g;
+  append(g, &GeometryConfig::body_cut, c);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
 params::Table<Config> join_keys() {
   params::Table<JoinConfig> j = {
       params::strings("body", &JoinConfig::body, "non-empty",
@@ -238,6 +251,7 @@ const std::vector<ConfigSection>& config_sections() {
       {"geometry.naca", naca_keys()},
       {"geometry.wall_plane", wall_plane_keys()},
       {"geometry.join", join_keys()},
+      {"geometry.body_cut", body_cut_keys()},
       {"geometry.farfield", farfield_shape_keys(), true, true},
       {"geometry.farfield.sphere", farfield_sphere_keys()},
       {"nearfield", nearfield_keys()},

@@ -169,6 +169,12 @@ void set_domain_params(const GeometryConfig& g, cad::Params& params) {
     params.set("occ.wall_plane", numbers_text(plane.data(), 6));
   }
   if (f.box) params.set("occ.farfield_box", numbers_text(f.box->data(), 6));
+  if (g.body_cut.given()) {
+    std::array<double, 6> cut{};
+    std::copy(g.body_cut.point->begin(), g.body_cut.point->end(), cut.begin());
+    std::copy(g.body_cut.normal->begin(), g.body_cut.normal->end(), cut.begin() + 3);
+    params.set("occ.body_cut", numbers_text(cut.data(), 6));
+  }
   if (f.box_chords) params.set("occ.farfield_box_chords", fmt::format("{}", *f.box_chords));
   if (f.sphere.centre) {
     const std::array<double, 4> sphere{(*f.sphere.centre)[0], (*f.sphere.centre)[1], (*f.sphere.centre)[2], *f.sphere.radius};

@@ -89,7 +89,7 @@ TEST(OccSewing, OpenRootAndOpenTipAreClosedByPlanarFacesAndSaidSo) {
   FarFieldShape far;
   far.box_chords = 3.0;
   far.label = "geometry.farfield";
-  const TopoDS_Shape domain = fluid_domain(skin.SewedShape(), wall, far, 1e-6, names, repairs);
+  const TopoDS_Shape domain = fluid_domain(skin.SewedShape(), wall, far, std::nullopt, 1e-6, names, repairs);
   EXPECT_FALSE(domain.IsNull());
   ASSERT_EQ(repairs.size(), 2u);
   for (const std::string& r : repairs) EXPECT_NE(r.find("closed an open flat loop of 3 free edge(s)"), std::string::npos) << r;

@@ -53,6 +53,10 @@
 //              `capped`) built as one `cranked` panel, its trailing-edge base split along the span at
 //              mid-thickness into a lower and an upper half face, as OpenVSP writes a blunt base;
 //   cranked_split_base  the cranked wing with each panel's base split so (a 2 x 2 base of faces).
+//   pinched_tip a body-only wing (chord 1, span 1, root open in the wall plane z = 0) whose NACA 0012
+//              section thins from 0.75 span to zero thickness at the tip, an upper and a lower
+//              B-spline face through grids of its points: the tip is a knife edge, the two faces'
+//              last iso-lines the same chord line (as OpenVSP closes a wing); naca.chord scales it.
 //   bezier_patches  the body with its root capped (as `capped`), every B-spline skin face rewritten
 //              as 6 x 6 Bezier patches the way OpenVSP exports a wing: knots inserted at full
 //              multiplicity (the geometry unchanged) and the patches' parameter lengths cycling
@@ -70,6 +74,7 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeRevol.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <Interface_Static.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <GeomAPI_Interpolate.hxx>
@@ -493,6 +498,40 @@ TopoDS_Shape with_bezier_patches(const TopoDS_Shape& body) {
   return shape;
 }
 
+// The pinched_tip wing's skin: NACA 0012 half-sections up the span (z), each scaled in thickness by
+// 1 up to 0.75 span, then by an ellipse's quarter to 0 at the tip (the chord line); an upper and a
+// lower face, each lofted through its half-sections (trailing edge to leading edge), sewn along both
+// edges (a sharp trailing edge).
+TopoDS_Shape pinched_tip(double chord) {
+  const int sections = 17, points_per_section = 41;
+  BRepBuilderAPI_Sewing sewing(1e-6 * chord);
+  for (const double side : {1.0, -1.0}) {
+    BRepOffsetAPI_ThruSections loft(/*isSolid=*/false, /*ruled=*/false, 1e-7 * chord);
+    for (int i = 0; i < sections; ++i) {
+      const double s = i / (sections - 1.0);
+      const double z = 1.0 - (1.0 - s) * (1.0 - s);  // sections closer towards the tip
+      const double e = z <= 0.75 ? 0.0 : (z - 0.75) / 0.25;
+      const double thickness = std::sqrt(std::max(0.0, 1.0 - e * e));
+      Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, points_per_section);
+      for (int j = 1; j <= points_per_section; ++j) {
+        const double x = 0.5 * (1.0 + std::cos(M_PI * (j - 1.0) / (points_per_section - 1.0)));  // 1 -> 0
+        const double half = 5.0 * 0.12 * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+                                          0.1036 * x * x * x * x);
+        points->SetValue(j, gp_Pnt(chord * x, side * chord * thickness * half, chord * z));
+      }
+      GeomAPI_Interpolate curve(points, /*periodic=*/false, 1e-9 * chord);
+      curve.Perform();
+      loft.AddWire(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve.Curve()).Edge()).Wire());
+    }
+    loft.CheckCompatibility(false);
+    loft.Build();
+    if (!loft.IsDone()) throw std::runtime_error("pinched_tip: the loft failed");
+    for (TopExp_Explorer f(loft.Shape(), TopAbs_FACE); f.More(); f.Next()) sewing.Add(f.Current());
+  }
+  sewing.Perform();
+  return sewing.SewedShape();
+}
+
 TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
   if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
@@ -537,10 +576,11 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "cranked_split_base") return cranked(params, /*split_base=*/true);
   if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
+  if (name == "pinched_tip") return pinched_tip(params.chord);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
                               "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, fuselage_nosed_unjoined, fuselage_through, cranked, cranked_mm, "
-                              "cranked_m, split_base, cranked_split_base, bezier_patches)");
+                              "cranked_m, split_base, cranked_split_base, bezier_patches, pinched_tip)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

@@ -474,6 +474,24 @@ TEST(Config, WallPlaneAndFarFieldErrorsNameTheKey) {
   EXPECT_NE(e.find("unknown key geometry.farfield.cylinder"), std::string::npos) << e;
 }
 
+// geometry.body_cut: a point and a non-zero normal, on a CAD file's body the far field is built
+// around (cli.body_cut_pinched_tip_run runs it).
+TEST(Config, BodyCutGoesWithABodyTheFarFieldIsBuiltAround) {
+  const std::string file = "[geometry]\nbackend = \"occ\"\nsource = \"vsp.stp\"\n";
+  const std::string domain = "wall_plane = { point = [0, 0, 0], normal = [0, 0, 1] }\nfarfield = { box_chords = 20 }\n";
+  const Config c = parse_config(file + domain + "body_cut = { point = [0, 0, 0.9], normal = [0, 0, 1] }\n", "case.toml");
+  ASSERT_TRUE(c.geometry.body_cut.point.has_value());
+  EXPECT_EQ((*c.geometry.body_cut.point)[2], 0.9);
+  std::string e = error_of(file + "body_cut = { point = [0, 0, 0.9], normal = [0, 0, 1] }\n");  // no domain
+  EXPECT_NE(e.find("geometry.body_cut"), std::string::npos) << e;
+  EXPECT_NE(e.find("[geometry.wall_plane] or [geometry.join]"), std::string::npos) << e;
+  e = error_of(file + domain + "body_cut = { point = [0, 0, 0.9] }\n");
+  EXPECT_NE(e.find("geometry.body_cut.point = [ 0, 0, 0.9"), std::string::npos) << e;
+  EXPECT_NE(e.find("together with geometry.body_cut.normal"), std::string::npos) << e;
+  e = error_of(file + domain + "body_cut = { point = [0, 0, 0.9], normal = [0, 0, 0] }\n");
+  EXPECT_NE(e.find("geometry.body_cut.normal = [ 0, 0, 0 ]"), std::string::npos) << e;
+}
+
 // An assembly's parts to join (geometry.join): both, with a far field box or sphere, for a CAD file.
 TEST(Config, JoinNamesBothPartsAndABoxForACadFile) {
   const std::string file = "[geometry]\nbackend = \"occ\"\nsource = \"vsp.stp\"\n";

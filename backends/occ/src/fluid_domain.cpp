@@ -1,9 +1,11 @@
 #include "fluid_domain.hpp"
 
+#include "body_cut.hpp"
 #include "seam_away.hpp"
 
 #include "semimesh/cad/error.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
@@ -11,12 +13,16 @@
 #include <BRepBuilderAPI_FindPlane.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
+#include <GProp_PEquation.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <optional>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <BRepLib.hxx>
@@ -39,6 +45,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace semimesh::occ {
@@ -60,6 +67,40 @@ double area_of(const TopoDS_Face& face) {
   GProp_GProps props;
   BRepGProp::SurfaceProperties(face, props);
   return std::abs(props.Mass());
+}
+
+// The largest tolerance of `shape`'s edges: a section a cut leaves lies in its plane that closely
+// (OCCT's intersection curves carry the approximation's error as their tolerance).
+double edge_tolerance(const TopoDS_Shape& shape) {
+  double largest = 0.0;
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next())
+    largest = std::max(largest, BRep_Tool::Tolerance(TopoDS::Edge(e.Current())));
+  return largest;
+}
+
+// The plane `loop`'s points lie in (32 along each edge), within `tolerance`: a section a cut left
+// along a B-spline surface's iso-line lies in its plane though its curve's poles do not, which is
+// what OCCT's plane finders test.
+std::optional<gp_Pln> plane_through_points(const TopoDS_Shape& loop, double tolerance) {
+  std::vector<gp_Pnt> samples;
+  for (TopExp_Explorer e(loop, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    for (int k = 0; k < 32; ++k)
+      samples.push_back(curve.Value(curve.FirstParameter() + k / 32.0 * (curve.LastParameter() - curve.FirstParameter())));
+  }
+  TColgp_Array1OfPnt points(1, static_cast<int>(samples.size()));
+  for (std::size_t i = 0; i < samples.size(); ++i) points(static_cast<int>(i) + 1) = samples[i];
+  const GProp_PEquation fit(points, tolerance);
+  if (!fit.IsPlanar()) return std::nullopt;
+  return fit.Plane();
+}
+
+// A planar cap whose area is below the tolerance times its size: its loop runs out and back along
+// itself (a section pinched to zero thickness).
+bool encloses_no_area(const TopoDS_Face& cap, const TopoDS_Shape& loop, double tolerance) {
+  Bnd_Box b;
+  BRepBndLib::Add(loop, b);
+  return area_of(cap) <= tolerance * std::sqrt(b.SquareExtent());
 }
 
 // The free loops of a shell (edges that bound one of its faces only), each closed by a planar face
@@ -88,7 +129,11 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
     // Exactly planar, or planar within the tolerance the faces were sewn at (an export with gaps).
     BRepBuilderAPI_MakeFace cap(wire, /*OnlyPlane=*/true);
     if (!cap.IsDone())
-      if (BRepBuilderAPI_FindPlane plane(wire, tolerance); plane.Found()) cap = BRepBuilderAPI_MakeFace(plane.Plane()->Pln(), wire);
+      if (BRepBuilderAPI_FindPlane plane(wire, std::max(tolerance, edge_tolerance(wire))); plane.Found())
+        cap = BRepBuilderAPI_MakeFace(plane.Plane()->Pln(), wire);
+    if (!cap.IsDone())
+      if (const std::optional<gp_Pln> plane = plane_through_points(wire, std::max(tolerance, edge_tolerance(wire))))
+        cap = BRepBuilderAPI_MakeFace(*plane, wire);
     if (!cap.IsDone()) {
       Bnd_Box b;
       BRepBndLib::Add(w.Current(), b);
@@ -100,10 +145,12 @@ TopoDS_Shape with_planar_loops_capped(const TopoDS_Shell& shell, double toleranc
     Bnd_Box b;
     BRepBndLib::Add(wire, b);
     const gp_Pnt c = b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
-    if (area_of(cap.Face()) <= tolerance * std::sqrt(b.SquareExtent()))
+    if (encloses_no_area(cap.Face(), wire, tolerance))
       refuse(what + " is open along a loop of free edges around (" + length_text(c.X()) + ", " + length_text(c.Y()) +
-             ", " + length_text(c.Z()) + ") that encloses no area (a section pinched to zero thickness): no face can "
-             "close it; close the part in a CAD tool");
+             ", " + length_text(c.Z()) + ") that encloses no area (a section pinched to zero thickness, as a "
+             "knife-edge or pointed tip): no face can close it. Cut the body where it has thickness, "
+             "geometry.body_cut = {point = [...], normal = [...]} (the part its normal points to taken away), or "
+             "close the part in a CAD tool");
     sewing.Add(cap.Face());
     int edges = 0;
     for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edges;
@@ -123,8 +170,16 @@ TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance, const std::
   builder.MakeCompound(solids);
   int count = 0;
   for (TopExp_Explorer s(body, TopAbs_SOLID); s.More(); s.Next(), ++count) builder.Add(solids, s.Current());
-  for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next()) {
-    const TopoDS_Shape closed = with_planar_loops_capped(TopoDS::Shell(s.Current()), tolerance, what, repairs);
+  // Shells, and the faces in none (a body of one face: sewing a lone face leaves it a face) as one.
+  std::vector<TopoDS_Shell> shells;
+  for (TopExp_Explorer s(body, TopAbs_SHELL, TopAbs_SOLID); s.More(); s.Next()) shells.push_back(TopoDS::Shell(s.Current()));
+  if (TopExp_Explorer loose(body, TopAbs_FACE, TopAbs_SHELL); loose.More()) {
+    shells.emplace_back();
+    builder.MakeShell(shells.back());
+    for (; loose.More(); loose.Next()) builder.Add(shells.back(), loose.Current());
+  }
+  for (const TopoDS_Shell& shell : shells) {
+    const TopoDS_Shape closed = with_planar_loops_capped(shell, tolerance, what, repairs);
     for (TopExp_Explorer sh(closed, TopAbs_SHELL); sh.More(); sh.Next(), ++count) {
       BRepBuilderAPI_MakeSolid make(TopoDS::Shell(sh.Current()));
       if (!make.IsDone()) refuse(what + "'s shell cannot be made a solid (is it closed?)");
@@ -135,6 +190,104 @@ TopoDS_Shape body_solids(const TopoDS_Shape& body, double tolerance, const std::
   }
   if (count == 0) refuse(what + ": no closed part (no solid, no shell) in the CAD file");
   return solids;
+}
+
+gp_Pnt centre_of(const TopoDS_Shape& shape) {
+  Bnd_Box b;
+  BRepBndLib::Add(shape, b);
+  return b.CornerMin().XYZ() * 0.5 + b.CornerMax().XYZ() * 0.5;
+}
+
+// Whether the edges of `shape` lie inside the solid `wall`, clear of its boundary by more than
+// `tolerance`, at 32 points along each (a point's distance to the wall: OCCT's curve-to-curve
+// distances to a fuselage's degenerate pole edges take minutes).
+bool clear_inside(const TopoDS_Shape& shape, const TopoDS_Shape& wall, double tolerance) {
+  BRepClass3d_SolidClassifier where(wall);
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    for (int k = 0; k <= 32; ++k) {
+      const gp_Pnt p = curve.Value(curve.FirstParameter() + k / 32.0 * (curve.LastParameter() - curve.FirstParameter()));
+      where.Perform(p, tolerance);
+      if (where.State() != TopAbs_IN) return false;
+      BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(p).Vertex(), wall);
+      if (!distance.IsDone() || distance.Value() <= tolerance) return false;
+    }
+  }
+  return true;
+}
+
+// The least distance from the edges of `shape` to `wall`, at 32 points along each (as clear_inside).
+double distance_to(const TopoDS_Shape& shape, const TopoDS_Shape& wall) {
+  double least = std::numeric_limits<double>::infinity();
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    for (int k = 0; k <= 32; ++k) {
+      const gp_Pnt p = curve.Value(curve.FirstParameter() + k / 32.0 * (curve.LastParameter() - curve.FirstParameter()));
+      BRepExtrema_DistShapeShape distance(BRepBuilderAPI_MakeVertex(p).Vertex(), wall);
+      if (distance.IsDone()) least = std::min(least, distance.Value());
+    }
+  }
+  return least;
+}
+
+// The closed free loops of `shell` (its open ones are refused when it is capped).
+std::vector<TopoDS_Wire> free_loops(const TopoDS_Shape& shell, double tolerance) {
+  std::vector<TopoDS_Wire> loops;
+  for (TopExp_Explorer s(shell, TopAbs_SHELL); s.More(); s.Next()) {
+    ShapeAnalysis_FreeBounds bounds(s.Current(), tolerance, /*splitclosed=*/false, /*splitopen=*/true);
+    for (TopExp_Explorer w(bounds.GetClosedWires(), TopAbs_WIRE); w.More(); w.Next()) loops.push_back(TopoDS::Wire(w.Current()));
+  }
+  return loops;
+}
+
+// A join's body with each free loop pinched to zero thickness that lies inside the wall part (an
+// OpenVSP wing's centreline section, flattened to a line inside the fuselage) trimmed back by a plane
+// parallel to the loop's, halfway to the wall part's surface (closer when the section there is not
+// clear inside the wall): what is cut away lies inside the wall part, which the join takes away
+// anyway, and the new section encloses area, so it is capped as any open root. Other loops are left
+// for the capping to close or refuse.
+TopoDS_Shape with_pinched_loops_inside_trimmed(TopoDS_Shape body, const TopoDS_Shape& wall, double tolerance,
+                                               FaceNames& names, std::vector<std::string>& repairs) {
+  bool trimmed = true;
+  for (int round = 0; trimmed && round < 8; ++round) {
+    trimmed = false;
+    for (const TopoDS_Wire& loop : free_loops(body, tolerance)) {
+      const BRepBuilderAPI_FindPlane fit(loop, tolerance);
+      if (!fit.Found()) continue;
+      const BRepBuilderAPI_MakeFace cap(fit.Plane()->Pln(), loop);
+      if (!cap.IsDone() || !encloses_no_area(cap.Face(), loop, tolerance) || !clear_inside(loop, wall, tolerance)) continue;
+      const gp_Pnt c = centre_of(loop);
+      gp_Dir into_body = fit.Plane()->Pln().Axis().Direction();
+      if (gp_Vec(c, centre_of(body)).Dot(gp_Vec(into_body)) < 0.0) into_body.Reverse();
+      for (double depth = 0.5 * distance_to(loop, wall); depth > 10.0 * tolerance && !trimmed; depth *= 0.5) {
+        const CutPlane cut{c.Translated(depth * gp_Vec(into_body)), into_body.Reversed(), "the body's pinched loop"};
+        FaceNames carried = names;
+        const TopoDS_Shape left = cut_beyond(body, cut, 0.1 * tolerance, carried);
+        const std::vector<TopoDS_Wire> sections = free_loops(left, tolerance);
+        const bool section_inside = std::all_of(sections.begin(), sections.end(), [&](const TopoDS_Wire& w) {
+          return std::abs(gp_Vec(cut.point, centre_of(w)).Dot(gp_Vec(cut.normal))) > 10.0 * tolerance ||
+                 clear_inside(w, wall, tolerance);
+        });
+        if (!section_inside) continue;
+        body = left;
+        names = std::move(carried);
+        repairs.push_back("trimmed the body's free loop pinched to zero thickness around (" + length_text(c.X()) + ", " +
+                          length_text(c.Y()) + ", " + length_text(c.Z()) + ") back by " + length_text(depth) +
+                          " inside the wall part (what the join takes away)");
+        trimmed = true;
+      }
+      if (trimmed) break;
+    }
+  }
+  return body;
+}
+
+// The body cut where the user says (geometry.body_cut), said in `repairs`.
+TopoDS_Shape cut_body(const TopoDS_Shape& body, const CutPlane& cut, double tolerance, FaceNames& names,
+                      std::vector<std::string>& repairs) {
+  const TopoDS_Shape left = cut_beyond(body, cut, 0.1 * tolerance, names);
+  repairs.push_back("cut the body at " + cut.label + ": its part beyond taken away, the opening closed flat");
+  return left;
 }
 
 // Bounding box of `shape` in the wall's frame (the plane is z = 0, z along the fluid normal).
@@ -236,6 +389,22 @@ void require_inside(const TopoDS_Shape& body, const TopoDS_Shape& far_field, con
   }
   if (inside == 0 || (outside > 0 && !others_outside))
     refuse(far.label + ": the far field does not contain the body: the body lies outside it");
+}
+
+// Each solid of `domain`: its volume and bounding box, for a message.
+std::string pieces_text(const TopoDS_Shape& domain) {
+  std::string text;
+  int k = 0;
+  for (TopExp_Explorer solid(domain, TopAbs_SOLID); solid.More(); solid.Next()) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(solid.Current(), props);
+    const Bnd_Box b = global_box(solid.Current());
+    text += (k++ ? "; " : "") + std::string("volume ") + length_text(std::abs(props.Mass())) + " within (" +
+            length_text(b.CornerMin().X()) + ", " + length_text(b.CornerMin().Y()) + ", " + length_text(b.CornerMin().Z()) +
+            ") .. (" + length_text(b.CornerMax().X()) + ", " + length_text(b.CornerMax().Y()) + ", " +
+            length_text(b.CornerMax().Z()) + ")";
+  }
+  return text;
 }
 
 // A box standing on the wall plane on its fluid side, larger than everything else: the half space.
@@ -388,9 +557,11 @@ FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepA
 
 }  // namespace
 
-TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
-                          FaceNames& names, std::vector<std::string>& repairs) {
-  const TopoDS_Shape solids = body_solids(body, tolerance, "geometry.wall_plane: the body", repairs);
+TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far,
+                          const std::optional<CutPlane>& body_cut, double tolerance, FaceNames& names,
+                          std::vector<std::string>& repairs) {
+  const TopoDS_Shape solids = body_solids(body_cut ? cut_body(body, *body_cut, tolerance, names, repairs) : body, tolerance,
+                                          "geometry.wall_plane: the body", repairs);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
   const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);
@@ -405,7 +576,7 @@ TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const
   if (!solid.More()) refuse(wall.label + ": the Boolean operations left no fluid domain");
   const TopoDS_Shape fluid = solid.Current();
   solid.Next();
-  if (solid.More()) refuse(wall.label + ": the fluid domain falls apart into several pieces");
+  if (solid.More()) refuse(wall.label + ": the fluid domain falls apart into several pieces: " + pieces_text(domain));
   names = domain_names(fluid, cut, solids, names, wall, tolerance);
   return fluid;
 }
@@ -415,7 +586,8 @@ TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const
 namespace semimesh::occ {
 
 TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin& parts, const FarFieldShape& far,
-                                   double tolerance, FaceNames& names, std::vector<std::string>& repairs) {
+                                   const std::optional<CutPlane>& body_cut, double tolerance, FaceNames& names,
+                                   std::vector<std::string>& repairs) {
   if (far.box_chords)
     refuse(far.label + ": geometry.join needs the far field as a box or a sphere (box_chords measures a root the "
                        "parts do not have before they are joined)");
@@ -423,12 +595,13 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   TopExp::MapShapes(shape, TopAbs_FACE, faces);
   const TopoDS_Shell body_faces = part_shell(faces, names, parts.body, "geometry.join.body", taken);
   const TopoDS_Shell wall_faces = part_shell(faces, names, parts.wall, "geometry.join.wall", taken);
-  const TopoDS_Shape body = body_solids(body_faces, tolerance, "geometry.join.body: the body", repairs);
   // The wall's seams away from the body: through the root they would cut it open (no hole).
-  const Bnd_Box body_box = global_box(body);
-  const gp_Pnt body_centre = body_box.CornerMin().XYZ() * 0.5 + body_box.CornerMax().XYZ() * 0.5;
-  const TopoDS_Shape wall = body_solids(one_shell(with_seams_away_from(wall_faces, body_centre, tolerance, repairs)),
+  const TopoDS_Shape wall = body_solids(one_shell(with_seams_away_from(wall_faces, centre_of(body_faces), tolerance, repairs)),
                                         tolerance, "geometry.join.wall: the wall", repairs);
+  TopoDS_Shape body_part = body_faces;
+  if (body_cut) body_part = cut_body(body_part, *body_cut, tolerance, names, repairs);
+  body_part = with_pinched_loops_inside_trimmed(body_part, wall, tolerance, names, repairs);
+  const TopoDS_Shape body = body_solids(body_part, tolerance, "geometry.join.body: the body", repairs);
   if (const int left_out = faces.Extent() - taken.Extent(); left_out > 0)
     repairs.push_back("left out " + std::to_string(left_out) + " face(s) of the file that geometry.join does not name");
 
@@ -452,7 +625,9 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   if (!solid.More()) refuse("geometry.join: the Boolean operations left no fluid domain");
   const TopoDS_Shape fluid = solid.Current();
   solid.Next();
-  if (solid.More()) refuse("geometry.join: the fluid domain falls apart into several pieces (does the far field cut the body?)");
+  if (solid.More())
+    refuse("geometry.join: the fluid domain falls apart into several pieces (does the far field cut the body?): " +
+           pieces_text(domain));
   names = joined_names(fluid, fuse, cut, body, wall, names);
   return fluid;
 }

@@ -4,6 +4,7 @@
 // body's face on the wall plane is gone: the result reads as any wing-on-a-wall-in-a-box file.
 #pragma once
 
+#include "body_cut.hpp"
 #include "prepare_shape.hpp"
 
 #include <TopoDS_Shape.hxx>
@@ -40,8 +41,9 @@ struct FarFieldShape {
 /// plane or the far field when the body does not stand on the plane (no face of it lies in the
 /// plane), the plane cuts through the body, or the far field does not contain the body. An open
 /// body's flat free loops (its root, a flat tip) are closed by planar faces, each said in `repairs`.
-TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far, double tolerance,
-                          FaceNames& names, std::vector<std::string>& repairs);
+TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far,
+                          const std::optional<CutPlane>& body_cut, double tolerance, FaceNames& names,
+                          std::vector<std::string>& repairs);
 
 /// The parts of an assembly to join (geometry.join): the body's and the wall's faces of the file,
 /// each a face id ("#7", as `semimesh cad-info` numbers the file's faces) or a face name.
@@ -56,7 +58,10 @@ struct PartsToJoin {
 /// far field's "farfield_<k>". Throws cad::CadError(BadParameter) naming the key when a face is
 /// unknown or named twice, a part is not closed, the body does not reach into the wall, or the far
 /// field does not hold the body; a far field of box_chords is refused (no root to measure yet).
+/// `body_cut` as for fluid_domain; a free loop of the body pinched to zero thickness inside the wall
+/// part is trimmed back inside it (the joined shape unchanged), said in `repairs`.
 TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin& parts, const FarFieldShape& far,
-                                   double tolerance, FaceNames& names, std::vector<std::string>& repairs);
+                                   const std::optional<CutPlane>& body_cut, double tolerance, FaceNames& names,
+                                   std::vector<std::string>& repairs);
 
 }  // namespace semimesh::occ

@@ -139,13 +139,30 @@ struct DomainRequest {
   std::optional<WallPlane> wall_plane;
   std::optional<PartsToJoin> join;
   FarFieldShape far;
+  std::optional<CutPlane> body_cut;
 };
+
+// occ.body_cut: the plane the body is cut at (geometry.body_cut), its normal towards the part to take away.
+std::optional<CutPlane> body_cut_request(const cad::Params& params) {
+  if (!params.has("occ.body_cut")) return std::nullopt;
+  const auto c = numbers<6>(params, "occ.body_cut", "6 numbers: point x, y, z, normal x, y, z");
+  const gp_Vec normal(c[3], c[4], c[5]);
+  if (normal.Magnitude() == 0.0) throw CadError(CadError::Kind::BadParameter, "parameter 'occ.body_cut': the normal is zero");
+  return CutPlane{gp_Pnt(c[0], c[1], c[2]), gp_Dir(normal),
+                  "geometry.body_cut = {point = " + list_text(c.data(), 3) + ", normal = " + list_text(c.data() + 3, 3) + "}"};
+}
 
 std::optional<DomainRequest> domain_request(const cad::Params& params) {
   const std::optional<FarFieldShape> far = far_field_request(params);
   const bool join = params.has("occ.join_body") || params.has("occ.join_wall");
   const bool plane = params.has("occ.wall_plane");
-  if (!plane && !join && !far) return std::nullopt;
+  if (!plane && !join && !far) {
+    if (params.has("occ.body_cut"))
+      throw CadError(CadError::Kind::BadParameter,
+                     "parameter 'occ.body_cut' (geometry.body_cut) cuts a body the far field is built around: it goes "
+                     "with 'occ.wall_plane' (geometry.wall_plane) or 'occ.join_*' (geometry.join)");
+    return std::nullopt;
+  }
   if (plane && join)
     throw CadError(CadError::Kind::BadParameter,
                    "parameters 'occ.wall_plane' (geometry.wall_plane) and 'occ.join_*' (geometry.join) exclude each "
@@ -156,7 +173,7 @@ std::optional<DomainRequest> domain_request(const cad::Params& params) {
                    "(geometry.join), and one of 'occ.farfield_box', 'occ.farfield_sphere', 'occ.farfield_box_chords' "
                    "(geometry.farfield = {box | sphere | box_chords}) go together: the far field is built around a "
                    "body-only file or the joined parts of an assembly");
-  DomainRequest request{std::nullopt, std::nullopt, *far};
+  DomainRequest request{std::nullopt, std::nullopt, *far, body_cut_request(params)};
   if (join) {
     request.join = PartsToJoin{entries_of(params.get_string("occ.join_body", "")), entries_of(params.get_string("occ.join_wall", ""))};
     return request;
@@ -175,7 +192,7 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   const cad::Params& params = source.params;
   params.require_known({"occ.scale", "occ.units", "occ.sew", "occ.sew_tolerance", "occ.heal", "occ.fluid_inside",
                         "occ.wall_plane", "occ.farfield_box", "occ.farfield_sphere", "occ.farfield_box_chords",
-                        "occ.join_body", "occ.join_wall"},
+                        "occ.join_body", "occ.join_wall", "occ.body_cut"},
                        kBackend);
   const auto domain = domain_request(params);
   const double scale = params.get_double("occ.scale", 1.0);
@@ -208,8 +225,10 @@ std::unique_ptr<cad::Model> load_file(const cad::Source& source) {
   if (params.get_bool("occ.heal", true)) shape = heal_shape(shape, tolerance, read.face_names);
   if (domain) {
     try {
-      shape = domain->join ? fluid_domain_of_parts(shape, *domain->join, domain->far, 10.0 * tolerance, read.face_names, repairs)
-                           : fluid_domain(shape, *domain->wall_plane, domain->far, 10.0 * tolerance, read.face_names, repairs);
+      shape = domain->join ? fluid_domain_of_parts(shape, *domain->join, domain->far, domain->body_cut, 10.0 * tolerance,
+                                                   read.face_names, repairs)
+                           : fluid_domain(shape, *domain->wall_plane, domain->far, domain->body_cut, 10.0 * tolerance,
+                                          read.face_names, repairs);
     } catch (const CadError& error) {
       throw CadError(error.kind(), "'" + source.path + "': " + error.what());
     }

@@ -98,6 +98,9 @@ struct GeometryConfig {
   WallPlaneConfig wall_plane;
   JoinConfig join;
   FarFieldShapeConfig farfield_shape;
+  /// With wall_plane or join: the body's part beyond this plane (the side its normal points to)
+  /// taken away and the cut closed flat: a tip pinched to zero thickness made blunt.
+  WallPlaneConfig body_cut;
 };
 
 /// [nearfield]: the partition (topology) and the one-layer shell around the body.

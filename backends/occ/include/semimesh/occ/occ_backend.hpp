@@ -14,6 +14,9 @@
 //                      Boolean operations (fluid_domain.hpp) and the fluid is inside it
 //   occ.farfield_box   "xmin,ymin,zmin,xmax,ymax,zmax"; occ.farfield_sphere "cx,cy,cz,r";
 //   occ.farfield_box_chords  k: a box k root chords around the body
+//   occ.body_cut       "px,py,pz,nx,ny,nz": with a wall plane or a join, the body's part beyond this
+//                      plane (the side the normal points to) taken away and the cut closed flat (a
+//                      tip pinched to zero thickness made blunt)
 //   naca.*             without a file: the analytic backend's wing keys (mock_cad::naca_params_from)
 //
 // Thread safety: queries build their OCC algorithm objects per call and share only immutable
