@@ -57,6 +57,9 @@
 //              section thins from 0.75 span to zero thickness at the tip, an upper and a lower
 //              B-spline face through grids of its points: the tip is a knife edge, the two faces'
 //              last iso-lines the same chord line (as OpenVSP closes a wing); naca.chord scales it.
+//   seam_skin  a body-only wing (chord 1, span 1, root and tip open) whose skin is one face closed
+//              round its NACA 0012 sections, its seam the sharp trailing edge (as OpenVSP writes a
+//              wing component);
 //   bezier_patches  the body with its root capped (as `capped`), every B-spline skin face rewritten
 //              as 6 x 6 Bezier patches the way OpenVSP exports a wing: knots inserted at full
 //              multiplicity (the geometry unchanged) and the patches' parameter lengths cycling
@@ -532,6 +535,31 @@ TopoDS_Shape pinched_tip(double chord) {
   return sewing.SewedShape();
 }
 
+// The seam_skin wing's skin: closed NACA 0012 sections (trailing edge, upper side, leading edge,
+// lower side, trailing edge) lofted from z = 0 to 1 into one face closed round the section, its seam
+// the sharp trailing edge; root and tip left open.
+TopoDS_Shape seam_skin(double chord) {
+  const int sections = 5, half = 41;
+  BRepOffsetAPI_ThruSections loft(/*isSolid=*/false, /*ruled=*/false, 1e-7 * chord);
+  for (int i = 0; i < sections; ++i) {
+    const double z = i / (sections - 1.0);
+    Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, 2 * half - 1);
+    for (int j = 1; j <= 2 * half - 1; ++j) {
+      const double a = M_PI * (j - 1.0) / (half - 1.0);  // 0 .. 2 pi: over the upper side and back under
+      const double x = 0.5 * (1.0 + std::cos(a));
+      const double t = 5.0 * 0.12 * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+                                     0.1036 * x * x * x * x);
+      points->SetValue(j, gp_Pnt(chord * x, (j < half ? 1.0 : -1.0) * chord * t, chord * z));
+    }
+    GeomAPI_Interpolate curve(points, /*periodic=*/false, 1e-9 * chord);
+    curve.Perform();
+    loft.AddWire(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(curve.Curve()).Edge()).Wire());
+  }
+  loft.Build();
+  if (!loft.IsDone()) throw std::runtime_error("seam_skin: the loft failed");
+  return loft.Shape();
+}
+
 TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const semimesh::mock_cad::NacaWingParams& params) {
   if (name == "asis") return wing;
   if (name == "nurbs") return BRepBuilderAPI_NurbsConvert(wing, /*Copy=*/true).Shape();
@@ -577,10 +605,11 @@ TopoDS_Shape variant(const std::string& name, const TopoDS_Shape& wing, const se
   if (name == "split_base") return paneled(params, kStraight, 1, /*split_base=*/true);
   if (name == "bezier_patches") return with_bezier_patches(wing);
   if (name == "pinched_tip") return pinched_tip(params.chord);
+  if (name == "seam_skin") return seam_skin(params.chord);
   throw std::invalid_argument("unknown variant '" + name +
                               "' (known: asis, nurbs, capped, open_tip, unsewn, hemisphere, two_bodies, no_body, "
                               "fuselage, fuselage_bspline, fuselage_dihedral, fuselage_seam_on_crest, fuselage_unjoined, fuselage_unjoined_fin, fuselage_bspline_unjoined, fuselage_nosed_unjoined, fuselage_through, cranked, cranked_mm, "
-                              "cranked_m, split_base, cranked_split_base, bezier_patches, pinched_tip)");
+                              "cranked_m, split_base, cranked_split_base, bezier_patches, pinched_tip, seam_skin)");
 }
 
 // IGES trimmed faces (mode 0: each face on its own, as CAD tools export surfaces) under the unit

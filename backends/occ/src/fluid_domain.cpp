@@ -1,6 +1,7 @@
 #include "fluid_domain.hpp"
 
 #include "body_cut.hpp"
+#include "crease_seam.hpp"
 #include "seam_away.hpp"
 
 #include "semimesh/cad/error.hpp"
@@ -560,8 +561,9 @@ FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepA
 TopoDS_Shape fluid_domain(const TopoDS_Shape& body, const WallPlane& wall, const FarFieldShape& far,
                           const std::optional<CutPlane>& body_cut, double tolerance, FaceNames& names,
                           std::vector<std::string>& repairs) {
-  const TopoDS_Shape solids = body_solids(body_cut ? cut_body(body, *body_cut, tolerance, names, repairs) : body, tolerance,
-                                          "geometry.wall_plane: the body", repairs);
+  const TopoDS_Shape whole = with_crease_seams_split(body, tolerance, names, repairs);
+  const TopoDS_Shape solids = body_solids(body_cut ? cut_body(whole, *body_cut, tolerance, names, repairs) : whole,
+                                          tolerance, "geometry.wall_plane: the body", repairs);
   const std::vector<TopoDS_Face> roots = root_faces(solids, wall, tolerance);
   const TopoDS_Shape outer = far_solid(far, wall.normal, solids, roots);
   require_inside(solids, outer, far, tolerance);
@@ -598,7 +600,7 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   // The wall's seams away from the body: through the root they would cut it open (no hole).
   const TopoDS_Shape wall = body_solids(one_shell(with_seams_away_from(wall_faces, centre_of(body_faces), tolerance, repairs)),
                                         tolerance, "geometry.join.wall: the wall", repairs);
-  TopoDS_Shape body_part = body_faces;
+  TopoDS_Shape body_part = with_crease_seams_split(body_faces, tolerance, names, repairs);
   if (body_cut) body_part = cut_body(body_part, *body_cut, tolerance, names, repairs);
   body_part = with_pinched_loops_inside_trimmed(body_part, wall, tolerance, names, repairs);
   const TopoDS_Shape body = body_solids(body_part, tolerance, "geometry.join.body: the body", repairs);
