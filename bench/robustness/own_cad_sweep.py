@@ -37,6 +37,7 @@ VARIANTS = {
     "fuselage_bspline_unjoined": ("fuselage_bspline_unjoined", "step", ["naca.span=1", "naca.farfield=false"]),
     "fuselage_nosed_unjoined": ("fuselage_nosed_unjoined", "step", ["naca.span=1", "naca.farfield=false"]),
     "fuselage_through": ("fuselage_through", "step", ["naca.span=1", "naca.farfield=false"]),
+    "seam_skin": ("seam_skin", "step", []),
     "cranked": ("cranked", "step", []),
     "cranked_split_base": ("cranked_split_base", "step", []),
     "cranked_sharp": ("cranked", "step", ["naca.te=sharp"]),
