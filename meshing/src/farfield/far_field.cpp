@@ -522,8 +522,9 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   input.max_volume = params.max_volume;
   std::unordered_map<NodeId, int> plc_index;
   std::vector<NodeId> plc_node;
-  const std::vector<Triangle>* groups[] = {&skin, &wall_side, &box};
-  for (const std::vector<Triangle>* group : groups)
+  const std::pair<const std::vector<Triangle>*, const char*> groups[] = {
+      {&skin, "the near field's outer skin"}, {&wall_side, "the wall"}, {&box, "the far field's outer boundary"}};
+  for (const auto& [group, name] : groups) {
     for (const Triangle& t : *group) {
       std::array<int, 3> local;
       for (int k = 0; k < 3; ++k) {
@@ -536,6 +537,8 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
       }
       input.triangles.push_back(local);
     }
+    input.parts.emplace_back(input.triangles.size(), name);
+  }
   report(0.15, "TetGen");
   const TetgenOutput output = run_tetgen_varying_apexes(input, pyramids, plc_index, mesh);
   report(0.9, "elements");

@@ -42,9 +42,21 @@ std::string explain_tetgen_code(int code) {
 std::string locate_problem(const TetgenInput& input) {
   const auto crossing = find_crossing(input.points, input.triangles);
   if (!crossing) return "";
+  const auto part_of = [&](std::size_t triangle) -> std::string {
+    for (const auto& [end, name] : input.parts)
+      if (triangle < end) return name;
+    return "";
+  };
+  const std::string edge_part = part_of(crossing->edge_triangle), pierced_part = part_of(crossing->pierced_triangle);
   std::ostringstream out;
-  out << "; boundary triangle " << crossing->edge_triangle << " crosses boundary triangle " << crossing->pierced_triangle
-      << " at (" << crossing->point.x() << ", " << crossing->point.y() << ", " << crossing->point.z() << ")";
+  out << "; boundary triangle " << crossing->edge_triangle << (edge_part.empty() ? "" : " (" + edge_part + ")")
+      << " crosses boundary triangle " << crossing->pierced_triangle
+      << (pierced_part.empty() ? "" : " (" + pierced_part + ")") << " at (" << crossing->point.x() << ", "
+      << crossing->point.y() << ", " << crossing->point.z() << ")";
+  if (!edge_part.empty() && edge_part == pierced_part && edge_part == input.parts.front().second)
+    out << ": the near field's layer meets itself there, so the body is thinner there than the layers on its two "
+           "sides (a knife-edge or pointed tip, a narrow gap): a smaller nearfield.thickness, or for a CAD file "
+           "geometry.body_cut to cut such a tip blunt";
   return out.str();
 }
 

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace semimesh::farfield {
@@ -14,6 +16,8 @@ struct TetgenInput {
   std::vector<std::array<int, 3>> triangles;   ///< [triangles][3] the boundary, kept exactly
   double radius_edge_ratio = 1.5;              ///< -q bound
   double max_volume = 0.0;                     ///< -a bound; 0: none
+  /// What the triangles are, for messages: each part's name and the end of its run of triangles.
+  std::vector<std::pair<std::size_t, std::string>> parts;
 };
 
 struct TetgenOutput {

@@ -270,6 +270,10 @@ TEST(FarField, SkinThroughTheBoxIsReportedAsTetGenFailure) {
   } catch (const FarFieldError& e) {
     EXPECT_NE(std::string(e.what()).find("TetGen"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("crosses boundary triangle"), std::string::npos) << e.what();
+    // Which parts cross: the skin and the box (not the skin itself: no hint of a thin body).
+    EXPECT_NE(std::string(e.what()).find("(the near field's outer skin)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(the far field's outer boundary)"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("meets itself"), std::string::npos) << e.what();
   }
 }
 
