@@ -15,6 +15,16 @@ void append(params::Table<Outer>& table, Inner Outer::*member, const params::Tab
   for (auto& k : params::nested(member, inner)) table.push_back(std::move(k));
 }
 
+// A table of [geometry]'s sub-table `member`, as the config's keys.
+template <class Inner>
+params::Table<Config> geometry_table(Inner GeometryConfig::*member, const params::Table<Inner>& keys) {
+  params::Table<GeometryConfig> g;
+  append(g, member, keys);
+  params::Table<Config> table;
+  append(table, &Config::geometry, g);
+  return table;
+}
+
 params::Table<Config> geometry_keys() {
   params::Table<GeometryConfig> g = {
       params::string("backend", &GeometryConfig::backend, "non-empty",
@@ -47,11 +57,7 @@ params::Table<Config> wall_plane_keys() {
       params::reals("point", &WallPlaneConfig::point, "", "a point of the wall plane (model units)"),
       params::reals("normal", &WallPlaneConfig::normal, "", "the plane's normal, pointing into the fluid"),
   };
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::wall_plane, w);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::wall_plane, w);
 }
 
 params::Table<Config> body_cut_keys() {
@@ -60,11 +66,7 @@ params::Table<Config> body_cut_keys() {
       params::reals("normal", &WallPlaneConfig::normal, "",
                     "the plane's normal, pointing to the part of the body to take away (non-zero)"),
   };
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::body_cut, c);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::body_cut, c);
 }
 
 params::Table<Config> join_keys() {
@@ -74,11 +76,7 @@ params::Table<Config> join_keys() {
                       "`semimesh cad-info FILE` numbers them) or names (every face of the name)"),
       params::strings("wall", &JoinConfig::wall, "non-empty", "the wall part's faces in the file (a fuselage, a hub): ids or names"),
   };
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::join, j);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::join, j);
 }
 
 params::Table<Config> farfield_shape_keys() {
@@ -87,11 +85,7 @@ params::Table<Config> farfield_shape_keys() {
       params::real("box_chords", &FarFieldShapeConfig::box_chords, "> 0",
                    "a box this many root chords around the body's bounding box"),
   };
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::farfield_shape, f);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::farfield_shape, f);
 }
 
 params::Table<Config> farfield_sphere_keys() {
@@ -101,11 +95,7 @@ params::Table<Config> farfield_sphere_keys() {
   };
   params::Table<FarFieldShapeConfig> f;
   append(f, &FarFieldShapeConfig::sphere, s);
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::farfield_shape, f);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::farfield_shape, f);
 }
 
 params::Table<Config> naca_keys() {
@@ -132,11 +122,7 @@ params::Table<Config> naca_keys() {
                     "far-field box [xmin, ymin, zmin, xmax, ymax, zmax], each min < max, zmin = 0 (on a fuselage: "
                     "below it; unchanged, the backend's default around the fuselage)"),
   };
-  params::Table<GeometryConfig> g;
-  append(g, &GeometryConfig::naca, n);
-  params::Table<Config> table;
-  append(table, &Config::geometry, g);
-  return table;
+  return geometry_table(&GeometryConfig::naca, n);
 }
 
 params::Table<Config> nearfield_keys() {

@@ -1,5 +1,7 @@
 #include "body_cut.hpp"
 
+#include "parameter_rectangle.hpp"
+
 #include "semimesh/cad/error.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -33,12 +35,6 @@ namespace {
 
 [[noreturn]] void refuse_cut(const std::string& what) { throw cad::CadError(cad::CadError::Kind::BadParameter, what); }
 
-double area_of(const TopoDS_Shape& face) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(face, props);
-  return props.Mass();
-}
-
 // The least and largest signed distances from the plane of `piece`'s edges (16 points along each):
 // after the split a piece lies on one side, touching the plane at most.
 std::pair<double, double> side_range(const TopoDS_Shape& piece, const CutPlane& cut) {
@@ -61,11 +57,10 @@ std::pair<double, double> side_range(const TopoDS_Shape& piece, const CutPlane& 
 // OCCT's surface-plane intersection misses such a section on OpenVSP's pinched wings (the face comes
 // out of the split whole); the line is found by bisection on the parameter instead.
 std::optional<TopoDS_Shape> iso_trimmed(const TopoDS_Face& face, const CutPlane& cut, double tolerance) {
+  if (!is_parameter_rectangle(face, tolerance)) return std::nullopt;
   const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
-  const BRepBuilderAPI_MakeFace whole(surface, u0, u1, v0, v1, tolerance);
-  if (!whole.IsDone() || std::abs(area_of(whole.Face()) - area_of(face)) > 1e-6 * area_of(face)) return std::nullopt;
   const auto distance = [&](double u, double v) { return gp_Vec(cut.point, surface->Value(u, v)).Dot(gp_Vec(cut.normal)); };
   for (const bool along_u : {true, false}) {
     const double a0 = along_u ? u0 : v0, a1 = along_u ? u1 : v1, b0 = along_u ? v0 : u0, b1 = along_u ? v1 : u1;

@@ -1,5 +1,7 @@
 #include "crease_seam.hpp"
 
+#include "parameter_rectangle.hpp"
+
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
@@ -19,12 +21,6 @@
 
 namespace semimesh::occ {
 namespace {
-
-double face_area(const TopoDS_Shape& face) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(face, props);
-  return props.Mass();
-}
 
 bool has_seam(const TopoDS_Face& face) {
   for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
@@ -46,11 +42,10 @@ std::optional<gp_Vec> unit_normal(const Handle(Geom_Surface)& s, double u, doubl
 // halfway round, when its seam along that parameter is a crease.
 std::optional<std::pair<TopoDS_Face, TopoDS_Face>> crease_halves(const TopoDS_Face& face, double tolerance) {
   if (!has_seam(face)) return std::nullopt;
+  if (!is_parameter_rectangle(face, tolerance)) return std::nullopt;
   const Handle(Geom_Surface) s = BRep_Tool::Surface(face);
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
-  const BRepBuilderAPI_MakeFace whole(s, u0, u1, v0, v1, tolerance);
-  if (!whole.IsDone() || std::abs(face_area(whole.Face()) - face_area(face)) > 1e-6 * face_area(face)) return std::nullopt;
   for (const bool along_u : {true, false}) {
     if (!(along_u ? s->IsUClosed() || s->IsUPeriodic() : s->IsVClosed() || s->IsVPeriodic())) continue;
     const double a0 = along_u ? u0 : v0, a1 = along_u ? u1 : v1, b0 = along_u ? v0 : u0, b1 = along_u ? v1 : u1;

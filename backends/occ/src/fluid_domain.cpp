@@ -2,6 +2,7 @@
 
 #include "body_cut.hpp"
 #include "crease_seam.hpp"
+#include "parameter_rectangle.hpp"
 #include "seam_away.hpp"
 
 #include "semimesh/cad/error.hpp"
@@ -63,13 +64,6 @@ std::string length_text(double x) {
   return out.str();
 }
 
-// The area a planar cap encloses.
-double area_of(const TopoDS_Face& face) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(face, props);
-  return std::abs(props.Mass());
-}
-
 // The largest tolerance of `shape`'s edges: a section a cut leaves lies in its plane that closely
 // (OCCT's intersection curves carry the approximation's error as their tolerance).
 double edge_tolerance(const TopoDS_Shape& shape) {
@@ -101,7 +95,7 @@ std::optional<gp_Pln> plane_through_points(const TopoDS_Shape& loop, double tole
 bool encloses_no_area(const TopoDS_Face& cap, const TopoDS_Shape& loop, double tolerance) {
   Bnd_Box b;
   BRepBndLib::Add(loop, b);
-  return area_of(cap) <= tolerance * std::sqrt(b.SquareExtent());
+  return std::abs(surface_area(cap)) <= tolerance * std::sqrt(b.SquareExtent());
 }
 
 // The free loops of a shell (edges that bound one of its faces only), each closed by a planar face
