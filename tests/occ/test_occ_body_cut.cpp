@@ -3,6 +3,7 @@
 // (a loft's section) is cut in its parameters. Names follow the faces; a plane that misses the body
 // or leaves nothing of it is refused by its label.
 #include "body_cut.hpp"
+#include "fluid_domain.hpp"
 
 #include "semimesh/cad/error.hpp"
 
@@ -16,6 +17,11 @@
 #include <BRep_Builder.hxx>
 #include <Bnd_Box.hxx>
 #include <GC_MakeArcOfCircle.hxx>
+#include <GeomConvert.hxx>
+#include <GeomFill_Generator.hxx>
+#include <Geom_Ellipse.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Precision.hxx>
 #include <GProp_GProps.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp_Explorer.hxx>
@@ -30,7 +36,7 @@ namespace {
 
 double volume(const TopoDS_Shape& shape) {
   GProp_GProps props;
-  BRepGProp::VolumeProperties(shape, props);
+  BRepGProp::VolumeProperties(shape, props, 1e-10);  // adaptive: a thin body's faces
   return props.Mass();
 }
 
@@ -155,6 +161,38 @@ TEST(OccBodyCut, APlaneThatMissesTheBodyOrLeavesNothingIsRefusedByItsLabel) {
             std::string::npos);
   EXPECT_NE(message(gp_Pnt(0, 0, -1), gp::DZ()).find("geometry.body_cut = {...}: the plane leaves nothing"),
             std::string::npos);
+}
+
+// A body-only "wing" lofted from an elliptic root section on z = 0 to a tip section flattened to a
+// line (an ellipse of minor radius 1e-9) at z = 2, its loops left open: the root is capped, the tip
+// loop encloses no area and is refused naming geometry.body_cut; cut at z = 1.8 it closes, and the
+// fluid domain is the box's upper half minus the wing below the cut.
+TEST(OccBodyCut, APinchedTipIsRefusedNamingTheKeyAndMeshesCutBlunt) {
+  GeomFill_Generator loft;
+  for (const auto& [z, minor] : {std::pair{0.0, 0.1}, std::pair{2.0, 1e-9}})
+    loft.AddCurve(GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(gp_Pnt(0.5, 0, z), gp::DZ(), gp::DX()), 0.5, minor)));
+  loft.Perform(Precision::Confusion());
+  const TopoDS_Face skin = BRepBuilderAPI_MakeFace(loft.Surface(), Precision::Confusion()).Face();
+  const WallPlane wall{gp_Pnt(0, 0, 0), gp::DZ(), "geometry.wall_plane"};
+  FarFieldShape far;
+  far.box = std::array<double, 6>{-4, -4, -4, 4, 4, 4};
+  far.label = "box";
+  FaceNames names;
+  std::vector<std::string> repairs;
+  try {
+    fluid_domain(skin, wall, far, std::nullopt, 1e-6, names, repairs);
+    ADD_FAILURE() << "no CadError";
+  } catch (const cad::CadError& e) {
+    EXPECT_NE(std::string(e.what()).find("encloses no area"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("geometry.body_cut"), std::string::npos) << e.what();
+  }
+  repairs.clear();
+  const TopoDS_Shape domain =
+      fluid_domain(skin, wall, far, CutPlane{gp_Pnt(0, 0, 1.8), gp::DZ(), "cut"}, 1e-6, names, repairs);
+  // The wing's sections have half-axes 0.5 and 0.1 (1 - z / 2), linear in z: its volume below 1.8
+  // is pi 0.05 times the integral of (1 - z / 2) from 0 to 1.8 (1.8 - 0.81).
+  EXPECT_NEAR(volume(domain), 4.0 * 8.0 * 8.0 - M_PI * 0.05 * (1.8 - 0.81), 1e-4);
+  EXPECT_NE(repairs.front().find("cut the body at cut"), std::string::npos) << repairs.front();
 }
 
 }  // namespace
