@@ -15,6 +15,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <future>
+#include <system_error>
 #include <cstdio>
 #include <chrono>
 #include <cstring>
@@ -116,7 +118,8 @@ void write_all(int fd, const void* data, std::size_t bytes) {
 // terminatetetgen() and again in the destructor that runs while its error code is thrown, so any
 // TetGen failure would crash the whole program. The child sends back, through a pipe,
 // [int code, int points, int tets, double xyz[points][3], int corners[tets][4]].
-TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quiet) {
+// `beside` runs on another thread while the child works (forked first: from one thread).
+TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quiet, const BesideChild& beside) {
   int pipe_fds[2];
   if (::pipe(pipe_fds) != 0) throw FarFieldError(std::string("cannot create a pipe for TetGen: ") + std::strerror(errno));
   const pid_t pid = ::fork();
@@ -145,6 +148,19 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
     ::_exit(0);  // no atexit handlers or destructors of the parent's state in the child
   }
   ::close(pipe_fds[1]);
+  std::atomic<bool> stop{false};
+  std::future<void> beside_run;
+  if (beside) {
+    try {
+      beside_run = std::async(std::launch::async, [&] {
+        try {
+          beside(stop);
+        } catch (...) {  // speculative: the stages after compute without it
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to be had: TetGen alone, as before
+    }
+  }
   std::string bytes;
   char chunk[1 << 16];
   for (;;) {
@@ -157,6 +173,8 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  stop = true;
+  if (beside_run.valid()) beside_run.wait();
 
   TetgenRun run;
   if (WIFSIGNALED(status)) {
@@ -196,7 +214,7 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
 
 }  // namespace
 
-TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild& beside) {
   if (const auto edge = find_edge_below_tolerance(input.points, input.triangles, kTetgenRelativeTolerance))
     throw FarFieldError(describe_short_edge(input, *edge));
   const int num_points = static_cast<int>(input.points.size());
@@ -226,7 +244,7 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
   std::string buffer = switches.str();
 
   const auto start = std::chrono::steady_clock::now();
-  const TetgenRun run = tetrahedralize_in_child(buffer, in, quiet);
+  const TetgenRun run = tetrahedralize_in_child(buffer, in, quiet, beside);
   TetgenOutput result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run.crashed)

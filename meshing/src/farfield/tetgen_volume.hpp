@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <atomic>
+#include <functional>
 #include <vector>
 
 namespace semimesh::farfield {
@@ -15,6 +17,8 @@ struct TetgenInput {
   double radius_edge_ratio = 1.5;              ///< -q bound
   double max_volume = 0.0;                     ///< -a bound; 0: none
 };
+
+using BesideChild = std::function<void(const std::atomic<bool>& stop)>;
 
 struct TetgenOutput {
   std::vector<Eigen::Vector3d> points;         ///< [points] the input points first, same order, then Steiner points
@@ -34,6 +38,9 @@ struct TetgenOutput {
 /// input point; or when a tet of its answer is flat to round-off (6 V under 1e-12 of its longest
 /// edge cubed: its sign is round-off, and the weld's round-off moves turn it over), naming where. `quiet`: TetGen's own messages (a failed
 /// assertion's, on stderr) are dropped, for a first try that a second one follows.
-TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false);
+/// `beside` (optional): work that only speeds up later stages, run on another thread while TetGen's
+/// process runs; `stop` is set when TetGen has answered and `beside` is then waited for (it should
+/// return soon). Its exceptions are dropped: what it computes must be computed again without it.
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false, const BesideChild& beside = {});
 
 }  // namespace semimesh::farfield
