@@ -509,12 +509,9 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
 // what curving folded. What cannot be repaired stays invalid and is reported by the checks (exit 2).
 // `curved_ahead`, `certified_ahead`: what was curved and certified beside TetGen (build_linear_mesh),
 // taken where it holds; the curved mesh is dropped once the curving has taken its nodes.
-// `decided` (checks.inherit_bounds): the repair's certificates found without bisecting
-// (ho::first_expansion_bounds of the curved mesh), for the checks to take where the elements are
-// still the same (fingerprints: an element the repair, split or weld changed is certified again).
 mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear,
                        ho::CurvedAhead& curved_ahead, const std::vector<ho::InheritedBounds>& certified_ahead,
-                       Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& decided) {
+                       Progress& progress, RunResult& result) {
   mesh::Mesh curved = stage("curve", progress, result, [&](const ProgressCallback& report) {
     mesh::Mesh on_cad = ho::curve_mesh(linear, model, config.highorder, &result.curving, report, &curved_ahead);
     curved_ahead = ho::CurvedAhead();
@@ -532,7 +529,6 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
     // Certifying every element is the bulk of the stage; repairing the few invalid ones the rest.
     const ho::MeshValidity validity =
         ho::certify_mesh(curved, kRepairDepth, floor, progress_part(report, 0.0, 0.9), &certified_ahead);
-    if (config.checks.inherit_bounds) decided = ho::first_expansion_bounds(curved, validity);
     if (validity.all_valid()) return std::move(curved);
     ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
     const ho::RepairStats& stats = repaired.stats;
@@ -549,10 +545,8 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
 
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
-// `unsplit`: bounds of coarse elements for the copies of those not split (split_stacks).
 mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& linear, double chord,
-                 Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& inherited,
-                 const std::vector<ho::InheritedBounds>& unsplit) {
+                 Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& inherited) {
   const std::vector<nearfield::LayerStack>& stacks = linear.stacks;
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
@@ -571,7 +565,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     StackSplit fine = split_stacks(std::move(coarse), stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
-                                   report, config.checks.inherit_bounds, &unsplit);
+                                   report, config.checks.inherit_bounds);
     // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
     // does it in its own renumbering of the mesh).
     if (!weld) fine.mesh = mesh::without_unreferenced_nodes(std::move(fine.mesh));
@@ -820,22 +814,18 @@ RunResult run(const Config& config, Progress& progress) {
   const double chord = chord_of(config, geometry, surfaces);
   LinearMesh linear = build_linear_mesh(config, geometry, surfaces, chord, progress, result);
   result.mesh = std::move(linear.mesh);
-  std::vector<ho::InheritedBounds> decided;  // the repair's certificates found without bisecting
   if (config.highorder.order > 1)
     result.mesh = raise_order(config, *geometry.model, result.mesh, linear.curved_ahead, linear.certified_ahead,
-                              progress, result, decided);
+                              progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
-  std::vector<ho::InheritedBounds> inherited;  // the split pieces' and unsplit elements' bounds, for the checks
+  std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks
   // A sharp trailing edge's fan: its cuts must be where the split puts the hexes' nodes on their
   // faces (curved at order P on a curved wall, on the chord at order 1), or the weld misses them.
   if (linear.wake.hexes > 0 && result.layers.layers > 1 && !linear.precut_faces.empty())
     ho::follow_precut_faces(result.mesh, linear.precut_faces, kPrecutTolerance * chord);
   if (result.layers.layers > 1 || result.wall_layers.layers > 1)
-    result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited, decided);
-  else
-    inherited = std::move(decided);  // the same elements under the same indices
-  decided = {};
+    result.mesh = split(config, std::move(result.mesh), linear, chord, progress, result, inherited);
   linear = LinearMesh();  // its layer stacks and cuts served the split
   if (config.output.target == OutputTarget::Pyfr) {
     result.mesh = meet_pyfr_pyramid_rule(std::move(result.mesh), progress, result);

@@ -1,14 +1,12 @@
 #include "semimesh/pipeline/split_stacks.hpp"
 
-#include <algorithm>
 #include <utility>
 
 namespace semimesh::pipeline {
 
 StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress,
-                        bool inherit_bounds, const std::vector<ho::InheritedBounds>* unsplit) {
-  const std::size_t input_elements = mesh.elements().size();
+                        bool inherit_bounds) {
   // Family 0 the wing's layers, 1 the wall's; a family of one layer leaves its directions unsplit.
   const std::vector<ho::SplitFamily> families = {{wing.distribution, wing.ratio}, {wall.distribution, wall.ratio}};
   std::vector<ho::LayerSplit> split;
@@ -32,15 +30,6 @@ StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack
   result.wing = stats[0];
   result.wall = stats[1];
   for (const nearfield::LayerStack& s : stacks) result.first_layer.push_back(first[s.element]);
-  if (inherit_bounds && unsplit && !unsplit->empty()) {
-    std::vector<char> is_split(input_elements, 0);
-    for (const ho::LayerSplit& one : split) is_split[one.element] = 1;
-    for (const ho::InheritedBounds& b : *unsplit)
-      if (b.element < input_elements && !is_split[b.element])
-        result.inherited.push_back({first[b.element], b.fingerprint, b.bounds});
-    std::sort(result.inherited.begin(), result.inherited.end(),
-              [](const ho::InheritedBounds& a, const ho::InheritedBounds& b) { return a.element < b.element; });
-  }
   return result;
 }
 

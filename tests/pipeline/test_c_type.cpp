@@ -8,14 +8,12 @@
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/ho/curving/curve_mesh.hpp"
 #include "semimesh/nearfield/c_shell.hpp"
-#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <map>
 #include <memory>
 #include <string>
@@ -138,47 +136,6 @@ TEST(CTypeEndToEnd, CurvedAndSplitInBothDirections) {
   EXPECT_EQ(after.at("wall_layer"), before.at("wall_layer") * n_wall);
   EXPECT_EQ(after.at("farfield"), before.at("farfield"));
   expect_sound(split.mesh, c, 2e-3);
-}
-
-// Certificates of the elements the split copies (the far field) go with the copies:
-// each carried entry is its copy's (fingerprint), and the checks' validity with them is the reference's.
-TEST(CTypeEndToEnd, SplitGivesTheUnsplitElementsCertificatesToTheirCopies) {
-  const Case c;
-  const Built b = build(c, 0.05, 0.04);
-  ho::CurvingParams curving;
-  curving.order = 2;
-  const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
-  // Every element's certificate (the far field's are affine: first_expansion_bounds would leave them out).
-  const std::atomic<bool> go{false};
-  const std::vector<ho::InheritedBounds> decided = ho::certify_ahead(curved, 8, 0.1, go);
-  const pipeline::StackSplit pieces_only =
-      pipeline::split_stacks(curved, b.far.stacks, {{3, 1.5}, {}}, {{2, 2.0}, {}}, {}, true);
-  const pipeline::StackSplit split =
-      pipeline::split_stacks(curved, b.far.stacks, {{3, 1.5}, {}}, {{2, 2.0}, {}}, {}, true, &decided);
-  std::vector<char> stacked(curved.elements().size(), 0);
-  for (const nearfield::LayerStack& s : b.far.stacks) stacked[s.element] = 1;
-  const auto unsplit = static_cast<std::size_t>(
-      std::count_if(decided.begin(), decided.end(), [&](const ho::InheritedBounds& d) { return !stacked[d.element]; }));
-  ASSERT_GT(unsplit, 0u);
-  EXPECT_EQ(split.inherited.size(), pieces_only.inherited.size() + unsplit);
-  for (std::size_t i = 0; i < split.inherited.size(); ++i) {
-    ASSERT_EQ(split.inherited[i].fingerprint, ho::element_fingerprint(split.mesh, split.inherited[i].element)) << i;
-    if (i > 0) ASSERT_GT(split.inherited[i].element, split.inherited[i - 1].element);
-  }
-  // The reference: the pieces' bounds only (theirs differ from a fresh certification's in the last
-  // bits, certify_pieces' rounding); the copies' carried bounds are their fresh ones, bit for bit.
-  const ho::MeshValidity reference = ho::certify_mesh(split.mesh, 100, 0.1, {}, &pieces_only.inherited);
-  const ho::MeshValidity taken = ho::certify_mesh(split.mesh, 100, 0.1, {}, &split.inherited);
-  EXPECT_GT(taken.inherited, reference.inherited);
-  EXPECT_EQ(taken.invalid_elements, reference.invalid_elements);
-  EXPECT_EQ(taken.min_scaled_jacobian, reference.min_scaled_jacobian);
-  EXPECT_EQ(taken.median_scaled_jacobian, reference.median_scaled_jacobian);
-  for (std::size_t e = 0; e < split.mesh.elements().size(); ++e) {
-    const ho::JacobianBounds &a = taken.bounds[e], &r = reference.bounds[e];
-    ASSERT_TRUE(a.min_lower == r.min_lower && a.min_upper == r.min_upper && a.max_upper == r.max_upper &&
-                a.valid == r.valid && a.proven == r.proven)
-        << "element " << e;
-  }
 }
 
 }  // namespace

@@ -112,25 +112,6 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
   return out;
 }
 
-std::vector<InheritedBounds> first_expansion_bounds(const mesh::Mesh& mesh, const MeshValidity& validity) {
-  const std::size_t n = mesh.elements().size();
-  if (validity.bounds.size() != n)
-    throw std::invalid_argument("first_expansion_bounds: " + std::to_string(validity.bounds.size()) +
-                                " bounds for a mesh of " + std::to_string(n) + " elements");
-  const auto kept = [&](std::size_t e) {
-    const JacobianBounds& b = validity.bounds[e];
-    return b.subdivisions == 0 && b.min_lower != b.max_upper;
-  };
-  std::vector<std::uint64_t> fingerprint(n, 0);
-  detail::parallel_for(n, true, [&](std::size_t e) {
-    if (kept(e)) fingerprint[e] = element_fingerprint(mesh, e);
-  });
-  std::vector<InheritedBounds> out;
-  for (std::size_t e = 0; e < n; ++e)
-    if (kept(e)) out.push_back({e, fingerprint[e], validity.bounds[e]});
-  return out;
-}
-
 std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
                                            const std::atomic<bool>& stop) {
   if (max_depth < 0)

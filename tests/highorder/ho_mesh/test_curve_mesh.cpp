@@ -362,36 +362,6 @@ TEST(CertifyAhead, GivesCertifyMeshsValidityAndStopsWhenTold) {
   }
 }
 
-// The repair's certificates found without bisecting, given to the checks' deeper certification:
-// its validity, element by element, most of it taken.
-TEST(CertifyAhead, FirstExpansionBoundsGiveADeeperCertificationsBounds) {
-  const mesh::Mesh curved = curve_mesh(upper_layer(12, 2, 0.02, true), *wing().model, {4});
-  const MeshValidity shallow = certify_mesh(curved, 8, 0.1);
-  const std::vector<InheritedBounds> decided = first_expansion_bounds(curved, shallow);
-  ASSERT_GT(decided.size(), curved.elements().size() / 2);
-  for (std::size_t i = 0; i < decided.size(); ++i) {
-    EXPECT_EQ(decided[i].bounds.subdivisions, 0);
-    EXPECT_NE(decided[i].bounds.min_lower, decided[i].bounds.max_upper);
-    EXPECT_EQ(decided[i].fingerprint, element_fingerprint(curved, decided[i].element));
-    if (i > 0) EXPECT_GT(decided[i].element, decided[i - 1].element);
-  }
-  const MeshValidity reference = certify_mesh(curved, 100, 0.1);
-  const MeshValidity taken = certify_mesh(curved, 100, 0.1, {}, &decided);
-  EXPECT_GT(taken.inherited, 0u);
-  EXPECT_EQ(taken.invalid_elements, reference.invalid_elements);
-  EXPECT_EQ(taken.min_scaled_jacobian, reference.min_scaled_jacobian);
-  EXPECT_EQ(taken.median_scaled_jacobian, reference.median_scaled_jacobian);
-  for (std::size_t e = 0; e < curved.elements().size(); ++e) {
-    const JacobianBounds &a = taken.bounds[e], &b = reference.bounds[e];
-    EXPECT_TRUE(a.min_lower == b.min_lower && a.min_upper == b.min_upper && a.max_upper == b.max_upper &&
-                a.valid == b.valid && a.proven == b.proven && a.subdivisions == b.subdivisions)
-        << "element " << e;
-  }
-  MeshValidity short_of_one = shallow;
-  short_of_one.bounds.pop_back();
-  EXPECT_THROW(first_expansion_bounds(curved, short_of_one), std::invalid_argument);
-}
-
 TEST(CurveMesh, RejectsBadInput) {
   const mesh::Mesh linear = upper_layer(4, 1, 0.02, false);
   EXPECT_THROW(curve_mesh(linear, *wing().model, {0, NodeSet::GLL, 50, 1e-10}), std::invalid_argument);

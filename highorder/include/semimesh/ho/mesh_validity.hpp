@@ -62,16 +62,6 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_
 /// OpenMP thread, its setting restored after: Eigen's products then run on one thread, as inside
 /// certify_mesh's parallel loop, the same bits), e.g. beside TetGen's process; when `stop` is set
 /// the elements certified so far (checked between elements). Throws as certify_mesh does.
-/// The certificates in `validity` (certify_mesh of `mesh`, max_depth >= 1) that certify_mesh found
-/// on the first expansion, without bisecting (subdivisions 0: the same at any max_depth >= 1), each
-/// with its element's fingerprint, ascending elements: for a later certify_mesh as `inherited`, of
-/// this mesh or of one that holds these elements under other indices (the caller renumbers them,
-/// e.g. a split that copies the elements it does not split). Left out: constant bounds (min_lower
-/// = max_upper, an affine element's: certify_jacobian proves those about as fast as a fingerprint
-/// is taken). Fingerprints on the OpenMP threads.
-/// Throws std::invalid_argument when validity.bounds does not have one entry per element.
-std::vector<InheritedBounds> first_expansion_bounds(const mesh::Mesh& mesh, const MeshValidity& validity);
-
 std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
                                            const std::atomic<bool>& stop);
 

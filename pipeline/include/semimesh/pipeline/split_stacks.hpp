@@ -29,13 +29,10 @@ struct StackSplit {
 
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
 /// differently, naming both elements.
-/// `progress` as split_layers'. inherit_bounds: fill `inherited`, with the pieces' bounds and with
-/// those of `unsplit` (optional, ascending input elements, e.g. ho::first_expansion_bounds of the
-/// input) that belong to elements not split, under their copies' indices (same nodes, same
-/// fingerprint). The mesh is taken by value: a caller that moves it in holds its nodes once (they
-/// move into the output).
+/// `progress` as split_layers'. inherit_bounds: fill `inherited`. The mesh is taken by value: a
+/// caller that moves it in holds its nodes once (they move into the output).
 StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {},
-                        bool inherit_bounds = false, const std::vector<ho::InheritedBounds>* unsplit = nullptr);
+                        bool inherit_bounds = false);
 
 }  // namespace semimesh::pipeline
