@@ -37,6 +37,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -60,6 +61,8 @@ constexpr double kCurvedBodyVolumeFraction = 0.02;
 constexpr double kWeldTolerance = 1e-9;
 // A fan's cut node this close to the curved face (times the chord) stays: far inside the weld's reach.
 constexpr double kPrecutTolerance = 1e-12;
+// Subdivisions of the repair stage's certification.
+constexpr int kRepairDepth = 8;
 
 // The stage's progress callback: forwards to `progress`, never letting the fraction go back (the
 // parts of a stage report at their own start; a part may end below where the next starts).
@@ -425,6 +428,8 @@ struct LinearMesh {
   std::vector<nearfield::LayerStack> stacks;  ///< every layer element, with its direction(s)
   nearfield::WakeBlock wake;                  ///< H-type: the wake block (no hexes otherwise)
   std::vector<ho::PrecutFace> precut_faces;   ///< H-type: the fan's cuts on the junction hexes' faces
+  ho::CurvedAhead curved_ahead;                   ///< order > 1: what was curved beside TetGen (may be empty)
+  std::vector<ho::InheritedBounds> certified_ahead;  ///< and certified there (the repair's depth and floor)
 };
 
 // The wing layer's ratio and its field along the body (from boundary_layer, y+ resolved).
@@ -482,20 +487,40 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
   for (const nearfield::Warning& w : near.warnings)
     result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
                                           w.where.y(), w.where.z()));
+  // While TetGen's process makes the far field (a core idle otherwise), the elements made so far
+  // are curved and certified as the curve and repair stages will: the curving takes the nodes
+  // placed for the same edges, faces and elements (ho::CurvedAhead), the repair the bounds of the
+  // elements whose nodes are then the same (fingerprints); each computes the rest itself. Stopped
+  // when TetGen answers: whatever was not done ahead is done by the stages, as without it.
+  ho::CurvedAhead curved_ahead;
+  std::vector<ho::InheritedBounds> certified_ahead;
+  farfield::BesideTetgen beside;
+  if (config.highorder.order > 1)
+    beside = [&](const mesh::Mesh& so_far, const std::atomic<bool>& stop) {
+      curved_ahead = ho::curve_ahead(so_far, *g.model, config.highorder, stop);
+      if (!curved_ahead.empty())
+        certified_ahead =
+            ho::certify_ahead(curved_ahead.curved, kRepairDepth, config.checks.min_scaled_jacobian, stop);
+    };
   farfield::FarField far = stage("far field", progress, result, [&](const ProgressCallback& report) {
     return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall,
-                                     junction ? config.wall_layer.thickness : 0.0, report);
+                                     junction ? config.wall_layer.thickness : 0.0, report, beside);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh), std::move(far.stacks), std::move(wake), std::move(precut_faces)};
+  return {std::move(far.mesh), std::move(far.stacks), std::move(wake), std::move(precut_faces),
+          std::move(curved_ahead), std::move(certified_ahead)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
 // what curving folded. What cannot be repaired stays invalid and is reported by the checks (exit 2).
-mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear, Progress& progress,
-                       RunResult& result) {
+// `curved_ahead`, `certified_ahead`: what was curved and certified beside TetGen (build_linear_mesh),
+// taken where it holds; the curved mesh is dropped once the curving has taken its nodes.
+mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh::Mesh& linear,
+                       ho::CurvedAhead& curved_ahead, const std::vector<ho::InheritedBounds>& certified_ahead,
+                       Progress& progress, RunResult& result) {
   mesh::Mesh curved = stage("curve", progress, result, [&](const ProgressCallback& report) {
-    mesh::Mesh on_cad = ho::curve_mesh(linear, model, config.highorder, &result.curving, report);
+    mesh::Mesh on_cad = ho::curve_mesh(linear, model, config.highorder, &result.curving, report, &curved_ahead);
+    curved_ahead = ho::CurvedAhead();
     // A sharp trailing edge's bare triangles at its tip end: the far field there bends with them.
     ho::follow_exposed_body(on_cad, "wing", "farfield");
     return on_cad;
@@ -508,7 +533,8 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
   return stage("repair", progress, result, [&](const ProgressCallback& report) {
     const double floor = config.checks.min_scaled_jacobian;
     // Certifying every element is the bulk of the stage; repairing the few invalid ones the rest.
-    const ho::MeshValidity validity = ho::certify_mesh(curved, 8, floor, progress_part(report, 0.0, 0.9));
+    const ho::MeshValidity validity =
+        ho::certify_mesh(curved, kRepairDepth, floor, progress_part(report, 0.0, 0.9), &certified_ahead);
     if (validity.all_valid()) return std::move(curved);
     ho::Repaired repaired = ho::repair_invalid(curved, model, validity.invalid_elements, floor);
     const ho::RepairStats& stats = repaired.stats;
@@ -794,7 +820,9 @@ RunResult run(const Config& config, Progress& progress) {
   const double chord = chord_of(config, geometry, surfaces);
   LinearMesh linear = build_linear_mesh(config, geometry, surfaces, chord, progress, result);
   result.mesh = std::move(linear.mesh);
-  if (config.highorder.order > 1) result.mesh = raise_order(config, *geometry.model, result.mesh, progress, result);
+  if (config.highorder.order > 1)
+    result.mesh = raise_order(config, *geometry.model, result.mesh, linear.curved_ahead, linear.certified_ahead,
+                              progress, result);
   result.layers.layers = config.boundary_layer.split.layers;
   result.wall_layers.layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
   std::vector<ho::InheritedBounds> inherited;  // the split pieces' bounds, for the checks

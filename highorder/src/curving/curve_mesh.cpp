@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,11 +36,25 @@ std::size_t interior_node_count(Shape shape, int order) {
   }));
 }
 
+// Thrown by the curving ahead when told to stop.
+struct StoppedAhead {};
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+bool same_attachment(const CadAttachment& a, const CadAttachment& b) {
+  return a.kind == b.kind && a.entity == b.entity && same_bits(a.u, b.u) && same_bits(a.v, b.v);
+}
+
 class Curver {
  public:
-  Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params, ProgressCallback progress)
-      : in_(linear), model_(model), params_(params), out_(params.order, params.node_set), progress_(std::move(progress)) {}
+  /// `ahead`: placements to take (curve_mesh's); `record`: filled with this curving's placements
+  /// (curve_ahead's); `stop`: when set, the next edge, face or element throws StoppedAhead.
+  Curver(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params, ProgressCallback progress,
+         const CurvedAhead* ahead = nullptr, CurvedAhead* record = nullptr, const std::atomic<bool>* stop = nullptr)
+      : in_(linear), model_(model), params_(params), out_(params.order, params.node_set), progress_(std::move(progress)),
+        ahead_(ahead), record_(record), stop_(stop) {}
   mesh::Mesh run(CurvingStats* stats);
+  std::size_t taken() const { return taken_; }
 
  private:
   /// New nodes of one edge or face, computed independently of the others (in parallel) and added
@@ -59,6 +75,14 @@ class Curver {
 
   EdgeNodes place_edge(std::size_t e, const std::vector<double>& fraction, bool on_boundary) const;
   FaceNodes place_face(std::size_t f, bool on_boundary) const;
+  /// Which edges, faces and elements take their nodes from ahead_ (the rules in curve_mesh.hpp).
+  void choose_taken(const std::vector<char>& edge_on_boundary, const std::vector<char>& face_on_boundary);
+  /// place_edge's and place_face's results as the curving ahead placed them.
+  EdgeNodes taken_edge(std::size_t e) const;
+  FaceNodes taken_face(std::size_t f) const;
+  void check_stop() const {
+    if (stop_ && stop_->load(std::memory_order_relaxed)) throw StoppedAhead{};
+  }
   void note(const PlacedNodes& placed);
   void curve_edges(const std::vector<char>& on_boundary);
   void curve_faces(const std::vector<char>& on_boundary);
@@ -83,7 +107,91 @@ class Curver {
   std::vector<detail::KinkChart> curve_charts_;                   // [curves]
   std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
   std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
+  const CurvedAhead* ahead_;
+  CurvedAhead* record_;
+  const std::atomic<bool>* stop_;
+  // [edges], [faces], [elements] of in_: 1 where the nodes are taken from ahead_ (empty: none).
+  std::vector<char> edge_taken_, face_taken_, element_taken_;
+  std::size_t taken_ = 0;
 };
+
+void Curver::choose_taken(const std::vector<char>& edge_on_boundary, const std::vector<char>& face_on_boundary) {
+  if (!ahead_ || ahead_->empty()) return;
+  const mesh::Mesh& m = ahead_->curved;
+  if (m.order() != params_.order || m.node_set() != params_.node_set || ahead_->linear_nodes > in_.num_nodes() ||
+      ahead_->linear_nodes > m.num_nodes() || ahead_->edges.size() != m.edges().size() ||
+      ahead_->faces.size() != m.faces().size() || ahead_->edge_on_boundary.size() != m.edges().size() ||
+      ahead_->face_on_boundary.size() != m.faces().size())
+    return;
+  // The linear nodes it was curved on: the same bits and attachments, or nothing is taken.
+  for (NodeId id = 0; id < ahead_->linear_nodes; ++id) {
+    const Eigen::Vector3d &a = in_.node(id), &b = m.node(id);
+    if (!same_bits(a.x(), b.x()) || !same_bits(a.y(), b.y()) || !same_bits(a.z(), b.z()) ||
+        !same_attachment(in_.cad_attachment(id), m.cad_attachment(id)))
+      return;
+  }
+  edge_taken_.assign(in_.edges().size(), 0);
+  face_taken_.assign(in_.faces().size(), 0);
+  element_taken_.assign(in_.elements().size(), 0);
+  for (std::size_t e = 0; e < std::min(in_.edges().size(), m.edges().size()); ++e)
+    edge_taken_[e] = in_.edges()[e].vertices == m.edges()[e].vertices &&
+                     (edge_on_boundary[e] != 0) == (ahead_->edge_on_boundary[e] != 0);
+  const auto edges_taken = [&](const std::uint32_t* ids, int n) {
+    return std::all_of(ids, ids + n, [&](std::uint32_t id) { return edge_taken_[id] != 0; });
+  };
+  for (std::size_t f = 0; f < std::min(in_.faces().size(), m.faces().size()); ++f) {
+    const mesh::Face &a = in_.faces()[f], &b = m.faces()[f];
+    face_taken_[f] = a.vertices == b.vertices && a.num_vertices == b.num_vertices && a.edges == b.edges &&
+                     a.edge_reversed == b.edge_reversed &&
+                     (face_on_boundary[f] != 0) == (ahead_->face_on_boundary[f] != 0) &&
+                     edges_taken(a.edges.data(), a.num_vertices);
+  }
+  for (std::size_t e = 0; e < std::min(in_.elements().size(), m.elements().size()); ++e) {
+    const mesh::Element &a = in_.elements()[e], &b = m.elements()[e];
+    const int faces = static_cast<int>(ho::faces(a.shape).size());
+    element_taken_[e] = a.shape == b.shape && a.vertices == b.vertices && a.edges == b.edges &&
+                        a.edge_reversed == b.edge_reversed && a.faces == b.faces &&
+                        a.face_orientation == b.face_orientation && edges_taken(a.edges.data(), static_cast<int>(edges(a.shape).size())) &&
+                        std::all_of(a.faces.begin(), a.faces.begin() + faces,
+                                    [&](std::uint32_t f) { return face_taken_[f] != 0; });
+  }
+  for (const std::vector<char>* taken : {&edge_taken_, &face_taken_, &element_taken_})
+    taken_ += static_cast<std::size_t>(std::count(taken->begin(), taken->end(), 1));
+}
+
+Curver::EdgeNodes Curver::taken_edge(std::size_t e) const {
+  const mesh::Mesh& m = ahead_->curved;
+  const CurvedAhead::Placed& placed = ahead_->edges[e];
+  EdgeNodes out;
+  out.place = static_cast<CadPlace::Kind>(placed.place);
+  out.fallback = placed.fallback;
+  out.moved = placed.moved;
+  const std::vector<NodeId> ids = m.edge_nodes(e);  // vertices[0], the interior, vertices[1]
+  for (std::size_t i = 1; i + 1 < ids.size(); ++i) {
+    out.x.push_back(m.node(ids[i]));
+    out.att.push_back(m.cad_attachment(ids[i]));
+  }
+  return out;
+}
+
+Curver::FaceNodes Curver::taken_face(std::size_t f) const {
+  const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
+  FaceNodes out;
+  if (detail::harmonic_extension(shape, params_.order, params_.node_set).interior.empty()) return out;
+  const mesh::Mesh& m = ahead_->curved;
+  const CurvedAhead::Placed& placed = ahead_->faces[f];
+  out.place = static_cast<CadPlace::Kind>(placed.place);
+  out.fallback = placed.fallback;
+  out.moved = placed.moved;
+  const std::vector<NodeId> ids = m.face_nodes(f);  // canonical order of the stored face
+  out.x.resize(static_cast<Eigen::Index>(ids.size()), 3);
+  out.att.resize(ids.size());
+  for (std::size_t j = 0; j < ids.size(); ++j) {
+    out.x.row(static_cast<Eigen::Index>(j)) = m.node(ids[j]).transpose();
+    out.att[j] = m.cad_attachment(ids[j]);
+  }
+  return out;
+}
 
 std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face,
                                          int code) const {
@@ -190,8 +298,12 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
   edge_interior_.resize(in_.edges().size());
   detail::overlapped_blocks(
       in_.edges().size(), model_.thread_safe(), kBlock, [](std::size_t, std::size_t) {},
-      [&](std::size_t e) { return place_edge(e, fraction, on_boundary[e] != 0); },
+      [&](std::size_t e) {
+        check_stop();
+        return !edge_taken_.empty() && edge_taken_[e] ? taken_edge(e) : place_edge(e, fraction, on_boundary[e] != 0);
+      },
       [&](std::size_t e, const EdgeNodes& placed) {
+        if (record_) record_->edges[e] = {static_cast<std::int8_t>(placed.place), placed.fallback, placed.moved};
         note(placed);
         stats_.edges_on_curves += placed.place == CadPlace::Curve ? 1 : 0;
         stats_.edges_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
@@ -272,10 +384,14 @@ void Curver::curve_faces(const std::vector<char>& on_boundary) {
   face_interior_.resize(in_.faces().size());
   detail::parallel_blocks(
       in_.faces().size(), model_.thread_safe(), kBlock,
-      [&](std::size_t f) { return place_face(f, on_boundary[f] != 0); },
+      [&](std::size_t f) {
+        check_stop();
+        return !face_taken_.empty() && face_taken_[f] ? taken_face(f) : place_face(f, on_boundary[f] != 0);
+      },
       [&](std::size_t f, const FaceNodes& placed) {
         const Shape shape = in_.faces()[f].num_vertices == 3 ? Shape::Triangle : Shape::Quadrilateral;
         const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
+        if (record_) record_->faces[f] = {static_cast<std::int8_t>(placed.place), placed.fallback, placed.moved};
         if (ext.interior.empty()) return;
         note(placed);
         stats_.faces_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
@@ -339,6 +455,13 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   edge_progress_ = progress_part(progress_, 0.0, edges / all);
   face_progress_ = progress_part(progress_, edges / all, (edges + faces) / all);
   volume_progress_ = progress_part(progress_, (edges + faces) / all, 1.0);
+  if (record_) {
+    record_->edges.assign(in_.edges().size(), {});
+    record_->faces.assign(in_.faces().size(), {});
+    record_->edge_on_boundary = edge_on_boundary;
+    record_->face_on_boundary = face_on_boundary;
+  }
+  choose_taken(edge_on_boundary, face_on_boundary);
   curve_edges(edge_on_boundary);
   curve_faces(face_on_boundary);
 
@@ -361,10 +484,16 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   detail::overlapped_blocks(
       num_elements, true, kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
+        check_stop();
         VolumeNodes v{element_node_ids(e), {}};
         const detail::HarmonicExtension& ext = detail::inner_extension(in_.elements()[e].shape, P, params_.node_set);
         if (ext.interior.empty()) return v;
         v.x = Eigen::MatrixXd::Zero(v.ids.size(), 3);
+        if (!element_taken_.empty() && element_taken_[e]) {  // the interior rows, as placed ahead
+          const std::vector<NodeId> ids = ahead_->curved.element_nodes(e);
+          for (int j : ext.interior) v.x.row(j) = ahead_->curved.node(ids[j]).transpose();
+          return v;
+        }
         for (int j : ext.boundary) v.x.row(j) = out_.node(v.ids[j]).transpose();
         extend_harmonically(ext, v.x);
         return v;
@@ -406,8 +535,33 @@ const params::Table<CurvingParams>& curving_keys() {
 }
 
 mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
-                      CurvingStats* stats, const ProgressCallback& progress) {
-  return Curver(linear, model, params, progress).run(stats);
+                      CurvingStats* stats, const ProgressCallback& progress, const CurvedAhead* ahead,
+                      std::size_t* taken) {
+  Curver curver(linear, model, params, progress, ahead);
+  mesh::Mesh curved = curver.run(stats);
+  if (taken) *taken = curver.taken();
+  return curved;
+}
+
+CurvedAhead curve_ahead(const mesh::Mesh& so_far, const cad::Model& model, const CurvingParams& params,
+                        const std::atomic<bool>& stop) {
+#ifdef _OPENMP
+  // One thread: this work goes beside another (TetGen's process), not over both cores.
+  struct OneThread {
+    int was = omp_get_max_threads();
+    OneThread() { omp_set_num_threads(1); }
+    ~OneThread() { omp_set_num_threads(was); }
+  } one_thread;
+#endif
+  CurvedAhead ahead;
+  try {
+    Curver curver(so_far, model, params, {}, nullptr, &ahead, &stop);
+    ahead.curved = curver.run(nullptr);
+  } catch (...) {  // stopped, or the curving fails: the later curving says why
+    return CurvedAhead();
+  }
+  ahead.linear_nodes = so_far.num_nodes();
+  return ahead;
 }
 
 }  // namespace semimesh::ho

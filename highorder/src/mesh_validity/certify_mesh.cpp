@@ -112,4 +112,29 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
   return out;
 }
 
+std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
+                                           const std::atomic<bool>& stop) {
+  if (max_depth < 0)
+    throw std::invalid_argument("certify_ahead: max_depth = " + std::to_string(max_depth) + " must be >= 0");
+#ifdef _OPENMP
+  struct OneThread {
+    int was = omp_get_max_threads();
+    OneThread() { omp_set_num_threads(1); }
+    ~OneThread() { omp_set_num_threads(was); }
+  } one_thread;
+#endif
+  std::vector<InheritedBounds> out;
+  out.reserve(mesh.elements().size());
+  for (std::size_t e = 0; e < mesh.elements().size() && !stop.load(std::memory_order_relaxed); ++e) {
+    const ho::Shape shape = mesh.elements()[e].shape;
+    if (dimension(shape) != 3)
+      throw std::invalid_argument("certify_ahead: element " + std::to_string(e) + " is a " + to_string(shape) +
+                                  "; only 3D elements can be certified");
+    out.push_back({e, element_fingerprint(mesh, e),
+                   certify_jacobian(shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e), max_depth,
+                                    min_scaled_jacobian)});
+  }
+  return out;
+}
+
 }  // namespace semimesh::ho

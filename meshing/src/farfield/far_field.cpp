@@ -436,11 +436,13 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unor
 // TetGen on the input, and once more with the apexes' heights varied when it fails (a zero-volume
 // tet among exactly degenerate points, which it aborts on, or answers with when round-off makes it
 // not quite flat: run_tetgen refuses that answer); the first failure is the one reported when both fail.
+// `beside` runs beside the first try only (the second moves apexes of the mesh it reads).
 TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
-                                       const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh) {
-  if (pyramids.empty()) return run_tetgen(input);
+                                       const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh,
+                                       const BesideChild& beside) {
+  if (pyramids.empty()) return run_tetgen(input, /*quiet=*/false, beside);
   try {
-    return run_tetgen(input, /*quiet=*/true);
+    return run_tetgen(input, /*quiet=*/true, beside);
   } catch (const FarFieldError& first) {
     const std::vector<Eigen::Vector3d> points = input.points;
     vary_apex_heights(pyramids, plc_index, mesh, input);
@@ -457,7 +459,7 @@ TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<Ski
 
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
                          const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness,
-                         const ProgressCallback& progress) {
+                         const ProgressCallback& progress, const BesideTetgen& beside) {
   // Progress at the start of each sub-step, at rough shares of the time: TetGen, one call in a
   // child process that cannot report, takes most of it.
   const auto report = [&](double fraction, const char* step) {
@@ -540,7 +542,9 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
     input.parts.emplace_back(input.triangles.size(), name);
   }
   report(0.15, "TetGen");
-  const TetgenOutput output = run_tetgen_varying_apexes(input, pyramids, plc_index, mesh);
+  BesideChild beside_child;
+  if (beside) beside_child = [&](const std::atomic<bool>& stop) { beside(static_cast<const mesh::Mesh&>(mesh), stop); };
+  const TetgenOutput output = run_tetgen_varying_apexes(input, pyramids, plc_index, mesh, beside_child);
   report(0.9, "elements");
   stats.seconds_tetgen = output.seconds;
   for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));

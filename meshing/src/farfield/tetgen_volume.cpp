@@ -11,10 +11,14 @@
 
 #include <Eigen/Geometry>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <future>
+#include <system_error>
 #include <cstdio>
 #include <chrono>
 #include <cstring>
@@ -128,7 +132,8 @@ void write_all(int fd, const void* data, std::size_t bytes) {
 // terminatetetgen() and again in the destructor that runs while its error code is thrown, so any
 // TetGen failure would crash the whole program. The child sends back, through a pipe,
 // [int code, int points, int tets, double xyz[points][3], int corners[tets][4]].
-TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quiet) {
+// `beside` runs on another thread while the child works (forked first: from one thread).
+TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quiet, const BesideChild& beside) {
   int pipe_fds[2];
   if (::pipe(pipe_fds) != 0) throw FarFieldError(std::string("cannot create a pipe for TetGen: ") + std::strerror(errno));
   const pid_t pid = ::fork();
@@ -157,6 +162,24 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
     ::_exit(0);  // no atexit handlers or destructors of the parent's state in the child
   }
   ::close(pipe_fds[1]);
+  std::atomic<bool> stop{false};
+  std::future<void> beside_run;
+  if (beside) {
+    try {
+      beside_run = std::async(std::launch::async, [&] {
+        // The lowest priority for this thread (its own on Linux: std::async's thread is new): on a
+        // core that TetGen leaves idle it runs at full speed; where another job takes that core,
+        // TetGen's process (which the run waits for) goes first and this work is mostly left to
+        // the stages after, instead of delaying TetGen's answer.
+        ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+        try {
+          beside(stop);
+        } catch (...) {  // speculative: the stages after compute without it
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to be had: TetGen alone, as before
+    }
+  }
   std::string bytes;
   char chunk[1 << 16];
   for (;;) {
@@ -169,6 +192,8 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  stop = true;
+  if (beside_run.valid()) beside_run.wait();
 
   TetgenRun run;
   if (WIFSIGNALED(status)) {
@@ -208,7 +233,7 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
 
 }  // namespace
 
-TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild& beside) {
   if (const auto edge = find_edge_below_tolerance(input.points, input.triangles, kTetgenRelativeTolerance))
     throw FarFieldError(describe_short_edge(input, *edge));
   const int num_points = static_cast<int>(input.points.size());
@@ -238,7 +263,7 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet) {
   std::string buffer = switches.str();
 
   const auto start = std::chrono::steady_clock::now();
-  const TetgenRun run = tetrahedralize_in_child(buffer, in, quiet);
+  const TetgenRun run = tetrahedralize_in_child(buffer, in, quiet, beside);
   TetgenOutput result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (run.crashed)

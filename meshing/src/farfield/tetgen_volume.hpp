@@ -7,6 +7,8 @@
 #include <array>
 #include <string>
 #include <utility>
+#include <atomic>
+#include <functional>
 #include <vector>
 
 namespace semimesh::farfield {
@@ -19,6 +21,8 @@ struct TetgenInput {
   /// What the triangles are, for messages: each part's name and the end of its run of triangles.
   std::vector<std::pair<std::size_t, std::string>> parts;
 };
+
+using BesideChild = std::function<void(const std::atomic<bool>& stop)>;
 
 struct TetgenOutput {
   std::vector<Eigen::Vector3d> points;         ///< [points] the input points first, same order, then Steiner points
@@ -38,6 +42,9 @@ struct TetgenOutput {
 /// input point; or when a tet of its answer is flat to round-off (6 V under 1e-12 of its longest
 /// edge cubed: its sign is round-off, and the weld's round-off moves turn it over), naming where. `quiet`: TetGen's own messages (a failed
 /// assertion's, on stderr) are dropped, for a first try that a second one follows.
-TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false);
+/// `beside` (optional): work that only speeds up later stages, run on another thread while TetGen's
+/// process runs; `stop` is set when TetGen has answered and `beside` is then waited for (it should
+/// return soon). Its exceptions are dropped: what it computes must be computed again without it.
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet = false, const BesideChild& beside = {});
 
 }  // namespace semimesh::farfield

@@ -5,6 +5,7 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/ho/validity.hpp"
 #include "semimesh/mock_cad/naca.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
@@ -14,7 +15,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstring>
+#include <string>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -230,6 +234,132 @@ TEST(GeometricError, MeasuresOnlyTheSurfacesItIsGiven) {
   EXPECT_EQ(upper.max_rel, all.max_rel);
   EXPECT_EQ(upper.samples, all.samples);
   EXPECT_EQ(other.samples, 0);
+}
+
+// `first` (upper_layer) and a second prism layer on top of it: new nodes and elements after the
+// first layer's, as the far field comes after the near field in the pipeline.
+mesh::Mesh with_second_layer(const mesh::Mesh& first) {
+  mesh::Mesh full = first;
+  const auto n = static_cast<mesh::NodeId>(first.num_nodes() / 2);  // bottom nodes, then top nodes
+  for (mesh::NodeId i = 0; i < n; ++i) full.add_node(2.0 * first.node(n + i) - first.node(i));
+  for (const mesh::Element& e : first.elements()) {
+    std::vector<mesh::NodeId> top;
+    for (int v = 3; v < 6; ++v) top.push_back(e.vertices[v]);
+    for (int v = 3; v < 6; ++v) top.push_back(e.vertices[v] + n);
+    full.add_element(Shape::Prism, top);
+  }
+  return full;
+}
+
+void expect_same_curving(const mesh::Mesh& a, const mesh::Mesh& b, const CurvingStats& sa, const CurvingStats& sb) {
+  ASSERT_EQ(a.num_nodes(), b.num_nodes());
+  for (mesh::NodeId id = 0; id < a.num_nodes(); ++id) {
+    ASSERT_EQ(std::memcmp(a.node(id).data(), b.node(id).data(), 3 * sizeof(double)), 0) << "node " << id;
+    const mesh::CadAttachment &x = a.cad_attachment(id), &y = b.cad_attachment(id);
+    ASSERT_TRUE(x.kind == y.kind && x.entity == y.entity && x.u == y.u && x.v == y.v) << "node " << id;
+  }
+  ASSERT_EQ(a.elements().size(), b.elements().size());
+  for (std::size_t e = 0; e < a.elements().size(); ++e) {
+    ASSERT_EQ(a.element_nodes(e), b.element_nodes(e)) << "element " << e;
+    ASSERT_EQ(a.elements()[e].region, b.elements()[e].region) << "element " << e;
+  }
+  ASSERT_EQ(a.boundary_faces().size(), b.boundary_faces().size());
+  for (std::size_t f = 0; f < a.boundary_faces().size(); ++f) {
+    ASSERT_EQ(a.boundary_face_nodes(f), b.boundary_face_nodes(f)) << "boundary face " << f;
+    ASSERT_EQ(a.boundary_faces()[f].group, b.boundary_faces()[f].group) << "boundary face " << f;
+  }
+  EXPECT_EQ(sa.edges_on_curves, sb.edges_on_curves);
+  EXPECT_EQ(sa.edges_on_surfaces, sb.edges_on_surfaces);
+  EXPECT_EQ(sa.faces_on_surfaces, sb.faces_on_surfaces);
+  EXPECT_EQ(sa.optimisation_fallbacks, sb.optimisation_fallbacks);
+  EXPECT_EQ(sa.max_projection_distance, sb.max_projection_distance);
+}
+
+// The fast path (nodes taken from the mesh curved ahead) against the reference (every node placed
+// here): the same bits, statistics and numbering, whether all, some or none of it can be taken.
+TEST(CurveMesh, TakesWhatWasCurvedAheadAndGivesTheSameMesh) {
+  const mesh::Mesh first = upper_layer(6, 2, 0.02, true);
+  const mesh::Mesh full = with_second_layer(first);
+  const std::size_t first_entities = first.edges().size() + first.faces().size() + first.elements().size();
+  const std::atomic<bool> go{false};
+  for (int P = 2; P <= 4; ++P)
+    for (NodePlacement placement : {NodePlacement::Parameter, NodePlacement::Springs}) {
+      SCOPED_TRACE("P = " + std::to_string(P) + (placement == NodePlacement::Springs ? ", springs" : ""));
+      const CurvingParams params{P, NodeSet::GLL, 50, 1e-10, placement};
+      CurvingStats reference_stats;
+      const mesh::Mesh reference = curve_mesh(full, *wing().model, params, &reference_stats);
+
+      const CurvedAhead ahead = curve_ahead(first, *wing().model, params, go);
+      ASSERT_FALSE(ahead.empty());
+      CurvingStats stats;
+      std::size_t taken = 0;
+      expect_same_curving(curve_mesh(full, *wing().model, params, &stats, {}, &ahead, &taken), reference, stats,
+                          reference_stats);
+      EXPECT_EQ(taken, first_entities);  // all of the first layer
+
+      // The first layer's side faces on a boundary of the whole mesh (not of the first layer's):
+      // those faces, and the elements they bound, are placed again.
+      mesh::Mesh sides = full;
+      std::size_t side_faces = 0;
+      for (std::size_t f = 0; f < first.faces().size() && side_faces < 3; ++f)
+        if (first.faces()[f].num_vertices == 4) {
+          sides.add_boundary_face("side", Shape::Quadrilateral, first.face_nodes(f));
+          ++side_faces;
+        }
+      CurvingStats sides_reference_stats;
+      const mesh::Mesh sides_reference = curve_mesh(sides, *wing().model, params, &sides_reference_stats);
+      expect_same_curving(curve_mesh(sides, *wing().model, params, &stats, {}, &ahead, &taken), sides_reference,
+                          stats, sides_reference_stats);
+      EXPECT_GT(taken, 0u);
+      EXPECT_LT(taken, first_entities);
+
+      // A node of the first layer moved since: nothing is taken.
+      mesh::Mesh moved = full;
+      moved.place_node(first.elements()[0].vertices[3], first.node(first.elements()[0].vertices[3]) * 1.0001);
+      CurvingStats moved_reference_stats;
+      const mesh::Mesh moved_reference = curve_mesh(moved, *wing().model, params, &moved_reference_stats);
+      expect_same_curving(curve_mesh(moved, *wing().model, params, &stats, {}, &ahead, &taken), moved_reference,
+                          stats, moved_reference_stats);
+      EXPECT_EQ(taken, 0u);
+    }
+}
+
+TEST(CurveMesh, CurvingAheadStopsWhenToldAndTakesNothingOfAnotherOrder) {
+  const mesh::Mesh first = upper_layer(6, 2, 0.02, true);
+  const std::atomic<bool> stop{true}, go{false};
+  EXPECT_TRUE(curve_ahead(first, *wing().model, {3}, stop).empty());
+  const CurvedAhead ahead = curve_ahead(first, *wing().model, {3}, go);
+  ASSERT_FALSE(ahead.empty());
+  EXPECT_EQ(ahead.linear_nodes, first.num_nodes());
+  std::size_t taken = 1;
+  CurvingStats stats, reference_stats;
+  const mesh::Mesh full = with_second_layer(first);
+  expect_same_curving(curve_mesh(full, *wing().model, {4}, &stats, {}, &ahead, &taken),
+                      curve_mesh(full, *wing().model, {4}, &reference_stats), stats, reference_stats);
+  EXPECT_EQ(taken, 0u);
+}
+
+// certify_ahead's bounds given to certify_mesh: the reference's validity, most of it taken; stopped
+// before the first element, none.
+TEST(CertifyAhead, GivesCertifyMeshsValidityAndStopsWhenTold) {
+  const mesh::Mesh curved = curve_mesh(upper_layer(12, 2, 0.02, true), *wing().model, {4});
+  const std::atomic<bool> stop{true}, go{false};
+  EXPECT_TRUE(certify_ahead(curved, 8, 0.1, stop).empty());
+  const std::vector<InheritedBounds> ahead = certify_ahead(curved, 8, 0.1, go);
+  ASSERT_EQ(ahead.size(), curved.elements().size());
+  const MeshValidity reference = certify_mesh(curved, 8, 0.1);
+  const MeshValidity taken = certify_mesh(curved, 8, 0.1, {}, &ahead);
+  EXPECT_GT(taken.inherited, ahead.size() / 2);
+  EXPECT_EQ(reference.inherited, 0u);
+  EXPECT_EQ(taken.invalid_elements, reference.invalid_elements);
+  EXPECT_EQ(taken.min_scaled_jacobian, reference.min_scaled_jacobian);
+  EXPECT_EQ(taken.median_scaled_jacobian, reference.median_scaled_jacobian);
+  for (std::size_t e = 0; e < ahead.size(); ++e) {
+    EXPECT_EQ(ahead[e].element, e);
+    EXPECT_EQ(ahead[e].fingerprint, element_fingerprint(curved, e));
+    EXPECT_EQ(ahead[e].bounds.min_lower, reference.bounds[e].min_lower) << e;
+    EXPECT_EQ(ahead[e].bounds.max_upper, reference.bounds[e].max_upper) << e;
+  }
 }
 
 TEST(CurveMesh, RejectsBadInput) {

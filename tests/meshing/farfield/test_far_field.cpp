@@ -8,6 +8,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
 #include <map>
 #include <set>
 
@@ -237,6 +241,37 @@ TEST_F(FarFieldAroundCube, WallAndBoxNodesCarryTheirCadAttachment) {
         EXPECT_NEAR(cad.v, mesh().node(id).y(), 1e-9);
       }
     }
+}
+
+// Work beside TetGen's process: it sees every element but the tetrahedra, runs until TetGen has
+// answered, and changes nothing in the mesh built, also when it throws.
+TEST_F(FarFieldAroundCube, WorkBesideTetgenSeesTheMeshSoFarAndChangesNothing) {
+  FarFieldParams params;
+  params.box_size = 1.0;
+  params.wall_size = 0.6;
+  const int wall = *model_->find_surface("wall");
+  std::size_t elements = 0, tets = 1;
+  bool stopped = false;
+  const FarField with = build_far_field(
+      *model_, cube_->nf, params, box_surfaces(*model_), wall, 0.0, {},
+      [&](const mesh::Mesh& so_far, const std::atomic<bool>& stop) {
+        elements = so_far.elements().size();
+        tets = static_cast<std::size_t>(std::count_if(so_far.elements().begin(), so_far.elements().end(),
+                                                      [](const mesh::Element& e) { return e.shape == ho::Shape::Tetrahedron; }));
+        while (!stop) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        stopped = true;
+      });
+  EXPECT_TRUE(stopped);
+  EXPECT_EQ(tets, 0u);
+  EXPECT_EQ(elements, static_cast<std::size_t>(stats_.pyramids));
+  const FarField thrown = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), wall, 0.0, {},
+                                          [](const mesh::Mesh&, const std::atomic<bool>&) { throw std::runtime_error("x"); });
+  for (const mesh::Mesh* m : {&with.mesh, &thrown.mesh}) {
+    ASSERT_EQ(m->nodes(), mesh().nodes());
+    ASSERT_EQ(m->elements().size(), mesh().elements().size());
+    for (std::size_t e = 0; e < m->elements().size(); ++e) ASSERT_EQ(m->element_nodes(e), mesh().element_nodes(e)) << e;
+    ASSERT_EQ(m->boundary_faces().size(), mesh().boundary_faces().size());
+  }
 }
 
 TEST(FarField, RejectsBadParametersAndANonPlanarWall) {

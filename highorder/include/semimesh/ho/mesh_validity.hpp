@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <atomic>
 #include <vector>
 
 namespace semimesh::ho {
@@ -53,5 +54,15 @@ std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e);
 MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_scaled_jacobian = 0.0,
                           const ProgressCallback& progress = {},
                           const std::vector<InheritedBounds>* inherited = nullptr);
+
+/// The certificates certify_mesh(mesh, max_depth, min_scaled_jacobian) computes, of the first
+/// elements of `mesh` in order, each with its fingerprint: for a later certify_mesh of a mesh whose
+/// first elements these may be, as `inherited` (it takes those it would not bisect and whose nodes
+/// are still the same; the same validity either way). Computed ahead on the calling thread alone (one
+/// OpenMP thread, its setting restored after: Eigen's products then run on one thread, as inside
+/// certify_mesh's parallel loop, the same bits), e.g. beside TetGen's process; when `stop` is set
+/// the elements certified so far (checked between elements). Throws as certify_mesh does.
+std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
+                                           const std::atomic<bool>& stop);
 
 }  // namespace semimesh::ho

@@ -13,6 +13,8 @@
 #include "semimesh/params/table.hpp"
 #include "semimesh/progress.hpp"
 
+#include <atomic>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -74,8 +76,14 @@ struct FarField {
 /// Throws FarFieldError naming the parameter, surface or region at fault (e.g. TetGen's failure
 /// translated: self-intersecting boundary, too close facets). `progress` is told the start of each
 /// sub-step (steps "box and wall", "wall layer", "TetGen", "elements") and the end.
+/// `beside` (optional): work that only speeds up later stages, run on another thread while TetGen's
+/// process works (its first try), given the mesh so far (every element but the tetrahedra, which
+/// come after them; the mesh is not changed meanwhile) and a flag set when TetGen has answered,
+/// after which it is waited for (it should then return soon). Its exceptions are dropped: the
+/// stages after must not need what it computes. The mesh built is the same with or without it.
+using BesideTetgen = std::function<void(const mesh::Mesh& so_far, const std::atomic<bool>& stop)>;
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
                          const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0,
-                         const ProgressCallback& progress = {});
+                         const ProgressCallback& progress = {}, const BesideTetgen& beside = {});
 
 }  // namespace semimesh::farfield

@@ -46,6 +46,10 @@
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/progress.hpp"
 
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
 namespace semimesh::ho {
 
 enum class NodePlacement { Parameter, Springs };
@@ -75,6 +79,22 @@ struct CurvingStats {
   double max_projection_distance = 0.0; ///< largest distance from a straight-sided node to its CAD position
 };
 
+/// The curving of a mesh made before the rest of it (curve_ahead: e.g. the near field's elements,
+/// curved while TetGen's process makes the far field), for curve_mesh to take the nodes it placed.
+struct CurvedAhead {
+  /// How an edge or face was placed (curve_mesh's statistics of it).
+  struct Placed {
+    std::int8_t place = 0;  ///< on no CAD entity (0), a curve (1) or a surface (2)
+    bool fallback = false;  ///< the spring optimisation kept its start positions
+    double moved = 0.0;     ///< largest distance from a straight-sided position to the placed one
+  };
+  mesh::Mesh curved;                 ///< curve_mesh(so_far, ...); no elements when not curved
+  std::size_t linear_nodes = 0;      ///< so_far's nodes: curved's first nodes, the same
+  std::vector<Placed> edges, faces;  ///< [so_far's edges], [so_far's faces]
+  std::vector<char> edge_on_boundary, face_on_boundary;  ///< [edges], [faces]: on a boundary face of so_far
+  bool empty() const { return curved.elements().empty(); }
+};
+
 /// A new mesh of order params.order from the order-1 mesh `linear` whose boundary vertices carry CAD
 /// attachments. Node ids 0..linear.num_nodes()-1 are the linear mesh's vertices (same attachments);
 /// elements and boundary faces keep their indices and groups. New nodes on CAD carry their curve or
@@ -82,7 +102,24 @@ struct CurvingStats {
 /// out of range, and cad::CadError when an attachment names an entity the model does not have.
 /// `progress` receives the fraction of edges, faces and volumes placed (steps "edges", "faces",
 /// "volumes"), from one thread, throttled; it does not change the result.
+/// `ahead` (optional; the same model and params): an edge, face or element of `linear` that is the
+/// one of the same index in the mesh curved ahead (the same vertices, edges, faces and orientations,
+/// and for an edge or face the same boundary flag; its edges and faces taken too) takes the nodes
+/// placed there instead of placing them again, when the first ahead->linear_nodes nodes of `linear`
+/// are the ahead mesh's (the same bits, the same CAD attachments; else nothing is taken): the same
+/// mesh and statistics, placed by the same code on the same inputs. Its `taken` (optional) receives
+/// the number of edges, faces and elements taken.
 mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const CurvingParams& params,
-                      CurvingStats* stats = nullptr, const ProgressCallback& progress = {});
+                      CurvingStats* stats = nullptr, const ProgressCallback& progress = {},
+                      const CurvedAhead* ahead = nullptr, std::size_t* taken = nullptr);
+
+/// curve_mesh(so_far, model, params) kept for a later curve_mesh of a mesh that begins with
+/// so_far's nodes and entities (CurvedAhead), computed on the calling thread alone (one OpenMP
+/// thread, its setting restored after: Eigen's products then run on one thread, as inside curve_mesh's
+/// parallel loops, the same bits). Empty when the curving throws (the later curving says why) or
+/// `stop` is set before it ends (checked between edges, faces and elements): work that only speeds
+/// up a later stage, beside another (TetGen's process), that returns soon when told to.
+CurvedAhead curve_ahead(const mesh::Mesh& so_far, const cad::Model& model, const CurvingParams& params,
+                        const std::atomic<bool>& stop);
 
 }  // namespace semimesh::ho
