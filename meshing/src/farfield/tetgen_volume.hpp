@@ -5,10 +5,10 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <string>
-#include <utility>
 #include <atomic>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace semimesh::farfield {
