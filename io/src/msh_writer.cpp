@@ -4,6 +4,8 @@
 #include "semimesh/io/gmsh_types.hpp"
 #include "semimesh/io/msh.hpp"
 
+#include "region_labels.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -68,16 +70,7 @@ struct Tags {
 Tags make_tags(const mesh::Mesh& m) {
   Tags t;
   t.groups = m.group_names().size();
-  t.regions = m.region_names();
-  // Physical names must be unique too, ignoring case (PyFR: "Duplicate physical name"): a region
-  // named like a boundary group (the "farfield" region beside the "farfield" surface) is renamed.
-  auto lower = [](std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-  };
-  for (std::string& r : t.regions)
-    for (const std::string& g : m.group_names())
-      if (lower(r) == lower(g)) r += "_volume";
+  t.regions = detail::region_labels(m);  // unique physical names, ignoring case (PyFR)
   std::vector<char> used(t.regions.size(), 0);
   for (std::size_t e = 0; e < m.elements().size(); ++e) used[m.elements()[e].region] = 1;
   t.volume_tag.assign(t.regions.size(), 0);

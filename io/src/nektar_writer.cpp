@@ -1,4 +1,5 @@
 #include "nektar_numbering.hpp"
+#include "region_labels.hpp"
 #include "xml_escape.hpp"
 #include "zlib_stream.hpp"
 
@@ -437,7 +438,7 @@ std::vector<ElementComposite> element_composites(const mesh::Mesh& m) {
   std::map<std::pair<int, char>, std::vector<std::size_t>> groups;
   for (std::size_t e = 0; e < m.elements().size(); ++e)
     groups[{int(m.elements()[e].region), nektar_tag(m.elements()[e].shape)}].push_back(e);
-  const auto names = m.region_names();
+  const auto names = detail::region_labels(m);  // not the boundary groups' names
   std::vector<ElementComposite> out;
   for (auto& [key, ids] : groups) out.push_back({names[key.first], key.second, std::move(ids)});
   return out;

@@ -344,6 +344,26 @@ TEST(Msh, PhysicalTagsAreUniqueAcrossDimensionsAndOneVolumePerRegion) {
       << text.substr(0, 200);
 }
 
+// The region named like the boundary group is "farfield_volume" in the XML's composites as in the
+// MSH's physical names: the file's reader sees one "farfield", the boundary.
+TEST(Nektar, CompositesOfARegionNamedLikeABoundaryGroupTakeTheVolumeName) {
+  Mesh mesh(1);
+  std::vector<NodeId> ids;
+  for (const auto& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
+                        Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1)})
+    ids.push_back(mesh.add_node(x));
+  mesh.add_element(Shape::Tetrahedron, {ids[0], ids[1], ids[2], ids[3]}, mesh.region_index("wing_layer"));
+  mesh.add_element(Shape::Tetrahedron, {ids[1], ids[2], ids[3], ids[4]}, mesh.region_index("FarField"));
+  mesh.add_boundary_face("farfield", Shape::Triangle, {ids[0], ids[2], ids[1]});
+  const std::string path = temp_dir() + "/regions.xml";
+  semimesh::io::write_nektar_xml(mesh, path, semimesh::io::NektarEncoding::Plain);
+  const std::string text = read_text(path);
+  EXPECT_NE(text.find("NAME=\"wing_layer\"> A[0]"), std::string::npos) << text;
+  EXPECT_NE(text.find("NAME=\"FarField_volume\"> A[1]"), std::string::npos) << text;
+  EXPECT_NE(text.find("NAME=\"farfield\"> F["), std::string::npos) << text;
+  EXPECT_EQ(text.find("NAME=\"FarField\""), std::string::npos) << text;
+}
+
 TEST(Nektar, TwoPyramidsSharingATriangleThrowNamingTheElement) {
   // Pyramid A's triangle (a, b, apex_A) is pyramid B's triangle with apex a: each apex would have
   // to be the highest vertex of the shared triangle.
