@@ -13,8 +13,6 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom_Surface.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <BRep_Builder.hxx>
 #include <Bnd_Box.hxx>
 #include <TopExp_Explorer.hxx>
@@ -90,6 +88,7 @@ std::optional<TopoDS_Shape> iso_trimmed(const TopoDS_Face& face, const CutPlane&
     if (!make.IsDone()) return std::nullopt;
     TopoDS_Face part = make.Face();
     BRepLib::BuildCurves3d(part);  // its new edges have curves on the surface only
+    if (face.Orientation() == TopAbs_REVERSED) part.Reverse();
     BRepBuilderAPI_Sewing seam(tolerance);
     seam.Add(part);
     seam.Perform();

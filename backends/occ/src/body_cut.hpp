@@ -23,11 +23,12 @@ struct CutPlane {
   std::string label;  ///< how the user wrote it, for messages
 };
 
-/// `body` (a shell, or solids) without its part beyond `cut`, by OCCT's Boolean cut with a box
-/// beyond the plane larger than the body: a shell stays open along the cut (a planar free loop),
-/// a solid is closed by the cut's face. Faces in `names` pass their names on to what is left of
-/// them. Throws cad::CadError(BadParameter) naming `cut.label` when the plane misses the body
-/// (nothing beyond it) or leaves nothing of it.
+/// `body` (a shell, or solids) without its part beyond `cut`: a face the plane crosses along one of
+/// its iso-parameter lines is rebuilt over the parameters kept; the rest is split by OCCT's splitter
+/// with a face on the plane and its pieces sorted by side. A shell stays open along the cut (a
+/// planar free loop), a solid is closed by the cut's face. Faces in `names` pass their names on to
+/// what is left of them. Throws cad::CadError(BadParameter) naming `cut.label` when the plane
+/// misses the body (nothing beyond it), leaves nothing of it, or a piece stays whole across it.
 TopoDS_Shape cut_beyond(const TopoDS_Shape& body, const CutPlane& cut, double fuzzy, FaceNames& names);
 
 }  // namespace semimesh::occ
