@@ -21,6 +21,25 @@
 
 namespace semimesh::ho::detail {
 
+/// While it lives, this thread's OpenMP loops run on one thread: work that goes beside another
+/// process (TetGen's) on the core it leaves idle, not over both cores.
+class OneThreadScope {
+ public:
+#ifdef _OPENMP
+  OneThreadScope() : was_(omp_get_max_threads()) { omp_set_num_threads(1); }
+  ~OneThreadScope() { omp_set_num_threads(was_); }
+#else
+  OneThreadScope() = default;
+#endif
+  OneThreadScope(const OneThreadScope&) = delete;
+  OneThreadScope& operator=(const OneThreadScope&) = delete;
+
+ private:
+#ifdef _OPENMP
+  int was_;
+#endif
+};
+
 inline bool is_reporting_thread() {
 #ifdef _OPENMP
   return omp_get_thread_num() == 0;

@@ -326,15 +326,21 @@ TEST(Msh, BinaryAndAsciiReadBackAlike) {
   }
 }
 
-TEST(Msh, PhysicalTagsAreUniqueAcrossDimensionsAndOneVolumePerRegion) {
+// Two tets, of regions "wing_layer" and `far_region`, and one boundary triangle of group "farfield".
+Mesh two_regions_beside_a_group(const std::string& far_region) {
   Mesh mesh(1);
   std::vector<NodeId> ids;
   for (const auto& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
                         Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1)})
     ids.push_back(mesh.add_node(x));
   mesh.add_element(Shape::Tetrahedron, {ids[0], ids[1], ids[2], ids[3]}, mesh.region_index("wing_layer"));
-  mesh.add_element(Shape::Tetrahedron, {ids[1], ids[2], ids[3], ids[4]}, mesh.region_index("farfield"));
+  mesh.add_element(Shape::Tetrahedron, {ids[1], ids[2], ids[3], ids[4]}, mesh.region_index(far_region));
   mesh.add_boundary_face("farfield", Shape::Triangle, {ids[0], ids[2], ids[1]});
+  return mesh;
+}
+
+TEST(Msh, PhysicalTagsAreUniqueAcrossDimensionsAndOneVolumePerRegion) {
+  const Mesh mesh = two_regions_beside_a_group("farfield");
   const std::string path = temp_dir() + "/regions.msh";
   semimesh::io::write_msh(mesh, path);
   const std::string text = read_text(path);
@@ -347,14 +353,7 @@ TEST(Msh, PhysicalTagsAreUniqueAcrossDimensionsAndOneVolumePerRegion) {
 // The region named like the boundary group is "farfield_volume" in the XML's composites as in the
 // MSH's physical names: the file's reader sees one "farfield", the boundary.
 TEST(Nektar, CompositesOfARegionNamedLikeABoundaryGroupTakeTheVolumeName) {
-  Mesh mesh(1);
-  std::vector<NodeId> ids;
-  for (const auto& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0),
-                        Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 1, 1)})
-    ids.push_back(mesh.add_node(x));
-  mesh.add_element(Shape::Tetrahedron, {ids[0], ids[1], ids[2], ids[3]}, mesh.region_index("wing_layer"));
-  mesh.add_element(Shape::Tetrahedron, {ids[1], ids[2], ids[3], ids[4]}, mesh.region_index("FarField"));
-  mesh.add_boundary_face("farfield", Shape::Triangle, {ids[0], ids[2], ids[1]});
+  const Mesh mesh = two_regions_beside_a_group("FarField");  // the same name but for case
   const std::string path = temp_dir() + "/regions.xml";
   semimesh::io::write_nektar_xml(mesh, path, semimesh::io::NektarEncoding::Plain);
   const std::string text = read_text(path);

@@ -4,6 +4,7 @@
 // or leaves nothing of it is refused by its label.
 #include "body_cut.hpp"
 #include "fluid_domain.hpp"
+#include "shape_measures.hpp"
 
 #include "semimesh/cad/error.hpp"
 
@@ -33,18 +34,6 @@
 
 namespace semimesh::occ {
 namespace {
-
-double volume(const TopoDS_Shape& shape) {
-  GProp_GProps props;
-  BRepGProp::VolumeProperties(shape, props, 1e-10);  // adaptive: a thin body's faces
-  return props.Mass();
-}
-
-double area(const TopoDS_Shape& shape) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(shape, props);
-  return props.Mass();
-}
 
 Bnd_Box box_of(const TopoDS_Shape& shape) {
   Bnd_Box b;
@@ -76,7 +65,7 @@ TEST(OccBodyCut, ASolidKeepsItsPartOnTheNearSideClosedByTheCut) {
   FaceNames names;
   const TopoDS_Shape left = cut_beyond(box, CutPlane{gp_Pnt(0.5, 0, 0), gp_Dir(1, 1, 0), "cut"}, 1e-7, names);
   // x + y <= 0.5 of the box: a right triangle of legs 0.5, one deep.
-  EXPECT_NEAR(volume(left), 0.125, 1e-9);
+  EXPECT_NEAR(test::volume_of(left), 0.125, 1e-9);
   EXPECT_TRUE(TopExp_Explorer(left, TopAbs_SOLID).More());
 }
 
@@ -95,7 +84,7 @@ TEST(OccBodyCut, AShellCutObliquelyStaysOpenAlongTheCutAndKeepsItsNames) {
   // The side left: 2 pi r times the mean height 1 (the slant averages out round the axis).
   double side = 0.0;
   for (TopExp_Explorer f(left, TopAbs_FACE); f.More(); f.Next())
-    if (std::abs(area(f.Current()) - M_PI) > 1e-6) side = area(f.Current());
+    if (std::abs(test::area_of(f.Current()) - M_PI) > 1e-6) side = test::area_of(f.Current());
   EXPECT_NEAR(side, 2.0 * M_PI, 1e-6);
   // One free loop, along the cut; the kept faces named as the ones they come from.
   ShapeAnalysis_FreeBounds bounds(left, 1e-6, false, false);
@@ -129,7 +118,7 @@ TopoDS_Shape lofted_half_cylinder() {
 TEST(OccBodyCut, AFaceWhoseSectionThePlaneIsIsCutAlongThatSection) {
   FaceNames names;
   const TopoDS_Shape loft = lofted_half_cylinder();
-  const double whole = area(loft);
+  const double whole = test::area_of(loft);
   const TopoDS_Shape left = cut_beyond(loft, CutPlane{gp_Pnt(0, 0, 1.2), gp_Dir(0, 0, 1), "cut"}, 1e-7, names);
   ASSERT_EQ(faces_of(left), 1);
   const Bnd_Box b = box_of(left);
@@ -137,8 +126,8 @@ TEST(OccBodyCut, AFaceWhoseSectionThePlaneIsIsCutAlongThatSection) {
   EXPECT_NEAR(b.CornerMin().Z(), 0.0, 1e-6);
   // The half cylinder's side between z = 0 and 1.2 of radius 1 + 0.1 z (a cone's side, near enough:
   // the loft runs smoothly through the sections, within half a percent).
-  EXPECT_NEAR(area(left), M_PI * 1.2 * (1.0 + 0.06), 0.02);
-  EXPECT_LT(area(left), whole);
+  EXPECT_NEAR(test::area_of(left), M_PI * 1.2 * (1.0 + 0.06), 0.02);
+  EXPECT_LT(test::area_of(left), whole);
   // Its boundary's curves have 3D curves (the capping's plane finders need them).
   for (TopExp_Explorer e(left, TopAbs_EDGE); e.More(); e.Next()) {
     double first, last;
@@ -191,7 +180,7 @@ TEST(OccBodyCut, APinchedTipIsRefusedNamingTheKeyAndMeshesCutBlunt) {
       fluid_domain(skin, wall, far, CutPlane{gp_Pnt(0, 0, 1.8), gp::DZ(), "cut"}, 1e-6, names, repairs);
   // The wing's sections have half-axes 0.5 and 0.1 (1 - z / 2), linear in z: its volume below 1.8
   // is pi 0.05 times the integral of (1 - z / 2) from 0 to 1.8 (1.8 - 0.81).
-  EXPECT_NEAR(volume(domain), 4.0 * 8.0 * 8.0 - M_PI * 0.05 * (1.8 - 0.81), 1e-4);
+  EXPECT_NEAR(test::volume_of(domain), 4.0 * 8.0 * 8.0 - M_PI * 0.05 * (1.8 - 0.81), 1e-4);
   EXPECT_NE(repairs.front().find("cut the body at cut"), std::string::npos) << repairs.front();
 }
 

@@ -2,6 +2,7 @@
 // seam its trailing edge) is split into two halves of the same surface (crease_seam.hpp); a face
 // whose seam is smooth (a cylinder) is kept whole.
 #include "crease_seam.hpp"
+#include "shape_measures.hpp"
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -22,12 +23,6 @@
 
 namespace semimesh::occ {
 namespace {
-
-double surface_area(const TopoDS_Shape& shape) {
-  GProp_GProps props;
-  BRepGProp::SurfaceProperties(shape, props, 1e-10);  // adaptive: the leading edge's curvature
-  return props.Mass();
-}
 
 // A NACA 0012 section as one curve starting and ending at its sharp trailing edge x = 1, lofted
 // from z = 0 to 2: one face closed round, its seam on the sharp edge.
@@ -63,7 +58,7 @@ TEST(OccCreaseSeam, AFaceClosedRoundASharpEdgeIsSplitIntoTwoHalvesOfTheSameSurfa
   std::vector<std::string> repairs;
   const TopoDS_Shape split = with_crease_seams_split(skin, 1e-7, names, repairs);
   ASSERT_EQ(count_faces(split), 2);
-  EXPECT_NEAR(surface_area(split), surface_area(skin), 1e-9 * surface_area(skin));
+  EXPECT_NEAR(test::area_of(split), test::area_of(skin), 1e-9 * test::area_of(skin));
   ASSERT_EQ(repairs.size(), 1u);
   // No seam left, and two edges (the sharp edge and the split line) each between the two faces.
   TopTools_IndexedDataMapOfShapeListOfShape faces_of_edge;

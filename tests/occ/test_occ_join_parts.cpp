@@ -2,14 +2,13 @@
 // occ.join_wall with a far field box): the parts joined by OCCT's Booleans at load, and the bad
 // input it refuses, each naming the key.
 #include "fluid_domain.hpp"
+#include "shape_measures.hpp"
 #include "semimesh/cad/error.hpp"
 #include "semimesh/cad/labels.hpp"
 #include "semimesh/occ/occ_backend.hpp"
 #include "temp_path.hpp"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <GeomConvert.hxx>
 #include <GeomFill_Generator.hxx>
@@ -275,9 +274,7 @@ TEST(OccJoinParts, APinchedLoopInsideTheWallPartIsTrimmedInsideIt) {
   // sections): above the fuselage's crest (z = 0; the crest's fall within the wing's 0.1 thickness
   // is under 0.005) its volume is pi 0.5 0.1 / 2.3 times the integral of (z + 0.3) from 0 to 2.
   const double wing_above = M_PI * 0.05 / 2.3 * (2.0 + 0.6);
-  GProp_GProps props;
-  BRepGProp::VolumeProperties(domain, props);
-  EXPECT_NEAR(std::abs(props.Mass()), 512.0 - M_PI * 8.0 - wing_above, 2e-3);
+  EXPECT_NEAR(std::abs(test::volume_of(domain)), 512.0 - M_PI * 8.0 - wing_above, 2e-3);
 }
 
 }  // namespace

@@ -545,14 +545,7 @@ mesh::Mesh curve_mesh(const mesh::Mesh& linear, const cad::Model& model, const C
 
 CurvedAhead curve_ahead(const mesh::Mesh& so_far, const cad::Model& model, const CurvingParams& params,
                         const std::atomic<bool>& stop) {
-#ifdef _OPENMP
-  // One thread: this work goes beside another (TetGen's process), not over both cores.
-  struct OneThread {
-    int was = omp_get_max_threads();
-    OneThread() { omp_set_num_threads(1); }
-    ~OneThread() { omp_set_num_threads(was); }
-  } one_thread;
-#endif
+  const detail::OneThreadScope one_thread;  // beside TetGen's process, not over both cores
   CurvedAhead ahead;
   try {
     Curver curver(so_far, model, params, {}, nullptr, &ahead, &stop);

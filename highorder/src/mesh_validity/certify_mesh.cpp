@@ -116,13 +116,7 @@ std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth
                                            const std::atomic<bool>& stop) {
   if (max_depth < 0)
     throw std::invalid_argument("certify_ahead: max_depth = " + std::to_string(max_depth) + " must be >= 0");
-#ifdef _OPENMP
-  struct OneThread {
-    int was = omp_get_max_threads();
-    OneThread() { omp_set_num_threads(1); }
-    ~OneThread() { omp_set_num_threads(was); }
-  } one_thread;
-#endif
+  const detail::OneThreadScope one_thread;  // beside TetGen's process, not over both cores
   std::vector<InheritedBounds> out;
   out.reserve(mesh.elements().size());
   for (std::size_t e = 0; e < mesh.elements().size() && !stop.load(std::memory_order_relaxed); ++e) {
