@@ -43,6 +43,7 @@
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -549,6 +550,29 @@ mesh::Mesh raise_order(const Config& config, const cad::Model& model, const mesh
   });
 }
 
+// The elements with no entry in `inherited` (ascending) other than tetrahedra (the far field's,
+// straight-sided: certified about as fast as they are fingerprinted), ascending.
+std::vector<std::size_t> curved_without_bounds(const mesh::Mesh& mesh, const std::vector<ho::InheritedBounds>& inherited) {
+  std::vector<std::size_t> wanted;
+  auto entry = inherited.begin();
+  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
+    while (entry != inherited.end() && entry->element < e) ++entry;
+    if (entry != inherited.end() && entry->element == e) continue;
+    if (mesh.elements()[e].shape != ho::Shape::Tetrahedron) wanted.push_back(e);
+  }
+  return wanted;
+}
+
+// Two lists of bounds of distinct elements, each ascending, as one ascending list.
+std::vector<ho::InheritedBounds> merged_bounds(std::vector<ho::InheritedBounds> a, std::vector<ho::InheritedBounds> b) {
+  if (b.empty()) return a;
+  std::vector<ho::InheritedBounds> out;
+  out.reserve(a.size() + b.size());
+  std::merge(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out),
+             [](const ho::InheritedBounds& x, const ho::InheritedBounds& y) { return x.element < y.element; });
+  return out;
+}
+
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
 mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& linear, double chord,
@@ -579,9 +603,21 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
   });
   coarse = mesh::Mesh();  // not needed any more
   const std::size_t split_elements = split.mesh.elements().size();
+  std::vector<ho::InheritedBounds> certified_behind;  // beside the weld's rebuild, for the checks
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
-      mesh::Mesh welded = weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report).mesh;
+      // The weld rebuilds the entities on one thread: the other certifies, behind that rebuild, the
+      // elements the split gave no bounds (the wake's pieces, the curved unsplit ones) as the checks
+      // will; the checks take those whose nodes are then still the same (fingerprints).
+      const std::vector<std::size_t> wanted = curved_without_bounds(split.mesh, split.inherited);
+      const double floor = config.checks.min_scaled_jacobian;
+      // Depth 0: the checks take only bounds decided by the first expansion (certify_mesh), which
+      // are the same at any depth; an element that needs more is left to them.
+      const BesideRebuild certify = [&](const mesh::Mesh& being_rebuilt, const std::atomic<std::size_t>& rebuilt,
+                                        const std::atomic<bool>& stop) {
+        certified_behind = ho::certify_behind(being_rebuilt, wanted, rebuilt, 0, floor, stop);
+      };
+      mesh::Mesh welded = weld_coincident_nodes(std::move(split.mesh), kWeldTolerance * chord, report, certify).mesh;
       // The weld re-extends the far field next to the pre-cut rims harmonically: bend it with the
       // bare triangles again (follow_exposed_body in raise_order moved its vertices already).
       ho::follow_exposed_body(welded, "wing", "farfield", /*moved_before=*/true);
@@ -589,7 +625,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     });
   // The weld keeps the elements in order (the bounds' element indices hold); an element it moved
   // no longer matches its fingerprint.
-  inherited = std::move(split.inherited);
+  inherited = merged_bounds(std::move(split.inherited), std::move(certified_behind));
   if (split.mesh.elements().size() != split_elements) inherited.clear();
   if (layers > 1) {
     result.layers.requested_ratio = ratio;
@@ -701,20 +737,27 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     if (report) report(0.0, "conformity, volume and certification");
     std::future<void> serial_checks =
         std::async(std::launch::async, [&] { conformity_and_volume(g, surfaces, result); });
-    std::exception_ptr validity_error;
+    std::exception_ptr validity_error, geometric_error;
     try {
       result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
                                                progress_part(report, 0.0, 0.9), &inherited);
     } catch (...) {
       validity_error = std::current_exception();
     }
-    serial_checks.get();  // its error first, as when it ran first
-    if (validity_error) std::rethrow_exception(validity_error);
+    // The geometric error (serial, reads the mesh only) while the serial passes may still run.
     if (report) report(0.9, "geometric error");
-    std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
-    curved.push_back(g.roles.wall);
-    const ho::GeometricError error = ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
-    result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
+    try {
+      std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
+      curved.push_back(g.roles.wall);
+      const ho::GeometricError error =
+          ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
+      result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
+    } catch (...) {
+      geometric_error = std::current_exception();
+    }
+    serial_checks.get();  // the errors in the order the passes were written: theirs first
+    if (validity_error) std::rethrow_exception(validity_error);
+    if (geometric_error) std::rethrow_exception(geometric_error);
   });
   for (const mesh::Element& e : result.mesh.elements()) {
     ++result.elements_by_type[ho::to_string(e.shape)];

@@ -3,11 +3,17 @@
 #include "semimesh/ho/curving/extend_inward.hpp"
 #include "semimesh/mesh/node_layout.hpp"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -204,9 +210,41 @@ std::vector<mesh::NodeId> coincident_vertices(const mesh::Mesh& mesh, double tol
   return to;
 }
 
+// Runs `beside` on a thread of its own at the lowest priority (Linux: a thread's own nice value)
+// while it lives; the destructor tells it to stop and waits for it.
+class BesideThread {
+ public:
+  BesideThread(const BesideRebuild& beside, const mesh::Mesh& mesh) {
+    if (!beside) return;
+    try {
+      run_ = std::async(std::launch::async, [&beside, &mesh, this] {
+        ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+        try {
+          beside(mesh, rebuilt_, stop_);
+        } catch (...) {  // speculative: the stages after do what it did not
+        }
+      });
+    } catch (const std::system_error&) {  // no thread to be had: the weld alone
+    }
+  }
+  ~BesideThread() {
+    stop_.store(true);
+    if (run_.valid()) run_.wait();
+  }
+  BesideThread(const BesideThread&) = delete;
+  BesideThread& operator=(const BesideThread&) = delete;
+  std::atomic<std::size_t>* rebuilt() { return &rebuilt_; }
+
+ private:
+  std::atomic<std::size_t> rebuilt_{0};
+  std::atomic<bool> stop_{false};
+  std::future<void> run_;
+};
+
 }  // namespace
 
-Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress) {
+Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress,
+                             const BesideRebuild& beside) {
   const auto report = [&](double fraction, const char* step) {
     if (progress) progress(fraction, step);
   };
@@ -222,7 +260,11 @@ Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCa
   const auto moved = carry_inwards(mesh, snapped, to);
   out.carried = moved.size();
   report(0.2, "mesh");
-  mesh.replace_nodes(std::move(to), moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); });
+  {
+    BesideThread beside_rebuild(beside, mesh);
+    mesh.replace_nodes(std::move(to), moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); },
+                       beside_rebuild.rebuilt());
+  }
   out.mesh = std::move(mesh);
   return out;
 }

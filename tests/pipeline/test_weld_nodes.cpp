@@ -14,9 +14,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -57,6 +59,34 @@ TEST(WeldNodes, DoubledFaceBecomesOneKeepingOnlyUsedNodesAndReportsProgress) {
   EXPECT_EQ(seen.back().first, 1.0);
   EXPECT_EQ(seen.front().second, "vertices");
   EXPECT_EQ(seen.back().second, "mesh");
+}
+
+// The work beside the rebuild reads each element once it is rebuilt and sees its final points; it
+// runs on another thread, ends before the weld returns, and the weld's mesh is the same without it.
+TEST(WeldNodes, WorkBesideTheRebuildSeesEachElementOnceRebuiltOnAnotherThread) {
+  const mesh::Mesh m = two_hexes_with_a_doubled_face();
+  std::vector<Eigen::MatrixX3d> seen;
+  std::thread::id beside_thread;
+  bool stopped = false;
+  const BesideRebuild beside = [&](const mesh::Mesh& being_rebuilt, const std::atomic<std::size_t>& rebuilt,
+                                   const std::atomic<bool>& stop) {
+    beside_thread = std::this_thread::get_id();
+    for (std::size_t e = 0; e < being_rebuilt.elements().size(); ++e) {
+      while (rebuilt.load(std::memory_order_acquire) <= e)
+        if (stop.load() && rebuilt.load() <= e) return;  // `stop` comes after the last store
+      seen.push_back(being_rebuilt.element_coordinates(e));
+    }
+    while (!stop.load()) std::this_thread::yield();
+    stopped = true;
+  };
+  const Welded w = weld_coincident_nodes(m, 1e-9, {}, beside);
+  EXPECT_TRUE(stopped);
+  EXPECT_NE(beside_thread, std::this_thread::get_id());
+  ASSERT_EQ(seen.size(), 2u);
+  for (std::size_t e = 0; e < 2; ++e) EXPECT_EQ(seen[e], w.mesh.element_coordinates(e)) << e;
+  const Welded alone = weld_coincident_nodes(m, 1e-9);
+  ASSERT_EQ(alone.mesh.num_nodes(), w.mesh.num_nodes());
+  for (std::size_t e = 0; e < 2; ++e) EXPECT_EQ(alone.mesh.element_nodes(e), w.mesh.element_nodes(e)) << e;
 }
 
 constexpr int kOrder = 3;

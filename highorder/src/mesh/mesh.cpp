@@ -503,7 +503,7 @@ std::vector<NodeId> Mesh::compact_nodes(const std::vector<char>& used,
 }
 
 void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
-                         const std::function<void(double)>& done) {
+                         const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt) {
   for (const auto& [id, x] : moved)
     if (cad_attachment(id).kind != CadAttachment::None)
       throw std::invalid_argument("Mesh::replace_nodes: node " + std::to_string(id) +
@@ -558,6 +558,8 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
         if (done && e % report_every == 0) done(static_cast<double>(e) / static_cast<double>(count));
         const Element& was = elements_[e];
         elements_[e] = linked_element(was.shape, ids, was.region, e);
+        // The entities were reserved at their largest: no vector moves under a reader of element e.
+        if (rebuilt) rebuilt->store(e + 1, std::memory_order_release);
       });
   std::vector<NodeId> ids;
   for (std::size_t b = 0; b < old.boundary_.size(); ++b) {

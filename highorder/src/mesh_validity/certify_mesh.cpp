@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace semimesh::ho {
 namespace {
@@ -112,21 +114,53 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
   return out;
 }
 
+namespace {
+
+void check_depth(const char* who, int max_depth) {
+  if (max_depth < 0)
+    throw std::invalid_argument(std::string(who) + ": max_depth = " + std::to_string(max_depth) + " must be >= 0");
+}
+
+// Element e's certificate as certify_mesh computes it, with its fingerprint.
+InheritedBounds certificate(const char* who, const mesh::Mesh& mesh, std::size_t e, int max_depth,
+                            double min_scaled_jacobian) {
+  const ho::Shape shape = mesh.elements()[e].shape;
+  if (dimension(shape) != 3)
+    throw std::invalid_argument(std::string(who) + ": element " + std::to_string(e) + " is a " + to_string(shape) +
+                                "; only 3D elements can be certified");
+  return {e, element_fingerprint(mesh, e),
+          certify_jacobian(shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e), max_depth,
+                           min_scaled_jacobian)};
+}
+
+}  // namespace
+
 std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
                                            const std::atomic<bool>& stop) {
-  if (max_depth < 0)
-    throw std::invalid_argument("certify_ahead: max_depth = " + std::to_string(max_depth) + " must be >= 0");
+  check_depth("certify_ahead", max_depth);
   const detail::OneThreadScope one_thread;  // beside TetGen's process, not over both cores
   std::vector<InheritedBounds> out;
   out.reserve(mesh.elements().size());
-  for (std::size_t e = 0; e < mesh.elements().size() && !stop.load(std::memory_order_relaxed); ++e) {
-    const ho::Shape shape = mesh.elements()[e].shape;
-    if (dimension(shape) != 3)
-      throw std::invalid_argument("certify_ahead: element " + std::to_string(e) + " is a " + to_string(shape) +
-                                  "; only 3D elements can be certified");
-    out.push_back({e, element_fingerprint(mesh, e),
-                   certify_jacobian(shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e), max_depth,
-                                    min_scaled_jacobian)});
+  for (std::size_t e = 0; e < mesh.elements().size() && !stop.load(std::memory_order_relaxed); ++e)
+    out.push_back(certificate("certify_ahead", mesh, e, max_depth, min_scaled_jacobian));
+  return out;
+}
+
+std::vector<InheritedBounds> certify_behind(const mesh::Mesh& mesh, const std::vector<std::size_t>& wanted,
+                                            const std::atomic<std::size_t>& built, int max_depth,
+                                            double min_scaled_jacobian, const std::atomic<bool>& stop) {
+  check_depth("certify_behind", max_depth);
+  const detail::OneThreadScope one_thread;  // on the core the builder leaves idle, not over both
+  std::vector<InheritedBounds> out;
+  out.reserve(wanted.size());
+  for (std::size_t e : wanted) {
+    // A short sleep, not a spin: the builder's core is the one that must not be slowed.
+    while (built.load(std::memory_order_acquire) <= e) {
+      if (stop.load(std::memory_order_relaxed)) return out;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    if (stop.load(std::memory_order_relaxed)) return out;
+    out.push_back(certificate("certify_behind", mesh, e, max_depth, min_scaled_jacobian));
   }
   return out;
 }

@@ -286,18 +286,37 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
 
 }  // namespace
 
-// The integral of field(x, dA) over the boundary faces `keep` accepts, each at the mesh's order
-// (dA: the area element, outward through the face's element); faces without an element are
-// counted in `orphans` and skipped.
-template <class Keep, class Field>
-double boundary_flux(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field field, std::size_t* orphans) {
-  // Owner of each face entity: element * 8 + local face (the last one seen; a boundary face has one).
+namespace {
+
+// Owner of each face entity: element * 8 + local face (the last one seen; a boundary face has one).
+std::vector<long> face_owners(const mesh::Mesh& mesh) {
   std::vector<long> owner(mesh.faces().size(), -1);
   for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
     const mesh::Element& element = mesh.elements()[e];
     for (std::size_t f = 0; f < ho::faces(element.shape).size(); ++f) owner[element.faces[f]] = static_cast<long>(e * 8 + f);
   }
+  return owner;
+}
+
+// The terms of one face's flux, weight times field at each point, in point order.
+template <class Field>
+void face_flux_terms(const mesh::Mesh& mesh, std::size_t element, const FaceRule& rule, Field field, double* terms) {
+  const Eigen::MatrixX3d x = mesh.element_coordinates(element);
+  for (int q = 0; q < rule.rule.weights.size(); ++q) {
+    const Eigen::Matrix3d j = jacobian_at(rule.rule, q, x);
+    const Eigen::Vector3d point = (rule.rule.values.row(q) * x).transpose();
+    terms[q] = rule.rule.weights(q) * field(point, (j * rule.t1).cross(j * rule.t2));
+  }
+}
+
+// The integral of field(x, dA) over the boundary faces `keep` accepts, each at the mesh's order
+// (dA: the area element, outward through the face's element); faces without an element are
+// counted in `orphans` and skipped. One running sum over the faces and their points: the reference.
+template <class Keep, class Field>
+double boundary_flux_one_thread(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field field, std::size_t* orphans) {
+  const std::vector<long> owner = face_owners(mesh);
   double flux = 0.0;
+  std::vector<double> terms;
   for (const mesh::BoundaryFace& face : mesh.boundary_faces()) {
     if (!keep(face)) continue;
     if (owner[face.face] < 0) {
@@ -305,19 +324,63 @@ double boundary_flux(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field 
       continue;
     }
     const std::size_t e = static_cast<std::size_t>(owner[face.face] / 8);
-    const int local = static_cast<int>(owner[face.face] % 8);
-    const FaceRule& rule = rules.face(mesh.elements()[e].shape, local);
-    const Eigen::MatrixX3d x = mesh.element_coordinates(e);
-    for (int q = 0; q < rule.rule.weights.size(); ++q) {
-      const Eigen::Matrix3d j = jacobian_at(rule.rule, q, x);
-      const Eigen::Vector3d point = (rule.rule.values.row(q) * x).transpose();
-      flux += rule.rule.weights(q) * field(point, (j * rule.t1).cross(j * rule.t2));
-    }
+    const FaceRule& rule = rules.face(mesh.elements()[e].shape, static_cast<int>(owner[face.face] % 8));
+    terms.resize(static_cast<std::size_t>(rule.rule.weights.size()));
+    face_flux_terms(mesh, e, rule, field, terms.data());
+    for (double t : terms) flux += t;
   }
   return flux;
 }
 
-MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule) {
+// One face of boundary_flux's sum: its element, its rule and where its terms start in a block.
+struct FluxFace {
+  std::size_t element = 0;
+  const FaceRule* rule = nullptr;
+  std::size_t first_term = 0;
+};
+constexpr std::size_t kFluxBlock = 8192;  // faces whose terms are held at once
+
+// boundary_flux_one_thread's sum with its terms computed on `workers` threads, a block of faces at
+// a time, and added on this thread in the same order: the same bits (the serial tail of the checks).
+template <class Keep, class Field>
+double boundary_flux(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field field, std::size_t* orphans,
+                     std::size_t workers) {
+  const std::vector<long> owner = face_owners(mesh);
+  std::vector<FluxFace> faces;  // the rules looked up here: the cache is not thread-safe
+  for (const mesh::BoundaryFace& face : mesh.boundary_faces()) {
+    if (!keep(face)) continue;
+    if (owner[face.face] < 0) {
+      if (orphans) ++*orphans;
+      continue;
+    }
+    const std::size_t e = static_cast<std::size_t>(owner[face.face] / 8);
+    faces.push_back({e, &rules.face(mesh.elements()[e].shape, static_cast<int>(owner[face.face] % 8)), 0});
+  }
+  double flux = 0.0;
+  std::vector<double> terms;
+  for (std::size_t first = 0; first < faces.size(); first += kFluxBlock) {
+    const std::size_t end = std::min(faces.size(), first + kFluxBlock);
+    std::size_t count = 0;
+    for (std::size_t k = first; k < end; ++k)
+      faces[k].first_term = count, count += static_cast<std::size_t>(faces[k].rule->rule.weights.size());
+    terms.resize(count);
+    auto terms_of_stride = [&](std::size_t w) {
+      for (std::size_t k = first + w; k < end; k += workers)
+        face_flux_terms(mesh, faces[k].element, *faces[k].rule, field, terms.data() + faces[k].first_term);
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(terms_of_stride, w);
+    terms_of_stride(0);
+    for (std::thread& t : pool) t.join();
+    for (double t : terms) flux += t;
+  }
+  return flux;
+}
+
+std::size_t volume_workers() { return std::max<std::size_t>(1, std::thread::hardware_concurrency()); }
+
+// mesh_volume on `threads` threads; 1: the reference, every sum a plain loop on this thread.
+MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t threads) {
   RuleCache rules(mesh.order(), mesh.node_set(), rule);
   MeshVolume result;
   const std::vector<ElementBatch> batches = element_batches(mesh);
@@ -325,8 +388,7 @@ MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule) {
   for (const ElementBatch& batch : batches)
     batch_rules.push_back({&rules.volume(batch.shape), rules.product(batch.shape), rule == VolumeRule::Exact});
   std::vector<double> partial(batches.size(), 0.0);
-  const std::size_t workers =
-      std::max<std::size_t>(1, std::min<std::size_t>(std::thread::hardware_concurrency(), batches.size()));
+  const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(threads, batches.size()));
   auto integrate_stride = [&](std::size_t first) {
     for (std::size_t b = first; b < batches.size(); b += workers) partial[b] = batch_volume(mesh, batches[b], batch_rules[b]);
   };
@@ -336,12 +398,20 @@ MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule) {
   for (std::thread& t : pool) t.join();
   for (double v : partial) result.element_volume += v;  // in batch order: independent of the threads
 
-  result.boundary_volume = boundary_flux(mesh, rules, [](const mesh::BoundaryFace&) { return true; },
-                                         [](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return x.dot(area); },
-                                         &result.boundary_faces_without_element);
+  const auto all = [](const mesh::BoundaryFace&) { return true; };
+  const auto x_dot_area = [](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return x.dot(area); };
+  result.boundary_volume =
+      threads == 1 ? boundary_flux_one_thread(mesh, rules, all, x_dot_area, &result.boundary_faces_without_element)
+                   : boundary_flux(mesh, rules, all, x_dot_area, &result.boundary_faces_without_element, threads);
   result.boundary_volume /= 3.0;
   return result;
 }
+
+}  // namespace
+
+MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule) { return mesh_volume_on(mesh, rule, volume_workers()); }
+
+MeshVolume mesh_volume_one_thread(const mesh::Mesh& mesh, VolumeRule rule) { return mesh_volume_on(mesh, rule, 1); }
 
 namespace {
 
@@ -399,7 +469,7 @@ VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<c
   result.box_volume += boundary_flux(
                            mesh, rules, [&](const mesh::BoundaryFace& f) { return f.group == group; },
                            [&](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return area.dot(x - p); },
-                           nullptr) / 3.0;
+                           nullptr, volume_workers()) / 3.0;
   return result;
 }
 
@@ -428,7 +498,8 @@ VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface
   const int group = static_cast<int>(it - mesh.group_names().begin());
   result.box_volume = boundary_flux(
       mesh, rules, [&](const mesh::BoundaryFace& f) { return f.group == group; },
-      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return n.dot(area) * n.dot(x - point); }, nullptr);
+      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return n.dot(area) * n.dot(x - point); }, nullptr,
+      volume_workers());
   return result;
 }
 

@@ -16,9 +16,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <thread>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -359,6 +361,46 @@ TEST(CertifyAhead, GivesCertifyMeshsValidityAndStopsWhenTold) {
     EXPECT_EQ(ahead[e].fingerprint, element_fingerprint(curved, e));
     EXPECT_EQ(ahead[e].bounds.min_lower, reference.bounds[e].min_lower) << e;
     EXPECT_EQ(ahead[e].bounds.max_upper, reference.bounds[e].max_upper) << e;
+  }
+}
+
+// certify_behind on every other element, the mesh's elements made available one at a time by
+// another thread: the reference's certificates of exactly those; with depth 0, the certificates
+// certify_mesh takes give its validity; nothing made available and told to stop, none.
+TEST(CertifyBehind, CertifiesTheWantedElementsAsTheyAreBuiltAndStopsWhenTold) {
+  const mesh::Mesh curved = curve_mesh(upper_layer(12, 2, 0.02, true), *wing().model, {4});
+  const std::size_t n = curved.elements().size();
+  std::vector<std::size_t> wanted;
+  for (std::size_t e = 1; e < n; e += 2) wanted.push_back(e);
+  const std::atomic<bool> stop{true}, go{false};
+  const std::atomic<std::size_t> none{0};
+  EXPECT_TRUE(certify_behind(curved, wanted, none, 8, 0.1, stop).empty());
+  std::atomic<std::size_t> built{0};
+  std::thread builder([&] {
+    for (std::size_t e = 1; e <= n; ++e) {
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+      built.store(e, std::memory_order_release);
+    }
+  });
+  const std::vector<InheritedBounds> behind = certify_behind(curved, wanted, built, 8, 0.1, go);
+  builder.join();
+  const MeshValidity reference = certify_mesh(curved, 8, 0.1);
+  ASSERT_EQ(behind.size(), wanted.size());
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    EXPECT_EQ(behind[k].element, wanted[k]);
+    EXPECT_EQ(behind[k].fingerprint, element_fingerprint(curved, wanted[k]));
+    EXPECT_EQ(behind[k].bounds.min_lower, reference.bounds[wanted[k]].min_lower) << wanted[k];
+    EXPECT_EQ(behind[k].bounds.max_upper, reference.bounds[wanted[k]].max_upper) << wanted[k];
+  }
+  const std::vector<InheritedBounds> first_only = certify_behind(curved, wanted, built, 0, 0.1, go);
+  const MeshValidity taken = certify_mesh(curved, 8, 0.1, {}, &first_only);
+  EXPECT_GT(taken.inherited, wanted.size() / 2);
+  EXPECT_EQ(taken.invalid_elements, reference.invalid_elements);
+  EXPECT_EQ(taken.min_scaled_jacobian, reference.min_scaled_jacobian);
+  EXPECT_EQ(taken.median_scaled_jacobian, reference.median_scaled_jacobian);
+  for (std::size_t e = 0; e < n; ++e) {
+    EXPECT_EQ(taken.bounds[e].min_lower, reference.bounds[e].min_lower) << e;
+    EXPECT_EQ(taken.bounds[e].max_upper, reference.bounds[e].max_upper) << e;
   }
 }
 

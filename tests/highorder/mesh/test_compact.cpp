@@ -10,11 +10,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -315,6 +317,33 @@ TEST(Compact, ReplacingNodesInPlaceOverManyBlocksGivesTheEntitiesOfAFreshBuild) 
   ASSERT_FALSE(reported.empty());
   EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
   EXPECT_EQ(reported.back(), 1.0);
+}
+
+// Another thread reading each element as soon as `rebuilt` passes it sees the node list and points
+// it has when the rebuild is over (what the weld's certification behind the rebuild relies on).
+TEST(Compact, ReplacingNodesInPlacePublishesEachElementOnlyWhenItNoLongerChanges) {
+  ManyTets t = many_doubled_tets(18);
+  const std::size_t n = t.mesh.elements().size();
+  std::atomic<std::size_t> rebuilt{0};
+  std::atomic<bool> over{false};
+  std::vector<std::vector<NodeId>> seen(n);
+  std::vector<Eigen::MatrixX3d> seen_points(n);
+  std::thread reader([&] {
+    for (std::size_t e = 0; e < n; ++e) {
+      while (rebuilt.load(std::memory_order_acquire) <= e)
+        if (over.load() && rebuilt.load() <= e) return;  // `over` comes after the last store
+      seen[e] = t.mesh.element_nodes(e);
+      seen_points[e] = t.mesh.element_coordinates(e);
+    }
+  });
+  t.mesh.replace_nodes(t.to, {}, {}, &rebuilt);
+  over.store(true);
+  reader.join();
+  ASSERT_EQ(rebuilt.load(), n);
+  for (std::size_t e = 0; e < n; ++e) {
+    ASSERT_EQ(seen[e], t.mesh.element_nodes(e)) << e;
+    ASSERT_EQ(seen_points[e], t.mesh.element_coordinates(e)) << e;
+  }
 }
 
 TEST(Compact, ReplacingNodesInPlaceThrowsTheFreshBuildsErrorFromALateBlock) {

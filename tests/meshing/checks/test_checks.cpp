@@ -286,6 +286,34 @@ Mesh bent_element(ho::Shape shape, int order, ho::NodeSet set) {
   return m;
 }
 
+// `count` separate bent order-2 hexahedra side by side, every face of each a boundary face.
+Mesh separate_bent_hexes(int count) {
+  Mesh m(2, ho::NodeSet::Equispaced);
+  const Eigen::MatrixX3d r = ho::reference_nodes(ho::Shape::Hexahedron, 2, ho::NodeSet::Equispaced);
+  for (int h = 0; h < count; ++h) {
+    std::vector<NodeId> ids;
+    for (Eigen::Index i = 0; i < r.rows(); ++i) {
+      const double x = r(i, 0) + 3.0 * h, y = r(i, 1), z = r(i, 2);
+      ids.push_back(m.add_node({x + 0.05 * y * z, 0.15 * std::sin(0.5 * x) + y, z + 0.04 * std::cos(x) * y}));
+    }
+    const std::size_t e = m.add_element(ho::Shape::Hexahedron, ids);
+    for (std::uint32_t f : m.elements()[e].faces) m.add_boundary_face("outer", ho::Shape::Quadrilateral, m.face_nodes(f));
+  }
+  return m;
+}
+
+// mesh_volume's threads add the same terms in the same order as its one-thread reference: the same
+// bits, over several of the boundary flux's blocks of faces.
+TEST(Volume, ThreadsGiveTheOneThreadReferencesSumsBitForBit) {
+  const Mesh m = separate_bent_hexes(2000);
+  ASSERT_GT(m.boundary_faces().size(), 10000u);
+  const MeshVolume threads = mesh_volume(m), one = mesh_volume_one_thread(m);
+  EXPECT_EQ(threads.element_volume, one.element_volume);
+  EXPECT_EQ(threads.boundary_volume, one.boundary_volume);
+  EXPECT_EQ(threads.boundary_faces_without_element, 0u);
+  EXPECT_NEAR(threads.boundary_volume, threads.element_volume, 1e-10 * threads.element_volume);
+}
+
 // mesh_volume's default rule against `reference` on bent elements of every shape, orders 1-6 and
 // both node sets: equal within `tolerance` of the volume.
 void expect_exact_rule_matches(VolumeRule reference, double tolerance) {

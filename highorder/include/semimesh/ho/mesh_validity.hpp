@@ -65,4 +65,13 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth = 8, double min_
 std::vector<InheritedBounds> certify_ahead(const mesh::Mesh& mesh, int max_depth, double min_scaled_jacobian,
                                            const std::atomic<bool>& stop);
 
+/// certify_ahead's certificates of the elements `wanted` (ascending) of a mesh that another thread
+/// is still building (Mesh::replace_nodes): element e is read once `built` exceeds e, waiting until
+/// it does; from then on its node list and nodes must no longer change. Returns those certified
+/// when every wanted element is, or when `stop` is set (checked between elements and while waiting).
+/// Throws as certify_ahead does.
+std::vector<InheritedBounds> certify_behind(const mesh::Mesh& mesh, const std::vector<std::size_t>& wanted,
+                                            const std::atomic<std::size_t>& built, int max_depth,
+                                            double min_scaled_jacobian, const std::atomic<bool>& stop);
+
 }  // namespace semimesh::ho

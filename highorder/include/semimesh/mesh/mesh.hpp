@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -187,9 +188,12 @@ class Mesh {
   /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
   /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
   /// entity different nodes) leave it unusable. `done` (optional) receives the fraction of
-  /// elements rebuilt, about a hundred times.
+  /// elements rebuilt, about a hundred times. `rebuilt` (optional) is set (release) to the number
+  /// of elements rebuilt after each one: their node lists and the nodes' positions no longer
+  /// change, and another thread may read them (element_nodes, element_coordinates, node) while
+  /// the rebuild goes on.
   void replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
-                     const std::function<void(double)>& done = {});
+                     const std::function<void(double)>& done = {}, std::atomic<std::size_t>* rebuilt = nullptr);
 
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
   std::size_t memory_bytes() const;

@@ -38,6 +38,10 @@ enum class VolumeRule { Exact, Quadrature, Generous };
 /// polynomial det J of tets, prisms and hexes; faces always with the generous rule).
 MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact);
 
+/// mesh_volume on this thread alone, each sum a plain loop: the reference mesh_volume's threads
+/// must match bit for bit (they compute the same terms and add them in the same order).
+MeshVolume mesh_volume_one_thread(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact);
+
 /// Volume of the solid bounded by `faces` (triangles and quads counter-clockwise seen from OUTSIDE
 /// the solid) and, where the surface is open, by the plane through `plane_point` with normal
 /// `plane_normal` (the wall under a wing). Exact for planar facets; quads are split into two triangles.

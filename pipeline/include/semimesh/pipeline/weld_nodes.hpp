@@ -6,7 +6,9 @@
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/progress.hpp"
 
+#include <atomic>
 #include <cstddef>
+#include <functional>
 
 namespace semimesh::pipeline {
 
@@ -31,7 +33,14 @@ struct Welded {
 /// are another face's in no rotation or reflection, and std::invalid_argument (from
 /// Mesh::add_element) when two elements would then give one edge or face different nodes.
 /// `progress`: the search (steps "vertices", "edges and faces", "inwards"), then the rebuild
-/// ("mesh"), from the calling thread.
-Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress = {});
+/// ("mesh"), from the calling thread. `beside` (optional): work for the core the rebuild leaves
+/// idle, run on a thread of its own at the lowest priority with the mesh being rebuilt, the number
+/// of its elements rebuilt so far (Mesh::replace_nodes' `rebuilt`) and a flag set once the rebuild
+/// is over (or failed), after which it must not read the mesh; the weld waits for it before it
+/// returns. Its exceptions are dropped: what it did not do, the stages after do.
+using BesideRebuild =
+    std::function<void(const mesh::Mesh&, const std::atomic<std::size_t>& rebuilt, const std::atomic<bool>& stop)>;
+Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress = {},
+                             const BesideRebuild& beside = {});
 
 }  // namespace semimesh::pipeline
