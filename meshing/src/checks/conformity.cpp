@@ -5,6 +5,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <exception>
+#include <future>
+#include <thread>
 #include <tuple>
 
 namespace semimesh::checks {
@@ -154,19 +157,82 @@ std::string FaceProblem::describe(const mesh::Mesh& mesh) const {
   return text;
 }
 
-ConformityResult check_conformity(const mesh::Mesh& mesh) {
-  std::vector<Occurrence> all = collect_occurrences(mesh);
-  std::sort(all.begin(), all.end(), [](const Occurrence& a, const Occurrence& b) {
-    return std::tie(a.key, a.boundary, a.owner, a.local) < std::tie(b.key, b.boundary, b.owner, b.local);
+namespace {
+
+bool occurs_before(const Occurrence& a, const Occurrence& b) {
+  return std::tie(a.key, a.boundary, a.owner, a.local) < std::tie(b.key, b.boundary, b.owner, b.local);
+}
+
+// Runs part(k) for k in [0, parts) on threads of their own, part 0 on this one.
+template <class Part>
+void run_parts(std::size_t parts, const Part& part) {
+  std::vector<std::future<void>> others;
+  for (std::size_t k = 1; k < parts; ++k) others.push_back(std::async(std::launch::async, part, k));
+  std::exception_ptr error;
+  try {
+    part(0);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  for (auto& other : others) other.wait();
+  if (error) std::rethrow_exception(error);
+  for (auto& other : others) other.get();
+}
+
+// `all` sorted by occurs_before: equal parts sorted on their own threads, then merged. Every
+// occurrence differs from every other (owner, local face), so the order is the one std::sort gives.
+void sort_occurrences(std::vector<Occurrence>& all, std::size_t parts) {
+  std::vector<std::size_t> bounds;
+  for (std::size_t k = 0; k <= parts; ++k) bounds.push_back(all.size() * k / parts);
+  run_parts(parts, [&](std::size_t k) {
+    std::sort(all.begin() + static_cast<long>(bounds[k]), all.begin() + static_cast<long>(bounds[k + 1]), occurs_before);
   });
-  ConformityResult result;
+  for (std::size_t k = 1; k < parts; ++k)
+    std::inplace_merge(all.begin(), all.begin() + static_cast<long>(bounds[k]),
+                       all.begin() + static_cast<long>(bounds[k + 1]), occurs_before);
+}
+
+// The faces of sorted occurrences [first, end) classified into `result`.
+void classify_range(const mesh::Mesh& mesh, const std::vector<Occurrence>& all, std::size_t first, std::size_t end,
+                    ConformityResult& result) {
   std::vector<const Occurrence*> uses;
-  for (std::size_t i = 0; i < all.size();) {
+  for (std::size_t i = first; i < end;) {
     std::size_t j = i;
     uses.clear();
-    for (; j < all.size() && all[j].key == all[i].key; ++j) uses.push_back(&all[j]);
+    for (; j < end && all[j].key == all[i].key; ++j) uses.push_back(&all[j]);
     classify(mesh, uses, result);
     i = j;
+  }
+}
+
+// Where the sorted occurrences split into about equal parts without splitting a face's uses.
+std::vector<std::size_t> face_aligned_bounds(const std::vector<Occurrence>& all, std::size_t parts) {
+  std::vector<std::size_t> bounds{0};
+  for (std::size_t k = 1; k < parts; ++k) {
+    std::size_t at = std::max(bounds.back(), all.size() * k / parts);
+    while (at > 0 && at < all.size() && all[at].key == all[at - 1].key) ++at;
+    bounds.push_back(at);
+  }
+  bounds.push_back(all.size());
+  return bounds;
+}
+
+}  // namespace
+
+ConformityResult check_conformity(const mesh::Mesh& mesh) {
+  // The serial passes' longest: its sort and its faces on all cores (the counts and the sorted
+  // problems do not depend on how the faces are shared out).
+  const std::size_t parts = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<Occurrence> all = collect_occurrences(mesh);
+  sort_occurrences(all, parts);
+  const std::vector<std::size_t> bounds = face_aligned_bounds(all, parts);
+  std::vector<ConformityResult> part_results(parts);
+  run_parts(parts, [&](std::size_t k) { classify_range(mesh, all, bounds[k], bounds[k + 1], part_results[k]); });
+  ConformityResult result;
+  for (ConformityResult& part : part_results) {
+    result.interior_faces += part.interior_faces;
+    result.boundary_faces += part.boundary_faces;
+    for (FaceProblem& p : part.problems) result.problems.push_back(std::move(p));
   }
   sort_problems(result);
   return result;
