@@ -10,9 +10,11 @@
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace semimesh::occ {
@@ -77,6 +79,7 @@ class OccSurface final : public cad::Surface {
   mutable std::once_flag raster_built_;
   mutable std::unique_ptr<TrimRaster> raster_;
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
+  std::array<std::optional<double>, 2> periods_;  // period(), found once
   bool planar_ = false;
   bool mutable_evaluator_ = false;
   bool span_cached_ = false;  // B-spline or Bezier: evaluated through this thread's span cache
