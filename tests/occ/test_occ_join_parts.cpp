@@ -280,6 +280,30 @@ TEST(OccJoinParts, TheFarFieldMustBeABoxOrASphereHoldingTheBody) {
   EXPECT_NE(assembly_error_of(no_far).find("go together"), std::string::npos);
 }
 
+// One face lofted through two elliptic sections about x = 0.5 (half-axis 0.5 along x, `minor`
+// along y), at z = -0.3 (inside the fuselage) and z = 2: closed round its sections, its seam on the
+// ellipse's smooth end.
+TopoDS_Face elliptic_skin(double minor_root, double minor_top) {
+  GeomFill_Generator loft;
+  for (const auto& [z, minor] : {std::pair{-0.3, minor_root}, std::pair{2.0, minor_top}})
+    loft.AddCurve(GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(gp_Pnt(0.5, 0, z), gp::DZ(), gp::DX()), 0.5, minor)));
+  loft.Perform(Precision::Confusion());
+  return BRepBuilderAPI_MakeFace(loft.Surface(), Precision::Confusion()).Face();
+}
+
+// `skin` (#0) joined to the fuselage (#1-#3) in the box [-4, 4]^3.
+TopoDS_Shape joined_to_fuselage(const TopoDS_Face& skin, FaceNames& names, std::vector<std::string>& repairs) {
+  TopoDS_Compound parts;
+  BRep_Builder builder;
+  builder.MakeCompound(parts);
+  builder.Add(parts, skin);
+  builder.Add(parts, fuselage());
+  FarFieldShape far;
+  far.box = std::array<double, 6>{-4, -4, -4, 4, 4, 4};
+  far.label = "box";
+  return fluid_domain_of_parts(parts, PartsToJoin{{"#0"}, {"#1", "#2", "#3"}}, far, std::nullopt, 1e-6, names, repairs);
+}
+
 // A "wing" lofted from a section pinched flat at its root (an ellipse of minor radius 1e-9, inside
 // the fuselage) to an open elliptic tip: its root loop runs out and back along itself, enclosing no
 // area, so no face closes it (an OpenVSP wing whose root section has zero thickness). Before the
@@ -288,23 +312,9 @@ TEST(OccJoinParts, TheFarFieldMustBeABoxOrASphereHoldingTheBody) {
 // capped there, which leaves the joined shape as it was: the domain is the box minus the
 // fuselage minus the wing's part above it.
 TEST(OccJoinParts, APinchedLoopInsideTheWallPartIsTrimmedInsideIt) {
-  GeomFill_Generator loft;
-  for (const auto& [z, minor] : {std::pair{-0.3, 1e-9}, std::pair{2.0, 0.1}})
-    loft.AddCurve(GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(gp_Pnt(0.5, 0, z), gp::DZ(), gp::DX()), 0.5, minor)));
-  loft.Perform(Precision::Confusion());
-  const TopoDS_Face skin = BRepBuilderAPI_MakeFace(loft.Surface(), Precision::Confusion()).Face();
-  TopoDS_Compound parts;
-  BRep_Builder builder;
-  builder.MakeCompound(parts);
-  builder.Add(parts, skin);
-  builder.Add(parts, fuselage());
   FaceNames names;
   std::vector<std::string> repairs;
-  FarFieldShape far;
-  far.box = std::array<double, 6>{-4, -4, -4, 4, 4, 4};
-  far.label = "box";
-  const TopoDS_Shape domain =
-      fluid_domain_of_parts(parts, PartsToJoin{{"#0"}, {"#1", "#2", "#3"}}, far, std::nullopt, 1e-6, names, repairs);
+  const TopoDS_Shape domain = joined_to_fuselage(elliptic_skin(1e-9, 0.1), names, repairs);
   ASSERT_TRUE(std::any_of(repairs.begin(), repairs.end(), [](const std::string& r) {
     return r.find("trimmed the body's free loop pinched to zero thickness") != std::string::npos;
   })) << "no trim among the repairs";
@@ -321,23 +331,10 @@ TEST(OccJoinParts, APinchedLoopInsideTheWallPartIsTrimmedInsideIt) {
 // general fuse left such a face whole where the fuselage crosses it: trelau/AFEM's GT delta): two
 // body faces carry its name, and the domain is the box minus the fuselage minus the strut above it.
 TEST(OccJoinParts, AClosedBodyFaceIsCutInTwoBeforeTheJoin) {
-  GeomFill_Generator loft;
-  for (const double z : {-0.3, 2.0})
-    loft.AddCurve(GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(gp_Pnt(0.5, 0, z), gp::DZ(), gp::DX()), 0.5, 0.1)));
-  loft.Perform(Precision::Confusion());
-  const TopoDS_Face skin = BRepBuilderAPI_MakeFace(loft.Surface(), Precision::Confusion()).Face();
-  TopoDS_Compound parts;
-  BRep_Builder builder;
-  builder.MakeCompound(parts);
-  builder.Add(parts, skin);
-  builder.Add(parts, fuselage());
+  const TopoDS_Face skin = elliptic_skin(0.1, 0.1);
   FaceNames names{{skin, "strut"}};
   std::vector<std::string> repairs;
-  FarFieldShape far;
-  far.box = std::array<double, 6>{-4, -4, -4, 4, 4, 4};
-  far.label = "box";
-  const TopoDS_Shape domain =
-      fluid_domain_of_parts(parts, PartsToJoin{{"#0"}, {"#1", "#2", "#3"}}, far, std::nullopt, 1e-6, names, repairs);
+  const TopoDS_Shape domain = joined_to_fuselage(skin, names, repairs);
   EXPECT_TRUE(std::any_of(repairs.begin(), repairs.end(), [](const std::string& r) {
     return r.find("cut 1 closed face(s) of the body in two") != std::string::npos;
   })) << "no cut among the repairs";
