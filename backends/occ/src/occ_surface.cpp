@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace semimesh::occ {
@@ -193,36 +194,52 @@ bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
 
 const TrimRaster* OccSurface::trim_raster() const {
   std::call_once(raster_built_, [this] {
-    constexpr int kCells = 256;
+    constexpr int kCells = 256, kSubCells = 8;
     // Points of every pcurve of the face's loops, refined until consecutive ones are at most half
     // a cell apart along u and v; a loop that will not refine (or has no pcurve) leaves no raster.
     auto raster = std::make_unique<TrimRaster>(bounds_, kCells);
     const cad::Vec2 cell = raster->cell_size();
     const double tolerance = std::max(uv_tolerance_, BRep_Tool::Tolerance(face_));
-    const int margin = 2 + static_cast<int>(std::ceil(tolerance / std::min(cell.x(), cell.y())));
+    const auto margin_for = [&](const cad::Vec2& size) {
+      return 2 + static_cast<int>(std::ceil(tolerance / std::min(size.x(), size.y())));
+    };
+    const int margin = margin_for(cell);
     if (margin > kCells / 8) return;
+    std::vector<std::vector<cad::Vec2>> fine_loops;  // the same at half a sub-cell, for refine()
+    bool refinable = margin_for(cell / kSubCells) <= kSubCells;
     for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
       double first, last;
       const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face_, first, last);
       if (pcurve.IsNull() || !std::isfinite(first) || !std::isfinite(last)) return;
-      std::vector<cad::Vec2> samples;
-      for (int count = 16;; count *= 2) {
-        if (count > (1 << 16)) return;
-        samples.clear();
-        bool fine = true;
-        for (int k = 0; k <= count; ++k) {
-          const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / count);
-          samples.emplace_back(p.X(), p.Y());
-          if (k > 0) {
-            const cad::Vec2 step = (samples[k] - samples[k - 1]).cwiseAbs();
-            fine = fine && step.x() <= 0.5 * cell.x() && step.y() <= 0.5 * cell.y();
+      const auto sampled = [&](const cad::Vec2& size, int count, int most) -> std::optional<std::vector<cad::Vec2>> {
+        std::vector<cad::Vec2> samples;
+        for (;; count *= 2) {
+          if (count > most) return std::nullopt;
+          samples.clear();
+          bool fine = true;
+          for (int k = 0; k <= count; ++k) {
+            const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / count);
+            samples.emplace_back(p.X(), p.Y());
+            if (k > 0) {
+              const cad::Vec2 step = (samples[k] - samples[k - 1]).cwiseAbs();
+              fine = fine && step.x() <= 0.5 * size.x() && step.y() <= 0.5 * size.y();
+            }
           }
+          if (fine) return samples;
         }
-        if (fine) break;
+      };
+      const std::optional<std::vector<cad::Vec2>> samples = sampled(cell, 16, 1 << 16);
+      if (!samples) return;
+      raster->mark_loop(*samples, margin);
+      if (refinable) {
+        std::optional<std::vector<cad::Vec2>> fine = sampled(cell / kSubCells, static_cast<int>(samples->size() - 1) * kSubCells, 1 << 18);
+        if (fine) fine_loops.push_back(std::move(*fine));
+        refinable = fine.has_value();
       }
-      raster->mark_loop(samples, margin);
     }
-    raster->classify([this](const cad::Vec2& uv) { return contains_exactly(uv); });
+    const auto exact = [this](const cad::Vec2& uv) { return contains_exactly(uv); };
+    raster->classify(exact);
+    if (refinable) raster->refine(kSubCells, fine_loops, margin_for(cell / kSubCells), exact);
     raster_ = std::move(raster);
   });
   return raster_.get();
