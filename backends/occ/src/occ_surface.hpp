@@ -36,6 +36,10 @@ class OccSurface final : public cad::Surface {
   /// foot within the face's boundary tolerance counts as inside (within_tolerance_of_face).
   /// With a guess: the local Newton only.
   cad::SurfaceProjection project(const cad::Vec3& x, std::optional<cad::Vec2> guess = std::nullopt) const override;
+  /// The guided project()'s local Newton without its contains() (cad::Surface::local_projection).
+  cad::SurfaceProjection project_near(const cad::Vec3& x, const cad::Vec2& guess) const override {
+    return local_projection(x, guess);
+  }
 
   /// OCC's period of a periodic parameter; for a closed, non-periodic one (a closed B-spline) the
   /// length of the surface's parameter range, over which it closes on itself.
