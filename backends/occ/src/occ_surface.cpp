@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 #include <optional>
 #include <vector>
 
@@ -121,13 +122,11 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face_, u0, u1, v0, v1);
   bounds_ = {cad::Interval{u0, u1}, cad::Interval{v0, v1}};
-  classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, BRep_Tool::Tolerance(face_));
   GeomAdaptor_Surface box_adaptor(surface_, u0, u1, v0, v1);
   // The stricter of the two parameter directions, so no point much further than the tolerance
   // from a trimming curve counts as on it.
   const double tolerance = boundary_tolerance(face_);
   uv_tolerance_ = std::min(box_adaptor.UResolution(tolerance), box_adaptor.VResolution(tolerance));
-  tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance_);
   GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
   planar_ = kind_ == cad::SurfaceKind::Plane || lies_in_a_plane(surface_, face_, bounds_);
@@ -139,13 +138,24 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
                                        [this](const cad::Vec2& uv) { return point(uv); });
 }
 
+const Handle(Geom_Surface)& OccSurface::evaluated_surface() const {
+  return mutable_evaluator_ ? thread_copy(serial_, surface_) : surface_;
+}
+
+cad::SurfaceDerivatives OccSurface::derivatives_shared(const cad::Vec2& uv) const {
+  gp_Pnt p;
+  gp_Vec du, dv, duu, dvv, duv;
+  surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+  return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
+}
+
 cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
   gp_Pnt p;
   gp_Vec du, dv, duu, dvv, duv;
   if (span_cached_)
     thread_adaptor(serial_, surface_).D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   else
-    surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+    evaluated_surface()->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
 }
 
@@ -172,9 +182,18 @@ std::optional<double> OccSurface::exact_area() const {
   }
 }
 
+BRepTopAdaptor_FClass2d& OccSurface::thread_classifier(bool tolerant) const {
+  // Classifiers of faces whose model is gone stay until the map is this full, then all go.
+  constexpr std::size_t kMaxFacesPerThread = 4096;
+  thread_local std::unordered_map<std::uint64_t, std::array<std::unique_ptr<BRepTopAdaptor_FClass2d>, 2>> classifiers;
+  if (classifiers.size() >= kMaxFacesPerThread && classifiers.find(serial_) == classifiers.end()) classifiers.clear();
+  std::unique_ptr<BRepTopAdaptor_FClass2d>& slot = classifiers[serial_][tolerant ? 1 : 0];
+  if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(face_, tolerant ? uv_tolerance_ : BRep_Tool::Tolerance(face_));
+  return *slot;
+}
+
 bool OccSurface::contains_exactly(const cad::Vec2& uv) const {
-  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
-  const TopAbs_State state = classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+  const TopAbs_State state = thread_classifier(false).Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
@@ -187,8 +206,7 @@ bool OccSurface::contains(const cad::Vec2& uv) const {
 bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
   if (const TrimRaster* raster = trim_raster())
     if (const std::optional<bool> known = raster->lookup(uv)) return *known;
-  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
-  const TopAbs_State state = tolerant_classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+  const TopAbs_State state = thread_classifier(true).Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
@@ -268,7 +286,7 @@ std::vector<cad::Vec2> OccSurface::extremum_starts(const cad::Vec3& x) const {
   std::optional<cad::Vec2> best_inside, best_any;
   double d_inside = std::numeric_limits<double>::max(), d_any = d_inside;
   try {
-    GeomAPI_ProjectPointOnSurf extrema(gp_Pnt(x.x(), x.y(), x.z()), surface_, bounds_[0].lo, bounds_[0].hi,
+    GeomAPI_ProjectPointOnSurf extrema(gp_Pnt(x.x(), x.y(), x.z()), evaluated_surface(), bounds_[0].lo, bounds_[0].hi,
                                        bounds_[1].lo, bounds_[1].hi);
     for (int i = 1; i <= extrema.NbPoints(); ++i) {
       double u, v;
