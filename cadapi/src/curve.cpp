@@ -29,10 +29,22 @@ double adaptive_length(const Curve& c, double a, double b, double whole, int dep
 
 }  // namespace
 
+const std::vector<double>& Curve::tangent_breaks() const {
+  static const std::vector<double> none;
+  return none;
+}
+
 double Curve::arc_length(double a, double b) const {
   if (a == b) return 0.0;
   if (b < a) return -arc_length(b, a);
-  return adaptive_length(*this, a, b, speed_integral(*this, a, b), 0);
+  // Smooth pieces between the tangent's breaks inside (a, b).
+  const std::vector<double>& breaks = tangent_breaks();
+  double length = 0.0, from = a;
+  for (auto k = std::upper_bound(breaks.begin(), breaks.end(), a); k != breaks.end() && *k < b; ++k) {
+    length += adaptive_length(*this, from, *k, speed_integral(*this, from, *k), 0);
+    from = *k;
+  }
+  return length + adaptive_length(*this, from, b, speed_integral(*this, from, b), 0);
 }
 
 double Curve::parameter_at_length(double t_start, double s) const {

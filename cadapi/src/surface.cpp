@@ -140,6 +140,17 @@ SurfaceProjection leave_pole(const Surface& s, SurfaceProjection found,
   return found;
 }
 
+SurfaceProjection Surface::local_projection(const Vec3& x, const Vec2& guess) const {
+  return leave_pole(*this, newton_projection(*this, x, guess),
+                    [&](const Vec2& start) { return newton_projection(*this, x, start); });
+}
+
+SurfaceProjection Surface::project_near(const Vec3& x, const Vec2& guess) const {
+  SurfaceProjection out = project(x, guess);
+  out.inside = false;
+  return out;
+}
+
 SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) const {
   const auto box = bounds();
   Vec2 uv(box[0].lo, box[1].lo);  // the sampling below always improves on it
@@ -155,8 +166,7 @@ SurfaceProjection Surface::project(const Vec3& x, std::optional<Vec2> guess) con
         if (d < best) { best = d; uv = s; }
       }
   }
-  SurfaceProjection out =
-      leave_pole(*this, newton_projection(*this, x, uv), [&](const Vec2& start) { return newton_projection(*this, x, start); });
+  SurfaceProjection out = local_projection(x, uv);
   out.inside = contains(out.uv);
   return out;
 }

@@ -82,3 +82,55 @@ TEST(Curve, CurvatureAndTangent) {
   EXPECT_DOUBLE_EQ(line.curvature(0.5), 0.0);
   EXPECT_TRUE(line.tangent(0.5).isApprox(Vec3(0, 0, 1)));
 }
+
+namespace {
+
+// A polyline t -> (t, 0, 0) on [0, 0.31], then along y at speed 50 to t = 0.77, then along x at
+// speed 0.02 to t = 2: corners at parameters no bisection of [0, 2] lands on, as a loft linear
+// between its sections has them. `declared`: whether it says where its tangent breaks.
+class Polyline : public semimesh::cad::Curve {
+ public:
+  explicit Polyline(bool declared) : Curve(0, "polyline") {
+    if (declared) breaks_ = {0.31, 0.77};
+  }
+  semimesh::cad::CurveKind kind() const override { return semimesh::cad::CurveKind::Other; }
+  semimesh::cad::Interval bounds() const override { return {0.0, 2.0}; }
+  semimesh::cad::CurveDerivatives derivatives(double t) const override {
+    if (t <= 0.31) return {Vec3(t, 0, 0), Vec3(1, 0, 0), Vec3::Zero()};
+    if (t <= 0.77) return {Vec3(0.31, 50 * (t - 0.31), 0), Vec3(0, 50, 0), Vec3::Zero()};
+    return {Vec3(0.31 + 0.02 * (t - 0.77), 23, 0), Vec3(0.02, 0, 0), Vec3::Zero()};
+  }
+  const std::vector<double>& tangent_breaks() const override { return breaks_; }
+
+ private:
+  std::vector<double> breaks_;
+};
+
+constexpr double kPolylineLength = 0.31 + 0.46 * 50 + 1.23 * 0.02;
+
+}  // namespace
+
+// Across the corners the arc length is integrated piecewise, exact to round-off; the same curve
+// without its breaks (the slow path's reference: Gauss across a kink) is off by far more, which is
+// what ran a thousand-step discretisation out of length before its end.
+TEST(Curve, ArcLengthAcrossTangentBreaksIsIntegratedPiecewise) {
+  const Polyline declared(true), undeclared(false);
+  EXPECT_NEAR(declared.length(), kPolylineLength, 1e-12);
+  EXPECT_NEAR(declared.arc_length(0.2, 1.5), (0.31 - 0.2) + 0.46 * 50 + (1.5 - 0.77) * 0.02, 1e-12);
+  EXPECT_NEAR(declared.arc_length(0.5, 0.6), 0.1 * 50, 1e-12) << "no break inside: one piece";
+  EXPECT_GT(std::abs(undeclared.length() - kPolylineLength), 1e-9) << "the reference shows the error it fixes";
+}
+
+// Stepping equal lengths from the start, as the curve mesher does: every step advances and the
+// last one ends at the curve's end to round-off.
+TEST(Curve, EqualStepsAlongABrokenCurveEndAtItsEnd) {
+  const Polyline curve(true);
+  const int n = 2000;
+  double t = 0.0;
+  for (int i = 1; i < n; ++i) {
+    const double next = curve.parameter_at_length(t, kPolylineLength / n);
+    ASSERT_GT(next, t) << "step " << i;
+    t = next;
+  }
+  EXPECT_NEAR(curve.arc_length(t, 2.0), kPolylineLength / n, 1e-10);
+}

@@ -42,6 +42,21 @@ TEST(Surface, ProjectWithGuess) {
   EXPECT_NEAR(p.distance, 2.0, 1e-12);
 }
 
+TEST(Surface, ProjectNearIsProjectWithoutTheTrimmingTest) {
+  Plane disc = unit_disc();
+  SpherePatch sphere(0, 1.0, +1);
+  for (const semimesh::cad::Surface* s : {static_cast<const semimesh::cad::Surface*>(&disc),
+                                          static_cast<const semimesh::cad::Surface*>(&sphere)})
+    for (const Vec3& x : {Vec3(0.2, 0.3, 0.5), Vec3(1.5, 0.1, -0.2), Vec3(0.9, 0.9, 2.0)}) {
+      const auto full = s->project(x, Vec2(0.1, 0.1)), near = s->project_near(x, Vec2(0.1, 0.1));
+      EXPECT_EQ(near.uv, full.uv);
+      EXPECT_EQ(near.point, full.point);
+      EXPECT_EQ(near.distance, full.distance);
+      EXPECT_EQ(near.converged, full.converged);
+      EXPECT_FALSE(near.inside);
+    }
+}
+
 TEST(Surface, ProjectReportsWhetherTheFootIsInsideTheTrim) {
   Plane disc = unit_disc();
   auto in = disc.project(Vec3(0.3, -0.4, 2.0));

@@ -149,6 +149,44 @@ TEST(OccStep, NektarProjectionsRespectTrimming) {
   EXPECT_GT(in_hole, 0);
 }
 
+// project_near (no trimming test) against project with the same guess: the same foot, bit for bit,
+// on every face, from points on and off the faces and their loops' curves, guesses near and far.
+TEST(OccStep, NektarProjectNearIsTheGuidedProjectionsFoot) {
+  SKIP_WITHOUT(kNektar);
+  auto model = load(kNektar);
+  int checked = 0;
+  for (int s = 0; s < model->num_surfaces(); ++s) {
+    const cad::Surface& surface = model->surface(s);
+    const auto box = surface.bounds();
+    std::vector<std::pair<cad::Vec3, cad::Vec2>> queries;  // (point, guess)
+    for (int i = 0; i <= 6; ++i)
+      for (int j = 0; j <= 6; ++j) {
+        const cad::Vec2 uv(box[0].lo + box[0].length() * i / 6, box[1].lo + box[1].length() * j / 6);
+        const cad::Vec3 x = surface.point(uv) + (i - 3) * 0.7 * surface.normal(uv);
+        queries.push_back({x, uv});
+        queries.push_back({x, uv + cad::Vec2(0.05 * box[0].length(), -0.05 * box[1].length())});
+      }
+    for (const cad::Loop& loop : model->loops(s))
+      for (const cad::CurveUse& use : loop.uses) {
+      const cad::Curve& c = model->curve(use.curve);
+      for (int k = 0; k <= 4; ++k) {
+        const cad::Vec3 x = c.point(c.bounds().lo + c.bounds().length() * k / 4);
+        queries.push_back({x, cad::Vec2(box[0].lo, box[1].hi)});
+      }
+    }
+    for (const auto& [x, guess] : queries) {
+      const cad::SurfaceProjection full = surface.project(x, guess), near = surface.project_near(x, guess);
+      ASSERT_EQ(near.uv, full.uv) << surface.name();
+      ASSERT_EQ(near.point, full.point) << surface.name();
+      ASSERT_EQ(near.distance, full.distance) << surface.name();
+      ASSERT_EQ(near.converged, full.converged) << surface.name();
+      EXPECT_FALSE(near.inside);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 800);
+}
+
 // Regression: on the wing skin (a surface of extrusion) OCC's extremum search stopped at u = 0,
 // 3.07 mm away, for points of the trailing-edge curve edge_17, whose true foot is at u ~ 2488
 // with distance ~1e-9 mm. Every point of a face's boundary curve lies on the face.
@@ -217,10 +255,14 @@ TEST(OccStep, ScaleIsAppliedOnceAtLoad) {
   EXPECT_NEAR((m->surface(0).point(uv) - 0.001 * mm->surface(0).point(uv)).norm(), 0.0, 1e-9);
 }
 
-// Concurrent queries give the same answers as serial ones (the model says it is thread-safe).
+// Concurrent queries give the same answers as serial ones (the model says it is thread-safe), on
+// the M6's B-spline faces and on the NekMesh wing's extruded skin and revolved tip.
 TEST(OccStep, ConcurrentQueriesMatchSerialOnes) {
   SKIP_WITHOUT(kOnera);
-  auto model = load(kOnera);
+  SKIP_WITHOUT(kNektar);
+  for (const std::string& file : {kOnera, kNektar}) {
+  SCOPED_TRACE(file);
+  auto model = load(file);
   ASSERT_TRUE(model->thread_safe());
   std::vector<cad::Vec3> points;
   for (int s = 0; s < model->num_surfaces(); ++s)
@@ -240,13 +282,7 @@ TEST(OccStep, ConcurrentQueriesMatchSerialOnes) {
   for (auto& r : results) threads.emplace_back(run, std::ref(r));
   for (auto& t : threads) t.join();
   for (const auto& r : results) EXPECT_EQ(r, serial);
-}
-
-TEST(OccStep, NektarIsMarkedNotThreadSafe) {
-  SKIP_WITHOUT(kNektar);
-  // Its wing skin is a surface of extrusion and its tip one of revolution: OCC evaluates those
-  // through cached adaptors.
-  EXPECT_FALSE(load(kNektar)->thread_safe());
+  }
 }
 
 }  // namespace

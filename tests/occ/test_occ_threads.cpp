@@ -1,8 +1,11 @@
 // An OccSurface classified by several threads at once, as the curve stage does: every answer must
 // be the one a single thread gets. OCC's face classifier keeps a mutable "current item" in its
 // sequences of wires, so unguarded concurrent use read the wrong wire's polygon (a wrong answer)
-// or walked off the end of the sequence (the curve stage's intermittent SIGSEGV).
+// or walked off the end of the sequence (the curve stage's intermittent SIGSEGV): each thread now
+// has its own. Surfaces of revolution and extrusion, evaluated by each thread on its own copy,
+// give the bits the face's own surface gives one thread.
 #include "occ_surface.hpp"
+#include "occ_test_support.hpp"
 #include "semimesh/occ/occ_backend.hpp"
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -71,6 +74,45 @@ TEST(OccThreads, ExactClassificationOfAFaceWithHolesAgreesAcrossThreads) {
     });
   for (std::thread& t : threads) t.join();
   EXPECT_EQ(wrong.load(), 0);
+}
+
+TEST(OccThreads, RevolutionAndExtrusionEvaluateToTheSharedSurfacesBitsOnEveryThread) {
+  const std::string path = testdata("nektar_3d_bl_wing_naca0012.stp");
+  if (!exists(path)) GTEST_SKIP() << "test CAD file " << path << " not found";
+  const auto model = load_occ(cad::Source{path, {}});
+  EXPECT_TRUE(model->thread_safe()) << "the wing's revolved tip and extruded skin no longer serialise the stages";
+  int checked = 0;
+  for (int s = 0; s < model->num_surfaces(); ++s) {
+    const auto& surface = dynamic_cast<const OccSurface&>(model->surface(s));
+    if (surface.kind() != cad::SurfaceKind::Revolution && surface.kind() != cad::SurfaceKind::Extrusion) continue;
+    ASSERT_TRUE(surface.has_mutable_evaluator());
+    constexpr int kSide = 40;
+    std::vector<cad::Vec2> points;
+    const auto box = surface.bounds();
+    for (int i = 0; i <= kSide; ++i)
+      for (int j = 0; j <= kSide; ++j)
+        points.emplace_back(box[0].lo + box[0].length() * i / kSide, box[1].lo + box[1].length() * j / kSide);
+    std::vector<cad::SurfaceDerivatives> expected;
+    for (const cad::Vec2& uv : points) expected.push_back(surface.derivatives_shared(uv));
+    const auto same = [](const cad::SurfaceDerivatives& a, const cad::SurfaceDerivatives& b) {
+      return a.p == b.p && a.du == b.du && a.dv == b.dv && a.duu == b.duu && a.duv == b.duv && a.dvv == b.dvv;
+    };
+    constexpr int kThreads = 4, kRounds = 4;
+    std::atomic<int> wrong{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+      threads.emplace_back([&, t] {
+        for (int round = 0; round < kRounds; ++round)
+          for (std::size_t k = 0; k < points.size(); ++k) {
+            const std::size_t p = (k * (t + 1) + round) % points.size();  // threads out of step
+            if (!same(surface.derivatives(points[p]), expected[p])) ++wrong;
+          }
+      });
+    for (std::thread& t : threads) t.join();
+    EXPECT_EQ(wrong.load(), 0) << surface.name();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2) << "the tip (revolution) and the skin (extrusion)";
 }
 
 }  // namespace

@@ -59,6 +59,61 @@ TEST(TrimRaster, AgreesWithTheExactTestOnARingAndClassifiesMostCells) {
   EXPECT_FALSE(raster.lookup(cad::Vec2(1.5, 0.5)).has_value()) << "outside the box: the exact test answers";
 }
 
+TEST(TrimRaster, RefinedNearCellsAgreeWithTheExactTestAndLeaveAThinnerBand) {
+  const std::array<cad::Interval, 2> box{cad::Interval{0.0, 1.0}, cad::Interval{0.0, 1.0}};
+  constexpr int kSub = 8;
+  TrimRaster coarse(box, 64), refined(box, 64);
+  const double step = 0.5 * coarse.cell_size().minCoeff();
+  std::vector<std::vector<cad::Vec2>> fine_loops{circle(0.3, step / kSub), circle(0.1, step / kSub)};
+  for (TrimRaster* raster : {&coarse, &refined}) {
+    raster->mark_loop(circle(0.3, step), 2);
+    raster->mark_loop(circle(0.1, step), 2);
+    raster->classify(in_ring);
+  }
+  int exact_calls = 0;
+  ASSERT_TRUE(refined.refine(kSub, fine_loops, 2, [&](const cad::Vec2& uv) {
+    ++exact_calls;
+    return in_ring(uv);
+  }));
+  EXPECT_EQ(refined.refinement(), kSub);
+  EXPECT_LT(exact_calls, 10) << "nearly every region of sub-cells touches a classified cell";
+  EXPECT_EQ(refined.census(), coarse.census()) << "the cells stay as they were";
+  const auto [near, inside, outside] = refined.sub_census();
+  EXPECT_GT(inside + outside, 2 * near);
+  // Points within two cells of the circles: the coarse raster answers none, the refined one most,
+  // and every answer is the closed-form one.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI), offset(-2.0 * step * 2, 2.0 * step * 2);
+  int coarse_answers = 0, refined_answers = 0;
+  for (int k = 0; k < 100000; ++k) {
+    const double r = (k % 2 ? 0.3 : 0.1) + offset(random), a = angle(random);
+    const cad::Vec2 uv(0.5 + r * std::cos(a), 0.5 + r * std::sin(a));
+    if (const auto known = coarse.lookup(uv)) {
+      ++coarse_answers;
+      ASSERT_EQ(*known, in_ring(uv)) << uv.transpose();
+    }
+    if (const auto known = refined.lookup(uv)) {
+      ++refined_answers;
+      ASSERT_EQ(*known, in_ring(uv)) << uv.transpose();
+    }
+  }
+  EXPECT_GT(refined_answers, coarse_answers + 50000);
+}
+
+TEST(TrimRaster, RefineGivesUpWhenTheFineSamplesLeaveTheNearCells) {
+  const std::array<cad::Interval, 2> box{cad::Interval{0.0, 1.0}, cad::Interval{0.0, 1.0}};
+  TrimRaster raster(box, 64);
+  const double step = 0.5 * raster.cell_size().minCoeff();
+  raster.mark_loop(circle(0.3, step), 2);
+  raster.classify(in_ring);
+  const auto before = raster.lookup(cad::Vec2(0.5, 0.5));
+  // A loop the cells were not marked for: refining on it would contradict the classification.
+  EXPECT_FALSE(raster.refine(8, {circle(0.2, step / 8)}, 2, in_ring));
+  EXPECT_EQ(raster.refinement(), 0);
+  EXPECT_EQ(raster.sub_census(), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(raster.lookup(cad::Vec2(0.5, 0.5)), before);
+}
+
 // contains() (raster first) against contains_exactly() on every face of a model.
 void expect_raster_agrees(const cad::Model& model) {
   std::mt19937 random(11);
@@ -78,9 +133,19 @@ void expect_raster_agrees(const cad::Model& model) {
       }
       disagreements += face.contains(uv) != face.contains_exactly(uv);
     }
+    // Within a few sub-cells of the box's sides (where a face whose loop runs along them has its
+    // refined near cells) and exactly on them.
+    const cad::Vec2 sub = face.trim_raster()->cell_size() / std::max(1, face.trim_raster()->refinement());
+    for (int k = 0; k < 2000; ++k) {
+      cad::Vec2 uv(u(random), v(random));
+      const int side = k % 4, d = side / 2;
+      uv[d] = (side % 2 ? box[d].hi : box[d].lo) + (k % 3 ? sub[d] * 4 * jitter(random) : 0.0);
+      disagreements += face.contains(uv) != face.contains_exactly(uv);
+    }
     EXPECT_EQ(disagreements, 0) << cad::surface_label(model, s);
     const auto [near, inside, outside] = face.trim_raster()->census();
     EXPECT_GT(inside + outside, 0) << cad::surface_label(model, s) << ": nothing classified";
+    EXPECT_GT(face.trim_raster()->refinement(), 0) << cad::surface_label(model, s) << ": near cells not refined";
   }
 }
 

@@ -1,9 +1,9 @@
 #include "crease_seam.hpp"
 
+#include "faces_replaced.hpp"
 #include "parameter_rectangle.hpp"
 
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
@@ -80,32 +80,14 @@ std::optional<std::pair<TopoDS_Face, TopoDS_Face>> crease_halves(const TopoDS_Fa
 
 TopoDS_Shape with_crease_seams_split(const TopoDS_Shape& body, double tolerance, FaceNames& names,
                                      std::vector<std::string>& repairs) {
-  BRepBuilderAPI_Sewing sewing(tolerance);
-  const std::size_t named = names.size();
-  int split = 0;
-  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next()) {
-    const TopoDS_Face& face = TopoDS::Face(f.Current());
+  const FacesReplaced split = with_faces_replaced(body, tolerance, names, [&](const TopoDS_Face& face) {
     const auto halves = crease_halves(face, tolerance);
-    if (!halves) {
-      sewing.Add(face);
-      continue;
-    }
-    ++split;
-    sewing.Add(halves->first);
-    sewing.Add(halves->second);
-    for (std::size_t i = 0; i < named; ++i)
-      if (names[i].first.IsSame(face)) {
-        names.emplace_back(halves->first, names[i].second);
-        names.emplace_back(halves->second, names[i].second);
-      }
-  }
-  if (split == 0) return body;
-  sewing.Perform();
-  for (std::size_t i = 0, n = names.size(); i < n; ++i)
-    if (sewing.IsModifiedSubShape(names[i].first)) names.emplace_back(sewing.ModifiedSubShape(names[i].first), names[i].second);
-  repairs.push_back("split " + std::to_string(split) + " body face(s) closed round a sharp edge (a seam along the "
-                    "trailing edge) into two halves each, the same surface: the trailing edge a curve between two faces");
-  return sewing.SewedShape();
+    return halves ? std::vector<TopoDS_Face>{halves->first, halves->second} : std::vector<TopoDS_Face>{};
+  });
+  if (split.replaced > 0)
+    repairs.push_back("split " + std::to_string(split.replaced) + " body face(s) closed round a sharp edge (a seam along "
+                      "the trailing edge) into two halves each, the same surface: the trailing edge a curve between two faces");
+  return split.shape;
 }
 
 }  // namespace semimesh::occ

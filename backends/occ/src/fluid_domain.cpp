@@ -1,7 +1,9 @@
 #include "fluid_domain.hpp"
 
 #include "body_cut.hpp"
+#include "closed_face_halves.hpp"
 #include "crease_seam.hpp"
+#include "domain_by_sides.hpp"
 #include "parameter_rectangle.hpp"
 #include "seam_away.hpp"
 
@@ -10,7 +12,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
-#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_FindPlane.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -438,17 +440,6 @@ TopTools_ListOfShape images(BRepAlgoAPI_BooleanOperation& op, const TopoDS_Shape
   return out;
 }
 
-// The same through two operations, `first` then `second`.
-TopTools_ListOfShape images(BRepAlgoAPI_BooleanOperation& first, BRepAlgoAPI_BooleanOperation& second,
-                            const TopoDS_Shape& face) {
-  TopTools_ListOfShape out;
-  for (const TopoDS_Shape& image : images(first, face)) {
-    TopTools_ListOfShape of_image = images(second, image);
-    out.Append(of_image);
-  }
-  return out;
-}
-
 // Names of the result's faces: the body's as carried through the cut (unnamed body faces stay
 // unnamed), "wall" on the plane, the rest far field.
 FaceNames domain_names(const TopoDS_Shape& domain, BRepAlgoAPI_Cut& cut, const TopoDS_Shape& body,
@@ -526,23 +517,17 @@ TopoDS_Shell one_shell(const TopoDS_Shape& shape) {
   return shell;
 }
 
-// Names of the joined domain's faces: the body's as carried through the union and the cut, "wall"
-// for what is left of the wall part, the rest far field.
-FaceNames joined_names(const TopoDS_Shape& domain, BRepAlgoAPI_Fuse& fuse, BRepAlgoAPI_Cut& cut,
-                       const TopoDS_Shape& body, const TopoDS_Shape& wall, const FaceNames& file_names) {
+// Names of the joined domain's faces: the body's as carried through the split (unnamed body faces
+// stay unnamed), "wall" for what is left of the wall part, the rest far field.
+FaceNames joined_names(const TopoDS_Shape& fluid, const DomainBySides& domain, const FaceNames& file_names) {
   FaceNames names;
-  TopTools_IndexedMapOfShape from_body, from_wall;
-  for (TopExp_Explorer f(body, TopAbs_FACE); f.More(); f.Next())
-    for (const TopoDS_Shape& image : images(fuse, cut, f.Current())) from_body.Add(image);
-  for (TopExp_Explorer f(wall, TopAbs_FACE); f.More(); f.Next())
-    for (const TopoDS_Shape& image : images(fuse, cut, f.Current())) from_wall.Add(image);
   for (const auto& [face, name] : file_names)
-    for (const TopoDS_Shape& image : images(fuse, cut, face))
-      if (from_body.Contains(image)) names.emplace_back(image, name);
+    for (const TopoDS_Shape& piece : domain.pieces(face))
+      if (domain.from_body.Contains(piece)) names.emplace_back(piece, name);
   int walls = 0, outer = 0;
-  for (TopExp_Explorer f(domain, TopAbs_FACE); f.More(); f.Next()) {
-    if (from_body.Contains(f.Current())) continue;
-    if (from_wall.Contains(f.Current()))
+  for (TopExp_Explorer f(fluid, TopAbs_FACE); f.More(); f.Next()) {
+    if (domain.from_body.Contains(f.Current())) continue;
+    if (domain.from_wall.Contains(f.Current()))
       names.emplace_back(f.Current(), walls++ ? "wall_" + std::to_string(walls) : std::string("wall"));
     else
       names.emplace_back(f.Current(), "farfield_" + std::to_string(outer++));
@@ -597,34 +582,34 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   TopoDS_Shape body_part = with_crease_seams_split(body_faces, tolerance, names, repairs);
   if (body_cut) body_part = cut_body(body_part, *body_cut, tolerance, names, repairs);
   body_part = with_pinched_loops_inside_trimmed(body_part, wall, tolerance, names, repairs);
+  body_part = with_closed_faces_halved(body_part, tolerance, names, repairs);
   const TopoDS_Shape body = body_solids(body_part, tolerance, "geometry.join.body: the body", repairs);
   if (const int left_out = faces.Extent() - taken.Extent(); left_out > 0)
     repairs.push_back("left out " + std::to_string(left_out) + " face(s) of the file that geometry.join does not name");
 
-  BRepExtrema_DistShapeShape apart(body, wall);
-  if (apart.IsDone() && apart.Value() > tolerance) {
-    const gp_Pnt p = apart.PointOnShape1(1);
-    refuse("geometry.join: the body does not reach the wall: it comes within " + length_text(apart.Value()) +
-           " of it, at (" + length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
-  }
+  // Their section first (a second on an OpenVSP wing): the distance between every pair of edges
+  // (half a minute there) only to say how far apart parts that do not meet are.
+  if (BRepAlgoAPI_Section section(body, wall); !section.IsDone() || !TopExp_Explorer(section.Shape(), TopAbs_EDGE).More())
+    if (BRepExtrema_DistShapeShape apart(body, wall); apart.IsDone() && apart.Value() > tolerance) {
+      const gp_Pnt p = apart.PointOnShape1(1);
+      refuse("geometry.join: the body does not reach the wall: it comes within " + length_text(apart.Value()) +
+             " of it, at (" + length_text(p.X()) + ", " + length_text(p.Y()) + ", " + length_text(p.Z()) + ")");
+    }
   const TopoDS_Shape outer = far_solid(far, gp::DZ(), body, {});
   BRepAlgoAPI_Cut standing_out;
   require_inside(run(standing_out, body, wall, 0.1 * tolerance, "the body outside the wall part"), outer, far, tolerance,
                  /*others_outside=*/true);
 
-  // The union first: the root curve is the parts' exact intersection.
-  BRepAlgoAPI_Fuse fuse;
-  const TopoDS_Shape joined = run(fuse, body, wall, 0.1 * tolerance, "body and wall joined");
-  BRepAlgoAPI_Cut cut;
-  const TopoDS_Shape domain = run(cut, outer, joined, 0.1 * tolerance, "far field minus the joined parts");
-  TopExp_Explorer solid(domain, TopAbs_SOLID);
+  // One split of the three, the pieces chosen by side: the root curve is the parts' exact intersection.
+  const DomainBySides domain = domain_by_sides(outer, body, wall, 0.1 * tolerance);
+  TopExp_Explorer solid(domain.solids, TopAbs_SOLID);
   if (!solid.More()) refuse("geometry.join: the Boolean operations left no fluid domain");
   const TopoDS_Shape fluid = solid.Current();
   solid.Next();
   if (solid.More())
     refuse("geometry.join: the fluid domain falls apart into several pieces (does the far field cut the body?): " +
-           pieces_text(domain));
-  names = joined_names(fluid, fuse, cut, body, wall, names);
+           pieces_text(domain.solids));
+  names = joined_names(fluid, domain, names);
   return fluid;
 }
 

@@ -155,7 +155,6 @@ std::unique_ptr<cad::Model> model_from_shape(const TopoDS_Shape& shape, const st
     for (TopoDS_Iterator w(face); w.More(); w.Next())
       if (w.Value().ShapeType() == TopAbs_WIRE && !w.Value().IsSame(outer)) add_loop(TopoDS::Wire(w.Value()));
     auto surface = std::make_unique<OccSurface>(id, unique_name(face_names, faces(i), "face", id, surface_names_taken), face);
-    thread_safe = thread_safe && !surface->has_mutable_evaluator();
     model->add_surface(std::move(surface), std::move(loops));
   }
 

@@ -6,6 +6,7 @@
 #include <BRep_Tool.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
+#include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <Standard_Failure.hxx>
@@ -55,6 +56,13 @@ OccCurve::OccCurve(int id, std::string name, const TopoDS_Edge& edge) : cad::Cur
     // no resolution for this curve: nothing cached to race on
   }
   mutable_evaluator_ = type == GeomAbs_OffsetCurve;
+  const GeomAdaptor_Curve on_edge(curve_, first, last);
+  if (const int pieces = on_edge.NbIntervals(GeomAbs_C1); pieces > 1) {
+    TColStd_Array1OfReal ends(1, pieces + 1);
+    on_edge.Intervals(ends, GeomAbs_C1);
+    for (int i = 2; i <= pieces; ++i)
+      if (ends(i) > first && ends(i) < last) breaks_.push_back(ends(i));
+  }
 }
 
 cad::CurveDerivatives OccCurve::derivatives(double t) const {

@@ -8,6 +8,7 @@
 #include <TopoDS_Edge.hxx>
 
 #include <optional>
+#include <vector>
 
 namespace semimesh::occ {
 
@@ -24,6 +25,8 @@ class OccCurve final : public cad::Curve {
   /// guess, then the generic Newton polish; with a guess only the local Newton.
   cad::CurveProjection project(const cad::Vec3& x, std::optional<double> guess = std::nullopt) const override;
   bool is_degenerate() const override { return pole_.has_value(); }
+  /// The curve's C1 intervals' ends inside the edge's range (GeomAdaptor_Curve::Intervals).
+  const std::vector<double>& tangent_breaks() const override { return breaks_; }
 
   /// True when OCC evaluates this curve through a cached adaptor (offset curves).
   bool has_mutable_evaluator() const { return mutable_evaluator_; }
@@ -32,6 +35,7 @@ class OccCurve final : public cad::Curve {
   Handle(Geom_Curve) curve_;  // null on a degenerate curve
   std::optional<cad::Vec3> pole_;  // the point of a degenerate curve
   cad::Interval range_;
+  std::vector<double> breaks_;
   cad::CurveKind kind_ = cad::CurveKind::Other;
   bool mutable_evaluator_ = false;
 };

@@ -27,6 +27,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
+#include <optional>
 #include <vector>
 
 namespace semimesh::occ {
@@ -109,6 +111,19 @@ bool preferred(const cad::SurfaceProjection& a, const cad::SurfaceProjection& b)
   return a.distance < b.distance;
 }
 
+// OCC's period of a periodic parameter; for a closed, non-periodic one the length of the range.
+// Found once: a B-spline's IsUClosed builds its two boundary iso-curves at every call (a surface
+// mesh's edge swaps asked it millions of times on an OpenVSP wing: 90 % of 216 s).
+std::optional<double> period_of(const Handle(Geom_Surface)& surface, bool along_u) {
+  if (along_u ? surface->IsUPeriodic() : surface->IsVPeriodic()) return along_u ? surface->UPeriod() : surface->VPeriod();
+  if (!(along_u ? surface->IsUClosed() : surface->IsVClosed())) return std::nullopt;
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  const double length = along_u ? u1 - u0 : v1 - v0;
+  if (!std::isfinite(length) || !(length > 0.0)) return std::nullopt;
+  return length;
+}
+
 }  // namespace
 
 OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
@@ -120,13 +135,11 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face_, u0, u1, v0, v1);
   bounds_ = {cad::Interval{u0, u1}, cad::Interval{v0, v1}};
-  classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, BRep_Tool::Tolerance(face_));
   GeomAdaptor_Surface box_adaptor(surface_, u0, u1, v0, v1);
   // The stricter of the two parameter directions, so no point much further than the tolerance
   // from a trimming curve counts as on it.
   const double tolerance = boundary_tolerance(face_);
   uv_tolerance_ = std::min(box_adaptor.UResolution(tolerance), box_adaptor.VResolution(tolerance));
-  tolerant_classifier_ = std::make_unique<BRepTopAdaptor_FClass2d>(face_, uv_tolerance_);
   GeomAbs_SurfaceType type = box_adaptor.GetType();
   kind_ = kind_of(type);
   planar_ = kind_ == cad::SurfaceKind::Plane || lies_in_a_plane(surface_, face_, bounds_);
@@ -136,6 +149,18 @@ OccSurface::OccSurface(int id, std::string name, const TopoDS_Face& fluid_face)
                        type == GeomAbs_OffsetSurface;
   grid_ = std::make_unique<SampleGrid>(bounds_, samples_along(box_adaptor, true), samples_along(box_adaptor, false),
                                        [this](const cad::Vec2& uv) { return point(uv); });
+  periods_ = {period_of(surface_, true), period_of(surface_, false)};
+}
+
+const Handle(Geom_Surface)& OccSurface::evaluated_surface() const {
+  return mutable_evaluator_ ? thread_copy(serial_, surface_) : surface_;
+}
+
+cad::SurfaceDerivatives OccSurface::derivatives_shared(const cad::Vec2& uv) const {
+  gp_Pnt p;
+  gp_Vec du, dv, duu, dvv, duv;
+  surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+  return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
 }
 
 cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
@@ -144,21 +169,13 @@ cad::SurfaceDerivatives OccSurface::derivatives(const cad::Vec2& uv) const {
   if (span_cached_)
     thread_adaptor(serial_, surface_).D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   else
-    surface_->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
+    evaluated_surface()->D2(uv.x(), uv.y(), p, du, dv, duu, dvv, duv);
   return {to_vec(p.XYZ()), to_vec(du.XYZ()), to_vec(dv.XYZ()), to_vec(duu.XYZ()), to_vec(duv.XYZ()), to_vec(dvv.XYZ())};
 }
 
 std::optional<double> OccSurface::period(int direction) const {
   cad::Surface::period(direction);  // checks the direction
-  const bool along_u = direction == 0;
-  if (along_u ? surface_->IsUPeriodic() : surface_->IsVPeriodic())
-    return along_u ? surface_->UPeriod() : surface_->VPeriod();
-  if (!(along_u ? surface_->IsUClosed() : surface_->IsVClosed())) return std::nullopt;
-  double u0, u1, v0, v1;
-  surface_->Bounds(u0, u1, v0, v1);
-  const double length = along_u ? u1 - u0 : v1 - v0;
-  if (!std::isfinite(length) || !(length > 0.0)) return std::nullopt;
-  return length;
+  return periods_[direction];
 }
 
 std::optional<double> OccSurface::exact_area() const {
@@ -171,9 +188,18 @@ std::optional<double> OccSurface::exact_area() const {
   }
 }
 
+BRepTopAdaptor_FClass2d& OccSurface::thread_classifier(bool tolerant) const {
+  // Classifiers of faces whose model is gone stay until the map is this full, then all go.
+  constexpr std::size_t kMaxFacesPerThread = 4096;
+  thread_local std::unordered_map<std::uint64_t, std::array<std::unique_ptr<BRepTopAdaptor_FClass2d>, 2>> classifiers;
+  if (classifiers.size() >= kMaxFacesPerThread && classifiers.find(serial_) == classifiers.end()) classifiers.clear();
+  std::unique_ptr<BRepTopAdaptor_FClass2d>& slot = classifiers[serial_][tolerant ? 1 : 0];
+  if (!slot) slot = std::make_unique<BRepTopAdaptor_FClass2d>(face_, tolerant ? uv_tolerance_ : BRep_Tool::Tolerance(face_));
+  return *slot;
+}
+
 bool OccSurface::contains_exactly(const cad::Vec2& uv) const {
-  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
-  const TopAbs_State state = classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+  const TopAbs_State state = thread_classifier(false).Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
@@ -186,43 +212,58 @@ bool OccSurface::contains(const cad::Vec2& uv) const {
 bool OccSurface::within_tolerance_of_face(const cad::Vec2& uv) const {
   if (const TrimRaster* raster = trim_raster())
     if (const std::optional<bool> known = raster->lookup(uv)) return *known;
-  const std::lock_guard<std::mutex> lock(classifiers_mutex_);
-  const TopAbs_State state = tolerant_classifier_->Perform(gp_Pnt2d(uv.x(), uv.y()));
+  const TopAbs_State state = thread_classifier(true).Perform(gp_Pnt2d(uv.x(), uv.y()));
   return state == TopAbs_IN || state == TopAbs_ON;
 }
 
 const TrimRaster* OccSurface::trim_raster() const {
   std::call_once(raster_built_, [this] {
-    constexpr int kCells = 256;
+    constexpr int kCells = 256, kSubCells = 8;
     // Points of every pcurve of the face's loops, refined until consecutive ones are at most half
     // a cell apart along u and v; a loop that will not refine (or has no pcurve) leaves no raster.
     auto raster = std::make_unique<TrimRaster>(bounds_, kCells);
     const cad::Vec2 cell = raster->cell_size();
     const double tolerance = std::max(uv_tolerance_, BRep_Tool::Tolerance(face_));
-    const int margin = 2 + static_cast<int>(std::ceil(tolerance / std::min(cell.x(), cell.y())));
+    const auto margin_for = [&](const cad::Vec2& size) {
+      return 2 + static_cast<int>(std::ceil(tolerance / std::min(size.x(), size.y())));
+    };
+    const int margin = margin_for(cell);
     if (margin > kCells / 8) return;
+    std::vector<std::vector<cad::Vec2>> fine_loops;  // the same at half a sub-cell, for refine()
+    bool refinable = margin_for(cell / kSubCells) <= kSubCells;
     for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
       double first, last;
       const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face_, first, last);
       if (pcurve.IsNull() || !std::isfinite(first) || !std::isfinite(last)) return;
-      std::vector<cad::Vec2> samples;
-      for (int count = 16;; count *= 2) {
-        if (count > (1 << 16)) return;
-        samples.clear();
-        bool fine = true;
-        for (int k = 0; k <= count; ++k) {
-          const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / count);
-          samples.emplace_back(p.X(), p.Y());
-          if (k > 0) {
-            const cad::Vec2 step = (samples[k] - samples[k - 1]).cwiseAbs();
-            fine = fine && step.x() <= 0.5 * cell.x() && step.y() <= 0.5 * cell.y();
+      const auto sampled = [&](const cad::Vec2& size, int count, int most) -> std::optional<std::vector<cad::Vec2>> {
+        std::vector<cad::Vec2> samples;
+        for (;; count *= 2) {
+          if (count > most) return std::nullopt;
+          samples.clear();
+          bool fine = true;
+          for (int k = 0; k <= count; ++k) {
+            const gp_Pnt2d p = pcurve->Value(first + (last - first) * k / count);
+            samples.emplace_back(p.X(), p.Y());
+            if (k > 0) {
+              const cad::Vec2 step = (samples[k] - samples[k - 1]).cwiseAbs();
+              fine = fine && step.x() <= 0.5 * size.x() && step.y() <= 0.5 * size.y();
+            }
           }
+          if (fine) return samples;
         }
-        if (fine) break;
+      };
+      const std::optional<std::vector<cad::Vec2>> samples = sampled(cell, 16, 1 << 16);
+      if (!samples) return;
+      raster->mark_loop(*samples, margin);
+      if (refinable) {
+        std::optional<std::vector<cad::Vec2>> fine = sampled(cell / kSubCells, static_cast<int>(samples->size() - 1) * kSubCells, 1 << 18);
+        if (fine) fine_loops.push_back(std::move(*fine));
+        refinable = fine.has_value();
       }
-      raster->mark_loop(samples, margin);
     }
-    raster->classify([this](const cad::Vec2& uv) { return contains_exactly(uv); });
+    const auto exact = [this](const cad::Vec2& uv) { return contains_exactly(uv); };
+    raster->classify(exact);
+    if (refinable) raster->refine(kSubCells, fine_loops, margin_for(cell / kSubCells), exact);
     raster_ = std::move(raster);
   });
   return raster_.get();
@@ -251,7 +292,7 @@ std::vector<cad::Vec2> OccSurface::extremum_starts(const cad::Vec3& x) const {
   std::optional<cad::Vec2> best_inside, best_any;
   double d_inside = std::numeric_limits<double>::max(), d_any = d_inside;
   try {
-    GeomAPI_ProjectPointOnSurf extrema(gp_Pnt(x.x(), x.y(), x.z()), surface_, bounds_[0].lo, bounds_[0].hi,
+    GeomAPI_ProjectPointOnSurf extrema(gp_Pnt(x.x(), x.y(), x.z()), evaluated_surface(), bounds_[0].lo, bounds_[0].hi,
                                        bounds_[1].lo, bounds_[1].hi);
     for (int i = 1; i <= extrema.NbPoints(); ++i) {
       double u, v;

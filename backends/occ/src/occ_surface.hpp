@@ -10,9 +10,11 @@
 #include <Geom_Surface.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace semimesh::occ {
@@ -36,6 +38,10 @@ class OccSurface final : public cad::Surface {
   /// foot within the face's boundary tolerance counts as inside (within_tolerance_of_face).
   /// With a guess: the local Newton only.
   cad::SurfaceProjection project(const cad::Vec3& x, std::optional<cad::Vec2> guess = std::nullopt) const override;
+  /// The guided project()'s local Newton without its contains() (cad::Surface::local_projection).
+  cad::SurfaceProjection project_near(const cad::Vec3& x, const cad::Vec2& guess) const override {
+    return local_projection(x, guess);
+  }
 
   /// OCC's period of a periodic parameter; for a closed, non-periodic one (a closed B-spline) the
   /// length of the surface's parameter range, over which it closes on itself.
@@ -43,8 +49,13 @@ class OccSurface final : public cad::Surface {
   /// BRepGProp::SurfaceProperties over the trimmed face (Gauss integration on the face's domain).
   std::optional<double> exact_area() const override;
 
-  /// True when OCC evaluates this surface through a cached adaptor (revolution, extrusion, offset).
+  /// True when OCC evaluates this surface through an evaluator it may cache in (revolution,
+  /// extrusion, offset): each thread then evaluates its own copy (thread_copy), so threads may
+  /// share the surface all the same.
   bool has_mutable_evaluator() const { return mutable_evaluator_; }
+  /// derivatives() straight from the face's own surface, never a thread's copy nor span cache: the
+  /// reference a single thread gets (tests pin derivatives() of a copy to it, bit for bit).
+  cad::SurfaceDerivatives derivatives_shared(const cad::Vec2& uv) const;
 
   /// contains() without the trim raster: OCC's classifier alone (the slow reference it is tested
   /// against).
@@ -60,27 +71,29 @@ class OccSurface final : public cad::Surface {
   /// edges' 3D curves: STEP files may hold pcurves less accurate than the edge tolerance claims,
   /// and the exact foot of a point of such an edge must count as inside.
   bool within_tolerance_of_face(const cad::Vec2& uv) const;
+  /// This thread's classifier of the face (built on first use) with the face's tolerance
+  /// (contains()) or, `tolerant`, the boundary tolerance (project()). OCC's const Perform writes the
+  /// "current item" of its sequences of wires, so threads classifying on one classifier at once read
+  /// another wire's polygon or walk off the sequence (a SIGSEGV): each thread has its own.
+  BRepTopAdaptor_FClass2d& thread_classifier(bool tolerant) const;
+  /// The surface this thread evaluates: its own copy when the evaluator may cache, else the face's.
+  const Handle(Geom_Surface)& evaluated_surface() const;
   /// Starts from OCC's extrema: the nearest inside the trimmed face, then the nearest overall.
   std::vector<cad::Vec2> extremum_starts(const cad::Vec3& x) const;
 
   TopoDS_Face face_;  // FORWARD, so that trimming is classified against the surface as stored
   Handle(Geom_Surface) surface_;
   std::array<cad::Interval, 2> bounds_;
-  std::unique_ptr<BRepTopAdaptor_FClass2d> classifier_;           // face tolerance: contains()
-  std::unique_ptr<BRepTopAdaptor_FClass2d> tolerant_classifier_;  // boundary tolerance: project()
-  // Held around every Perform of the classifiers: OCC's const Perform writes the "current item"
-  // of its sequences of wires (NCollection_Sequence::Value), so threads classifying on a face with
-  // holes at once read another wire's polygon or walk off the sequence (a SIGSEGV).
-  mutable std::mutex classifiers_mutex_;
   std::unique_ptr<SampleGrid> grid_;  // built once after surface_ and bounds_
-  double uv_tolerance_ = 0.0;           // of tolerant_classifier_
+  double uv_tolerance_ = 0.0;           // of the tolerant classifier
   mutable std::once_flag raster_built_;
   mutable std::unique_ptr<TrimRaster> raster_;
   cad::SurfaceKind kind_ = cad::SurfaceKind::Other;
+  std::array<std::optional<double>, 2> periods_;  // period(), found once
   bool planar_ = false;
   bool mutable_evaluator_ = false;
   bool span_cached_ = false;  // B-spline or Bezier: evaluated through this thread's span cache
-  std::uint64_t serial_ = 0;  // of thread_adaptor
+  std::uint64_t serial_ = 0;  // keys this thread's adaptor, copy and classifiers of the face
 };
 
 }  // namespace semimesh::occ

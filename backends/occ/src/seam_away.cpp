@@ -16,14 +16,15 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 namespace semimesh::occ {
 namespace {
 
-// Whether the face wraps its surface's whole turn in U: its one wire holds a seam edge, a line of
-// constant u used twice.
-bool wraps_around(const TopoDS_Face& face) {
+// Whether the face wraps its surface's whole turn in U (in V when `in_v`): its one wire holds a seam
+// edge, a line of constant u (v) used twice.
+bool wraps_around(const TopoDS_Face& face, bool in_v) {
   int wires = 0;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
   if (wires != 1) return false;
@@ -32,8 +33,9 @@ bool wraps_around(const TopoDS_Face& face) {
     if (!BRep_Tool::IsClosed(edge, face)) continue;
     double first, last;
     const Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, first, last);
-    if (!pcurve.IsNull() && std::abs(pcurve->Value(first).X() - pcurve->Value(last).X()) < Precision::PConfusion())
-      return true;
+    if (pcurve.IsNull()) continue;
+    const gp_Pnt2d a = pcurve->Value(first), b = pcurve->Value(last);
+    if (std::abs(in_v ? a.Y() - b.Y() : a.X() - b.X()) < Precision::PConfusion()) return true;
   }
   return false;
 }
@@ -76,7 +78,21 @@ Handle(Geom_Surface) turned(const Handle(Geom_Surface)& surface, double angle) {
 std::optional<TopoDS_Face> reseamed(const TopoDS_Face& face, const gp_Pnt& away_from, double tolerance) {
   Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
   if (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = trimmed->BasisSurface();
-  if (!(surface->IsUClosed() || surface->IsUPeriodic()) || !wraps_around(face)) return std::nullopt;
+  // A B-spline closed in V only (OpenVSP's bodies of revolution): its parameters exchanged, so that
+  // the turn is in U as for every other surface; its normal then flips, and the face with it.
+  double fu0, fu1, fv0, fv1;
+  BRepTools::UVBounds(face, fu0, fu1, fv0, fv1);
+  bool exchanged = false;
+  if (auto spline = Handle(Geom_BSplineSurface)::DownCast(surface);
+      spline && !(spline->IsUClosed() || spline->IsUPeriodic()) && (spline->IsVClosed() || spline->IsVPeriodic())) {
+    spline = Handle(Geom_BSplineSurface)::DownCast(spline->Copy());
+    spline->ExchangeUV();
+    surface = spline;
+    exchanged = true;
+    std::swap(fu0, fv0);
+    std::swap(fu1, fv1);
+  }
+  if (!(surface->IsUClosed() || surface->IsUPeriodic()) || !wraps_around(face, exchanged)) return std::nullopt;
   double u0, u1, v0, v1;
   surface->Bounds(u0, u1, v0, v1);
   GeomAPI_ProjectPointOnSurf foot(away_from, surface);
@@ -90,13 +106,12 @@ std::optional<TopoDS_Face> reseamed(const TopoDS_Face& face, const gp_Pnt& away_
   const Handle(Geom_Surface) moved = turned(surface, std::fmod(from_seam + 0.5 * period, period));
   if (moved.IsNull()) return std::nullopt;
   // The whole new turn in U, the face's own extent in V.
-  double fu0, fu1, fv0, fv1, mu0, mu1, mv0, mv1;
-  BRepTools::UVBounds(face, fu0, fu1, fv0, fv1);
+  double mu0, mu1, mv0, mv1;
   moved->Bounds(mu0, mu1, mv0, mv1);
   BRepBuilderAPI_MakeFace make(moved, mu0, mu1, fv0, fv1, tolerance);
   if (!make.IsDone()) return std::nullopt;
   TopoDS_Face out = make.Face();
-  if (face.Orientation() == TopAbs_REVERSED) out.Reverse();
+  if ((face.Orientation() == TopAbs_REVERSED) != exchanged) out.Reverse();
   return out;
 }
 

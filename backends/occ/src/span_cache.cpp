@@ -25,4 +25,11 @@ const GeomAdaptor_Surface& thread_adaptor(std::uint64_t serial, const Handle(Geo
   return *adaptors.emplace(serial, std::make_unique<GeomAdaptor_Surface>(surface)).first->second;
 }
 
+const Handle(Geom_Surface)& thread_copy(std::uint64_t serial, const Handle(Geom_Surface)& surface) {
+  thread_local std::unordered_map<std::uint64_t, Handle(Geom_Surface)> copies;
+  if (const auto it = copies.find(serial); it != copies.end()) return it->second;
+  if (copies.size() >= kMaxAdaptorsPerThread) copies.clear();
+  return copies.emplace(serial, Handle(Geom_Surface)::DownCast(surface->Copy())).first->second;
+}
+
 }  // namespace semimesh::occ

@@ -22,4 +22,10 @@ std::uint64_t new_surface_serial();
 /// Valid until the thread's next call.
 const GeomAdaptor_Surface& thread_adaptor(std::uint64_t serial, const Handle(Geom_Surface)& surface);
 
+/// The calling thread's own copy of `surface` (Geom_Surface::Copy: the same geometry, evaluated by
+/// the same code, so to the same bits), which has serial `serial` (built on first use): for a
+/// surface OCC evaluates through an evaluator it may cache in (revolution, extrusion, offset), so
+/// that threads never share one. Valid until the thread's next call.
+const Handle(Geom_Surface)& thread_copy(std::uint64_t serial, const Handle(Geom_Surface)& surface);
+
 }  // namespace semimesh::occ

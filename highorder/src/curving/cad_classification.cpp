@@ -94,7 +94,7 @@ cad::Vec2 surface_parameter(const cad::Model& model, int surface, const mesh::Ca
                             const cad::Vec2* guess) {
   if (a.kind == mesh::CadAttachment::Surface && a.entity == surface) return {a.u, a.v};
   const cad::Surface& s = model.surface(surface);
-  return guess ? s.project(x, *guess).uv : s.project(x).uv;
+  return guess ? s.project_near(x, *guess).uv : s.project(x).uv;
 }
 
 namespace {

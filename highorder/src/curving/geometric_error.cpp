@@ -69,7 +69,7 @@ GeometricError geometric_error(const mesh::Mesh& mesh, const cad::Model& model, 
     for (Eigen::Index k = 0; k < points.rows(); ++k) {
       // Interpolated across a seam cut, a guess may lie a little outside the parameter box.
       const cad::Vec2 guess = detail::into_box(surface, guesses.row(k).transpose());
-      const double d = surface.project(points.row(k).transpose(), guess).distance / reference_length;
+      const double d = surface.project_near(points.row(k).transpose(), guess).distance / reference_length;
       err.max_rel = std::max(err.max_rel, d);
       sum_squares += d * d;
       ++err.samples;

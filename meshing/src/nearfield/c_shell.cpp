@@ -38,12 +38,14 @@ std::map<int, int> root_curve_surfaces(const cad::Model& model, const BodyRoles&
   constexpr double kDegree = 3.14159265358979323846 / 180.0;
   std::map<int, int> surface_of;
   for (const WallCurve& w : concave_wall_curves(model, roles.body_surfaces, roles.wall_surface, j.concave_below_deg)) {
-    const double worst = w.min_angle_deg < j.min_angle_deg ? w.min_angle_deg : w.max_angle_deg;
-    if (w.min_angle_deg < j.min_angle_deg || w.max_angle_deg > j.max_angle_deg)
+    const bool too_sharp = w.min_angle_deg < j.min_angle_deg;
+    if (too_sharp || w.max_angle_deg > j.max_angle_deg)
       throw NearFieldError("near field: " + curve_label(model, w.curve) + " between " +
                            surface_label(model, w.body_surface) + " and the wall meets the wall at " +
-                           number_label(worst) + " degrees (seen from the fluid); the junction block supports " +
-                           number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) + " degrees");
+                           number_label(too_sharp ? w.min_angle_deg : w.max_angle_deg) + " degrees (seen from the fluid) at " +
+                           point_label(too_sharp ? w.min_at : w.max_at) + "; the junction block supports " +
+                           number_label(j.min_angle_deg) + " to " + number_label(j.max_angle_deg) +
+                           " degrees (nearfield.junction_min_angle, nearfield.junction_max_angle)");
     const double cosine = std::cos(w.max_angle_deg * kDegree);
     const double needed = -delta_wing * cosine;
     if (cosine < 0.0 && !(delta_wall < delta_wing / -cosine))

@@ -34,7 +34,7 @@ std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<in
       if (!std::count(body_surfaces.begin(), body_surfaces.end(), use.surface)) continue;
       const cad::Curve& curve = model.curve(c);
       const cad::Surface& face = model.surface(use.surface);
-      WallCurve w{c, use.surface, 360.0, 0.0};
+      WallCurve w{c, use.surface, 360.0, 0.0, Vec3::Zero(), Vec3::Zero()};
       const auto bounds = curve.bounds();
       for (int k = 0; k < samples; ++k) {
         // Ends included: a swept wing leans most at its leading-edge vertex.
@@ -45,8 +45,8 @@ std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<in
         // The face lies on the left of its loop's walking direction seen from the fluid.
         const Vec3 walk = (use.forward ? 1.0 : -1.0) * d.d1.normalized();
         const double angle = dihedral_deg(n_face, n_face.cross(walk), n_wall);
-        w.min_angle_deg = std::min(w.min_angle_deg, angle);
-        w.max_angle_deg = std::max(w.max_angle_deg, angle);
+        if (angle < w.min_angle_deg) w.min_angle_deg = angle, w.min_at = d.p;
+        if (angle > w.max_angle_deg) w.max_angle_deg = angle, w.max_at = d.p;
       }
       found.push_back(w);
     }

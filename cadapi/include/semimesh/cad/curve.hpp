@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace semimesh::cad {
 
@@ -38,6 +39,12 @@ class Curve {
   /// Closest point to x on the curve (clamped to bounds()). `guess` seeds the local solver;
   /// without it the default samples the curve to find a start.
   virtual CurveProjection project(const Vec3& x, std::optional<double> guess = std::nullopt) const;
+
+  /// Parameters strictly inside bounds() where the tangent may jump (a B-spline's knots of
+  /// multiplicity = degree, the corners of a loft linear between its sections), increasing.
+  /// arc_length() integrates between them: a Gauss rule across a kink converges to about 1e-7 only,
+  /// and a curve meshed in a thousand steps then runs out of length before its end. Default: none.
+  virtual const std::vector<double>& tangent_breaks() const;
 
   /// Arc length between parameters a and b (signed: negative when b < a).
   virtual double arc_length(double a, double b) const;

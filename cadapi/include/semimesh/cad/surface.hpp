@@ -54,12 +54,23 @@ class Surface {
   /// The default is Newton on the parameter box from a sampled start; `inside` from contains().
   virtual SurfaceProjection project(const Vec3& x, std::optional<Vec2> guess = std::nullopt) const;
 
+  /// project(x, guess) for callers that need only the foot: uv, point, distance and converged are
+  /// exactly project(x, guess)'s, `inside` is not decided (false). The default calls project(); a
+  /// backend whose guided project() is local_projection() plus contains() returns
+  /// local_projection() alone, saving the trimming test (OCC's exact classifier near a face's loops).
+  virtual SurfaceProjection project_near(const Vec3& x, const Vec2& guess) const;
+
   /// Unit normal pointing into the fluid (see the orientation contract above).
   Vec3 normal(const Vec2& uv) const;
   /// The same from derivatives already evaluated at a point (saves a second evaluation).
   Vec3 normal(const SurfaceDerivatives& d) const;
   /// Principal curvatures with the sign convention of PrincipalCurvatures.
   PrincipalCurvatures curvatures(const Vec2& uv) const;
+
+ protected:
+  /// What the default project(x, guess) does before classifying: Newton from guess, restarted off a
+  /// pole (leave_pole); `inside` false.
+  SurfaceProjection local_projection(const Vec3& x, const Vec2& guess) const;
 
  private:
   int id_;

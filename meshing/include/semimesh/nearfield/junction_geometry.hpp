@@ -17,6 +17,7 @@ struct WallCurve {
   int body_surface = -1;
   double min_angle_deg = 0.0;  ///< over samples along the curve
   double max_angle_deg = 0.0;
+  Vec3 min_at = Vec3::Zero(), max_at = Vec3::Zero();  ///< where they are
 };
 
 /// Every curve shared by one of `body_surfaces` and `wall`, with its angle range from both surfaces'

@@ -20,9 +20,9 @@
 //   naca.*             without a file: the analytic backend's wing keys (mock_cad::naca_params_from)
 //
 // Thread safety: queries build their OCC algorithm objects per call and share only immutable
-// geometry, so the model is thread-safe, except when it holds surfaces of revolution/extrusion,
-// offset surfaces or offset curves, whose OCC evaluators keep a mutable cache: then
-// Model::thread_safe() is false.
+// geometry, so the model is thread-safe. Surfaces of revolution/extrusion and offset surfaces,
+// whose OCC evaluators may keep a mutable cache, are evaluated by each thread on its own copy;
+// offset curves are not: a model holding one has Model::thread_safe() false.
 #pragma once
 
 #include "semimesh/cad/model.hpp"
