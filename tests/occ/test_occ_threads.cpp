@@ -43,6 +43,23 @@ TopoDS_Face square_with_holes() {
   return {};
 }
 
+// How many of `rounds` passes over `points` queries, made by 4 threads at once and out of step,
+// `agrees(p)` says disagree with the one-thread answer for point p.
+template <class Agrees>
+int disagreements_across_threads(std::size_t points, int rounds, Agrees agrees) {
+  constexpr int kThreads = 4;
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < rounds; ++round)
+        for (std::size_t k = 0; k < points; ++k)
+          if (!agrees((k * (t + 1) + round) % points)) ++wrong;
+    });
+  for (std::thread& t : threads) t.join();
+  return wrong.load();
+}
+
 TEST(OccThreads, ExactClassificationOfAFaceWithHolesAgreesAcrossThreads) {
   const OccSurface surface(0, "holes", square_with_holes());
   ASSERT_EQ(surface.kind(), cad::SurfaceKind::BSpline);
@@ -61,19 +78,10 @@ TEST(OccThreads, ExactClassificationOfAFaceWithHolesAgreesAcrossThreads) {
   ASSERT_GT(inside, 0);
   ASSERT_LT(inside, static_cast<int>(points.size()));
 
-  constexpr int kThreads = 4, kRounds = 8;
-  std::atomic<int> wrong{0};
-  std::vector<std::thread> threads;
-  for (int t = 0; t < kThreads; ++t)
-    threads.emplace_back([&, t] {
-      for (int round = 0; round < kRounds; ++round)
-        for (std::size_t k = 0; k < points.size(); ++k) {
-          const std::size_t p = (k * (t + 1) + round) % points.size();  // threads out of step
-          if ((surface.contains_exactly(points[p]) ? 1 : 0) != expected[p]) ++wrong;
-        }
-    });
-  for (std::thread& t : threads) t.join();
-  EXPECT_EQ(wrong.load(), 0);
+  EXPECT_EQ(disagreements_across_threads(points.size(), 8, [&](std::size_t p) {
+              return (surface.contains_exactly(points[p]) ? 1 : 0) == expected[p];
+            }),
+            0);
 }
 
 TEST(OccThreads, RevolutionAndExtrusionEvaluateToTheSharedSurfacesBitsOnEveryThread) {
@@ -97,19 +105,10 @@ TEST(OccThreads, RevolutionAndExtrusionEvaluateToTheSharedSurfacesBitsOnEveryThr
     const auto same = [](const cad::SurfaceDerivatives& a, const cad::SurfaceDerivatives& b) {
       return a.p == b.p && a.du == b.du && a.dv == b.dv && a.duu == b.duu && a.duv == b.duv && a.dvv == b.dvv;
     };
-    constexpr int kThreads = 4, kRounds = 4;
-    std::atomic<int> wrong{0};
-    std::vector<std::thread> threads;
-    for (int t = 0; t < kThreads; ++t)
-      threads.emplace_back([&, t] {
-        for (int round = 0; round < kRounds; ++round)
-          for (std::size_t k = 0; k < points.size(); ++k) {
-            const std::size_t p = (k * (t + 1) + round) % points.size();  // threads out of step
-            if (!same(surface.derivatives(points[p]), expected[p])) ++wrong;
-          }
-      });
-    for (std::thread& t : threads) t.join();
-    EXPECT_EQ(wrong.load(), 0) << surface.name();
+    EXPECT_EQ(disagreements_across_threads(points.size(), 4,
+                                           [&](std::size_t p) { return same(surface.derivatives(points[p]), expected[p]); }),
+              0)
+        << surface.name();
     ++checked;
   }
   EXPECT_EQ(checked, 2) << "the tip (revolution) and the skin (extrusion)";
