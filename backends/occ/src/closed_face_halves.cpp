@@ -1,23 +1,16 @@
 #include "closed_face_halves.hpp"
 
+#include "crease_seam.hpp"
 #include "faces_replaced.hpp"
 
 #include <BRepBuilderAPI_Copy.hxx>
-#include <BRep_Tool.hxx>
 #include <ShapeUpgrade_ShapeDivideClosed.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
 namespace semimesh::occ {
 namespace {
-
-bool has_own_seam(const TopoDS_Face& face) {
-  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
-    if (BRep_Tool::IsClosed(TopoDS::Edge(e.Current()), face)) return true;
-  return false;
-}
 
 // The pieces of `face` cut across its closed direction, each on its own surface handle; one or
 // none when OCCT does not cut it (the face is then kept).
@@ -37,7 +30,7 @@ std::vector<TopoDS_Face> halves(const TopoDS_Face& face) {
 TopoDS_Shape with_closed_faces_halved(const TopoDS_Shape& part, double tolerance, FaceNames& names,
                                       std::vector<std::string>& repairs) {
   const FacesReplaced cut = with_faces_replaced(part, tolerance, names, [](const TopoDS_Face& face) {
-    return has_own_seam(face) ? halves(face) : std::vector<TopoDS_Face>{};
+    return has_seam(face) ? halves(face) : std::vector<TopoDS_Face>{};
   });
   if (cut.replaced > 0)
     repairs.push_back("cut " + std::to_string(cut.replaced) + " closed face(s) of the body in two across its seam before "

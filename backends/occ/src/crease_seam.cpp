@@ -22,12 +22,6 @@
 namespace semimesh::occ {
 namespace {
 
-bool has_seam(const TopoDS_Face& face) {
-  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
-    if (BRep_Tool::IsClosed(TopoDS::Edge(e.Current()), face)) return true;
-  return false;
-}
-
 // The surface's unit normal (du x dv) at (u, v), or nothing where it degenerates.
 std::optional<gp_Vec> unit_normal(const Handle(Geom_Surface)& s, double u, double v) {
   gp_Pnt p;
@@ -77,6 +71,12 @@ std::optional<std::pair<TopoDS_Face, TopoDS_Face>> crease_halves(const TopoDS_Fa
 }
 
 }  // namespace
+
+bool has_seam(const TopoDS_Face& face) {
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+    if (BRep_Tool::IsClosed(TopoDS::Edge(e.Current()), face)) return true;
+  return false;
+}
 
 TopoDS_Shape with_crease_seams_split(const TopoDS_Shape& body, double tolerance, FaceNames& names,
                                      std::vector<std::string>& repairs) {

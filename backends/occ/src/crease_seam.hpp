@@ -7,12 +7,16 @@
 
 #include "prepare_shape.hpp"
 
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
 #include <string>
 #include <vector>
 
 namespace semimesh::occ {
+
+/// Whether one of the face's edges is a seam of it (its surface closes on itself across the face).
+bool has_seam(const TopoDS_Face& face);
 
 /// `body` (a shell's or solid's faces) with every face whose seam is a crease (the surface's
 /// normals on its two sides more than 20 degrees apart, at every sample along it) and which covers

@@ -62,11 +62,11 @@ std::vector<TopoDS_Shell> closed_shells(const std::vector<TopoDS_Face>& faces) {
     const int g = static_cast<int>(shells.size());
     shells.emplace_back();
     builder.MakeShell(shells.back());
-    std::vector<std::size_t> todo{seed};
+    std::vector<std::size_t> to_visit{seed};
     group[seed] = g;
-    while (!todo.empty()) {
-      const TopoDS_Face& face = faces[todo.back()];
-      todo.pop_back();
+    while (!to_visit.empty()) {
+      const TopoDS_Face& face = faces[to_visit.back()];
+      to_visit.pop_back();
       builder.Add(shells.back(), face);
       for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
         const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
@@ -82,7 +82,7 @@ std::vector<TopoDS_Shell> closed_shells(const std::vector<TopoDS_Face>& faces) {
           const std::size_t k = static_cast<std::size_t>(face_ids.FindIndex(other) - 1);
           if (group[k] < 0) {
             group[k] = g;
-            todo.push_back(k);
+            to_visit.push_back(k);
           }
         }
       }
