@@ -19,8 +19,9 @@ using ProgressCallback = std::function<void(double fraction, const std::string& 
 /// consecutive parts of one computation report one non-decreasing fraction. Empty when `whole` is.
 ProgressCallback progress_part(const ProgressCallback& whole, double from, double to);
 
-/// Counts the items of a loop that are done, on any thread, and reports to the callback from the
-/// reporting thread only, each time the count has passed another of kMarks evenly spaced marks.
+/// Counts the items of a loop that are done, on any thread, and reports to the callback from one
+/// thread at a time (one reporting thread, or any thread under the caller's lock), each time the
+/// count has passed another of kMarks evenly spaced marks.
 class ProgressCounter {
  public:
   static constexpr std::size_t kMarks = 100;
@@ -29,7 +30,7 @@ class ProgressCounter {
 
   /// Any thread: `items` more done (a relaxed atomic add).
   void add(std::size_t items = 1) { done_.fetch_add(items, std::memory_order_relaxed); }
-  /// The reporting thread only: calls the callback when a mark was passed since its last report.
+  /// One thread at a time: calls the callback when a mark was passed since its last report.
   void report_if_due();
   /// The reporting thread, after the loop: reports 1 (unless it already did).
   void finish();

@@ -12,10 +12,6 @@
 #include <limits>
 #include <mutex>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 namespace semimesh::surface {
 namespace {
 
@@ -97,14 +93,6 @@ double thickness_needed(const cad::Surface& s, const Vec2& uv, const Vec3& dir, 
   return needed;
 }
 
-bool reporting_thread() {
-#ifdef _OPENMP
-  return omp_get_thread_num() == 0;
-#else
-  return true;
-#endif
-}
-
 std::string label(const Vec3& p) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", p.x(), p.y(), p.z()); }
 
 // The name of the CAD curve of `surface` nearest to p, when one is within `within`.
@@ -166,7 +154,7 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
   const long rows = static_cast<long>(curved.size()) * rows_per_surface;
   std::vector<std::vector<ShellSizeLimit>> per_row(static_cast<std::size_t>(rows));
   ProgressCounter counter(progress, static_cast<std::size_t>(rows), "shell limits");
-  std::mutex mutex;
+  std::mutex mutex, report_mutex;
   long failed_at = rows;
   std::exception_ptr error;
 #pragma omp parallel for schedule(dynamic, 1) if (model.thread_safe())
@@ -176,7 +164,10 @@ std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const She
           row_limits(*curved[static_cast<std::size_t>(r / rows_per_surface)], static_cast<int>(r % rows_per_surface),
                      shell, max_size, probe_size);
       counter.add();
-      if (reporting_thread()) counter.report_if_due();
+      // Whichever thread ends a row reports (one at a time): a row is long, and thread 0 alone may
+      // end only a few of them.
+      const std::lock_guard<std::mutex> lock(report_mutex);
+      counter.report_if_due();
     } catch (...) {  // may not leave the parallel region: the lowest row's is rethrown, as in order
       const std::lock_guard<std::mutex> lock(mutex);
       if (r < failed_at) failed_at = r, error = std::current_exception();
