@@ -13,7 +13,9 @@
 #include <GeomConvert.hxx>
 #include <GeomFill_Generator.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
 #include <Geom_Ellipse.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <Precision.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -59,13 +61,32 @@ TopoDS_Shape spline_fuselage_closed_in_v(bool seam_on_crest) {
   return {};
 }
 
-enum class WallKind { Cylinder, BSpline, BSplineClosedInV };
+// The fuselage's side as OpenVSP writes one: a grid of untrimmed B-spline patches, a quarter turn
+// each round (the first from the bottom, or from the crest) and half the length each along, its
+// flat ends left open; faces in the order round, then along.
+TopoDS_Shape patch_fuselage(bool seam_on_crest) {
+  const Handle(Geom_CylindricalSurface) side =
+      new Geom_CylindricalSurface(gp_Ax3(gp_Pnt(-5, 0, -1), gp::DX(), seam_on_crest ? gp::DZ() : -gp::DZ()), 1.0);
+  TopoDS_Compound patches;
+  BRep_Builder builder;
+  builder.MakeCompound(patches);
+  for (int along = 0; along < 2; ++along)
+    for (int round = 0; round < 4; ++round) {
+      const Handle(Geom_RectangularTrimmedSurface) quarter = new Geom_RectangularTrimmedSurface(
+          side, round * M_PI / 2, (round + 1) * M_PI / 2, 5.0 * along, 5.0 * (along + 1));
+      builder.Add(patches, BRepBuilderAPI_MakeFace(GeomConvert::SurfaceToBSplineSurface(quarter), Precision::Confusion()).Face());
+    }
+  return patches;
+}
+
+enum class WallKind { Cylinder, BSpline, BSplineClosedInV, Patches };
 
 TopoDS_Shape fuselage_of(WallKind kind, bool seam_on_crest) {
   switch (kind) {
     case WallKind::Cylinder: return fuselage(seam_on_crest);
     case WallKind::BSpline: return spline_fuselage(seam_on_crest);
     case WallKind::BSplineClosedInV: return spline_fuselage_closed_in_v(seam_on_crest);
+    case WallKind::Patches: return patch_fuselage(seam_on_crest);
   }
   return {};
 }
@@ -194,6 +215,7 @@ INSTANTIATE_TEST_SUITE_P(CylinderAndBSpline, OccJoinSeam,
                              case WallKind::Cylinder: return "Cylinder";
                              case WallKind::BSpline: return "BSpline";
                              case WallKind::BSplineClosedInV: return "BSplineClosedInV";
+                             case WallKind::Patches: return "Patches";
                            }
                            return "";
                          });
@@ -239,6 +261,38 @@ TEST(OccJoinParts, ABSplineWallIsReseamedExactly) {
     }
   EXPECT_LT(worst_on_file, 1e-9);
   EXPECT_LT(worst_on_wall, 1e-9);
+}
+
+// A fuselage in eight patches (two along, four round): joined into one wall face before the join,
+// its control points kept (the points of the wall lie on the cylinder), the root a hole in it.
+// Without the joining the root would lie on one patch and the wall layer end on its neighbours.
+TEST(OccJoinParts, AFuselageInPatchesBecomesOneWallFace) {
+  for (bool seam_on_crest : {false, true}) {
+    cad::Source source{assembly_file(0.0, seam_on_crest, WallKind::Patches), {}};
+    for (const auto& [key, value] : kJoin) source.params.set(key, value);
+    source.params.set("occ.join_wall", "#6\n#7\n#8\n#9\n#10\n#11\n#12\n#13\n");
+    const auto model = load_occ(source);
+    EXPECT_TRUE(std::any_of(model->repairs().begin(), model->repairs().end(), [](const std::string& r) {
+      return r.find("joined 8 patches of the wall part into 1 face(s)") != std::string::npos;
+    })) << "seam on crest " << seam_on_crest;
+    EXPECT_EQ(model->num_surfaces(), 12) << "the box's six, one wall, the block's five";
+    const std::optional<int> wall = model->find_surface("wall");
+    ASSERT_TRUE(wall.has_value());
+    EXPECT_EQ(model->loops(*wall).size(), 2u) << "the root is a hole of the wall";
+    const cad::Surface& surface = model->surface(*wall);
+    const auto box = surface.bounds();
+    double worst = 0.0;
+    for (int i = 0; i <= 16; ++i)
+      for (int j = 0; j <= 8; ++j) {
+        const cad::Vec3 p = surface.point({box[0].lo + box[0].length() * i / 16, box[1].lo + box[1].length() * j / 8});
+        worst = std::max(worst, std::abs(std::hypot(p.y(), p.z() + 1.0) - 1.0));
+      }
+    EXPECT_LT(worst, 1e-12) << "the patches' own control points";
+    const cad::SurfaceProjection crest = surface.project(cad::Vec3(-2, 0, 0));
+    EXPECT_GT(surface.normal(crest.uv).z(), 0.99) << "on the crest, into the fluid";
+    for (int c = 0; c < model->num_curves(); ++c)
+      EXPECT_EQ(model->surfaces_of_curve(c).size(), 2u) << cad::curve_label(*model, c) << ": the domain is closed";
+  }
 }
 
 TEST(OccJoinParts, ASeamAwayFromTheRootIsKept) {

@@ -1,5 +1,7 @@
 #include "fluid_domain.hpp"
 
+#include "joined_patches.hpp"
+
 #include "body_cut.hpp"
 #include "closed_face_halves.hpp"
 #include "crease_seam.hpp"
@@ -575,7 +577,8 @@ TopoDS_Shape fluid_domain_of_parts(const TopoDS_Shape& shape, const PartsToJoin&
   TopTools_IndexedMapOfShape faces, taken;
   TopExp::MapShapes(shape, TopAbs_FACE, faces);
   const TopoDS_Shell body_faces = part_shell(faces, names, parts.body, "geometry.join.body", taken);
-  const TopoDS_Shell wall_faces = part_shell(faces, names, parts.wall, "geometry.join.wall", taken);
+  const TopoDS_Shell wall_faces =
+      one_shell(with_patches_joined(part_shell(faces, names, parts.wall, "geometry.join.wall", taken), tolerance, repairs));
   // The wall's seams away from the body: through the root they would cut it open (no hole).
   const TopoDS_Shape wall = body_solids(one_shell(with_seams_away_from(wall_faces, centre_of(body_faces), tolerance, repairs)),
                                         tolerance, "geometry.join.wall: the wall", repairs);
