@@ -48,13 +48,21 @@ bool hex_corners_valid(const std::array<Vec3, 8>& x) {
 // hex would be a sliver there, folded by the curved root. Its wall strip keeps the width delta_wing
 // (the wall layer's prisms lean to meet the halo) and its wing strip the height delta_wall. Along
 // the root the foot stays under the halo (a halo over a swept strip top stands downstream of the
-// root: the wall layer's column there must not lean along the root either).
-void place_wall_foot(const cad::Model& model, int wall_surface, const Vec3& outward, const Frame& wall,
-                     double delta_wing, double delta_wall, JunctionNode& j) {
-  const Vec3 below = j.halo - delta_wall * wall.normal_at(j.root);
+// root: the wall layer's column there must not lean along the root either). At a sharp corner of
+// the loop (`sides`: the two root segments' outward directions; a C-type's trailing edge) the foot
+// must lie where both point, or one of the corner's hexes inverts: a halo over a strip top that a
+// leaning wing carries sideways (a low wing on a fuselage, 45 degrees over its acute lower side:
+// the foot as far to the upper side as it is downstream) would take it out; such a foot is put on
+// the bisector, delta_wing out.
+void place_wall_foot(const cad::Model& model, int wall_surface, const std::array<Vec3, 2>& sides,
+                     const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall, JunctionNode& j) {
+  const Vec3 n = wall.normal_at(j.root);
+  const Vec3 below = j.halo - delta_wall * n;
   const double out = (below - j.root).dot(outward);
   const cad::Surface& face = model.surface(wall_surface);
-  const Vec3 above_foot = below + std::max(0.0, delta_wing - out) * outward;
+  Vec3 above_foot = below + std::max(0.0, delta_wing - out) * outward;
+  const Vec3 offset = above_foot - j.root - (above_foot - j.root).dot(n) * n;
+  if (!(offset.dot(sides[0]) > 0.0 && offset.dot(sides[1]) > 0.0)) above_foot = j.root + delta_wing * outward;
   const auto foot = wall.curved ? face.project(above_foot, wall.root_uv) : face.project(above_foot);
   j.wall_foot = foot.point;
   j.wall_foot_cad = {CadAttachment::Surface, wall_surface, foot.uv.x(), foot.uv.y()};
@@ -84,15 +92,16 @@ Vec3 halo_moved_with_its_foot(const cad::Model& model, const std::vector<int>& b
   return medial_halo(model, body_surfaces, root + shift - shift.dot(n) * n, outward, n, delta_wing, delta_wall);
 }
 
-// Halo, strip top and wall foot of root node `i` of the loop; `outward` the direction in the wall
-// plane away from the body (bisecting the two root segments' outward normals). A sharp trailing
+// Halo, strip top and wall foot of root node `i` of the loop; `sides` the two root segments'
+// outward normals in the wall plane (their bisector the direction away from the body). A sharp trailing
 // edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces places
 // them against the rear interfaces standing on the strip top (over a strip top raised forward along
 // a tapered wing's edge, the skins crossed near the fan: TetGen refused the far field).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
                                  const std::map<int, int>& root_surface, const BodyMesh& body, int r,
-                                 const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall,
-                                 bool fan) {
+                                 const std::array<Vec3, 2>& sides, const Frame& wall, double delta_wing,
+                                 double delta_wall, bool fan) {
+  const Vec3 outward = (sides[0] + sides[1]).normalized();
   JunctionNode j;
   j.root = body.points[r];
   j.halo = medial_halo(model, roles.body_surfaces, j.root, outward, wall.normal_at(j.root), delta_wing, delta_wall);
@@ -149,7 +158,7 @@ JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles
   if (!(wall.height(j.strip_top) > 1e-3 * delta_wall))
     throw NearFieldError("near field: the root strip above " + point_label(j.root) + " on " +
                          surface_label(model, body.node_surface[r]) + " has no height");
-  place_wall_foot(model, roles.wall_surface, outward, wall, delta_wing, delta_wall, j);
+  place_wall_foot(model, roles.wall_surface, sides, outward, wall, delta_wing, delta_wall, j);
   return j;
 }
 
@@ -251,16 +260,16 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
   j.fan = fan_index(model, body, loop, crack_curve);
   for (int i = 0; i < n; ++i) {
     const int r = loop[i], prev = loop[(i + n - 1) % n], next = loop[(i + 1) % n];
-    if (i == j.fan) {
-      j.at[i] = place_junction_node(model, roles, root_surface, body, r, segments.outward(prev, r), wall, delta_wing,
+    const Vec3 before = segments.outward(prev, r), after = segments.outward(r, next);
+    if (i == j.fan) {  // a side each
+      j.at[i] = place_junction_node(model, roles, root_surface, body, r, {before, before}, wall, delta_wing,
                                     delta_wall, true);
-      j.fan_side1 = place_junction_node(model, roles, root_surface, body, r, segments.outward(r, next), wall,
-                                        delta_wing, delta_wall, true);
+      j.fan_side1 = place_junction_node(model, roles, root_surface, body, r, {after, after}, wall, delta_wing,
+                                        delta_wall, true);
       continue;
     }
-    j.at[i] = place_junction_node(model, roles, root_surface, body, r,
-                                  (segments.outward(prev, r) + segments.outward(r, next)).normalized(), wall,
-                                  delta_wing, delta_wall, false);
+    j.at[i] = place_junction_node(model, roles, root_surface, body, r, {before, after}, wall, delta_wing, delta_wall,
+                                  false);
   }
   if (j.fan >= 0) {
     const int prev = loop[(j.fan + n - 1) % n], r = loop[j.fan], next = loop[(j.fan + 1) % n];

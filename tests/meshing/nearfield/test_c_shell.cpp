@@ -443,3 +443,24 @@ TEST(CShell, StripTopsStandOnTheirRootsSections) {
 
 }  // namespace
 }  // namespace semimesh::nearfield
+
+namespace semimesh::nearfield {
+namespace {
+
+// A wing leaning 15 degrees over its lower side (root corners of 75 and 105 degrees): the sharp
+// trailing edge's strip top, raised along the leaning wing, stands delta_wall tan 15 towards the
+// upper side, and a wall foot under its halo would lie outside the lower side's outward half-plane
+// (the hex on the lower side's last root segment inverted: "the root loop turns too sharply"). The
+// foot is put on the corner's bisector: every element valid.
+TEST(CShell, ASharpTrailingEdgeLeaningOverOneSideKeepsItsCornerHexesValid) {
+  for (double dihedral : {15.0, -15.0}) {
+    mock_cad::NacaWingParams wing = naca("0012", true);
+    wing.dihedral_deg = dihedral;
+    const CShellBuilt b = build(wing, 0.1, 0.1);
+    expect_valid_linear_elements(b.f);
+    EXPECT_EQ(static_cast<std::size_t>(b.f.junction_hexes), b.f.footprint.size()) << "dihedral " << dihedral;
+  }
+}
+
+}  // namespace
+}  // namespace semimesh::nearfield
