@@ -28,6 +28,10 @@ using mesh::NodeId;
 // the placed positions; large enough that the threads rarely wait at a block's end).
 constexpr std::size_t kBlock = 4096;
 
+// A curve edge whose parameter midpoint lies farther than this fraction of the edge from its arc
+// length midpoint takes its nodes by arc length.
+constexpr double kUnevenParameter = 0.1;
+
 // Nodes inside a volume element of this shape and order (none on its edges or faces).
 std::size_t interior_node_count(Shape shape, int order) {
   const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
@@ -234,12 +238,19 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
     const double tb0 = detail::curve_parameter(model_, place.id, att_b, xb, std::nullopt);
     const double ta = detail::curve_parameter(model_, place.id, in_.cad_attachment(a), xa, tb0);
     const double tb = att_b.kind == CadAttachment::Vertex ? detail::curve_parameter(model_, place.id, att_b, xb, ta) : tb0;
-    const double length = springs ? c.arc_length(ta, tb) : 0.0;
     const detail::KinkChart& chart = curve_charts_[place.id];
     const double sa = chart.to_chart(ta), sb = chart.to_chart(tb);
+    const auto by_parameter = [&](double f) { return chart.from_chart(sa + f * (sb - sa)); };
+    // A parameter running very unevenly inside the edge (an intersection curve of OCCT's Booleans:
+    // at a wing's root on a fuselage a mid-edge node a tenth of the way along folded the junction
+    // hex there) gives way to the arc length on this edge. A smooth parameter passes the test
+    // once the mesh is fine, so the placement keeps its convergence rate.
+    const double length = c.arc_length(ta, tb);
+    const bool by_length =
+        springs || (c.point(by_parameter(0.5)) - c.point(c.parameter_at_length(ta, 0.5 * length))).norm() >
+                       kUnevenParameter * (xb - xa).norm();
     for (int i = 0; i < P - 1; ++i) {
-      const double t = springs ? c.parameter_at_length(ta, fraction[i] * length)
-                               : chart.from_chart(sa + fraction[i] * (sb - sa));
+      const double t = by_length ? c.parameter_at_length(ta, fraction[i] * length) : by_parameter(fraction[i]);
       const Eigen::Vector3d p = c.point(t);
       out.moved = std::max(out.moved, (p - out.x[i]).norm());
       out.x[i] = p;
