@@ -51,9 +51,9 @@ bool hex_corners_valid(const std::array<Vec3, 8>& x) {
 // root: the wall layer's column there must not lean along the root either). At a sharp corner of
 // the loop (`sides`: the two root segments' outward directions; a C-type's trailing edge) the foot
 // must lie where both point, or one of the corner's hexes inverts: a halo over a strip top that a
-// leaning wing carries sideways (a low wing on a fuselage, 45 degrees over its acute lower side:
-// the foot as far to the upper side as it is downstream) would take it out; such a foot is put on
-// the bisector, delta_wing out.
+// leaning wing carries sideways (a low wing on a fuselage, 45 degrees over its acute upper side:
+// the foot as far to the side as it is downstream) would take it out; such a foot is put on the
+// bisector, delta_wing out.
 void place_wall_foot(const cad::Model& model, int wall_surface, const std::array<Vec3, 2>& sides,
                      const Vec3& outward, const Frame& wall, double delta_wing, double delta_wall, JunctionNode& j) {
   const Vec3 n = wall.normal_at(j.root);
@@ -93,10 +93,10 @@ Vec3 halo_moved_with_its_foot(const cad::Model& model, const std::vector<int>& b
 }
 
 // Halo, strip top and wall foot of root node `i` of the loop; `sides` the two root segments'
-// outward normals in the wall plane (their bisector the direction away from the body). A sharp trailing
-// edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces places
-// them against the rear interfaces standing on the strip top (over a strip top raised forward along
-// a tapered wing's edge, the skins crossed near the fan: TetGen refused the far field).
+// outward normals in the wall plane (their bisector the direction away from the body). A sharp
+// trailing edge's root (`fan`) keeps its halos over the root: keep_fan_halos_off_the_rear_interfaces
+// places them against the rear interfaces standing on the strip top (over a strip top raised
+// forward along a tapered wing's edge, the skins crossed near the fan: TetGen refused the far field).
 JunctionNode place_junction_node(const cad::Model& model, const BodyRoles& roles,
                                  const std::map<int, int>& root_surface, const BodyMesh& body, int r,
                                  const std::array<Vec3, 2>& sides, const Frame& wall, double delta_wing,
