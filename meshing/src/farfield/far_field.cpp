@@ -261,6 +261,33 @@ std::vector<Triangle> mesh_outlet(const cad::Model& model, int surface, const st
 // the wall and the tets on it keep their shape once curved onto it.
 constexpr double kCurvedWallSegments = 4.0;
 
+// Under a wall layer (straight-topped prisms on the curved wall, split isoparametrically) an edge
+// of turning angle t on a radius R dips R (1 - cos(t / 2)) ~ R t^2 / 8 below the layer's top's
+// chord: at most this fraction of the layer's thickness. At a quarter radian on a fuselage 44
+// layer thicknesses round (OpenVSP's transport at 0.02 ft) that was a third, and every wall-layer
+// prism along the box's ends folded at order 4.
+constexpr double kWallLayerDip = 0.1;
+
+// Segments per radian on the curved wall: kCurvedWallSegments, more under a wall layer of
+// `thickness` where the wall's radius at the body's root (a fuselage's, a hub's) is large against it.
+// The root's radius, not the whole surface's: a nearly flat part of a fuselage far from the wing
+// would refine the whole wall.
+double curved_wall_segments(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
+                            const mesh::Mesh& mesh, double thickness) {
+  if (!(thickness > 0.0)) return kCurvedWallSegments;
+  const cad::Surface& wall = model.surface(wall_surface);
+  double largest_radius = 0.0;
+  for (NodeId id : nf.footprint) {
+    const CadAttachment at = mesh.cad_attachment(id);
+    const cad::Vec2 uv = at.kind == CadAttachment::Surface && at.entity == wall_surface ? cad::Vec2(at.u, at.v)
+                                                                                         : wall.project(mesh.node(id)).uv;
+    const cad::PrincipalCurvatures k = wall.curvatures(uv);
+    const double kappa = std::max(std::abs(k.k_min), std::abs(k.k_max));
+    if (kappa > 0.0) largest_radius = std::max(largest_radius, 1.0 / kappa);
+  }
+  return std::max(kCurvedWallSegments, std::sqrt(largest_radius / (8.0 * kWallLayerDip * thickness)));
+}
+
 // The far-field part of a curved wall (a fuselage, a hub), triangulated in the wall's parameter
 // plane scaled to lengths at the root, (u |S_u|, v |S_v|), which is exact on a cylinder or cone's
 // developable chart and close to it near the root elsewhere. The outer loops come from the surface
@@ -268,8 +295,8 @@ constexpr double kCurvedWallSegments = 4.0;
 // the near field's footprint, whose nodes the near field attached to the wall. Triangles returned
 // with their normal out of the domain.
 std::vector<Triangle> mesh_curved_wall(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
-                                       const FarFieldParams& params, const surface::CurveMeshes& curves,
-                                       CurveNodes& curve_nodes, mesh::Mesh& mesh) {
+                                       const FarFieldParams& params, double segments_per_radian,
+                                       const surface::CurveMeshes& curves, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
   const cad::Surface& wall = model.surface(wall_surface);
   auto footprint_uv = [&](NodeId id, const cad::Vec2& guess) {
     const CadAttachment cad = mesh.cad_attachment(id);
@@ -317,14 +344,14 @@ std::vector<Triangle> mesh_curved_wall(const cad::Model& model, int wall_surface
     ids.push_back(id);
   }
 
-  // Edges turn by at most 1 / kCurvedWallSegments radians on the wall, as the curve meshes do.
+  // Edges turn by at most 1 / segments_per_radian radians on the wall, as the curve meshes do.
   double kappa = 0.0;
   for (const auto* uvs : {&boundary.uv, &hole_uv})
     for (const cad::Vec2& uv : *uvs) {
       const cad::PrincipalCurvatures k = wall.curvatures(uv);
       kappa = std::max({kappa, std::abs(k.k_min), std::abs(k.k_max)});
     }
-  const double max_size = kappa > 0 ? std::min(params.wall_size, 1.0 / (kCurvedWallSegments * kappa)) : params.wall_size;
+  const double max_size = kappa > 0 ? std::min(params.wall_size, 1.0 / (segments_per_radian * kappa)) : params.wall_size;
   const Annulus annulus = triangulate_annulus(outer, hole, max_size, params.growth);
   for (std::size_t i = ids.size(); i < annulus.points.size(); ++i) {
     const cad::Vec2 uv(annulus.points[i].x() / scale.x(), annulus.points[i].y() / scale.y());
@@ -479,7 +506,10 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   surface::SizeParams size_params;
   size_params.max_size = params.box_size;
   size_params.min_size = std::min(size_params.min_size, params.box_size);
-  size_params.curvature_segments = model.surface(wall_surface).is_planar() ? 0.0 : kCurvedWallSegments;
+  const bool curved_wall = !model.surface(wall_surface).is_planar();
+  const double wall_segments =
+      curved_wall ? curved_wall_segments(model, wall_surface, near, mesh, wall_layer_thickness) : 0.0;
+  size_params.curvature_segments = wall_segments;
   size_params.gradation = params.growth;
   size_params.le_curves.clear();
   size_params.te_curves.clear();
@@ -496,7 +526,8 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   if (outlet >= 0) outlet_outline = outer_loop_nodes(model, outlet, curve_nodes);
   const std::vector<Triangle> wall = model.surface(wall_surface).is_planar()
                                          ? mesh_planar_wall(model, wall_surface, nf, params, curve_nodes, mesh)
-                                         : mesh_curved_wall(model, wall_surface, nf, params, curves, curve_nodes, mesh);
+                                         : mesh_curved_wall(model, wall_surface, nf, params, wall_segments, curves,
+                                                            curve_nodes, mesh);
   std::vector<SkinPyramid> pyramids;
   const std::vector<Triangle> skin = cap_skin(nf, mesh, pyramids);
   stats.pyramids = static_cast<int>(pyramids.size());
