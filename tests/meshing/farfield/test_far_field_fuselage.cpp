@@ -3,6 +3,7 @@
 // field meshing the fuselage in its parameters. Checked against the closed form of the cylinder.
 #include "semimesh/farfield/far_field.hpp"
 #include "semimesh/mock_cad/naca.hpp"
+#include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/nearfield/o_shell.hpp"
 
 #include "wing_case.hpp"
@@ -72,6 +73,42 @@ TEST(FarFieldOnAFuselage, WallTrianglesLieOnTheCylinderFacingIntoItAndTurnAQuart
   // The chart is exact on a cylinder: edges stay near the curvature cap R / 4 (the annulus' own
   // Delaunay slack), far below wall_size = 1.
   EXPECT_LT(longest, 1.5 * kRadius / 4.0);
+}
+
+// Under a wall layer thin against the fuselage's radius (0.01 on R = 1.5, C-type) an edge turning a
+// quarter radian would dip R (1 - cos 1/8) = 0.0117, more than the layer, below its straight top:
+// the wall's edges turn at most sqrt(8 * 0.1 * 0.01 / R) = 0.073 radian, so they dip a tenth of the
+// layer at most (the annulus' Delaunay slack allowed: 1.5x), and the layer's prisms stand on them.
+TEST(FarFieldOnAFuselage, AThinWallLayerRefinesTheWallUnderIt) {
+  constexpr double kWallLayer = 0.01;
+  mock_cad::NacaWingParams wing;
+  wing.span = 1.0;
+  wing.fuselage = true;
+  wing.wall_radius = kRadius;
+  wing.box = {-2, -3, -5, 3, 3, 2};
+  nearfield::testing::WingCase wc = nearfield::testing::wing_case(wing, /*max_size=*/0.3);
+  nearfield::ShellParams shell;
+  shell.thickness = 0.03;
+  nearfield::NearField nf = nearfield::build_c_shell(*wc.model, wc.meshes, wc.roles, shell, {}, kWallLayer);
+  std::vector<int> box;
+  for (const char* name : {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"})
+    box.push_back(*wc.model->find_surface(name));
+  FarFieldParams params;
+  params.box_size = 1.0;
+  params.wall_size = 1.0;
+  const FarField far = build_far_field(*wc.model, std::move(nf), params, box, wc.roles.wall_surface, kWallLayer);
+  const mesh::Mesh& m = far.mesh;
+  const auto it = std::find(m.group_names().begin(), m.group_names().end(), "wall");
+  ASSERT_NE(it, m.group_names().end());
+  const auto wall_group = static_cast<std::uint16_t>(it - m.group_names().begin());
+  double longest = 0.0;
+  for (const mesh::BoundaryFace& f : m.boundary_faces())
+    if (f.group == wall_group && f.shape == ho::Shape::Triangle)
+      for (int k = 0; k < 3; ++k) longest = std::max(longest, (m.node(f.vertices[k]) - m.node(f.vertices[(k + 1) % 3])).norm());
+  const double turn = std::sqrt(8 * 0.1 * kWallLayer / kRadius);
+  EXPECT_GT(longest, 0.0);
+  EXPECT_LT(longest, 1.5 * kRadius * turn) << "a quarter radian is " << kRadius / 4;
+  EXPECT_GT(far.stats.tets, 0u);
 }
 
 TEST(FarFieldOnAFuselage, TetsArePositiveAndFillTheBoxAroundTheFuselage) {

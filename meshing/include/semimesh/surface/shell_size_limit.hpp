@@ -45,7 +45,8 @@ struct ShellSizeLimit {
 
 /// The places on the body where the shell allows less than `max_size`, with the thickness each needs
 /// for edges of `probe_size` (e.g. sizing.min_size). Only convex curvature limits the size.
-/// `progress`: the fraction of sample rows done (step "shell limits"), from the calling thread.
+/// `progress`: the fraction of sample rows done (step "shell limits"), one call at a time from
+/// whichever thread ends a row.
 std::vector<ShellSizeLimit> shell_size_limits(const cad::Model& model, const ShellSizing& shell, double max_size,
                                               double probe_size, const ProgressCallback& progress = {});
 
