@@ -122,13 +122,7 @@ mesh::Mesh layer_on(const cad::Model& model, int n) {
       body.push_back(m.add_node(x, {mesh::CadAttachment::Surface, 0, u, w}));
       m.add_node(x + 0.05 * Vec3(std::cos(angle), std::sin(angle), 0));
     }
-  const int region = m.region_index("layer");
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const auto id = [&](int a, int b) { return body[(i + a) * (n + 1) + j + b]; };
-      add_outward_prism(m, id(0, 0), id(1, 0), id(1, 1), region, "body");
-      add_outward_prism(m, id(0, 0), id(1, 1), id(0, 1), region, "body");
-    }
+  add_outward_prism_grid(m, body, n, m.region_index("layer"), "body");
   return m;
 }
 

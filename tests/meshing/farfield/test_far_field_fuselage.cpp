@@ -27,26 +27,41 @@ struct FuselageCase {
   std::size_t prisms = 0;
 };
 
-FuselageCase fuselage_far_field() {
+// The wing 1 long on the fuselage, its box, coarse surface meshes.
+nearfield::testing::WingCase wing_on_the_fuselage() {
   mock_cad::NacaWingParams wing;
   wing.span = 1.0;
   wing.fuselage = true;
   wing.wall_radius = kRadius;
   wing.box = {-2, -3, -5, 3, 3, 2};
-  nearfield::testing::WingCase wc = nearfield::testing::wing_case(wing, /*max_size=*/0.3);
-  nearfield::ShellParams shell;
-  shell.thickness = 0.03;
-  nearfield::NearField nf = nearfield::build_o_shell(*wc.model, wc.meshes, wc.roles, shell);
-  FuselageCase c;
-  c.model = std::move(wc.model);
-  c.prisms = nf.mesh.elements().size();
+  return nearfield::testing::wing_case(wing, /*max_size=*/0.3);
+}
+
+// The far field round a near field of `wall_layer` (0: none), box and wall sizes 1 (above R / 4:
+// the wall's curvature caps the size).
+FarField far_field_of(const nearfield::testing::WingCase& wc, nearfield::NearField nf, double wall_layer) {
   std::vector<int> box;
   for (const char* name : {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"})
-    box.push_back(*c.model->find_surface(name));
+    box.push_back(*wc.model->find_surface(name));
   FarFieldParams params;
   params.box_size = 1.0;
-  params.wall_size = 1.0;  // above R / 4: the wall's curvature caps the size
-  c.far = build_far_field(*c.model, std::move(nf), params, box, wc.roles.wall_surface);
+  params.wall_size = 1.0;
+  return build_far_field(*wc.model, std::move(nf), params, box, wc.roles.wall_surface, wall_layer);
+}
+
+nearfield::ShellParams shell_of(double thickness) {
+  nearfield::ShellParams shell;
+  shell.thickness = thickness;
+  return shell;
+}
+
+FuselageCase fuselage_far_field() {
+  nearfield::testing::WingCase wc = wing_on_the_fuselage();
+  nearfield::NearField nf = nearfield::build_o_shell(*wc.model, wc.meshes, wc.roles, shell_of(0.03));
+  FuselageCase c;
+  c.prisms = nf.mesh.elements().size();
+  c.far = far_field_of(wc, std::move(nf), 0.0);
+  c.model = std::move(wc.model);
   return c;
 }
 
@@ -81,22 +96,9 @@ TEST(FarFieldOnAFuselage, WallTrianglesLieOnTheCylinderFacingIntoItAndTurnAQuart
 // layer at most (the annulus' Delaunay slack allowed: 1.5x), and the layer's prisms stand on them.
 TEST(FarFieldOnAFuselage, AThinWallLayerRefinesTheWallUnderIt) {
   constexpr double kWallLayer = 0.01;
-  mock_cad::NacaWingParams wing;
-  wing.span = 1.0;
-  wing.fuselage = true;
-  wing.wall_radius = kRadius;
-  wing.box = {-2, -3, -5, 3, 3, 2};
-  nearfield::testing::WingCase wc = nearfield::testing::wing_case(wing, /*max_size=*/0.3);
-  nearfield::ShellParams shell;
-  shell.thickness = 0.03;
-  nearfield::NearField nf = nearfield::build_c_shell(*wc.model, wc.meshes, wc.roles, shell, {}, kWallLayer);
-  std::vector<int> box;
-  for (const char* name : {"box_xmin", "box_xmax", "box_ymin", "box_ymax", "box_zmin", "box_zmax"})
-    box.push_back(*wc.model->find_surface(name));
-  FarFieldParams params;
-  params.box_size = 1.0;
-  params.wall_size = 1.0;
-  const FarField far = build_far_field(*wc.model, std::move(nf), params, box, wc.roles.wall_surface, kWallLayer);
+  const nearfield::testing::WingCase wc = wing_on_the_fuselage();
+  const FarField far = far_field_of(
+      wc, nearfield::build_c_shell(*wc.model, wc.meshes, wc.roles, shell_of(0.03), {}, kWallLayer), kWallLayer);
   const mesh::Mesh& m = far.mesh;
   const auto it = std::find(m.group_names().begin(), m.group_names().end(), "wall");
   ASSERT_NE(it, m.group_names().end());
