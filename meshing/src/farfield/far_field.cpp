@@ -265,8 +265,9 @@ constexpr double kCurvedWallSegments = 4.0;
 // of turning angle t on a radius R dips R (1 - cos(t / 2)) ~ R t^2 / 8 below the layer's top's
 // chord: at most this fraction of the layer's thickness. At a quarter radian on a fuselage 44
 // layer thicknesses round (OpenVSP's transport at 0.02 ft) that was a third, and every wall-layer
-// prism along the box's ends folded at order 4.
-constexpr double kWallLayerDip = 0.1;
+// prism along the box's ends folded at order 4; at 0.15 they are valid (0.48). Not less: a tenth
+// changed the examples' walls (1.5 chords under 0.1), which a quarter radian serves.
+constexpr double kWallLayerDip = 0.15;
 
 // Segments per radian on the curved wall: kCurvedWallSegments, more under a wall layer of
 // `thickness` where the wall's radius at the body's root (a fuselage's, a hub's) is large against it.
