@@ -1,11 +1,10 @@
 #include "fluid_domain.hpp"
 
-#include "joined_patches.hpp"
-
 #include "body_cut.hpp"
 #include "closed_face_halves.hpp"
 #include "crease_seam.hpp"
 #include "domain_by_sides.hpp"
+#include "joined_patches.hpp"
 #include "parameter_rectangle.hpp"
 #include "seam_away.hpp"
 

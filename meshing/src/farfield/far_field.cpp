@@ -23,6 +23,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 namespace semimesh::farfield {
 
@@ -269,6 +270,23 @@ constexpr double kCurvedWallSegments = 4.0;
 // changed the examples' walls (1.5 chords under 0.1), which a quarter radian serves.
 constexpr double kWallLayerDip = 0.15;
 
+// The wall's parameters of the near field's footprint nodes: their own where the near field
+// attached them to the wall, else projected, each from its predecessor's.
+std::vector<cad::Vec2> footprint_uvs(const cad::Model& model, int wall_surface, const nearfield::NearField& nf,
+                                     const mesh::Mesh& mesh) {
+  if (nf.footprint.empty()) throw FarFieldError("far field: the near field has no footprint on the wall");
+  const cad::Surface& wall = model.surface(wall_surface);
+  std::vector<cad::Vec2> uvs;
+  cad::Vec2 guess = wall.project(mesh.node(nf.footprint.front())).uv;
+  for (NodeId id : nf.footprint) {
+    const CadAttachment cad = mesh.cad_attachment(id);
+    guess = cad.kind == CadAttachment::Surface && cad.entity == wall_surface ? cad::Vec2(cad.u, cad.v)
+                                                                             : wall.project(mesh.node(id), guess).uv;
+    uvs.push_back(guess);
+  }
+  return uvs;
+}
+
 // Segments per radian on the curved wall: kCurvedWallSegments, more under a wall layer of
 // `thickness` where the wall's radius at the body's root (a fuselage's, a hub's) is large against it.
 // The root's radius, not the whole surface's: a nearly flat part of a fuselage far from the wing
@@ -278,10 +296,7 @@ double curved_wall_segments(const cad::Model& model, int wall_surface, const nea
   if (!(thickness > 0.0)) return kCurvedWallSegments;
   const cad::Surface& wall = model.surface(wall_surface);
   double largest_radius = 0.0;
-  for (NodeId id : nf.footprint) {
-    const CadAttachment at = mesh.cad_attachment(id);
-    const cad::Vec2 uv = at.kind == CadAttachment::Surface && at.entity == wall_surface ? cad::Vec2(at.u, at.v)
-                                                                                         : wall.project(mesh.node(id)).uv;
+  for (const cad::Vec2& uv : footprint_uvs(model, wall_surface, nf, mesh)) {
     const cad::PrincipalCurvatures k = wall.curvatures(uv);
     const double kappa = std::max(std::abs(k.k_min), std::abs(k.k_max));
     if (kappa > 0.0) largest_radius = std::max(largest_radius, 1.0 / kappa);
@@ -299,15 +314,7 @@ std::vector<Triangle> mesh_curved_wall(const cad::Model& model, int wall_surface
                                        const FarFieldParams& params, double segments_per_radian,
                                        const surface::CurveMeshes& curves, CurveNodes& curve_nodes, mesh::Mesh& mesh) {
   const cad::Surface& wall = model.surface(wall_surface);
-  auto footprint_uv = [&](NodeId id, const cad::Vec2& guess) {
-    const CadAttachment cad = mesh.cad_attachment(id);
-    if (cad.kind == CadAttachment::Surface && cad.entity == wall_surface) return cad::Vec2(cad.u, cad.v);
-    return wall.project(mesh.node(id), guess).uv;
-  };
-  if (nf.footprint.empty()) throw FarFieldError("far field: the near field has no footprint on the wall");
-  std::vector<cad::Vec2> hole_uv;
-  cad::Vec2 guess = wall.project(mesh.node(nf.footprint.front())).uv;
-  for (NodeId id : nf.footprint) hole_uv.push_back(guess = footprint_uv(id, guess));
+  const std::vector<cad::Vec2> hole_uv = footprint_uvs(model, wall_surface, nf, mesh);
 
   const cad::Vec2 root_uv = hole_uv.front();
   const cad::SurfaceDerivatives d = wall.derivatives(root_uv);
@@ -347,7 +354,7 @@ std::vector<Triangle> mesh_curved_wall(const cad::Model& model, int wall_surface
 
   // Edges turn by at most 1 / segments_per_radian radians on the wall, as the curve meshes do.
   double kappa = 0.0;
-  for (const auto* uvs : {&boundary.uv, &hole_uv})
+  for (const std::vector<cad::Vec2>* uvs : {&std::as_const(boundary.uv), &hole_uv})
     for (const cad::Vec2& uv : *uvs) {
       const cad::PrincipalCurvatures k = wall.curvatures(uv);
       kappa = std::max({kappa, std::abs(k.k_min), std::abs(k.k_max)});
