@@ -2,6 +2,7 @@
 
 #include "semimesh/cad/labels.hpp"
 
+#include "semimesh/farfield/detail/interior_points.hpp"
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
 #include "semimesh/farfield/detail/symmetry_faces.hpp"
 #include "semimesh/ho/validity.hpp"
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -33,7 +35,7 @@ const params::Table<FarFieldParams>& far_field_keys() {
       params::real("wall_size", &FarFieldParams::wall_size, "> 0", "edge length on the wall far from the body"),
       params::real("growth", &FarFieldParams::growth, ">= 1", "size gradation from the skin outwards"),
       params::real("radius_edge_ratio", &FarFieldParams::radius_edge_ratio, ">= 1",
-                   "TetGen quality bound (-q); 1.5 to 2 is usual"),
+                   "TetGen quality bound (-q) of its refinement after the interior points; 1.5 to 2 is usual"),
       params::real("max_volume", &FarFieldParams::max_volume, ">= 0", "TetGen volume bound (-a); 0: none"),
       params::string("symmetry", &FarFieldParams::symmetry,
                      "\"none\" | \"xmin\" | \"xmax\" | \"ymin\" | \"ymax\" | \"zmin\" | \"zmax\"",
@@ -439,6 +441,16 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
   return triangles;
 }
 
+// The interior points' spacing grows from the boundary's by this ratio per unit of spacing: the
+// rate at which TetGen's radius-edge refinement (1.5) grows its tets on the paper's case, where
+// the far field then keeps its element count within 3 % (docs/benchmarks.md).
+constexpr double kInteriorGrowth = 1.6;
+// TetGen's refinement after the interior points: at most this share of the input's points. It
+// takes the worst tets first (slivers among the boundary's own points: a wake's flat pyramids), and
+// with them its mesh optimisation, which only runs with refinement on; uncapped, each of its points
+// next to the kept boundary costs ~300 us, and more as the mesh grows.
+constexpr double kRefinementShare = 0.02;
+
 // TetGen 1.5.0 cannot refine a tetrahedron of zero volume (its circumcentre is at infinity: an
 // assertion in locate() aborts), and its constrained Delaunay mesh has such tets where input
 // points are exactly coplanar and cocircular. Skin quads that are copies of each other by a
@@ -468,26 +480,53 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unor
   }
 }
 
-// TetGen on the input, and once more with the apexes' heights varied when it fails (a zero-volume
-// tet among exactly degenerate points, which it aborts on, or answers with when round-off makes it
-// not quite flat: run_tetgen refuses that answer); the first failure is the one reported when both fail.
-// `beside` runs beside the first try only (the second moves apexes of the mesh it reads).
-TetgenOutput run_tetgen_varying_apexes(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
-                                       const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh,
-                                       const BesideChild& beside) {
-  if (pyramids.empty()) return run_tetgen(input, /*quiet=*/false, beside);
+// TetGen on the input; when it fails (a zero-volume tet among exactly degenerate points, which it
+// aborts on, or answers with when round-off makes it not quite flat: run_tetgen refuses that
+// answer), again with its refinement uncapped (its capped refinement and mesh optimisation can
+// leave a flat tet that further refinement takes away: the NekMesh wing's coarse case), then with
+// the apexes' heights varied; the first failure is the one reported when all fail.
+// `beside` runs beside the first try only (the last moves apexes of the mesh it reads).
+TetgenOutput run_tetgen_with_retries(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
+                                     const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh,
+                                     const BesideChild& beside) {
+  std::optional<FarFieldError> first;
   try {
     return run_tetgen(input, /*quiet=*/true, beside);
-  } catch (const FarFieldError& first) {
-    const std::vector<Eigen::Vector3d> points = input.points;
-    vary_apex_heights(pyramids, plc_index, mesh, input);
-    try {
-      return run_tetgen(input);
-    } catch (const FarFieldError&) {
-      for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_index.at(p.apex)]);
-      throw first;
-    }
+  } catch (const FarFieldError& e) {
+    first = e;
   }
+  input.max_added_points = -1;
+  try {
+    return run_tetgen(input, /*quiet=*/!pyramids.empty());
+  } catch (const FarFieldError&) {
+    if (pyramids.empty()) throw *first;
+  }
+  const std::vector<Eigen::Vector3d> points = input.points;
+  vary_apex_heights(pyramids, plc_index, mesh, input);
+  try {
+    return run_tetgen(input);
+  } catch (const FarFieldError&) {
+    for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_index.at(p.apex)]);
+    throw *first;
+  }
+}
+
+// TetGen's tets into the mesh (region "farfield"), `plc_node` the mesh's node of each boundary
+// point, given to it; the interior points and TetGen's own become nodes when a tet uses them (an
+// interior point the ray test put inside by mistake stays in TetGen's list, carved away with the
+// outside).
+void add_tetrahedra(const TetgenOutput& output, std::vector<NodeId> plc_node, mesh::Mesh& mesh) {
+  std::vector<char> used(output.points.size(), 0);
+  for (const auto& t : output.tets)
+    for (int v : t) used[v] = 1;
+  const std::size_t boundary_points = plc_node.size();
+  plc_node.resize(output.points.size(), mesh::kNoNode);
+  for (std::size_t i = boundary_points; i < output.points.size(); ++i)
+    if (used[i]) plc_node[i] = mesh.add_node(output.points[i]);
+  mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
+  const int region = mesh.region_index("farfield");
+  for (const auto& t : output.tets)
+    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]}, region);
 }
 
 }  // namespace
@@ -580,17 +619,19 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
     }
     input.parts.emplace_back(input.triangles.size(), name);
   }
+  report(0.12, "interior points");
+  const std::vector<Eigen::Vector3d> inside = interior_points(input.points, input.triangles, {kInteriorGrowth, params.box_size});
+  input.points.insert(input.points.end(), inside.begin(), inside.end());
+  input.max_added_points = static_cast<int>(std::ceil(kRefinementShare * static_cast<double>(input.points.size())));
+  stats.interior_points = static_cast<int>(inside.size());
   report(0.15, "TetGen");
   BesideChild beside_child;
   if (beside) beside_child = [&](const std::atomic<bool>& stop) { beside(static_cast<const mesh::Mesh&>(mesh), stop); };
-  const TetgenOutput output = run_tetgen_varying_apexes(input, pyramids, plc_index, mesh, beside_child);
+  const TetgenOutput output = run_tetgen_with_retries(input, pyramids, plc_index, mesh, beside_child);
   report(0.9, "elements");
   stats.seconds_tetgen = output.seconds;
-  for (std::size_t i = plc_node.size(); i < output.points.size(); ++i) plc_node.push_back(mesh.add_node(output.points[i]));
-  mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
-  const int region = mesh.region_index("farfield");
-  for (const auto& t : output.tets)
-    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]}, region);
+  stats.added_points = static_cast<int>(output.points.size() - input.points.size());
+  add_tetrahedra(output, plc_node, mesh);
   stats.tets = static_cast<int>(output.tets.size());
 
   for (const Triangle& t : wall) mesh.add_boundary_face("wall", ho::Shape::Triangle, {t[0], t[1], t[2]});

@@ -260,6 +260,7 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild&
   std::ostringstream switches;
   switches << "pYQq" << input.radius_edge_ratio;
   if (input.max_volume > 0) switches << "a" << input.max_volume;
+  if (input.max_added_points >= 0) switches << "S" << input.max_added_points;
   std::string buffer = switches.str();
 
   const auto start = std::chrono::steady_clock::now();

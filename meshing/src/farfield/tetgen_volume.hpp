@@ -14,10 +14,11 @@
 namespace semimesh::farfield {
 
 struct TetgenInput {
-  std::vector<Eigen::Vector3d> points;         ///< [points]
+  std::vector<Eigen::Vector3d> points;         ///< [points] the boundary's, then any interior points
   std::vector<std::array<int, 3>> triangles;   ///< [triangles][3] the boundary, kept exactly
   double radius_edge_ratio = 1.5;              ///< -q bound
   double max_volume = 0.0;                     ///< -a bound; 0: none
+  int max_added_points = -1;                   ///< -S bound on the refinement's points; -1: none
   /// What the triangles are, for messages: each part's name and the end of its run of triangles.
   std::vector<std::pair<std::size_t, std::string>> parts;
 };
@@ -30,10 +31,12 @@ struct TetgenOutput {
   double seconds = 0.0;
 };
 
-/// Runs TetGen with switches "pYQ q<ratio> [a<volume>]": the region enclosed by the triangles is
-/// filled (the outside of the boundary, reached from the convex hull, is carved away), no point is
-/// added on the boundary (Y). Sizes follow from the boundary by the radius-edge bound alone: tets
-/// start at the size of the boundary triangles they touch and grow away from them.
+/// Runs TetGen with switches "pYQ q<ratio> [a<volume>] [S<points>]": the region enclosed by the
+/// triangles is filled (the outside of the boundary, reached from the convex hull, is carved away),
+/// no point is added on the boundary (Y). Points that no triangle uses are interior points, kept in
+/// the Delaunay phase; the refinement then adds at most `max_added_points` (without interior
+/// points the refinement makes every size: tets start at the size of the boundary triangles they
+/// touch and grow away from them by the radius-edge bound alone).
 /// TetGen runs in a child process (see tetgen_volume.cpp: TetGen 1.5.0 crashes while reporting
 /// errors). Throws FarFieldError, before TetGen runs, when a boundary edge is shorter than the
 /// distance at which TetGen merges points (1e-8 of the boundary's bounding-box diagonal); with

@@ -51,24 +51,30 @@ std::vector<std::string> size_warnings(const SizeParams& params) {
   return out;
 }
 
-SizeField::SizeField(const cad::Model& model, const SizeParams& params) : params_(params), slope_(params.gradation - 1.0) {
+SizeField::SizeField(const cad::Model& model, const SizeParams& params) : SizeField(&model, params) {}
+
+SizeField::SizeField(const SizeParams& params) : SizeField(nullptr, params) {}
+
+SizeField::SizeField(const cad::Model* model, const SizeParams& params) : params_(params), slope_(params.gradation - 1.0) {
   if (const auto bad = params::violation(params, size_keys(), "sizing")) require(false, *bad);
   require(params.min_size <= params.max_size, "sizing.min_size = " + params::to_text(params.min_size) +
                                                   ": expected <= sizing.max_size = " + params::to_text(params.max_size));
   require(params.curvature_samples >= 2, "curvature_samples must be >= 2");
 
   auto by_name = [&](const std::string& name) -> const cad::Curve* {
-    for (int c = 0; c < model.num_curves(); ++c)
-      if (model.curve(c).name() == name) return &model.curve(c);
+    for (int c = 0; model && c < model->num_curves(); ++c)
+      if (model->curve(c).name() == name) return &model->curve(c);
     return nullptr;
   };
   // LE/TE lists name the curves of the usual wing models; a name absent from this model is skipped
   // (a sharp TE has no te_upper), but an explicit curve source must exist.
+  // Without a model (a mesh's sizes) only the point and box sources count.
   for (const auto& name : params.le_curves)
     if (const cad::Curve* c = params.le_size > 0.0 ? by_name(name) : nullptr) add_curve_samples(*c, params.le_size);
   for (const auto& name : params.te_curves)
     if (const cad::Curve* c = params.te_size > 0.0 ? by_name(name) : nullptr) add_curve_samples(*c, params.te_size);
   for (const auto& src : params.curve_sources) {
+    if (!model) break;
     const cad::Curve* c = by_name(src.curve);
     require(c != nullptr, "curve source '" + src.curve + "' names no curve of the model");
     require(src.size > 0.0, "curve source '" + src.curve + "' needs a size > 0");
@@ -80,7 +86,7 @@ SizeField::SizeField(const cad::Model& model, const SizeParams& params) : params
   }
   for (const auto& b : params.box_sources)
     require(b.size > 0.0 && (b.lo.array() <= b.hi.array()).all(), "box sources need size > 0 and lo <= hi");
-  if (params.curvature_segments > 0.0) add_curvature_sources(model);
+  if (model && params.curvature_segments > 0.0) add_curvature_sources(*model);
   if (!sources_.empty()) build_tree(0, static_cast<int>(sources_.size()));
 }
 
@@ -160,8 +166,13 @@ double SizeField::operator()(const Vec3& x) const {
         for (int i = node.begin; i < node.end; ++i)
           best = std::min(best, sources_[i].size + slope_ * (x - sources_[i].center).norm());
       } else {
-        stack[top++] = node.left;
-        stack[top++] = node.right;
+        // The nearer child first: its sources lower `best` before the farther one is looked at.
+        const TreeNode& left = nodes_[node.left];
+        const TreeNode& right = nodes_[node.right];
+        const bool left_nearer = left.min_size + slope_ * box_distance(x, left.lo, left.hi) <=
+                                 right.min_size + slope_ * box_distance(x, right.lo, right.hi);
+        stack[top++] = left_nearer ? node.right : node.left;
+        stack[top++] = left_nearer ? node.left : node.right;
       }
     }
   }

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace semimesh::farfield {
@@ -55,6 +56,15 @@ TEST(FarFieldNaca0012, ConformingClosedMeshAroundTheOShell) {
   const mesh::Mesh& m = far.mesh;
   EXPECT_EQ(stats.pyramids, 0);  // the O-shell's skin is all triangles
   EXPECT_EQ(m.elements().size(), prisms + stats.tets);
+  // TetGen meshes the interior points it is given and refines little after them (2 % of its input,
+  // which is fewer points than the mesh's).
+  EXPECT_GT(stats.interior_points, stats.tets / 10);
+  EXPECT_LE(stats.added_points, std::ceil(0.02 * static_cast<double>(m.num_nodes())));
+  // Every node is some element's: an interior point TetGen carved away is not kept.
+  std::vector<char> used(m.num_nodes(), 0);
+  for (const auto& el : m.elements())
+    for (NodeId v : el.vertices) used[v] = 1;
+  EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0);
   // The shell's prisms are the wing layer, the far field's tets their own region.
   for (std::size_t e = 0; e < m.elements().size(); ++e)
     ASSERT_EQ(m.region_names()[m.elements()[e].region], e < prisms ? "wing_layer" : "farfield") << "element " << e;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 namespace semimesh::surface {
 namespace {
 
@@ -37,6 +40,26 @@ TEST(SizeField, PointSourceGrowsWithTheGradation) {
   EXPECT_NEAR(size(Vec3(2, 1, 1)), 0.05 + 0.2 * 1.0, 1e-12);
   EXPECT_NEAR(size(Vec3(2, 0, 4)), 0.05 + 0.2 * 3.0, 1e-12);
   EXPECT_NEAR(size(Vec3(8, 0, 1)), 1.0, 1e-12);  // capped by max_size
+}
+
+// The tree's query (nearer child first, boxes pruned) against the minimum over every source, on a
+// field built from sources alone (no model: the far field's interior points use it so).
+TEST(SizeField, TreeQueryIsTheMinimumOverEverySource) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  SizeParams p = no_curvature();
+  p.gradation = 1.6;
+  p.max_size = 2.0;
+  for (int i = 0; i < 3000; ++i)  // a thin shell of sources round a sphere, sizes 0.01-0.1
+    p.point_sources.push_back({Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized(), 0.01 + 0.09 * unit(rng)});
+  const SizeField size(p);
+  EXPECT_EQ(size.num_sources(), 3000);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 x = 4.0 * Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
+    double expected = p.max_size;
+    for (const PointSource& s : p.point_sources) expected = std::min(expected, s.size + (p.gradation - 1.0) * (x - s.center).norm());
+    ASSERT_EQ(size(x), std::clamp(expected, p.min_size, p.max_size)) << x.transpose();
+  }
 }
 
 TEST(SizeField, BoxSourceIsConstantInsideAndGradedOutside) {

@@ -46,6 +46,8 @@ struct FarFieldStats {
   int box_triangles = 0;
   int wall_layer_prisms = 0;
   int symmetry_faces = 0;  ///< far-field faces moved to group "symmetry" (farfield.symmetry)
+  int interior_points = 0;  ///< points given to TetGen inside the region (interior_points.hpp)
+  int added_points = 0;     ///< points TetGen's refinement added
   double seconds_tetgen = 0;
 };
 

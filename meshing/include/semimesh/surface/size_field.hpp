@@ -74,6 +74,9 @@ class SizeField {
   /// Samples the model once. Throws SurfaceMeshError naming the parameter when one is out of range
   /// or a source curve name does not exist in the model.
   SizeField(const cad::Model& model, const SizeParams& params);
+  /// A field of the params' point and box sources alone, for sizes that come from a mesh rather
+  /// than a model (the far field's interior points): no curve or curvature sources.
+  explicit SizeField(const SizeParams& params);
 
   /// Target edge length at x.
   double operator()(const Vec3& x) const;
@@ -83,6 +86,8 @@ class SizeField {
   int num_sources() const { return static_cast<int>(sources_.size()); }
 
  private:
+  SizeField(const cad::Model* model, const SizeParams& params);
+
   // A bounding-box tree over the sources: a query skips every box whose smallest size plus the
   // graded distance to the box cannot beat the best size found so far.
   struct TreeNode {
