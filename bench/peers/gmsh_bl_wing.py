@@ -11,11 +11,12 @@ Gmsh's fast curving. Times, separately and in total: generate(3) (order 1), setO
 optimize("HighOrderFastCurving"), the optimiser Mesh.HighOrderOptimize = 4 selects ("Optimize
 high-order meshes? (0: none, 1: optimization, 2: elastic+optimization, 3: elastic, 4: fast
 curving)", Gmsh 4.8's own option help) and that setOrder does not run by itself; --one-call times
-the same as one generate(3) with Mesh.ElementOrder = 3 instead (same mesh, same time, measured).
+the same as one generate(3) with Mesh.ElementOrder = 3 instead (measured: the same element and
+invalid counts, the same time).
 
 The layer is made of tetrahedra (3 per prism: the unrecombined extrusion) by default: Gmsh 4.8
 cannot curve order-3 prisms ("FaceClosureFull not implemented for prisms of order 3"); with
---prisms, fast curving runs but leaves the prisms as setOrder made them (same invalid count).
+--prisms, fast curving runs but the prisms keep setOrder's invalid count and worst bound.
 
 Validity, after the timing: the mesh is written to a temporary binary MSH file and certified with
 tests/pipeline/gmsh_validity.py: Gmsh's own Plugin(AnalyseMeshQuality) Jacobian bounds for
