@@ -1,6 +1,7 @@
 #include "semimesh/farfield/detail/boundary_crossing.hpp"
 
-#include "box_tree.hpp"
+
+#include "semimesh/geometry/box_tree.hpp"
 
 #include <Eigen/Geometry>
 
@@ -11,9 +12,9 @@
 namespace semimesh::farfield {
 namespace {
 
-using detail::Box;
-using detail::BoxTree;
-using detail::triangle_boxes;
+using geometry::Box;
+using geometry::BoxTree;
+using geometry::triangle_boxes;
 using Eigen::Vector3d;
 
 // Where segment pq passes strictly through the interior of triangle abc, if it does.

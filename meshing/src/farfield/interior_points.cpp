@@ -1,8 +1,9 @@
 #include "semimesh/farfield/detail/interior_points.hpp"
 
-#include "box_tree.hpp"
 
 #include "semimesh/surface/size_field.hpp"
+
+#include "semimesh/geometry/box_tree.hpp"
 
 #include <Eigen/Geometry>
 
@@ -15,8 +16,8 @@
 namespace semimesh::farfield {
 namespace {
 
-using detail::Box;
-using detail::BoxTree;
+using geometry::Box;
+using geometry::BoxTree;
 using Eigen::Vector3d;
 
 // A leaf cell's side over the spacing at its centre: one point per cell of side s gives Delaunay
@@ -94,7 +95,7 @@ bool ray_meets_box(const Vector3d& x, const Vector3d& inverse, const Box& box) {
 class Boundary {
  public:
   Boundary(const std::vector<Vector3d>& points, const std::vector<std::array<int, 3>>& triangles)
-      : points_(points), triangles_(triangles), boxes_(detail::triangle_boxes(points, triangles)), tree_(boxes_) {}
+      : points_(points), triangles_(triangles), boxes_(geometry::triangle_boxes(points, triangles)), tree_(boxes_) {}
 
   bool has_triangle_in(const Box& box) const {
     return tree_.visit([&](const Box& b) { return b.overlaps(box); }, [](int) { return true; });

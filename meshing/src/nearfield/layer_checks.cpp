@@ -1,11 +1,12 @@
 #include "semimesh/nearfield/layer_checks.hpp"
 
+#include "semimesh/geometry/box_tree.hpp"
+
 #include "semimesh/ho/closest_point.hpp"
 #include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <queue>
 #include <unordered_set>
 
@@ -106,34 +107,17 @@ std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vec
                                 const std::vector<Vec3>& outer, const std::vector<double>& thickness) {
   const TriangleSpheres spheres = triangle_spheres(body);
   std::vector<char> crowded(body.num_nodes(), 0);
-  if (body.triangles.empty()) return crowded;
-  // A triangle can crowd node i only if its centre is within limit_i + its radius of outer[i]: with
-  // cells of that largest reach, the 3 x 3 x 3 cells around the point hold every candidate.
-  const double largest_limit = 0.5 * *std::max_element(thickness.begin(), thickness.end());
-  const double largest_radius = *std::max_element(spheres.radius.begin(), spheres.radius.end());
-  const double cell = std::max(largest_limit + largest_radius, 1e-300);
-  const auto cell_of = [cell](const Vec3& p) {
-    return std::array<long long, 3>{static_cast<long long>(std::floor(p.x() / cell)),
-                                    static_cast<long long>(std::floor(p.y() / cell)),
-                                    static_cast<long long>(std::floor(p.z() / cell))};
-  };
-  std::map<std::array<long long, 3>, std::vector<int>> grid;
-  for (int t = 0; t < static_cast<int>(body.triangles.size()); ++t) grid[cell_of(spheres.centre[t])].push_back(t);
+  const std::vector<geometry::Box> boxes = geometry::triangle_boxes(body.points, body.triangles);
+  const geometry::BoxTree tree(boxes);
   for (int i = 0; i < body.num_nodes(); ++i) {
     std::unordered_set<int> own;
     bool own_known = false;
-    const std::array<long long, 3> c = cell_of(outer[i]);
-    for (long long dx = -1; dx <= 1 && !crowded[i]; ++dx)
-      for (long long dy = -1; dy <= 1 && !crowded[i]; ++dy)
-        for (long long dz = -1; dz <= 1 && !crowded[i]; ++dz) {
-          const auto found = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (found == grid.end()) continue;
-          for (int t : found->second)
-            if (crowds(body, neighbours, spheres, i, outer[i], 0.5 * thickness[i], 1.5 * thickness[i], t, own, own_known)) {
-              crowded[i] = 1;
-              break;
-            }
-        }
+    const double limit = 0.5 * thickness[i];
+    crowded[i] = tree.visit([&](const geometry::Box& box) { return box.squared_distance(outer[i]) < limit * limit; },
+                            [&](int t) {
+                              return crowds(body, neighbours, spheres, i, outer[i], limit, 1.5 * thickness[i], t, own,
+                                            own_known);
+                            });
   }
   return crowded;
 }

@@ -1,6 +1,7 @@
-// A bounding-box tree over a boundary's triangles, shared by the crossing search and the far
-// field's interior points: each node's box holds its items', split at the median of the items'
-// centres along the longest side, leaves of at most kLeaf items.
+// A bounding-box tree over triangles (of a far-field boundary, of a body mesh): each node's box
+// holds its items', split at the median of the items' centres along the longest side, leaves of at
+// most kLeaf items. Used by the far field's crossing search and interior points and the near
+// field's crowding test.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,7 +11,7 @@
 #include <numeric>
 #include <vector>
 
-namespace semimesh::farfield::detail {
+namespace semimesh::geometry {
 
 struct Box {
   Eigen::Vector3d lo, hi;
@@ -112,4 +113,4 @@ class BoxTree {
   std::vector<Node> nodes_;
 };
 
-}  // namespace semimesh::farfield::detail
+}  // namespace semimesh::geometry
