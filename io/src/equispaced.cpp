@@ -59,6 +59,9 @@ struct Resampler {
 
   template <typename Ids>
   void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& entity_ids) {
+    // Every node's position asked for before any is used: they are scattered over the array, and
+    // the misses overlap instead of each stalling the sum in turn.
+    for (std::size_t i = 0; i < entity_ids.size(); ++i) __builtin_prefetch(x[entity_ids[i]].data());
     sum.assign(positions.size(), Eigen::Vector3d::Zero());
     for (std::size_t i = 0; i < entity_ids.size(); ++i) {
       const Eigen::Vector3d& xi = x[entity_ids[i]];

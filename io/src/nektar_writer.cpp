@@ -137,6 +137,7 @@ struct Geometry {
 
   /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
   bool on_linear_map(ho::Shape shape, const std::vector<mesh::NodeId>& ids) const {
+    for (mesh::NodeId id : ids) __builtin_prefetch(node[id].data());  // scattered: the misses overlap
     const Eigen::MatrixX3d& ref = reference(shape);
     const int nv = shape == ho::Shape::Segment ? 2 : ho::num_vertices(shape);
     Eigen::Vector3d x[4];
