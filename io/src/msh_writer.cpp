@@ -131,7 +131,7 @@ void write_binary_nodes(AtomicFile& file, const std::vector<Eigen::Vector3d>& x,
   }
 }
 
-constexpr int kNumShapes = 7;  // the values of ho::Shape
+constexpr int kNumShapes = static_cast<int>(ho::Shape::Hexahedron) + 1;  // the values of ho::Shape
 
 /// The elements of each (region, shape), in element order, at [region * kNumShapes + shape]: one
 /// pass over the elements, not one per block.
