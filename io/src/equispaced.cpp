@@ -59,6 +59,9 @@ struct Resampler {
 
   template <typename Ids>
   void operator()(const Eigen::MatrixXd& rows, const std::vector<int>& positions, const Ids& entity_ids) {
+    // Every node's position asked for before any is used: they are scattered over the array, and
+    // the misses overlap instead of each stalling the sum in turn.
+    for (std::size_t i = 0; i < entity_ids.size(); ++i) __builtin_prefetch(x[entity_ids[i]].data());
     sum.assign(positions.size(), Eigen::Vector3d::Zero());
     for (std::size_t i = 0; i < entity_ids.size(); ++i) {
       const Eigen::Vector3d& xi = x[entity_ids[i]];
@@ -84,13 +87,12 @@ void parallel_ranges(std::size_t n, std::vector<Eigen::Vector3d>& x, F f) {
   for (auto& w : workers) w.get();  // the deferred first range runs here; rethrows a worker's exception
 }
 
-/// x: [m.num_nodes()] positions at the nodes of set `from` of m's element maps, moved to those of
-/// set `to`: element interiors, then faces, then edges, each reading only nodes not yet moved.
-void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
-  const int p = m.order();
+/// The nodes element interiors own, moved from set `from` to set `to` of their element's map; reads
+/// every node of each element, moves none another element reads.
+void resample_interiors(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
   std::map<ho::Shape, OwnedRows> interior;
   for (const mesh::Element& el : m.elements())
-    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, p, from, to, mesh::NodeSlot::Interior));
+    if (!interior.count(el.shape)) interior.emplace(el.shape, owned_rows(el.shape, m.order(), from, to, mesh::NodeSlot::Interior));
   parallel_ranges(m.elements().size(), x, [&](std::size_t begin, std::size_t end, Resampler& r) {
     for (std::size_t e = begin; e < end; ++e) {
       const OwnedRows& owned = interior.at(m.elements()[e].shape);
@@ -99,9 +101,12 @@ void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho:
       r(owned.rows, owned.positions, r.ids);
     }
   });
+}
 
-  const OwnedRows tri = owned_rows(ho::Shape::Triangle, p, from, to, mesh::NodeSlot::Face);
-  const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, p, from, to, mesh::NodeSlot::Face);
+/// The nodes faces own, likewise; reads the faces' vertices and edge nodes, not element interiors.
+void resample_faces(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
+  const OwnedRows tri = owned_rows(ho::Shape::Triangle, m.order(), from, to, mesh::NodeSlot::Face);
+  const OwnedRows quad = owned_rows(ho::Shape::Quadrilateral, m.order(), from, to, mesh::NodeSlot::Face);
   parallel_ranges(m.faces().size(), x, [&](std::size_t begin, std::size_t end, Resampler& r) {
     for (std::size_t f = begin; f < end; ++f) {
       const OwnedRows& owned = m.faces()[f].num_vertices == 3 ? tri : quad;
@@ -110,7 +115,11 @@ void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho:
       r(owned.rows, owned.positions, r.ids);
     }
   });
+}
 
+/// The nodes edges own, likewise; reads the edges' own nodes and vertices only.
+void resample_edges(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
+  const int p = m.order();
   const Eigen::MatrixXd edge = edge_resampling(p, from, to);
   std::vector<int> edge_positions(p - 1);
   std::iota(edge_positions.begin(), edge_positions.end(), 1);
@@ -123,6 +132,14 @@ void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho:
       r(edge, edge_positions, r.ids);
     }
   });
+}
+
+/// x: [m.num_nodes()] positions at the nodes of set `from` of m's element maps, moved to those of
+/// set `to`: element interiors, then faces, then edges, each reading only nodes not yet moved.
+void resample_in_place(const mesh::Mesh& m, std::vector<Eigen::Vector3d>& x, ho::NodeSet from, ho::NodeSet to) {
+  resample_interiors(m, x, from, to);
+  resample_faces(m, x, from, to);
+  resample_edges(m, x, from, to);
 }
 
 bool needs_resampling(const mesh::Mesh& m) { return m.node_set() != ho::NodeSet::Equispaced && m.order() >= 2; }
@@ -138,12 +155,22 @@ EquispacedNodes::EquispacedNodes(const mesh::Mesh& m) : nodes_(&m.nodes()) {
 
 EquispacedNodes::EquispacedNodes(mesh::Mesh& m, InPlace) : nodes_(&m.nodes()) {
   if (!needs_resampling(m)) return;
-  resample_in_place(m, m.positions_for_resampling(), m.node_set(), ho::NodeSet::Equispaced);
+  std::vector<Eigen::Vector3d>& x = m.positions_for_resampling();
+  kept_.reserve(m.interior_pool().size());
+  for (mesh::NodeId id : m.interior_pool()) kept_.push_back(x[id]);
+  resample_in_place(m, x, m.node_set(), ho::NodeSet::Equispaced);
   moved_ = &m;
 }
 
 EquispacedNodes::~EquispacedNodes() {
-  if (moved_) resample_in_place(*moved_, moved_->positions_for_resampling(), ho::NodeSet::Equispaced, moved_->node_set());
+  if (!moved_) return;
+  // Faces, then edges, resampled back, each reading only nodes not yet moved back; the interiors,
+  // which no face or edge reads, get their kept positions.
+  std::vector<Eigen::Vector3d>& x = moved_->positions_for_resampling();
+  resample_faces(*moved_, x, ho::NodeSet::Equispaced, moved_->node_set());
+  resample_edges(*moved_, x, ho::NodeSet::Equispaced, moved_->node_set());
+  std::size_t k = 0;
+  for (mesh::NodeId id : moved_->interior_pool()) x[id] = kept_[k++];
 }
 
 mesh::Mesh to_equispaced(const mesh::Mesh& source) {

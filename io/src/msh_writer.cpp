@@ -43,6 +43,19 @@ class MshOut {
     if (!binary_) f_.write("\n", 1);
     first_ = true;
   }
+  /// An element's record: its tag, then its nodes' tags (ids + 1); in binary one write of the
+  /// whole record, not one per number.
+  void element(std::size_t tag, const std::vector<mesh::NodeId>& ids) {
+    if (!binary_) {
+      size(tag);
+      for (mesh::NodeId id : ids) size(id + std::size_t{1});
+      return end_record();
+    }
+    record_.resize(ids.size() + 1);
+    record_[0] = tag;
+    for (std::size_t i = 0; i < ids.size(); ++i) record_[i + 1] = ids[i] + std::size_t{1};
+    f_.write(record_.data(), record_.size() * sizeof(std::size_t));
+  }
   /// Closes a binary section's data (Gmsh expects a newline before $End...).
   void end_section(const char* name) { f_.print("{}$End{}\n", binary_ ? "\n" : "", name); }
 
@@ -55,6 +68,7 @@ class MshOut {
   AtomicFile& f_;
   bool binary_;
   bool first_ = true;
+  std::vector<std::size_t> record_;
 };
 
 /// Physical tags are unique across dimensions (PyFR keys groups by tag alone): boundary group g
@@ -97,10 +111,35 @@ void write_entity(MshOut& out, int tag, const Box& b, int physical) {
   out.end_record();
 }
 
-void write_element(MshOut& out, std::size_t tag, const std::vector<mesh::NodeId>& ids) {
-  out.size(tag);
-  for (mesh::NodeId id : ids) out.size(id + std::size_t{1});
-  out.end_record();
+/// Binary $Nodes data: the node tags 1..n, then the coordinates straight from the array (three
+/// doubles a node, as Gmsh reads them), each in pieces of a few MB.
+void write_binary_nodes(AtomicFile& file, const std::vector<Eigen::Vector3d>& x, ProgressCounter& counter) {
+  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "a node is three packed doubles");
+  constexpr std::size_t kPiece = std::size_t{1} << 18;
+  std::vector<std::size_t> tags;
+  tags.reserve(kPiece);
+  for (std::size_t first = 0; first < x.size(); first += kPiece) {
+    tags.clear();
+    for (std::size_t i = first; i < std::min(x.size(), first + kPiece); ++i) tags.push_back(i + 1);
+    file.write(tags.data(), tags.size() * sizeof(std::size_t));
+  }
+  for (std::size_t first = 0; first < x.size(); first += kPiece) {
+    const std::size_t count = std::min(kPiece, x.size() - first);
+    file.write(x[first].data(), count * sizeof(Eigen::Vector3d));
+    counter.add(count);
+    counter.report_if_due();
+  }
+}
+
+constexpr int kNumShapes = static_cast<int>(ho::Shape::Hexahedron) + 1;  // the values of ho::Shape
+
+/// The elements of each (region, shape), in element order, at [region * kNumShapes + shape]: one
+/// pass over the elements, not one per block.
+std::vector<std::vector<std::size_t>> elements_by_region_and_shape(const mesh::Mesh& m, std::size_t num_regions) {
+  std::vector<std::vector<std::size_t>> out(num_regions * kNumShapes);
+  for (std::size_t e = 0; e < m.elements().size(); ++e)
+    out[m.elements()[e].region * kNumShapes + static_cast<int>(m.elements()[e].shape)].push_back(e);
+  return out;
 }
 
 const ho::Shape kVolumeShapes[] = {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron};
@@ -145,11 +184,15 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, 
     out.integer(0);
     out.size(n);
     out.end_record();
-    for (std::size_t i = 1; i <= n; ++i) out.size(i), out.end_record();
-    for (const auto& p : x.all()) {
-      out.real(p[0]), out.real(p[1]), out.real(p[2]), out.end_record();
-      counter.add();
-      counter.report_if_due();
+    if (binary) {
+      write_binary_nodes(file, x.all(), counter);
+    } else {
+      for (std::size_t i = 1; i <= n; ++i) out.size(i), out.end_record();
+      for (const auto& p : x.all()) {
+        out.real(p[0]), out.real(p[1]), out.real(p[2]), out.end_record();
+        counter.add();
+        counter.report_if_due();
+      }
     }
   }
   out.end_section("Nodes");
@@ -161,13 +204,11 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, 
     std::size_t count;
   };
   std::vector<Block> blocks;
+  const std::vector<std::vector<std::size_t>> elements_of = elements_by_region_and_shape(m, t.regions.size());
   for (std::size_t r = 0; r < t.regions.size(); ++r)
-    for (ho::Shape s : kVolumeShapes) {
-      std::size_t count = 0;
-      for (std::size_t e = 0; e < m.elements().size(); ++e)
-        count += m.elements()[e].shape == s && m.elements()[e].region == r;
-      if (count) blocks.push_back({3, t.volume_tag[r], static_cast<int>(r), s, count});
-    }
+    for (ho::Shape s : kVolumeShapes)
+      if (const std::size_t count = elements_of[r * kNumShapes + static_cast<int>(s)].size())
+        blocks.push_back({3, t.volume_tag[r], static_cast<int>(r), s, count});
   for (std::size_t g = 0; g < num_groups; ++g)
     for (ho::Shape s : kFaceShapes) {
       std::size_t count = 0;
@@ -187,18 +228,17 @@ void write_v41(AtomicFile& file, const mesh::Mesh& m, const EquispacedNodes& x, 
     out.size(b.count);
     out.end_record();
     if (b.dim == 3) {
-      for (std::size_t e = 0; e < m.elements().size(); ++e)
-        if (m.elements()[e].shape == b.shape && int(m.elements()[e].region) == b.region_or_group) {
-          m.element_nodes(e, ids);
-          write_element(out, ++tag, ids);
-          counter.add();
-          counter.report_if_due();
-        }
+      for (std::size_t e : elements_of[b.region_or_group * kNumShapes + static_cast<int>(b.shape)]) {
+        m.element_nodes(e, ids);
+        out.element(++tag, ids);
+        counter.add();
+        counter.report_if_due();
+      }
     } else {
       for (std::size_t f = 0; f < m.boundary_faces().size(); ++f) {
         const auto& bf = m.boundary_faces()[f];
         if (bf.shape == b.shape && bf.group == b.region_or_group) {
-          write_element(out, ++tag, m.boundary_face_nodes(f));
+          out.element(++tag, m.boundary_face_nodes(f));
           counter.add();
           counter.report_if_due();
         }

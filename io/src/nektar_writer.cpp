@@ -125,7 +125,9 @@ struct Geometry {
     });
     edge_curved.resize(m.edges().size());
     parallel_for(m.edges().size(), [&](std::size_t e) {
-      edge_curved[e] = !on_linear_map(ho::Shape::Segment, m.edge_nodes(e));
+      thread_local std::vector<mesh::NodeId> ids;
+      m.edge_nodes(e, ids);
+      edge_curved[e] = !on_linear_map(ho::Shape::Segment, ids);
     });
     // A curved face needs P+1 points on each of its edges, straight or not (Tri/QuadGeom::v_FillGeom).
     for (std::size_t f = 0; f < m.faces().size(); ++f)
@@ -135,6 +137,7 @@ struct Geometry {
 
   /// True if every node sits where the straight-sided (affine / bilinear) entity puts it.
   bool on_linear_map(ho::Shape shape, const std::vector<mesh::NodeId>& ids) const {
+    for (mesh::NodeId id : ids) __builtin_prefetch(node[id].data());  // scattered: the misses overlap
     const Eigen::MatrixX3d& ref = reference(shape);
     const int nv = shape == ho::Shape::Segment ? 2 : ho::num_vertices(shape);
     Eigen::Vector3d x[4];
@@ -364,9 +367,10 @@ void write_compressed(AtomicFile& out, const Geometry& g) {
   const int inner = m.order() - 1;
   // f(node, point id) along INDEX's walk.
   auto each_curved_node = [&](auto f) {
+    std::vector<mesh::NodeId> ids;
     for (std::size_t e = 0; e < m.edges().size(); ++e) {
       if (!g.edge_is_curved(e)) continue;
-      const std::vector<mesh::NodeId> ids = m.edge_nodes(e);
+      m.edge_nodes(e, ids);
       f(ids.front(), vertex(ids.front()));
       if (edge_point[e] == kUnseen) edge_point[e] = points, points += inner;
       for (int j = 0; j < inner; ++j) f(ids[j + 1], edge_point[e] + j);

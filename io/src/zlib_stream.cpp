@@ -103,9 +103,9 @@ void ZlibStream::deflate_pending(bool last) {
     out.parts = parallel_map(batch.size(), [&](std::size_t i) {
       return deflate_chunk(batch[i], last && i + 1 == batch.size(), content);
     });
+    // libdeflate's Adler-32 (vectorised): the same checksum as zlib's, several times faster.
     for (const std::string& chunk : batch)
-      out.adler.emplace_back(adler32(1, reinterpret_cast<const Bytef*>(chunk.data()), static_cast<uInt>(chunk.size())),
-                             chunk.size());
+      out.adler.emplace_back(libdeflate_adler32(1, chunk.data(), chunk.size()), chunk.size());
     return out;
   });
   pending_.clear();

@@ -774,7 +774,8 @@ namespace {
 
 /// The mesh files, one thread per format (their bytes do not depend on it): the node positions are
 /// resampled once for all, in the mesh itself (a copy would be the run's largest array: 24 bytes a
-/// node), and moved back to round-off when the files are written or one failed. What each writer
+/// node), and moved back when the files are written or one failed (io::EquispacedNodes: the
+/// element interiors from a copy of theirs, the rest to round-off). What each writer
 /// wrote is added to `written` in config order, also when another format failed (its first error,
 /// in config order, is rethrown). Progress: the mean of the files' own fractions, reported under a
 /// lock (one call at a time).

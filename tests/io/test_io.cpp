@@ -146,6 +146,27 @@ TEST(AtomicFile, CommittedFileHasTheUsualPermissions) {
   EXPECT_EQ(info.st_mode & 0777, 0644u);
 }
 
+// Pieces of a MB or more go to the file without the buffer: the bytes still land in the order
+// written, and a placeholder is still filled in wherever it went.
+TEST(AtomicFile, LargePiecesGoInOrderAndPlaceholdersAreFilledIn) {
+  const std::string path = temp_dir() + "/large.bin";
+  const std::string large(std::size_t{3} << 20, 'L');
+  std::string want = "head" + large + "tail" + large;
+  {
+    semimesh::io::AtomicFile out(path);
+    out.write("head");
+    out.write(large.data(), large.size());
+    out.write("tail");
+    out.write(large.data(), large.size());
+    out.overwrite(1, "E", 1);                // before the first large piece, already in the file
+    out.overwrite(10, "XY", 2);              // inside it
+    out.overwrite(want.size() - 1, "Z", 1);  // the last byte
+    out.commit();
+  }
+  want[1] = 'E', want[10] = 'X', want[11] = 'Y', want.back() = 'Z';
+  EXPECT_EQ(read_text(path), want);
+}
+
 TEST(Msh, WriteFailureKeepsExistingFile) {
   const std::string dir = temp_dir();
   const std::string path = dir + "/m.msh";
@@ -502,6 +523,15 @@ void expect_in_place_same_as_copy(const Mesh& gll, const std::string& what) {
 
 TEST(Equispaced, InPlaceMatchesTheCopyAndMovesTheNodesBack) {
   for (const auto& [mesh, what] : gll_meshes()) expect_in_place_same_as_copy(mesh, what);
+}
+
+// The interior nodes get back the very positions they had (kept, not resampled back).
+TEST(Equispaced, InPlaceGivesTheInteriorNodesTheirExactPositionsBack) {
+  for (const auto& [gll, what] : gll_meshes()) {
+    Mesh moved = gll;
+    { const semimesh::io::EquispacedNodes in_place(moved, semimesh::io::EquispacedNodes::InPlace{}); }
+    for (NodeId id : gll.interior_pool()) ASSERT_EQ(moved.node(id), gll.node(id)) << what << " node " << id;
+  }
 }
 
 TEST(Equispaced, AnEquispacedMeshIsNotCopied) {

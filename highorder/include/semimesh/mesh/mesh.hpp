@@ -171,6 +171,7 @@ class Mesh {
   std::vector<NodeId> boundary_face_nodes(std::size_t boundary_face) const;
   /// Node ids along an edge, vertices included, from vertices[0] to vertices[1]; shape (P+1).
   std::vector<NodeId> edge_nodes(std::size_t edge) const;
+  void edge_nodes(std::size_t edge, std::vector<NodeId>& out) const;
   /// Node ids of a face in the canonical order of a tri/quad whose vertices are the stored ones.
   std::vector<NodeId> face_nodes(std::size_t face) const;
   void face_nodes(std::size_t face, std::vector<NodeId>& out) const;

@@ -45,6 +45,8 @@ class AtomicFile {
   static constexpr std::size_t kFlushBytes = 1 << 20;
   static constexpr std::size_t kWritebackBytes = std::size_t{16} << 20;
   void flush_buffer();
+  /// Appends to the file after what the buffer held (which must be flushed already).
+  void write_to_file(const char* data, std::size_t bytes);
 
   std::string path_, temp_path_;
   std::FILE* file_ = nullptr;

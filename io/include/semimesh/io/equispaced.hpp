@@ -19,9 +19,13 @@ class EquispacedNodes {
   /// bytes a node).
   explicit EquispacedNodes(const mesh::Mesh& mesh);
   struct InPlace {};
-  /// No copy: `mesh`'s own positions are resampled where they are and moved back, to round-off
-  /// (~1e-16 of the coordinates), when this object is destroyed; meanwhile `mesh` must be read
-  /// through this object only (its node set and CAD attachments do not describe them).
+  /// No whole copy: `mesh`'s own positions are resampled where they are and moved back when this
+  /// object is destroyed: the nodes of element interiors exactly, from a copy of theirs kept
+  /// meanwhile (24 bytes an interior node: resampling them back, every element's node list and
+  /// its largest matrix, was most of the resampling back), the nodes of faces and edges by
+  /// resampling, to round-off (~1e-16 of the coordinates).
+  /// Meanwhile `mesh` must be read through this object only (its node set and CAD attachments do
+  /// not describe them).
   EquispacedNodes(mesh::Mesh& mesh, InPlace);
   ~EquispacedNodes();
   EquispacedNodes(const EquispacedNodes&) = delete;
@@ -34,6 +38,7 @@ class EquispacedNodes {
   std::vector<Eigen::Vector3d> resampled_;  // the copy: empty in place or when equispaced already
   const std::vector<Eigen::Vector3d>* nodes_;
   mesh::Mesh* moved_ = nullptr;             // in place: the mesh whose positions go back
+  std::vector<Eigen::Vector3d> kept_;       // in place: the interior nodes' positions, in pool order
 };
 
 /// The slow, obviously right reference of EquispacedNodes: a copy of `mesh` whose nodes are the
