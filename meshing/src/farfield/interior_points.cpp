@@ -1,9 +1,8 @@
 #include "semimesh/farfield/detail/interior_points.hpp"
 
-
-#include "semimesh/surface/size_field.hpp"
-
 #include "semimesh/geometry/box_tree.hpp"
+#include "semimesh/ho/closest_point.hpp"
+#include "semimesh/surface/size_field.hpp"
 
 #include <Eigen/Geometry>
 
@@ -16,9 +15,9 @@
 namespace semimesh::farfield {
 namespace {
 
+using Eigen::Vector3d;
 using geometry::Box;
 using geometry::BoxTree;
-using Eigen::Vector3d;
 
 // A leaf cell's side over the spacing at its centre: one point per cell of side s gives Delaunay
 // edges of about 1.2 s on a lattice; the octree's sides halve, so a leaf lies between half and all
@@ -28,29 +27,6 @@ constexpr double kLeafSide = 1.0;
 constexpr double kJitter = 0.2;
 // No point nearer the boundary than this times the spacing: the boundary's vertices are there.
 constexpr double kClearance = 0.6;
-
-// The squared distance from x to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5:
-// the closest point by the Voronoi region of the triangle x lies in).
-double squared_distance_to_triangle(const Vector3d& x, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
-  const Vector3d ab = b - a, ac = c - a, ax = x - a;
-  const double d1 = ab.dot(ax), d2 = ac.dot(ax);
-  if (d1 <= 0 && d2 <= 0) return ax.squaredNorm();
-  const Vector3d bx = x - b;
-  const double d3 = ab.dot(bx), d4 = ac.dot(bx);
-  if (d3 >= 0 && d4 <= d3) return bx.squaredNorm();
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (x - (a + d1 / (d1 - d3) * ab)).squaredNorm();
-  const Vector3d cx = x - c;
-  const double d5 = ab.dot(cx), d6 = ac.dot(cx);
-  if (d6 >= 0 && d5 <= d6) return cx.squaredNorm();
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (x - (a + d2 / (d2 - d6) * ac)).squaredNorm();
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return (x - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).squaredNorm();
-  const double denominator = 1.0 / (va + vb + vc);
-  return (x - (a + ab * (vb * denominator) + ac * (vc * denominator))).squaredNorm();
-}
 
 enum class RayHit { Miss, Cross, Graze };
 
@@ -103,8 +79,12 @@ class Boundary {
 
   bool has_triangle_within(const Vector3d& x, double distance) const {
     const double r2 = distance * distance;
-    return tree_.visit([&](const Box& b) { return b.squared_distance(x) <= r2; },
-                       [&](int t) { return squared_distance_to_triangle(x, corner(t, 0), corner(t, 1), corner(t, 2)) <= r2; });
+    return tree_.visit(
+        [&](const Box& b) { return b.squared_distance(x) <= r2; },
+        [&](int t) {
+          return (x - ho::closest_point_on_triangle(x, corner(t, 0), corner(t, 1), corner(t, 2)).point).squaredNorm() <=
+                 r2;
+        });
   }
 
   // Odd crossings along a ray; a ray grazing an edge is replaced by the next of a few fixed
@@ -118,7 +98,8 @@ class Boundary {
       int crossings = 0;
       const bool grazed = tree_.visit([&](const Box& b) { return ray_meets_box(x, inverse, b); },
                                       [&](int t) {
-                                        const RayHit hit = ray_hits_triangle(x, d, corner(t, 0), corner(t, 1), corner(t, 2));
+                                        const RayHit hit =
+                                            ray_hits_triangle(x, d, corner(t, 0), corner(t, 1), corner(t, 2));
                                         crossings += hit == RayHit::Cross;
                                         return hit == RayHit::Graze;
                                       });
