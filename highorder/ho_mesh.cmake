@@ -7,6 +7,7 @@ add_library(semimesh_ho_mesh
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/reference_lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/split_layers.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/sparse_rows.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/splitting/lattice_lines.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/layer_keys.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/pyramid_columns.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/splitting/precut_faces.cpp

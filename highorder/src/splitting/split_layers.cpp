@@ -1,5 +1,6 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
+#include "lattice_lines.hpp"
 #include "parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "sparse_rows.hpp"
@@ -50,8 +51,8 @@ struct ShapeData {
   std::map<LatticePoint, int> index;        // lattice point -> canonical index
   Eigen::MatrixX3d reference;               // (nodes, 3) reference nodes of the mesh's node set
   LagrangeBasis basis;                      // order P, the mesh's node set
-  LagrangeBasis linear;                     // order 1: weights of the bottom vertices
   std::map<int, DirectionData> directions;  // by split direction, filled on demand
+  std::map<std::array<int, 2>, detail::LatticeLines> lines;  // by a plan's directions, filled on demand
 };
 
 DirectionData make_direction_data(const ShapeData& data, int order, int direction) {
@@ -218,7 +219,7 @@ ShapeData& Splitter::shape_data(Shape shape) {
                  detail::lattice_index(shape, order),
                  reference_nodes(shape, order, in_.node_set()),
                  LagrangeBasis(shape, order, in_.node_set()),
-                 LagrangeBasis(shape, 1, NodeSet::Equispaced),
+                 {},
                  {}};
   return shapes_.emplace(shape, std::move(data)).first->second;
 }
@@ -336,6 +337,7 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
   const mesh::Element& el = in_.elements()[element];
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
+  const detail::LatticeLines& lines = data.lines.at(plan.direction);
   // The coarse nodes are the output's first ones, same ids.
   const std::vector<NodeId> coarse = in_.element_nodes(element);
   Eigen::MatrixX3d X(coarse.size(), 3);
@@ -354,12 +356,12 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
   // meet it), so they depend on neither split coordinate and match those prisms' side faces.
   const auto interface_at = [&](int slot, const Eigen::RowVector3d& q, int k) {
     if (z_of_vertex[slot].empty()) return uniform[slot][k];
-    Eigen::MatrixX3d foot = q;
-    foot(0, plan.direction[slot]) = -1.0;
-    if (slot == 1) foot(0, plan.direction[0]) = 1.0;
-    const Eigen::MatrixXd w = data.linear.values(foot);
+    Eigen::RowVector3d foot = q;
+    foot(plan.direction[slot]) = -1.0;
+    if (slot == 1) foot(plan.direction[0]) = 1.0;
+    const std::array<double, 8> w = detail::linear_weights(el.shape, foot);
     double z = 0.0;
-    for (int v : direction_of(element, slot).bottom) z += w(0, v) * z_of_vertex[slot][v][k];
+    for (int v : direction_of(element, slot).bottom) z += w[v] * z_of_vertex[slot][v][k];
     return z;
   };
   if (z_of_vertex[0].empty() && z_of_vertex[1].empty()) {
@@ -368,24 +370,23 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     // Constant interfaces: each piece is chi composed with an affine map, so its det J is chi's restricted.
     if (inherit_) out.bounds = certify_pieces(el.shape, in_.order(), in_.node_set(), X, piece_boxes(element, uniform));
   } else {
-    out.x = map_points(data.basis, X, sub_points(data, plan, interface_at));
+    out.x = detail::map_along_lines(lines, X, sub_points(data, plan, interface_at));
   }
 
   // Heights along the vertical edges of each direction, for the stats.
   const Eigen::MatrixX3d corners = reference_vertices(el.shape);
   for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
-    const int d = plan.direction[slot], N = layers(element, slot);
+    const int N = layers(element, slot);
     for (int v : direction_of(element, slot).bottom) {
-      std::vector<double> z(N + 1);
-      for (int k = 0; k <= N; ++k) z[k] = interface_at(slot, corners.row(v), k);
-      Eigen::MatrixX3d ends(4, 3);
-      const double zs[4] = {z[0], z[1], z[N - 1], z[N]};
+      const int ks[4] = {0, 1, N - 1, N};
+      std::array<Eigen::Vector3d, 4> p;
       for (int j = 0; j < 4; ++j) {
-        ends.row(j) = corners.row(v);
-        ends(j, d) = zs[j];
+        // Vertex v's line (plane) of nodes: along the other split direction it stays at v's place.
+        std::array<double, 2> along{corners(v, plan.direction[0]), plan.two() ? corners(v, plan.direction[1]) : 0.0};
+        along[slot] = interface_at(slot, corners.row(v), ks[j]);
+        p[j] = detail::map_along_line(lines, X, v, along);
       }
-      const Eigen::MatrixX3d p = map_points(data.basis, X, ends);
-      const double first = (p.row(1) - p.row(0)).norm(), last = (p.row(3) - p.row(2)).norm();
+      const double first = (p[1] - p[0]).norm(), last = (p[3] - p[2]).norm();
       out.first_heights[slot].push_back(first);
       out.ratios[slot].push_back(N > 1 ? std::pow(last / first, 1.0 / (N - 1)) : 1.0);
     }
@@ -615,6 +616,10 @@ std::vector<int> Splitter::plan_elements(const std::vector<LayerSplit>& split) {
     plans_[e] = {split[j].direction, split[j].family};
     const Shape s = in_.elements()[e].shape;
     for (int slot = 0; slot < (plans_[e].two() ? 2 : 1); ++slot) direction_data(s, plans_[e].direction[slot]);
+    ShapeData& data = shape_data(s);
+    if (!data.lines.count(plans_[e].direction))
+      data.lines.emplace(plans_[e].direction,
+                         detail::lattice_lines(s, in_.order(), in_.node_set(), plans_[e].direction));
     uniform_values(s, plans_[e]);  // also for a ratio field: elements where it is constant use them
   }
   return position;
