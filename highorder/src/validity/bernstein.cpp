@@ -208,12 +208,7 @@ void gather_box(const std::vector<double>& box, BernsteinPolynomial& result) {
   }
 }
 
-/// A run of coefficients with consecutive ids whose places in the result's box are consecutive too.
-struct BoxRun {
-  int first = 0;   // id of the run's first coefficient
-  int offset = 0;  // its place in the box
-  int length = 0;
-};
+using BoxRun = ScaledProduct::BoxRun;
 
 std::vector<BoxRun> box_runs(const std::vector<int>& offset) {
   std::vector<BoxRun> runs;
@@ -240,7 +235,7 @@ void accumulate_runs(const std::vector<BoxRun>& runs, const double* __restrict s
   }
 }
 
-using RunAccumulator = void (*)(const std::vector<BoxRun>&, const double*, double, double*);
+using RunAccumulator = ScaledProduct::RunAccumulator;
 
 /// The accumulate_runs for these runs: fixed lengths 1..kMaxFixedRun, else any length.
 constexpr int kMaxFixedRun = 16;
@@ -256,25 +251,30 @@ RunAccumulator accumulator_for(const std::vector<BoxRun>& runs) {
   return pick_accumulator(runs[0].length, std::make_integer_sequence<int, kMaxFixedRun>{});
 }
 
-/// What a product of two layouts needs besides the coefficients: a's places in the result's box,
-/// b's runs (cached per pair of layouts, which live as long as the program).
-struct ProductPlan {
-  std::vector<int> offset_a;
-  std::vector<BoxRun> runs_b;
-  RunAccumulator accumulate = nullptr;
-};
-
-const ProductPlan& product_plan(const BernsteinLayout& la, const BernsteinLayout& lb, const BernsteinLayout& out) {
-  thread_local std::map<std::pair<const BernsteinLayout*, const BernsteinLayout*>, ProductPlan> plans;
-  ProductPlan& plan = plans[{&la, &lb}];
-  if (plan.accumulate) return plan;
-  plan.offset_a = box_offsets(la, out);
-  plan.runs_b = box_runs(box_offsets(lb, out));
-  plan.accumulate = accumulator_for(plan.runs_b);
-  return plan;
+/// The product of two layouts (cached per pair of layouts, which live as long as the program).
+const ScaledProduct& product_of(const BernsteinLayout& la, const BernsteinLayout& lb) {
+  thread_local std::map<std::pair<const BernsteinLayout*, const BernsteinLayout*>, ScaledProduct> plans;
+  const auto key = std::make_pair(&la, &lb);
+  auto it = plans.find(key);
+  if (it == plans.end()) it = plans.emplace(key, ScaledProduct(la, lb)).first;
+  return it->second;
 }
 
 }  // namespace
+
+ScaledProduct::ScaledProduct(const BernsteinLayout& a, const BernsteinLayout& b)
+    : out_(BernsteinLayout::get(product_layout_factors(a, b))),
+      offset_a_(box_offsets(a, *out_)),
+      runs_b_(box_runs(box_offsets(b, *out_))),
+      accumulate_(accumulator_for(runs_b_)) {}
+
+void ScaledProduct::accumulate(const double* a, const double* b, double factor, double* box) const {
+  for (std::size_t i = 0; i < offset_a_.size(); ++i) {
+    const double scaled_a = factor * a[i];
+    if (scaled_a == 0.0) continue;
+    accumulate_(runs_b_, b, scaled_a, box + offset_a_[i]);
+  }
+}
 
 // In the scaled basis (multinomial folded into the coefficient) the product is a plain convolution
 // of multi-indices: alpha + beta, accumulated in the dense box of the result, then gathered.
@@ -284,18 +284,16 @@ const ProductPlan& product_plan(const BernsteinLayout& la, const BernsteinLayout
 BernsteinPolynomial operator*(const BernsteinPolynomial& a, const BernsteinPolynomial& b) {
   const BernsteinLayout& la = a.layout();
   const BernsteinLayout& lb = b.layout();
-  BernsteinPolynomial result(product_layout_factors(la, lb));
+  const ScaledProduct& product = product_of(la, lb);
+  BernsteinPolynomial result(product.out());
   const BernsteinLayout& out = result.layout();
-  const ProductPlan& plan = product_plan(la, lb, out);
-  thread_local std::vector<double> scaled_b, box;
+  thread_local std::vector<double> scaled_a, scaled_b, box;
+  scaled_a.resize(la.size());
   scaled_b.resize(lb.size());
+  for (int i = 0; i < la.size(); ++i) scaled_a[i] = a.coefficients()[i] * la.multinomial[i];
   for (int j = 0; j < lb.size(); ++j) scaled_b[j] = b.coefficients()[j] * lb.multinomial[j];
   box.assign(out.box_to_id.size(), 0.0);
-  for (int i = 0; i < la.size(); ++i) {
-    const double scaled_a = a.coefficients()[i] * la.multinomial[i];
-    if (scaled_a == 0.0) continue;
-    plan.accumulate(plan.runs_b, scaled_b.data(), scaled_a, box.data() + plan.offset_a[i]);
-  }
+  product.accumulate(scaled_a.data(), scaled_b.data(), 1.0, box.data());
   gather_box(box, result);
   return result;
 }
@@ -373,6 +371,28 @@ void BernsteinPolynomial::bisect(int factor, int vertex_a, int vertex_b, Bernste
   }
 }
 
+namespace {
+
+/// The coefficient ids along each line of variable `var` of a layout, [lines][degree + 1], alpha_var
+/// = 0..degree (cached per layout and variable, which live as long as the program).
+const std::vector<int>& lines_of(const BernsteinLayout& l, int var) {
+  thread_local std::map<std::pair<const BernsteinLayout*, int>, std::vector<int>> cache;
+  std::vector<int>& lines = cache[{&l, var}];
+  if (!lines.empty() || l.size() == 0) return lines;
+  const int n = l.factors[l.var_factor[var]].degree;
+  for (int start = 0; start < l.size(); ++start) {
+    if (l.index[start][var] != 0) continue;  // each line starts at alpha_var = 0
+    for (int m = 0; m <= n; ++m) {
+      std::array<int, 3> free = l.index[start];
+      free[var] = m;
+      lines.push_back(l.id_of(free));
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
 BernsteinPolynomial BernsteinPolynomial::restricted(int var, double a, double b) const {
   const BernsteinLayout& l = *layout_;
   if (var < 0 || var >= l.num_vars || l.factors[l.var_factor[var]].dim != 1)
@@ -383,16 +403,12 @@ BernsteinPolynomial BernsteinPolynomial::restricted(int var, double a, double b)
   const int n = l.factors[l.var_factor[var]].degree;
   const double s = a / b;  // where a lies on [0, b]
   BernsteinPolynomial out(layout_);
-  std::vector<int> line(n + 1);
-  std::vector<double> work(n + 1), left(n + 1);
-  for (int start = 0; start < l.size(); ++start) {
-    if (l.index[start][var] != 0) continue;  // each line starts at alpha_1 = 0
-    for (int m = 0; m <= n; ++m) {
-      std::array<int, 3> free = l.index[start];
-      free[var] = m;
-      line[m] = l.id_of(free);
-      work[m] = coefficients_[line[m]];
-    }
+  const std::vector<int>& lines = lines_of(l, var);
+  thread_local std::vector<double> work, left;
+  work.resize(n + 1), left.resize(n + 1);
+  for (std::size_t first = 0; first < lines.size(); first += n + 1) {
+    const int* line = &lines[first];
+    for (int m = 0; m <= n; ++m) work[m] = coefficients_[line[m]];
     // [0, b]: the first entry of each de Casteljau level at b.
     left[0] = work[0];
     for (int level = 1; level <= n; ++level) {

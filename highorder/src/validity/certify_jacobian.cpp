@@ -14,18 +14,19 @@ namespace {
 /// (dim + 1) points of R^dim.
 using FactorVertices = std::array<std::array<double, 3>, 4>;
 
+/// One per factor (at most three: a hexahedron's segments); a piece is copied at every bisection.
+using PieceVertices = std::array<FactorVertices, 3>;
+
 struct Piece {
   BernsteinPolynomial det_j;
-  std::vector<FactorVertices> vertices;  // one per factor
-  int depth = 0;                         // bisections from the whole element
+  PieceVertices vertices;  // [factors] used
+  int depth = 0;           // bisections from the whole element
 };
 
-std::vector<FactorVertices> whole_domain(const BernsteinLayout& layout) {
-  std::vector<FactorVertices> vertices(layout.factors.size());
-  for (FactorVertices& factor : vertices) {
-    factor = {};
-    for (int vertex = 1; vertex < 4; ++vertex) factor[vertex][vertex - 1] = 1.0;  // unit simplex
-  }
+PieceVertices whole_domain(const BernsteinLayout& layout) {
+  PieceVertices vertices{};
+  for (std::size_t f = 0; f < layout.factors.size(); ++f)
+    for (int vertex = 1; vertex < 4; ++vertex) vertices[f][vertex][vertex - 1] = 1.0;  // unit simplex
   return vertices;
 }
 
@@ -79,7 +80,8 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
   double highest_value = -std::numeric_limits<double>::infinity();  // largest evaluated det J
   bool below_floor = false;  // proven: an evaluated det J below floor_ratio x an evaluated one
   std::vector<Piece> stack;
-  stack.push_back(Piece{root, whole_domain(root.layout()), 0});
+  const PieceVertices whole = whole_domain(root.layout());
+  stack.push_back(Piece{std::move(root), whole, 0});
   while (!stack.empty()) {
     Piece piece = std::move(stack.back());
     stack.pop_back();

@@ -12,11 +12,25 @@
 namespace semimesh::ho::detail {
 namespace {
 
-/// Linear map from element node positions to the Bezier control points of the order-P map.
+/// A column of J, d x / d xi_k, from the map's control points: each of its scaled coefficients
+/// (coefficient x multinomial) is a sum of a few control points times weights (the derivative's
+/// difference, the pyramid's division by 1 - c, d t_k / d xi_k).
+struct ColumnMap {
+  std::shared_ptr<const BernsteinLayout> layout;
+  std::vector<int> first;      // [size + 1] where each coefficient's terms start
+  std::vector<int> control;    // [terms] control point
+  std::vector<double> weight;  // [terms]
+};
+
+/// Linear map from element node positions to the Bezier control points of the order-P map, and
+/// what jacobian_determinant needs besides: the columns' maps and the two products' kernels.
 struct ControlPointMap {
   std::shared_ptr<const BernsteinLayout> layout;  // Bernstein space of the map
   Eigen::MatrixXd nodes_to_control;              // (layout size, num_nodes)
   std::array<double, 3> column_scale{};          // d t_k / d xi_k
+  std::array<ColumnMap, 3> columns;              // d x / d xi_k
+  std::unique_ptr<ScaledProduct> cofactor;       // column 0 x column 1
+  std::unique_ptr<ScaledProduct> determinant;    // column 2 x cofactor
 };
 
 std::vector<SimplexFactor> geometry_factors(Shape shape, int order) {
@@ -27,6 +41,38 @@ std::vector<SimplexFactor> geometry_factors(Shape shape, int order) {
     case Shape::Pyramid: return {{1, order}, {1, order}, {1, order}};
     default: throw std::invalid_argument("Jacobian bounds: shape '" + to_string(shape) + "' is not a 3D element");
   }
+}
+
+/// d x / d xi_k from the map's coefficients in one coordinate: the derivative, for a pyramid's
+/// dX/da and dX/db divided by the factor (1 - c) the collapsed map's Jacobian removes, scaled.
+BernsteinPolynomial reference_column(Shape shape, const BernsteinPolynomial& coordinate, double scale, int k) {
+  BernsteinPolynomial column = coordinate.derivative(k);
+  if (shape == Shape::Pyramid && k < 2) column = column.divide_by_one_minus(2);
+  column *= scale;
+  return column;
+}
+
+/// Column k of J as reference_column does it, applied to one coefficient at a time: its map.
+ColumnMap column_map(Shape shape, const std::shared_ptr<const BernsteinLayout>& layout, double scale, int k) {
+  ColumnMap map;
+  std::vector<Eigen::VectorXd> images;  // [control point] its image
+  for (int j = 0; j < layout->size(); ++j) {
+    BernsteinPolynomial unit(layout);
+    unit.coefficients()[j] = 1.0;
+    BernsteinPolynomial column = reference_column(shape, unit, scale, k);
+    if (!map.layout) map.layout = column.layout_ptr();
+    images.push_back(column.coefficients());
+  }
+  map.first.push_back(0);
+  for (int i = 0; i < map.layout->size(); ++i) {
+    for (int j = 0; j < layout->size(); ++j)
+      if (images[j][i] != 0.0) {
+        map.control.push_back(j);
+        map.weight.push_back(images[j][i] * map.layout->multinomial[i]);
+      }
+    map.first.push_back(static_cast<int>(map.control.size()));
+  }
+  return map;
 }
 
 /// 1D Bernstein basis of degree n at t; shape (n+1).
@@ -64,6 +110,12 @@ Eigen::MatrixXd pyramid_nodes_to_control(int order, const Eigen::MatrixX3d& refe
   return embedding * lu.inverse();
 }
 
+void add_products(Shape shape, ControlPointMap& map) {
+  for (int k = 0; k < 3; ++k) map.columns[k] = column_map(shape, map.layout, map.column_scale[k], k);
+  map.cofactor = std::make_unique<ScaledProduct>(*map.columns[0].layout, *map.columns[1].layout);
+  map.determinant = std::make_unique<ScaledProduct>(*map.columns[2].layout, *map.cofactor->out());
+}
+
 std::shared_ptr<const ControlPointMap> build_control_point_map(Shape shape, int order, NodeSet set) {
   auto map = std::make_shared<ControlPointMap>();
   map->layout = BernsteinLayout::get(geometry_factors(shape, order));
@@ -73,6 +125,7 @@ std::shared_ptr<const ControlPointMap> build_control_point_map(Shape shape, int 
   if (shape == Shape::Pyramid) {
     map->nodes_to_control = pyramid_nodes_to_control(order, reference, *map->layout);
     map->column_scale = {0.5, 0.5, 1.0};
+    add_products(shape, *map);
     return map;
   }
   if (map->layout->size() != reference.rows())
@@ -91,6 +144,7 @@ std::shared_ptr<const ControlPointMap> build_control_point_map(Shape shape, int 
     case Shape::Prism: map->column_scale = {1.0, 1.0, 0.5}; break;
     default: map->column_scale = {0.5, 0.5, 0.5}; break;
   }
+  add_products(shape, *map);
   return map;
 }
 
@@ -125,7 +179,9 @@ Eigen::Vector3d bernstein_domain_point(Shape shape, const Eigen::Vector3d& r) {
   }
 }
 
-BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes) {
+namespace {
+
+void check_element(Shape shape, int order, const Eigen::MatrixX3d& element_nodes) {
   if (dimension(shape) != 3)
     throw std::invalid_argument("Jacobian bounds: shape '" + to_string(shape) + "' is not a 3D element");
   if (order < 1 || order > kMaxOrder)
@@ -135,13 +191,75 @@ BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, co
     throw std::invalid_argument("Jacobian bounds: a " + to_string(shape) + " of order " + std::to_string(order) +
                                 " has " + std::to_string(num_nodes(shape, order)) + " nodes, got " +
                                 std::to_string(element_nodes.rows()));
-  const std::shared_ptr<const ControlPointMap> map = control_point_map(shape, order, set);
-  // Relative to the first node: det J does not change, and the conversion (whose norm grows fast with
-  // the order for equispaced nodes, ~2e8 for a P = 8 hex) then amplifies rounding of the element's
-  // size, not of its distance from the origin.
-  const Eigen::RowVector3d origin = element_nodes.row(0);
-  const Eigen::MatrixX3d control = map->nodes_to_control * (element_nodes.rowwise() - origin);  // (layout size, 3)
+}
 
+// Relative to the first node: det J does not change, and the conversion (whose norm grows fast with
+// the order for equispaced nodes, ~2e8 for a P = 8 hex) then amplifies rounding of the element's
+// size, not of its distance from the origin. control: (layout size, 3).
+void control_points(const ControlPointMap& map, const Eigen::MatrixX3d& element_nodes, Eigen::MatrixX3d& shifted,
+                    Eigen::MatrixX3d& control) {
+  shifted = element_nodes.rowwise() - element_nodes.row(0);
+  control.resize(map.nodes_to_control.rows(), 3);
+  control.noalias() = map.nodes_to_control * shifted;
+}
+
+}  // namespace
+
+// In the scaled basis (ScaledProduct) the columns' products chain without a polynomial in between:
+// each cofactor u_a v_b - u_b v_a is accumulated in one box, whose entries are its scaled
+// coefficients, and det J = sum_c w_c cofactor_c in the next; only that box is divided by the
+// multinomials. Per thread, the buffers are reused: no allocation but the result's.
+BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes) {
+  check_element(shape, order, element_nodes);
+  const std::shared_ptr<const ControlPointMap> map = control_point_map(shape, order, set);
+  thread_local Eigen::MatrixX3d shifted, control;
+  control_points(*map, element_nodes, shifted, control);
+  // columns[k][c]: the scaled coefficients of d x_c / d xi_k.
+  thread_local std::array<std::array<std::vector<double>, 3>, 3> columns;
+  for (int k = 0; k < 3; ++k) {
+    const ColumnMap& m = map->columns[k];
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double>& column = columns[k][c];
+      column.assign(m.layout->size(), 0.0);
+      for (int i = 0; i < m.layout->size(); ++i)
+        for (int t = m.first[i]; t < m.first[i + 1]; ++t) column[i] += m.weight[t] * control(m.control[t], c);
+    }
+  }
+  const BernsteinLayout& middle = *map->cofactor->out();
+  const BernsteinLayout& last = *map->determinant->out();
+  thread_local std::vector<double> box, cofactor, sum;
+  sum.assign(last.box_to_id.size(), 0.0);
+  cofactor.resize(middle.size());
+  const auto& u = columns[0];
+  const auto& v = columns[1];
+  const auto& w = columns[2];
+  for (int c = 0; c < 3; ++c) {
+    const int a = (c + 1) % 3, b = (c + 2) % 3;
+    box.assign(middle.box_to_id.size(), 0.0);
+    map->cofactor->accumulate(u[a].data(), v[b].data(), 1.0, box.data());
+    map->cofactor->accumulate(u[b].data(), v[a].data(), -1.0, box.data());
+    for (int i = 0; i < middle.size(); ++i) {
+      const std::array<int, 3>& free = middle.index[i];
+      cofactor[i] = box[free[0] * middle.box_stride[0] + free[1] * middle.box_stride[1] + free[2] * middle.box_stride[2]];
+    }
+    map->determinant->accumulate(w[c].data(), cofactor.data(), 1.0, sum.data());
+  }
+  BernsteinPolynomial det(map->determinant->out());
+  for (int i = 0; i < last.size(); ++i) {
+    const std::array<int, 3>& free = last.index[i];
+    det.coefficients()[i] =
+        sum[free[0] * last.box_stride[0] + free[1] * last.box_stride[1] + free[2] * last.box_stride[2]] /
+        last.multinomial[i];
+  }
+  return det;
+}
+
+BernsteinPolynomial jacobian_determinant_by_products(Shape shape, int order, NodeSet set,
+                                                     const Eigen::MatrixX3d& element_nodes) {
+  check_element(shape, order, element_nodes);
+  const std::shared_ptr<const ControlPointMap> map = control_point_map(shape, order, set);
+  Eigen::MatrixX3d shifted, control;
+  control_points(*map, element_nodes, shifted, control);
   // columns[k][c] = d x_c / d xi_k
   std::array<std::array<BernsteinPolynomial, 3>, 3> columns{
       {{BernsteinPolynomial(map->layout), BernsteinPolynomial(map->layout), BernsteinPolynomial(map->layout)},
@@ -150,13 +268,7 @@ BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, co
   for (int c = 0; c < 3; ++c) {
     BernsteinPolynomial coordinate(map->layout);
     coordinate.coefficients() = control.col(c);
-    for (int k = 0; k < 3; ++k) {
-      BernsteinPolynomial column = coordinate.derivative(k);
-      // Pyramid: dX/da and dX/db carry the factor (1 - c) that the collapsed map's Jacobian removes.
-      if (shape == Shape::Pyramid && k < 2) column = column.divide_by_one_minus(2);
-      column *= map->column_scale[k];
-      columns[k][c] = std::move(column);
-    }
+    for (int k = 0; k < 3; ++k) columns[k][c] = reference_column(shape, coordinate, map->column_scale[k], k);
   }
   const auto& u = columns[0];
   const auto& v = columns[1];

@@ -38,7 +38,14 @@ namespace semimesh::ho::detail {
 /// triangle, t = (zeta+1)/2; hex t_k = (xi_k+1)/2; pyramid t_a = (a+1)/2, t_b = (b+1)/2, c.
 /// element_nodes: (num_nodes(shape, order), 3), canonical order, positions of `set`.
 /// Throws std::invalid_argument for a 2D shape, an order outside 1..kMaxOrder or a wrong node count.
+/// The products chained in the scaled basis with reused buffers (ScaledProduct).
 BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes);
+
+/// The same polynomial formed as written, det J = w . (u x v) over BernsteinPolynomial's derivative,
+/// division and products: the slow, obviously right reference jacobian_determinant is tested
+/// against (equal to rounding).
+BernsteinPolynomial jacobian_determinant_by_products(Shape shape, int order, NodeSet set,
+                                                     const Eigen::MatrixX3d& element_nodes);
 
 /// The point of the Bernstein domain (see above) of a reference point; for the pyramid apex the
 /// collapsed (a, b) is taken as (0, 0).

@@ -101,6 +101,35 @@ class BernsteinPolynomial {
   Eigen::VectorXd coefficients_;
 };
 
+/// The product of polynomials of two layouts in the scaled basis (each coefficient times its
+/// multinomial), where it is a plain convolution of multi-indices, accumulated in the dense box of
+/// the product's layout (BernsteinLayout::box_stride): the kernel of operator*, for callers that
+/// chain products without forming the polynomials in between (the Jacobian determinant).
+class ScaledProduct {
+ public:
+  /// Throws std::invalid_argument when the layouts' factor dimensions differ.
+  ScaledProduct(const BernsteinLayout& a, const BernsteinLayout& b);
+  /// The product's layout (degrees added factor by factor).
+  const std::shared_ptr<const BernsteinLayout>& out() const { return out_; }
+  /// box[alpha + beta] += factor * a[alpha] * b[beta] over every pair, in the order of a's
+  /// coefficients. a [a.size()], b [b.size()]: scaled coefficients; box [out().box_to_id.size()].
+  void accumulate(const double* a, const double* b, double factor, double* box) const;
+
+  /// A run of b's coefficients with consecutive ids whose places in the box are consecutive too.
+  struct BoxRun {
+    int first = 0;   // id of the run's first coefficient
+    int offset = 0;  // its place in the box
+    int length = 0;
+  };
+  using RunAccumulator = void (*)(const std::vector<BoxRun>&, const double*, double, double*);
+
+ private:
+  std::shared_ptr<const BernsteinLayout> out_;
+  std::vector<int> offset_a_;  // [a.size()] place of a's coefficients in the box
+  std::vector<BoxRun> runs_b_;
+  RunAccumulator accumulate_ = nullptr;
+};
+
 /// The product a * b term by term, one pair of coefficients at a time: the slow, obviously right
 /// reference operator* is tested against, bit for bit (each result coefficient sums its terms in
 /// the same order).
