@@ -21,41 +21,65 @@
 namespace semimesh::pipeline {
 namespace {
 
-// Points hashed by cells of size `tolerance`: an equal point lies in the same or a neighbouring cell.
+// Points hashed by cells of 2.5 x the tolerance: the points within tolerance of x lie in x's cell
+// and, per axis, the neighbour on the side of the cell's half x is in (a margin of a quarter of the
+// tolerance beyond rounding), so 8 cells are probed, not 27. A cell keeps a chain of its points'
+// entries (no list allocated per cell).
 class PointIndex {
  public:
-  PointIndex(const mesh::Mesh& mesh, double tolerance) : mesh_(mesh), tolerance_(tolerance) {}
+  PointIndex(const mesh::Mesh& mesh, double tolerance, std::size_t expected)
+      : mesh_(mesh), tolerance_(tolerance), cell_size_(2.5 * tolerance) {
+    heads_.reserve(expected);
+    entries_.reserve(expected);
+  }
 
-  /// The node already indexed within tolerance of v's point (v itself if none), then indexes v.
+  /// The node indexed first among those within tolerance of v's point (v itself if none), then
+  /// indexes v.
   mesh::NodeId find_or_add(mesh::NodeId v) {
     const Eigen::Vector3d& x = mesh_.node(v);
-    const Cell c = cell_of(x);
-    for (long long i = -1; i <= 1; ++i)
-      for (long long j = -1; j <= 1; ++j)
-        for (long long k = -1; k <= 1; ++k) {
-          const auto it = cells_.find({c[0] + i, c[1] + j, c[2] + k});
-          if (it == cells_.end()) continue;
-          for (mesh::NodeId w : it->second)
-            if (w == v || (mesh_.node(w) - x).norm() <= tolerance_) return w;
-        }
-    cells_[c].push_back(v);
+    Cell c{};
+    std::array<long long, 3> side{};
+    for (int k = 0; k < 3; ++k) {
+      const double scaled = x[k] / cell_size_, cell = std::floor(scaled);
+      c[k] = static_cast<long long>(cell);
+      side[k] = scaled - cell < 0.5 ? -1 : 1;
+    }
+    std::uint32_t first = kNone;  // the earliest matching entry: entries are in insertion order
+    for (int corner = 0; corner < 8; ++corner) {
+      const Cell probe{c[0] + (corner & 1 ? side[0] : 0), c[1] + (corner & 2 ? side[1] : 0),
+                       c[2] + (corner & 4 ? side[2] : 0)};
+      const auto it = heads_.find(probe);
+      if (it == heads_.end()) continue;
+      for (std::uint32_t e = it->second; e != kNone; e = entries_[e].next) {
+        const mesh::NodeId w = entries_[e].node;
+        if (e < first && (w == v || (mesh_.node(w) - x).norm() <= tolerance_)) first = e;
+      }
+    }
+    if (first != kNone) return entries_[first].node;
+    const auto entry = static_cast<std::uint32_t>(entries_.size());
+    auto [head, fresh] = heads_.try_emplace(c, entry);
+    entries_.push_back({v, fresh ? kNone : head->second});
+    head->second = entry;
     return v;
   }
 
  private:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
   using Cell = std::array<long long, 3>;
   struct CellHash {
     std::size_t operator()(const Cell& c) const {
-      return static_cast<std::size_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+      return static_cast<std::size_t>(mesh::IdTable::mix(static_cast<std::uint64_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^
+                                                                                    c[2] * 83492791LL)));
     }
   };
-  Cell cell_of(const Eigen::Vector3d& x) const {
-    return {static_cast<long long>(std::floor(x.x() / tolerance_)), static_cast<long long>(std::floor(x.y() / tolerance_)),
-            static_cast<long long>(std::floor(x.z() / tolerance_))};
-  }
+  struct Entry {
+    mesh::NodeId node;
+    std::uint32_t next;  // the cell's previous entry, kNone at its first
+  };
   const mesh::Mesh& mesh_;
-  double tolerance_;
-  std::unordered_map<Cell, std::vector<mesh::NodeId>, CellHash> cells_;
+  double tolerance_, cell_size_;
+  std::unordered_map<Cell, std::uint32_t, CellHash> heads_;
+  std::vector<Entry> entries_;
 };
 
 // Where the far field's entities meet the split's: an edge or face whose vertices were welded onto
@@ -199,7 +223,7 @@ std::vector<mesh::NodeId> coincident_vertices(const mesh::Mesh& mesh, double tol
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
   std::vector<char> seen(n, 0);
-  PointIndex vertices(mesh, tolerance);
+  PointIndex vertices(mesh, tolerance, mesh.edges().size() / 4 + 16);  // ~ the vertices of a tetrahedral mesh
   for (const mesh::Element& e : mesh.elements())
     for (int k = 0; k < ho::num_vertices(e.shape); ++k) {
       const mesh::NodeId v = e.vertices[k];

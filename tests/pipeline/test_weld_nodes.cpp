@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -59,6 +60,35 @@ TEST(WeldNodes, DoubledFaceBecomesOneKeepingOnlyUsedNodesAndReportsProgress) {
   EXPECT_EQ(seen.back().first, 1.0);
   EXPECT_EQ(seen.front().second, "vertices");
   EXPECT_EQ(seen.back().second, "mesh");
+}
+
+// Points within the tolerance weld wherever they fall in the index's cells (offsets in every
+// direction, the shared face at many places against the cells' borders); points beyond it do not.
+TEST(WeldNodes, PointsWithinTheToleranceWeldAcrossTheIndexCellsAndOthersDoNot) {
+  const double tolerance = 1e-3;
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), shift(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const bool within = trial % 2 == 0;
+    const Eigen::Vector3d origin(shift(random), shift(random), shift(random));
+    mesh::Mesh m(1);
+    std::vector<mesh::NodeId> id;
+    const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    for (int side = 0; side < 2; ++side)
+      for (int k = 0; k < 8; ++k) {
+        Eigen::Vector3d x = origin + Eigen::Vector3d(side + corner[k][0], corner[k][1], corner[k][2]);
+        if (side == 1 && corner[k][0] == 0) {  // hex 1's copy of the shared face, moved off it
+          const Eigen::Vector3d direction = Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+          x += (within ? 0.9 : 1.2) * tolerance * direction;
+        }
+        id.push_back(m.add_node(x));
+      }
+    m.add_element(ho::Shape::Hexahedron, std::vector<mesh::NodeId>(id.begin(), id.begin() + 8));
+    m.add_element(ho::Shape::Hexahedron, std::vector<mesh::NodeId>(id.begin() + 8, id.end()));
+    const Welded w = weld_coincident_nodes(m, tolerance);
+    EXPECT_EQ(w.merged, within ? 4u : 0u) << "trial " << trial;
+    EXPECT_EQ(w.mesh.faces().size(), within ? 11u : 12u) << "trial " << trial;
+  }
 }
 
 // The work beside the rebuild reads each element once it is rebuilt and sees its final points; it
