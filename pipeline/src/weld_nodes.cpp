@@ -223,7 +223,8 @@ std::vector<mesh::NodeId> coincident_vertices(const mesh::Mesh& mesh, double tol
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
   std::vector<char> seen(n, 0);
-  PointIndex vertices(mesh, tolerance, mesh.edges().size() / 4 + 16);  // ~ the vertices of a tetrahedral mesh
+  // A room hint: a tetrahedral mesh has about edges / 6 vertices, a hexahedral one edges / 3.
+  PointIndex vertices(mesh, tolerance, mesh.edges().size() / 4 + 16);
   for (const mesh::Element& e : mesh.elements())
     for (int k = 0; k < ho::num_vertices(e.shape); ++k) {
       const mesh::NodeId v = e.vertices[k];

@@ -266,7 +266,12 @@ ScaledProduct::ScaledProduct(const BernsteinLayout& a, const BernsteinLayout& b)
     : out_(BernsteinLayout::get(product_layout_factors(a, b))),
       offset_a_(box_offsets(a, *out_)),
       runs_b_(box_runs(box_offsets(b, *out_))),
-      accumulate_(accumulator_for(runs_b_)) {}
+      accumulate_(accumulator_for(runs_b_)),
+      places_(box_offsets(*out_, *out_)) {}
+
+void ScaledProduct::gather(const double* box, double* out) const {
+  for (std::size_t k = 0; k < places_.size(); ++k) out[k] = box[places_[k]];
+}
 
 void ScaledProduct::accumulate(const double* a, const double* b, double factor, double* box) const {
   for (std::size_t i = 0; i < offset_a_.size(); ++i) {

@@ -238,19 +238,12 @@ BernsteinPolynomial jacobian_determinant(Shape shape, int order, NodeSet set, co
     box.assign(middle.box_to_id.size(), 0.0);
     map->cofactor->accumulate(u[a].data(), v[b].data(), 1.0, box.data());
     map->cofactor->accumulate(u[b].data(), v[a].data(), -1.0, box.data());
-    for (int i = 0; i < middle.size(); ++i) {
-      const std::array<int, 3>& free = middle.index[i];
-      cofactor[i] = box[free[0] * middle.box_stride[0] + free[1] * middle.box_stride[1] + free[2] * middle.box_stride[2]];
-    }
+    map->cofactor->gather(box.data(), cofactor.data());
     map->determinant->accumulate(w[c].data(), cofactor.data(), 1.0, sum.data());
   }
   BernsteinPolynomial det(map->determinant->out());
-  for (int i = 0; i < last.size(); ++i) {
-    const std::array<int, 3>& free = last.index[i];
-    det.coefficients()[i] =
-        sum[free[0] * last.box_stride[0] + free[1] * last.box_stride[1] + free[2] * last.box_stride[2]] /
-        last.multinomial[i];
-  }
+  map->determinant->gather(sum.data(), det.coefficients().data());
+  for (int i = 0; i < last.size(); ++i) det.coefficients()[i] /= last.multinomial[i];
   return det;
 }
 

@@ -114,6 +114,9 @@ class ScaledProduct {
   /// box[alpha + beta] += factor * a[alpha] * b[beta] over every pair, in the order of a's
   /// coefficients. a [a.size()], b [b.size()]: scaled coefficients; box [out().box_to_id.size()].
   void accumulate(const double* a, const double* b, double factor, double* box) const;
+  /// The product's scaled coefficients from its box: out[k] = the box entry of coefficient k;
+  /// out [out().size()].
+  void gather(const double* box, double* out) const;
 
   /// A run of b's coefficients with consecutive ids whose places in the box are consecutive too.
   struct BoxRun {
@@ -128,6 +131,7 @@ class ScaledProduct {
   std::vector<int> offset_a_;  // [a.size()] place of a's coefficients in the box
   std::vector<BoxRun> runs_b_;
   RunAccumulator accumulate_ = nullptr;
+  std::vector<int> places_;  // [out().size()] place of the product's coefficients in the box
 };
 
 /// The product a * b term by term, one pair of coefficients at a time: the slow, obviously right
