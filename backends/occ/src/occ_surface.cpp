@@ -4,6 +4,7 @@
 
 #include "semimesh/cad/error.hpp"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
@@ -14,6 +15,7 @@
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Precision.hxx>
 #include <GeomAdaptor_Surface.hxx>
 #include <ShapeAnalysis_Edge.hxx>
 #include <Standard_Failure.hxx>
@@ -188,6 +190,25 @@ std::optional<double> OccSurface::exact_area() const {
   }
 }
 
+namespace {
+
+// What the exact classifier (BRepTopAdaptor_FClass2d with the face's tolerance, then
+// BRepClass_FaceClassifier) may count as on the boundary, in the parameters: within `boundary` of
+// a pcurve (the raster's own margin), within a vertex's tolerance of it (the larger of its u and
+// v resolutions, as BRepClass_Intersector takes them), and surely within the face's tolerance of a
+// pcurve (CheckOn: never refined below Precision::Confusion()).
+TrimRaster::Tolerances classifier_tolerances(const TopoDS_Face& face, double boundary) {
+  const BRepAdaptor_Surface surface(face, false);
+  double vertex = boundary;
+  for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
+    const double tolerance = BRep_Tool::Tolerance(TopoDS::Vertex(v.Current()));
+    vertex = std::max({vertex, surface.UResolution(tolerance), surface.VResolution(tolerance)});
+  }
+  return {boundary, vertex, std::min(BRep_Tool::Tolerance(face), Precision::Confusion())};
+}
+
+}  // namespace
+
 BRepTopAdaptor_FClass2d& OccSurface::thread_classifier(bool tolerant) const {
   // Classifiers of faces whose model is gone stay until the map is this full, then all go.
   constexpr std::size_t kMaxFacesPerThread = 4096;
@@ -230,6 +251,7 @@ const TrimRaster* OccSurface::trim_raster() const {
     const int margin = margin_for(cell);
     if (margin > kCells / 8) return;
     std::vector<std::vector<cad::Vec2>> fine_loops;  // the same at half a sub-cell, for refine()
+    std::vector<std::vector<cad::Vec2>> fine_midpoints;  // halfway in parameter between fine samples
     bool refinable = margin_for(cell / kSubCells) <= kSubCells;
     for (TopExp_Explorer e(face_, TopAbs_EDGE); e.More(); e.Next()) {
       double first, last;
@@ -257,13 +279,23 @@ const TrimRaster* OccSurface::trim_raster() const {
       raster->mark_loop(*samples, margin);
       if (refinable) {
         std::optional<std::vector<cad::Vec2>> fine = sampled(cell / kSubCells, static_cast<int>(samples->size() - 1) * kSubCells, 1 << 18);
-        if (fine) fine_loops.push_back(std::move(*fine));
         refinable = fine.has_value();
+        if (fine) {
+          const double count = static_cast<double>(fine->size() - 1);
+          std::vector<cad::Vec2> midpoints;
+          for (std::size_t k = 0; k + 1 < fine->size(); ++k) {
+            const gp_Pnt2d p = pcurve->Value(first + (last - first) * (static_cast<double>(k) + 0.5) / count);
+            midpoints.emplace_back(p.X(), p.Y());
+          }
+          fine_loops.push_back(std::move(*fine));
+          fine_midpoints.push_back(std::move(midpoints));
+        }
       }
     }
     const auto exact = [this](const cad::Vec2& uv) { return contains_exactly(uv); };
     raster->classify(exact);
-    if (refinable) raster->refine(kSubCells, fine_loops, margin_for(cell / kSubCells), exact);
+    if (refinable && raster->refine(kSubCells, fine_loops, margin_for(cell / kSubCells), exact))
+      raster->keep_polylines(fine_loops, fine_midpoints, classifier_tolerances(face_, tolerance));
     raster_ = std::move(raster);
   });
   return raster_.get();
