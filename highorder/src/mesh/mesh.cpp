@@ -232,24 +232,39 @@ void Mesh::link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, 
       if (vertices[a] == vertices[b])
         throw std::invalid_argument(who.text() + ": vertex " + std::to_string(vertices[a]) + " appears twice");
 
+  // Every lookup's hash first, its slot's load started: the tables are far larger than the caches,
+  // and the loads of an element's 18 lookups then overlap instead of waiting on each other.
   const auto& local_edges = ho::edges(shape);
+  std::array<std::uint64_t, 12> edge_hashes;
+  for (std::size_t e = 0; e < local_edges.size(); ++e) {
+    edge_hashes[e] = IdTable::mix(edge_key(vertices[local_edges[e][0]], vertices[local_edges[e][1]]));
+    edge_index_.prefetch(edge_hashes[e]);
+  }
+  const bool volume = ho::dimension(shape) == 3;
+  const std::size_t num_faces = volume ? ho::faces(shape).size() : 1;
+  std::array<std::array<NodeId, 4>, 6> face_vertices{};
+  std::array<std::array<NodeId, 4>, 6> face_keys;
+  for (std::size_t f = 0; f < num_faces; ++f) {
+    const int n = volume ? static_cast<int>(ho::faces(shape)[f].size()) : nv;
+    for (int k = 0; k < n; ++k) face_vertices[f][k] = volume ? vertices[ho::faces(shape)[f][k]] : vertices[k];
+    face_keys[f] = face_key(face_vertices[f].data(), n);
+    face_index_.prefetch(face_key_hash(face_keys[f]));
+  }
   reversed = 0;
   for (std::size_t e = 0; e < local_edges.size(); ++e) {
     const NodeId a = vertices[local_edges[e][0]], b = vertices[local_edges[e][1]];
-    edge_ids[e] = find_or_add_edge(a, b);
+    edge_ids[e] = find_or_add_edge(a, b, edge_hashes[e]);
     if (a > b) reversed |= static_cast<std::uint16_t>(1u << e);
   }
-  if (ho::dimension(shape) == 2) {
-    face_ids[0] = find_or_add_face(vertices, nv, edge_ids, codes[0], who);
+  if (!volume) {
+    face_ids[0] = find_or_add_face(face_vertices[0].data(), nv, face_keys[0], edge_ids, codes[0], who);
   } else {
-    const auto& local_faces = ho::faces(shape);
     const FaceEdges& local_face_edges = face_edges_of(shape);
-    for (std::size_t f = 0; f < local_faces.size(); ++f) {
-      std::array<NodeId, 4> fv{};
+    for (std::size_t f = 0; f < num_faces; ++f) {
       std::array<std::uint32_t, 4> fe{};
-      const int n = static_cast<int>(local_faces[f].size());
-      for (int k = 0; k < n; ++k) fv[k] = vertices[local_faces[f][k]], fe[k] = edge_ids[local_face_edges[f][k]];
-      face_ids[f] = find_or_add_face(fv.data(), n, fe.data(), codes[f], who);
+      const int n = static_cast<int>(ho::faces(shape)[f].size());
+      for (int k = 0; k < n; ++k) fe[k] = edge_ids[local_face_edges[f][k]];
+      face_ids[f] = find_or_add_face(face_vertices[f].data(), n, face_keys[f], fe.data(), codes[f], who);
     }
   }
   // New entities hold kNoNode placeholders: the first element to see a node stores it, later
@@ -341,11 +356,11 @@ std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,
   return index;
 }
 
-std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
+std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b, std::uint64_t hash) {
   const std::array<NodeId, 2> key{std::min(a, b), std::max(a, b)};
   const auto id = static_cast<std::uint32_t>(edges_.size());
   const std::uint32_t found = edge_index_.find_or_insert(
-      IdTable::mix(edge_key(a, b)), [&](std::uint32_t e) { return same_edge(edges_[e].vertices, key); }, id,
+      hash, [&](std::uint32_t e) { return same_edge(edges_[e].vertices, key); }, id,
       [&](std::uint32_t e) { return edge_hash(e); });
   if (found != IdTable::kNone) return found;
   Edge edge;
@@ -356,9 +371,8 @@ std::uint32_t Mesh::find_or_add_edge(NodeId a, NodeId b) {
   return id;
 }
 
-std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, const std::uint32_t* edge_ids,
-                                     std::uint8_t& code, const Named& who) {
-  const std::array<NodeId, 4> key = face_key(local_vertices, n);
+std::uint32_t Mesh::find_or_add_face(const NodeId* local_vertices, int n, const std::array<NodeId, 4>& key,
+                                     const std::uint32_t* edge_ids, std::uint8_t& code, const Named& who) {
   const auto id = static_cast<std::uint32_t>(faces_.size());
   const std::uint32_t found = face_index_.find_or_insert(
       face_key_hash(key), [&](std::uint32_t f) { return has_face_key(f, key); }, id,

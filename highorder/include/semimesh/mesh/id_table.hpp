@@ -47,6 +47,13 @@ class IdTable {
     }
   }
 
+  /// Starts loading the slot where a lookup of `hash` begins (a hint, no effect on the contents):
+  /// a caller with several lookups to make issues all their loads first, so that their cache
+  /// misses overlap instead of coming one after another.
+  void prefetch(std::uint64_t hash) const {
+    if (!slots_.empty()) __builtin_prefetch(&slots_[hash & mask_]);
+  }
+
   /// find; when absent, stores `id` (<= kMaxId, else std::length_error) and returns kNone.
   /// hash_of(stored id) rehashes on growth.
   template <typename IsKey, typename HashOf>

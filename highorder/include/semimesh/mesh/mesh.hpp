@@ -208,10 +208,12 @@ class Mesh {
     const std::string* group;  ///< a boundary face's group; null for an element
     std::string text() const;
   };
-  std::uint32_t find_or_add_edge(NodeId a, NodeId b);
-  /// `edge_ids`: the ids of the face's edges, in the order of its shape's edges (a new face keeps them).
-  std::uint32_t find_or_add_face(const NodeId* local_vertices, int n, const std::uint32_t* edge_ids, std::uint8_t& code,
-                                 const Named& who);
+  /// `hash`: IdTable::mix of the edge's key.
+  std::uint32_t find_or_add_edge(NodeId a, NodeId b, std::uint64_t hash);
+  /// `key`: the face's sorted vertices; `edge_ids`: the ids of the face's edges, in the order of its
+  /// shape's edges (a new face keeps them).
+  std::uint32_t find_or_add_face(const NodeId* local_vertices, int n, const std::array<NodeId, 4>& key,
+                                 const std::uint32_t* edge_ids, std::uint8_t& code, const Named& who);
   /// Finds/creates the edges and faces of an element or boundary face and stores (or checks) the
   /// nodes it gives for them. For 2D shapes the single face is the shape itself.
   void link_entities(ho::Shape shape, const std::vector<NodeId>& canonical, const NodeId* vertices,
