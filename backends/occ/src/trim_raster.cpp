@@ -63,6 +63,7 @@ bool TrimRaster::refine(int m, const std::vector<std::vector<cad::Vec2>>& loops,
   while ((1 << shift) < m) ++shift;
   const long mask = m - 1;
   m_ = m;
+  shift_ = shift;
   sub_margin_ = margin;
   block_.assign(cells_.size(), -1);
   sub_cells_.clear();
@@ -144,13 +145,14 @@ bool TrimRaster::refine(int m, const std::vector<std::vector<cad::Vec2>>& loops,
 }
 
 long TrimRaster::sub_index(long I, long J) const {
-  const int b = block_[static_cast<std::size_t>(I / m_ + n_ * (J / m_))];
-  return b < 0 ? -1 : static_cast<long>(b) * m_ * m_ + I % m_ + m_ * (J % m_);
+  const long mask = m_ - 1;
+  const int b = block_[static_cast<std::size_t>((I >> shift_) + n_ * (J >> shift_))];
+  return b < 0 ? -1 : (static_cast<long>(b) << (2 * shift_)) + (I & mask) + ((J & mask) << shift_);
 }
 
 TrimRaster::Cell TrimRaster::sub_class(long I, long J) const {
   const long k = sub_index(I, J);
-  return k >= 0 ? sub_cells_[static_cast<std::size_t>(k)] : cells_[static_cast<std::size_t>(I / m_ + n_ * (J / m_))];
+  return k >= 0 ? sub_cells_[static_cast<std::size_t>(k)] : cells_[static_cast<std::size_t>((I >> shift_) + n_ * (J >> shift_))];
 }
 
 namespace {
@@ -270,6 +272,24 @@ long TrimRaster::steps_to_class(const cad::Vec2& p, int axis, int direction, lon
   return most;
 }
 
+int TrimRaster::shortest_ray(const cad::Vec2& p) const {
+  const long N = static_cast<long>(n_) * m_;
+  const std::array<long, 2> start{static_cast<long>(std::floor(p.x())), static_cast<long>(std::floor(p.y()))};
+  for (long step = 0;; ++step) {
+    bool inside_box = false;
+    for (int r = 0; r < 4; ++r) {
+      const int axis = r / 2;
+      const long I = start[axis] + (r % 2 ? -step : step);
+      if (I < 0 || I >= N) continue;
+      inside_box = true;
+      const auto [u, v] = ray_cell(axis, I, start[1 - axis]);
+      const Cell kind = sub_class(u, v);
+      if (kind == kInside || kind == kOutside) return r;
+    }
+    if (!inside_box) return -1;
+  }
+}
+
 std::optional<bool> TrimRaster::along_ray(const cad::Vec2& p, int axis, int direction) const {
   const long N = static_cast<long>(n_) * m_;
   const int t = 1 - axis;
@@ -319,13 +339,14 @@ std::optional<bool> TrimRaster::by_polylines(const cad::Vec2& p, bool only_on) c
   }
   if (near || only_on) return std::nullopt;
   // The shortest of the four rays along u and v (a ray along a loop would cross the whole band's
-  // length), the next one when it passes an open end.
-  std::array<std::pair<long, int>, 4> rays;  // (sub-cells to a class, axis * 2 + (direction < 0))
-  long shortest = std::numeric_limits<long>::max();
-  for (int r = 0; r < 4; ++r) {
-    rays[r] = {steps_to_class(p, r / 2, r % 2 ? -1 : 1, shortest), r};
-    shortest = std::min(shortest, rays[r].first);
-  }
+  // length), found by walking them side by side; the others, shortest first, when it passes an open end.
+  const int first = shortest_ray(p);
+  if (first < 0) return std::nullopt;
+  if (const std::optional<bool> inside = along_ray(p, first / 2, first % 2 ? -1 : 1)) return inside;
+  std::array<std::pair<long, int>, 3> rays;  // (sub-cells to a class, axis * 2 + (direction < 0))
+  int count = 0;
+  for (int r = 0; r < 4; ++r)
+    if (r != first) rays[count++] = {steps_to_class(p, r / 2, r % 2 ? -1 : 1, std::numeric_limits<long>::max()), r};
   std::sort(rays.begin(), rays.end());
   for (const auto& [steps, r] : rays)
     if (const std::optional<bool> inside = along_ray(p, r / 2, r % 2 ? -1 : 1)) return inside;

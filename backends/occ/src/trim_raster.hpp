@@ -113,6 +113,9 @@ class TrimRaster {
   std::optional<bool> by_polylines(const cad::Vec2& p, bool only_on) const;
   /// The global sub-cell at `along` on axis `axis` (0: u, 1: v) and `across` on the other.
   std::array<long, 2> ray_cell(int axis, long along, long across) const;
+  /// The ray (axis * 2 + (direction < 0)) from p that passes the fewest sub-cells before a
+  /// classified one, the first of them on a tie; -1 when all four leave the box first.
+  int shortest_ray(const cad::Vec2& p) const;
   /// Sub-cells the ray from p along `axis` in `direction` (+1 or -1) passes before a classified
   /// one (at most `most`; `most` when it leaves the box first).
   long steps_to_class(const cad::Vec2& p, int axis, int direction, long most) const;
@@ -125,6 +128,7 @@ class TrimRaster {
   cad::Vec2 cell_;
   std::vector<Cell> cells_;  // row-major: i (u) + n j (v)
   int m_ = 0;                 // sub-cells per cell along u and v once refined
+  int shift_ = 0;             // m_ = 2^shift_
   int sub_margin_ = 0;        // refine()'s margin
   std::vector<int> block_;    // per cell: its block of m x m sub-cells in sub_cells_, or -1
   std::vector<Cell> sub_cells_;  // blocks, each row-major: a (u) + m b (v)
