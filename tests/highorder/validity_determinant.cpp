@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 namespace semimesh::ho {
@@ -40,6 +41,37 @@ TEST(JacobianDeterminant, ChainedProductsEqualTheReferenceOnEveryShapeOrderAndNo
                       .maxCoeff(),
                   1e-11 * scale);
       }
+}
+
+// The trilinear fast path's det J: the vertex element's, elevated to degree 3P - 1 along each
+// direction, is the element's own det J coefficient by coefficient.
+TEST(JacobianDeterminant, ElevatedTrilinearDeterminantIsTheElementsOwn) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL})
+    for (int order = 2; order <= 6; ++order) {
+      SCOPED_TRACE("P" + std::to_string(order) + (set == NodeSet::GLL ? " GLL" : " equispaced"));
+      Eigen::Matrix<double, 8, 3> corners = reference_nodes(Shape::Hexahedron, 1);
+      for (int v = 0; v < 8; ++v)
+        for (int c = 0; c < 3; ++c) corners(v, c) = 10.0 * c + corners(v, c) * (c == 2 ? 0.1 : 1.0) + 0.05 * u(rng);
+      const Eigen::MatrixX3d nodes = testing::mapped_nodes(Shape::Hexahedron, order, set, [&](const Eigen::Vector3d& r) -> Eigen::Vector3d {
+        Eigen::Vector3d x = Eigen::Vector3d::Zero();
+        for (int v = 0; v < 8; ++v) {
+          const Eigen::Vector3d c = reference_nodes(Shape::Hexahedron, 1).row(v).transpose();
+          x += corners.row(v).transpose() * (1 + c[0] * r[0]) * (1 + c[1] * r[1]) * (1 + c[2] * r[2]) / 8;
+        }
+        return x;
+      });
+      const BernsteinPolynomial element = detail::jacobian_determinant(Shape::Hexahedron, order, set, nodes);
+      const BernsteinPolynomial elevated = detail::elevated_on_segments(
+          detail::jacobian_determinant(Shape::Hexahedron, 1, set, corners), 3 * order - 1);
+      ASSERT_EQ(elevated.layout_ptr(), element.layout_ptr());
+      const double scale = element.coefficients().cwiseAbs().maxCoeff();
+      // The element's own from its nodes carries the node-to-Bezier conversion's conditioning.
+      EXPECT_LT((elevated.coefficients() - element.coefficients()).cwiseAbs().maxCoeff(), 1e-9 * scale);
+    }
+  EXPECT_THROW(detail::elevated_on_segments(BernsteinPolynomial({SimplexFactor{2, 2}, SimplexFactor{1, 2}}), 5),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -96,6 +96,66 @@ TEST(CertifyJacobian, AffineFastPathAgreesWithSubdivision) {
       }
 }
 
+// The trilinear fast path against the Bernstein reference: the same verdict and bounds (to
+// rounding) on random trilinear hexahedra, graded like the wake's layers, of every order and node
+// set; bounds that hold against dense sampling; no fast path for a curved or inverted element.
+TEST(CertifyJacobian, TrilinearFastPathAgreesWithSubdivision) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL})
+    for (int order : {2, 3, 4, 6}) {
+      SCOPED_TRACE(label(Shape::Hexahedron, order) + (set == NodeSet::GLL ? " GLL" : " equispaced"));
+      for (int trial = 0; trial < 6; ++trial) {
+        // A box 1 x 0.5 x 0.02 whose eight corners move by up to a fifth of the thinnest side
+        // (trial 5: a quarter of its length, so that some corner's det J comes near zero).
+        std::array<Eigen::Vector3d, 8> corners;
+        const double reach = trial == 5 ? 0.4 : 0.2;
+        for (int v = 0; v < 8; ++v) {
+          const Eigen::Vector3d r = reference_nodes(Shape::Hexahedron, 1).row(v).transpose();
+          corners[v] = Eigen::Vector3d(0.5 * r[0], 0.25 * r[1], 0.01 * r[2]) + Eigen::Vector3d(3, -2, 7) +
+                       0.02 * reach * Eigen::Vector3d(u(rng), u(rng), u(rng));
+        }
+        const auto trilinear = [&](const Eigen::Vector3d& r) -> Eigen::Vector3d {
+          Eigen::Vector3d x = Eigen::Vector3d::Zero();
+          for (int v = 0; v < 8; ++v) {
+            const Eigen::Vector3d c = reference_nodes(Shape::Hexahedron, 1).row(v).transpose();
+            x += corners[v] * (1 + c[0] * r[0]) * (1 + c[1] * r[1]) * (1 + c[2] * r[2]) / 8;
+          }
+          return x;
+        };
+        Eigen::MatrixX3d nodes = mapped_nodes(Shape::Hexahedron, order, set, trilinear);
+        const JacobianBounds slow = certify_jacobian_by_subdivision(Shape::Hexahedron, order, set, nodes, 8, 0.1);
+        JacobianBounds fast;
+        if (!slow.valid) {
+          EXPECT_FALSE(trilinear_jacobian(order, set, nodes, fast, 8, 0.1));
+          continue;
+        }
+        ASSERT_TRUE(trilinear_jacobian(order, set, nodes, fast, 8, 0.1));
+        const double scale = std::abs(slow.max_upper);
+        EXPECT_NEAR(fast.min_lower, slow.min_lower, 1e-9 * scale);
+        EXPECT_NEAR(fast.min_upper, slow.min_upper, 1e-9 * scale);
+        EXPECT_NEAR(fast.max_upper, slow.max_upper, 1e-9 * scale);
+        EXPECT_EQ(fast.subdivisions, slow.subdivisions);
+        const SampledJacobian sampled = sample_jacobian(Shape::Hexahedron, order, set, nodes, 9);
+        EXPECT_LE(fast.min_lower, sampled.min * (1 + 1e-9));
+        EXPECT_GE(fast.max_upper, sampled.max * (1 - 1e-9));
+        // One interior node moved by a hundredth of the thickness: curved, left to the general path.
+        nodes(nodes.rows() - 1, 2) += 2e-4;
+        EXPECT_FALSE(trilinear_jacobian(order, set, nodes, fast));
+      }
+      // Inverted (two corners' layers swapped): refused, and the general path finds it invalid.
+      Eigen::MatrixX3d flipped = mapped_nodes(Shape::Hexahedron, order, set, [](const Eigen::Vector3d& r) -> Eigen::Vector3d {
+        return {r[0], r[1], -0.1 * r[2]};
+      });
+      JacobianBounds unused;
+      EXPECT_FALSE(trilinear_jacobian(order, set, flipped, unused));
+      EXPECT_FALSE(certify_jacobian(Shape::Hexahedron, order, set, flipped).valid);
+    }
+  JacobianBounds unused;
+  EXPECT_FALSE(trilinear_jacobian(1, NodeSet::Equispaced, reference_nodes(Shape::Hexahedron, 1), unused))
+      << "order 1: the general path is that element";
+}
+
 TEST(CertifyJacobian, ReferenceVolumesGiveUnitDetJ) {
   // The reference element itself: det J = 1; a pyramid scaled by 2 in z only: det J = 2.
   for (Shape shape : kShapes) {

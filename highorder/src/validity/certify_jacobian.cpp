@@ -59,12 +59,20 @@ JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen
                                 int max_depth, double floor_ratio) {
   JacobianBounds bounds;
   if (affine_jacobian(shape, order, set, element_nodes, bounds)) return bounds;
+  if (trilinear_jacobian(order, set, element_nodes, bounds, max_depth, floor_ratio)) return bounds;
   return certify_jacobian_by_subdivision(shape, order, set, element_nodes, max_depth, floor_ratio);
 }
 
 JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet set,
                                                const Eigen::MatrixX3d& element_nodes, int max_depth,
                                                double floor_ratio) {
+  return detail::certify_determinant(detail::jacobian_determinant(shape, order, set, element_nodes), max_depth,
+                                     floor_ratio);
+}
+
+namespace detail {
+
+JacobianBounds certify_determinant(BernsteinPolynomial root, int max_depth, double floor_ratio) {
   const int max_bisections = 3 * std::max(0, max_depth);
   JacobianBounds bounds;
   bounds.min_lower = std::numeric_limits<double>::infinity();
@@ -74,7 +82,6 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
   bool undecided = false;
   int pieces_examined = 0;
 
-  BernsteinPolynomial root = detail::jacobian_determinant(shape, order, set, element_nodes);
   // Every piece's coefficients lie below the root's largest (convex hull), so this bounds max det J.
   const double floor_value = floor_ratio * root.coefficients().maxCoeff();
   double highest_value = -std::numeric_limits<double>::infinity();  // largest evaluated det J
@@ -128,4 +135,5 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
   return bounds;
 }
 
+}  // namespace detail
 }  // namespace semimesh::ho

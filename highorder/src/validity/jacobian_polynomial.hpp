@@ -28,10 +28,19 @@
 
 #include "semimesh/ho/bernstein.hpp"
 #include "semimesh/ho/element_type.hpp"
+#include "semimesh/ho/validity.hpp"
 
 #include <Eigen/Core>
 
 namespace semimesh::ho::detail {
+
+/// certify_jacobian_by_subdivision's bounds from det J's Bernstein form (bisections, floor) instead
+/// of the element's nodes.
+JacobianBounds certify_determinant(BernsteinPolynomial root, int max_depth, double floor_ratio);
+
+/// A polynomial on a product of segments (a hexahedron's space) written in degree `degree` along
+/// every variable (each at most that already): the same polynomial, each 1D factor degree-elevated.
+BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degree);
 
 /// Bernstein form of det J (derivatives with respect to Gmsh's reference coordinates).
 /// Domain variables: tet (xi, eta, zeta) as barycentric lambda_1..3; prism (xi, eta) on the

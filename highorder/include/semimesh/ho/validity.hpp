@@ -50,9 +50,11 @@ struct JacobianBounds {
 /// evaluated det J proves min det J / max det J < floor_ratio; so scaled_jacobian(bounds) >=
 /// floor_ratio decides "not numerically degenerate" without a loose bound failing a good element.
 /// It changes the bounds, never `valid` or `proven` (those are about the sign).
-/// Fast path: an element whose nodes are an affine image of the reference nodes (every straight-sided
+/// Fast paths: an element whose nodes are an affine image of the reference nodes (every straight-sided
 /// tet, and the far field is made of them) has the constant det J = det A, returned without the
-/// Bernstein expansion (see affine_jacobian); everything else goes to certify_jacobian_by_subdivision.
+/// Bernstein expansion (see affine_jacobian); a hexahedron that is its trilinear vertex element has
+/// that element's det J (see trilinear_jacobian); everything else goes to
+/// certify_jacobian_by_subdivision.
 JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
                                 int max_depth = 8, double floor_ratio = 0.0);
 
@@ -72,6 +74,22 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
 constexpr double kAffineTolerance = 1e-10;
 bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
                      JacobianBounds& bounds);
+
+/// Fast path for a hexahedron whose nodes are the image of the reference nodes under the trilinear
+/// map of its eight vertices (the wake block's split pieces, straight-sided boxes with graded
+/// layers): its det J is the trilinear element's, a polynomial of degree 2 per direction (27
+/// coefficients, not (3P)^3), elevated to the element's degree 3P - 1 and certified as
+/// certify_jacobian_by_subdivision certifies (the same bisections and floor). Why that is a proof
+/// for the element: its true J = J_1 + E, |E| <= L d with d the largest node deviation from the
+/// trilinear image (plus rounding) and L < 1e4 (affine_jacobian); with |J_1| <= G (sqrt 3 times the
+/// longest edge: J_1's columns are averages of edge vectors), det J is within delta = 3 G^2 e +
+/// 3 G e^2 + e^3 (e = L d) of det J_1: valid when the trilinear element's lower bound exceeds
+/// delta. The bounds returned are the trilinear element's (as affine_jacobian returns det A: within
+/// delta, a rounding-sized relative error, of the element's). Returns false (nothing set) for another
+/// shape, nodes off the trilinear image by more than kAffineTolerance x the longest edge, or when
+/// the bounds do not prove the element valid with that margin: the general path decides.
+bool trilinear_jacobian(int order, NodeSet set, const Eigen::MatrixX3d& element_nodes, JacobianBounds& bounds,
+                        int max_depth = 8, double floor_ratio = 0.0);
 
 constexpr int kMaxCertificationPieces = 200000;
 
