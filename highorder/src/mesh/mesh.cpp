@@ -452,6 +452,25 @@ void Mesh::element_nodes(std::size_t element, std::vector<NodeId>& out) const {
            el.face_orientation.data(), el.first_node, out);
 }
 
+void Mesh::element_nodes_at(std::size_t element, const std::vector<int>& positions, std::vector<NodeId>& out) const {
+  const Element& el = elements_.at(element);
+  const NodeLayout& layout = node_layout(el.shape, order_);
+  out.resize(positions.size());
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    const NodeSlot& s = layout.slots.at(static_cast<std::size_t>(positions[k]));
+    switch (s.kind) {
+      case NodeSlot::Vertex: out[k] = el.vertices[s.local]; break;
+      case NodeSlot::Edge:
+        out[k] = edge_pool_[edges_[el.edges[s.local]].first_node + s.slot[(el.edge_reversed >> s.local) & 1u]];
+        break;
+      case NodeSlot::Face:
+        out[k] = face_pool_[faces_[el.faces[s.local]].first_node + s.slot[el.face_orientation[s.local]]];
+        break;
+      case NodeSlot::Interior: out[k] = interior_pool_[el.first_node + s.slot[0]]; break;
+    }
+  }
+}
+
 std::vector<NodeId> Mesh::element_nodes(std::size_t element) const {
   std::vector<NodeId> out;
   element_nodes(element, out);

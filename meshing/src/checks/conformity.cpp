@@ -74,12 +74,8 @@ void face_node_set(const mesh::Mesh& mesh, const Occurrence& o, std::vector<Node
   if (o.boundary) {
     nodes = mesh.boundary_face_nodes(o.owner);
   } else {
-    thread_local std::vector<NodeId> all;
-    mesh.element_nodes(o.owner, all);
     const mesh::Element& element = mesh.elements()[o.owner];
-    const std::vector<int>& on_face = detail::nodes_on_faces(element.shape, mesh.order(), mesh.node_set())[o.local];
-    nodes.resize(on_face.size());
-    for (std::size_t k = 0; k < on_face.size(); ++k) nodes[k] = all[static_cast<std::size_t>(on_face[k])];
+    mesh.element_nodes_at(o.owner, detail::nodes_on_faces(element.shape, mesh.order(), mesh.node_set())[o.local], nodes);
   }
   std::sort(nodes.begin(), nodes.end());
 }

@@ -9,12 +9,17 @@
 namespace semimesh::checks::detail {
 
 const std::vector<std::vector<int>>& nodes_on_faces(ho::Shape shape, int order, ho::NodeSet set) {
+  // Each thread remembers what it was given (map entries never move): the conformity check asks
+  // once per use of every face, and the lock alone cost more than the lookup.
+  using Key = std::tuple<ho::Shape, int, ho::NodeSet>;
+  const Key key = std::make_tuple(shape, order, set);
+  thread_local std::map<Key, const std::vector<std::vector<int>>*> known;
+  if (const auto found = known.find(key); found != known.end()) return *found->second;
   static std::mutex mutex;
-  static std::map<std::tuple<ho::Shape, int, ho::NodeSet>, std::vector<std::vector<int>>> cache;
+  static std::map<Key, std::vector<std::vector<int>>> cache;
   std::lock_guard<std::mutex> lock(mutex);
-  auto key = std::make_tuple(shape, order, set);
   auto it = cache.find(key);
-  if (it != cache.end()) return it->second;
+  if (it != cache.end()) return *(known[key] = &it->second);
 
   const Eigen::MatrixX3d vertices = ho::reference_vertices(shape);
   const Eigen::MatrixX3d nodes = ho::reference_nodes(shape, order, set);
@@ -28,7 +33,7 @@ const std::vector<std::vector<int>>& nodes_on_faces(ho::Shape shape, int order, 
       if (std::abs(normal.dot(Eigen::Vector3d(nodes.row(i)) - v0)) < 1e-9) on_face.push_back(i);
     result.push_back(std::move(on_face));
   }
-  return cache.emplace(key, std::move(result)).first->second;
+  return *(known[key] = &cache.emplace(key, std::move(result)).first->second);
 }
 
 bool same_cycle(const std::vector<unsigned>& a, const std::vector<unsigned>& b) {

@@ -138,6 +138,12 @@ TEST(MeshModel, TwoHexesShareAQuadInEveryOrientation) {
       EXPECT_EQ(mesh.faces().size(), 11u);
       EXPECT_EQ(mesh.edges().size(), 20u);
       EXPECT_EQ(mesh.element_nodes(1), ids);
+      // Any subset of the canonical positions, in any order, without assembling the rest.
+      const std::vector<int> positions{63, 0, 17, 8, 40, 7, 25};
+      std::vector<NodeId> subset;
+      mesh.element_nodes_at(1, positions, subset);
+      ASSERT_EQ(subset.size(), positions.size());
+      for (std::size_t k = 0; k < positions.size(); ++k) EXPECT_EQ(subset[k], ids[positions[k]]) << positions[k];
       expect_rows(mesh.element_coordinates(1), expected);
       expect_straight_faces(mesh);
       distinct_faces_seen.insert(std::vector<NodeId>(mesh.elements()[1].face_orientation.begin(),

@@ -165,6 +165,10 @@ class Mesh {
   /// Node ids of an element in canonical (Gmsh) order, shape (num_nodes(shape, P)).
   std::vector<NodeId> element_nodes(std::size_t element) const;
   void element_nodes(std::size_t element, std::vector<NodeId>& out) const;
+  /// The element's node ids at canonical positions `positions` (indices into element_nodes), in
+  /// that order: element_nodes(element)[positions[k]] without assembling the others (a face's
+  /// nodes out of a hexahedron's 125 at order 4).
+  void element_nodes_at(std::size_t element, const std::vector<int>& positions, std::vector<NodeId>& out) const;
   /// Node coordinates of an element in canonical order, shape (num_nodes, 3).
   Eigen::MatrixX3d element_coordinates(std::size_t element) const;
   /// Node ids of a boundary face in canonical order of its own vertex order.
