@@ -301,7 +301,9 @@ void expect_raster_agrees(const cad::Model& model) {
     }
     // Where the band left to OCC is under a tenth of a sub-cell, the polylines answer nearly all.
     const double band = face.trim_raster()->polyline_band() / std::min(sub.x(), sub.y());
-    if (band > 0.0 && band < 0.1) EXPECT_GT(raster_answers, near_edges * 8 / 10) << cad::surface_label(model, s);
+    if (band > 0.0 && band < 0.1) {
+      EXPECT_GT(raster_answers, near_edges * 8 / 10) << cad::surface_label(model, s);
+    }
     EXPECT_EQ(disagreements, 0) << cad::surface_label(model, s);
     const auto [near, inside, outside] = face.trim_raster()->census();
     EXPECT_GT(inside + outside, 0) << cad::surface_label(model, s) << ": nothing classified";

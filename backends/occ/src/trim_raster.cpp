@@ -59,11 +59,9 @@ bool TrimRaster::refine(int m, const std::vector<std::vector<cad::Vec2>>& loops,
                         const std::function<bool(const cad::Vec2&)>& exact) {
   if (m < 2 || (m & (m - 1)) != 0 || margin < 1 || margin > m)
     throw std::invalid_argument("TrimRaster::refine: m a power of 2 >= 2 and 1 <= margin <= m needed");
-  int shift = 0;  // m = 2^shift: sub-cell coordinates split into cell and offset by shifts and masks
-  while ((1 << shift) < m) ++shift;
-  const long mask = m - 1;
   m_ = m;
-  shift_ = shift;
+  shift_ = 0;  // m = 2^shift_: sub-cell coordinates split into cell and offset by shifts and masks
+  while ((1 << shift_) < m) ++shift_;
   sub_margin_ = margin;
   block_.assign(cells_.size(), -1);
   sub_cells_.clear();
@@ -80,8 +78,8 @@ bool TrimRaster::refine(int m, const std::vector<std::vector<cad::Vec2>>& loops,
   // Sub-cells in global coordinates over the whole box: (i m + a, j m + b), N x N of them.
   const long N = static_cast<long>(n_) * m;
   const auto sub = [&](long I, long J) -> Cell* {  // null in a cell that is not refined
-    const int b = block_[static_cast<std::size_t>((I >> shift) + n_ * (J >> shift))];
-    return b < 0 ? nullptr : &sub_cells_[(static_cast<std::size_t>(b) << (2 * shift)) + (I & mask) + ((J & mask) << shift)];
+    const long k = sub_index(I, J);
+    return k < 0 ? nullptr : &sub_cells_[static_cast<std::size_t>(k)];
   };
   for (const std::vector<cad::Vec2>& loop : loops) {
     long last_I = -1, last_J = -1;
@@ -121,7 +119,7 @@ bool TrimRaster::refine(int m, const std::vector<std::vector<cad::Vec2>>& loops,
           if (In < 0 || Jn < 0 || In >= N || Jn >= N) continue;
           Cell* next = sub(In, Jn);
           if (!next) {
-            const Cell whole = cells_[static_cast<std::size_t>((In >> shift) + n_ * (Jn >> shift))];
+            const Cell whole = cells_[static_cast<std::size_t>((In >> shift_) + n_ * (Jn >> shift_))];
             touches_inside = touches_inside || whole == kInside;
             touches_outside = touches_outside || whole == kOutside;
           } else if (*next == kUnknown) {
@@ -260,18 +258,6 @@ std::array<long, 2> TrimRaster::ray_cell(int axis, long along, long across) cons
   return axis == 0 ? std::array<long, 2>{along, across} : std::array<long, 2>{across, along};
 }
 
-long TrimRaster::steps_to_class(const cad::Vec2& p, int axis, int direction, long most) const {
-  const long N = static_cast<long>(n_) * m_;
-  const long across = static_cast<long>(std::floor(p[1 - axis]));
-  long steps = 0;
-  for (long I = static_cast<long>(std::floor(p[axis])); I >= 0 && I < N && steps < most; I += direction, ++steps) {
-    const auto [u, v] = ray_cell(axis, I, across);
-    const Cell kind = sub_class(u, v);
-    if (kind == kInside || kind == kOutside) return steps;
-  }
-  return most;
-}
-
 int TrimRaster::shortest_ray(const cad::Vec2& p) const {
   const long N = static_cast<long>(n_) * m_;
   const std::array<long, 2> start{static_cast<long>(std::floor(p.x())), static_cast<long>(std::floor(p.y()))};
@@ -339,17 +325,14 @@ std::optional<bool> TrimRaster::by_polylines(const cad::Vec2& p, bool only_on) c
   }
   if (near || only_on) return std::nullopt;
   // The shortest of the four rays along u and v (a ray along a loop would cross the whole band's
-  // length), found by walking them side by side; the others, shortest first, when it passes an open end.
+  // length), found by walking them side by side; when it passes an open end, the others in turn
+  // (rare: any ray that ends on a class gives the same answer).
   const int first = shortest_ray(p);
   if (first < 0) return std::nullopt;
-  if (const std::optional<bool> inside = along_ray(p, first / 2, first % 2 ? -1 : 1)) return inside;
-  std::array<std::pair<long, int>, 3> rays;  // (sub-cells to a class, axis * 2 + (direction < 0))
-  int count = 0;
-  for (int r = 0; r < 4; ++r)
-    if (r != first) rays[count++] = {steps_to_class(p, r / 2, r % 2 ? -1 : 1, std::numeric_limits<long>::max()), r};
-  std::sort(rays.begin(), rays.end());
-  for (const auto& [steps, r] : rays)
+  for (int k = 0; k < 4; ++k) {
+    const int r = (first + k) % 4;
     if (const std::optional<bool> inside = along_ray(p, r / 2, r % 2 ? -1 : 1)) return inside;
+  }
   return std::nullopt;
 }
 

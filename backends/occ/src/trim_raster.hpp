@@ -116,11 +116,9 @@ class TrimRaster {
   /// The ray (axis * 2 + (direction < 0)) from p that passes the fewest sub-cells before a
   /// classified one, the first of them on a tie; -1 when all four leave the box first.
   int shortest_ray(const cad::Vec2& p) const;
-  /// Sub-cells the ray from p along `axis` in `direction` (+1 or -1) passes before a classified
-  /// one (at most `most`; `most` when it leaves the box first).
-  long steps_to_class(const cad::Vec2& p, int axis, int direction, long most) const;
-  /// The polygons' class of p from the crossings of that ray up to the first classified sub-cell;
-  /// nothing when it passes an open end or leaves the box.
+  /// The polygons' class of p from the crossings of the ray from p along `axis` (0: u, 1: v) in
+  /// `direction` (+1 or -1) up to the first classified sub-cell; nothing when it passes an open
+  /// end or leaves the box.
   std::optional<bool> along_ray(const cad::Vec2& p, int axis, int direction) const;
 
   std::array<cad::Interval, 2> box_;
