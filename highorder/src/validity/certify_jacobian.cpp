@@ -59,7 +59,8 @@ JacobianBounds certify_jacobian(Shape shape, int order, NodeSet set, const Eigen
                                 int max_depth, double floor_ratio) {
   JacobianBounds bounds;
   if (affine_jacobian(shape, order, set, element_nodes, bounds)) return bounds;
-  if (trilinear_jacobian(order, set, element_nodes, bounds, max_depth, floor_ratio)) return bounds;
+  if (shape == Shape::Hexahedron && trilinear_jacobian(order, set, element_nodes, bounds, max_depth, floor_ratio))
+    return bounds;
   return certify_jacobian_by_subdivision(shape, order, set, element_nodes, max_depth, floor_ratio);
 }
 

@@ -85,9 +85,10 @@ bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d
 /// longest edge: J_1's columns are averages of edge vectors), det J is within delta = 3 G^2 e +
 /// 3 G e^2 + e^3 (e = L d) of det J_1: valid when the trilinear element's lower bound exceeds
 /// delta. The bounds returned are the trilinear element's (as affine_jacobian returns det A: within
-/// delta, a rounding-sized relative error, of the element's). Returns false (nothing set) for another
-/// shape, nodes off the trilinear image by more than kAffineTolerance x the longest edge, or when
-/// the bounds do not prove the element valid with that margin: the general path decides.
+/// delta, a rounding-sized relative error, of the element's). `element_nodes`: an order-`order`
+/// hexahedron's. Returns false (nothing set) for order 1 or a wrong node count, nodes off the
+/// trilinear image by more than kAffineTolerance x the longest edge, or when the bounds do not
+/// prove the element valid with that margin: the general path decides.
 bool trilinear_jacobian(int order, NodeSet set, const Eigen::MatrixX3d& element_nodes, JacobianBounds& bounds,
                         int max_depth = 8, double floor_ratio = 0.0);
 
