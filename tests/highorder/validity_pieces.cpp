@@ -133,6 +133,34 @@ TEST(CertifyPieces, RestrictionIsThePolynomialOnThePart) {
   EXPECT_THROW(p.restricted(2, -0.1, 0.5), std::invalid_argument);
 }
 
+// The fast path (one matrix product per interval) against restricted()'s de Casteljau, interval by
+// interval, on every segment variable of a hexahedron's and a prism's determinant layouts.
+TEST(CertifyPieces, RestrictionToEachIntervalIsRestrictionToIt) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::vector<std::array<double, 2>> intervals{{0.0, 0.03}, {0.03, 0.1}, {0.1, 0.45}, {0.45, 1.0}, {0.2, 0.7}};
+  for (const std::vector<SimplexFactor>& factors :
+       std::vector<std::vector<SimplexFactor>>{{{1, 11}, {1, 11}, {1, 11}}, {{1, 2}, {1, 5}, {1, 8}}, {{2, 10}, {1, 11}}}) {
+    BernsteinPolynomial p(factors);
+    for (int i = 0; i < p.size(); ++i) p.coefficients()[i] = u(rng) - 0.3;
+    for (int var = 0; var < p.layout().num_vars; ++var) {
+      if (p.layout().factors[p.layout().var_factor[var]].dim != 1) continue;
+      SCOPED_TRACE("variable " + std::to_string(var));
+      const std::vector<BernsteinPolynomial> each = p.restricted_to_each(var, intervals);
+      ASSERT_EQ(each.size(), intervals.size());
+      for (std::size_t k = 0; k < intervals.size(); ++k) {
+        const BernsteinPolynomial reference = p.restricted(var, intervals[k][0], intervals[k][1]);
+        EXPECT_EQ(&each[k].layout(), &reference.layout());
+        EXPECT_LT((each[k].coefficients() - reference.coefficients()).cwiseAbs().maxCoeff(), 1e-14);
+      }
+    }
+  }
+  BernsteinPolynomial p(std::vector<SimplexFactor>{{2, 2}, {1, 2}});
+  EXPECT_THROW(p.restricted_to_each(0, {{0.0, 0.5}}), std::invalid_argument);  // a triangle's variable
+  EXPECT_THROW(p.restricted_to_each(2, {{0.0, 0.5}, {0.5, 0.5}}), std::invalid_argument);
+  EXPECT_TRUE(p.restricted_to_each(2, {}).empty());
+}
+
 TEST(CertifyPieces, CurvedElementsMatchTheReferenceOnEveryShapeAndOrder) {
   for (Shape shape : {Shape::Prism, Shape::Hexahedron})
     for (NodeSet set : {NodeSet::Equispaced, NodeSet::GLL})

@@ -396,36 +396,88 @@ const std::vector<int>& lines_of(const BernsteinLayout& l, int var) {
   return lines;
 }
 
+
+/// restricted()'s step along one line: the degree-n coefficients `c` [n + 1] of the line on [0, 1]
+/// become those of its part [a, b], in `out` [n + 1]. 1D de Casteljau at b keeping [0, b], then at
+/// a / b keeping the rest.
+void restrict_line(const double* c, int n, double a, double b, double* out) {
+  thread_local std::vector<double> work, left;
+  work.assign(c, c + n + 1), left.resize(n + 1);
+  // [0, b]: the first entry of each de Casteljau level at b.
+  left[0] = work[0];
+  for (int level = 1; level <= n; ++level) {
+    for (int q = 0; q + level <= n; ++q) work[q] = (1.0 - b) * work[q] + b * work[q + 1];
+    left[level] = work[0];
+  }
+  // [a, b] = [s, 1] of [0, b]: the last entry of each level at s.
+  const double s = a / b;
+  out[n] = left[n];
+  for (int level = 1; level <= n; ++level) {
+    for (int q = 0; q + level <= n; ++q) left[q] = (1.0 - s) * left[q] + s * left[q + 1];
+    out[n - level] = left[n - level];
+  }
+}
+
+/// The matrix of restrict_line on [a, b] at degree n, (n + 1, n + 1): column j is the restriction
+/// of the j-th basis polynomial's coefficients (the unit vector e_j).
+Eigen::MatrixXd restriction_matrix(int n, double a, double b) {
+  Eigen::MatrixXd r(n + 1, n + 1);
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(n + 1);
+  for (int j = 0; j <= n; ++j) {
+    unit[j] = 1.0;
+    restrict_line(unit.data(), n, a, b, r.col(j).data());
+    unit[j] = 0.0;
+  }
+  return r;
+}
+
 }  // namespace
 
-BernsteinPolynomial BernsteinPolynomial::restricted(int var, double a, double b) const {
+void BernsteinPolynomial::check_restriction(int var, double a, double b) const {
   const BernsteinLayout& l = *layout_;
   if (var < 0 || var >= l.num_vars || l.factors[l.var_factor[var]].dim != 1)
     throw std::invalid_argument("Bernstein restriction: variable " + std::to_string(var) + " is not a segment's");
   if (!(0.0 <= a && a < b && b <= 1.0))
     throw std::invalid_argument("Bernstein restriction: [" + std::to_string(a) + ", " + std::to_string(b) +
                                 "] is not an interval inside [0, 1]");
+}
+
+BernsteinPolynomial BernsteinPolynomial::restricted(int var, double a, double b) const {
+  check_restriction(var, a, b);
+  const BernsteinLayout& l = *layout_;
   const int n = l.factors[l.var_factor[var]].degree;
-  const double s = a / b;  // where a lies on [0, b]
   BernsteinPolynomial out(layout_);
   const std::vector<int>& lines = lines_of(l, var);
-  thread_local std::vector<double> work, left;
-  work.resize(n + 1), left.resize(n + 1);
+  std::vector<double> in_line(n + 1), out_line(n + 1);
   for (std::size_t first = 0; first < lines.size(); first += n + 1) {
     const int* line = &lines[first];
-    for (int m = 0; m <= n; ++m) work[m] = coefficients_[line[m]];
-    // [0, b]: the first entry of each de Casteljau level at b.
-    left[0] = work[0];
-    for (int level = 1; level <= n; ++level) {
-      for (int q = 0; q + level <= n; ++q) work[q] = (1.0 - b) * work[q] + b * work[q + 1];
-      left[level] = work[0];
-    }
-    // [a, b] = [s, 1] of [0, b]: the last entry of each level at s.
-    out.coefficients_[line[n]] = left[n];
-    for (int level = 1; level <= n; ++level) {
-      for (int q = 0; q + level <= n; ++q) left[q] = (1.0 - s) * left[q] + s * left[q + 1];
-      out.coefficients_[line[n - level]] = left[n - level];
-    }
+    for (int m = 0; m <= n; ++m) in_line[m] = coefficients_[line[m]];
+    restrict_line(in_line.data(), n, a, b, out_line.data());
+    for (int m = 0; m <= n; ++m) out.coefficients_[line[m]] = out_line[m];
+  }
+  return out;
+}
+
+std::vector<BernsteinPolynomial> BernsteinPolynomial::restricted_to_each(
+    int var, const std::vector<std::array<double, 2>>& intervals) const {
+  for (const auto& [a, b] : intervals) check_restriction(var, a, b);
+  if (intervals.empty()) return {};
+  const BernsteinLayout& l = *layout_;
+  const int n = l.factors[l.var_factor[var]].degree;
+  const std::vector<int>& lines = lines_of(l, var);
+  const Eigen::Index num_lines = static_cast<Eigen::Index>(lines.size()) / (n + 1);
+  // Column k: line k's coefficients, alpha_var = 0..n.
+  Eigen::MatrixXd along(n + 1, num_lines), part(n + 1, num_lines);
+  for (Eigen::Index k = 0; k < num_lines; ++k)
+    for (int m = 0; m <= n; ++m) along(m, k) = coefficients_[lines[k * (n + 1) + m]];
+  std::vector<BernsteinPolynomial> out;
+  out.reserve(intervals.size());
+  for (const auto& [a, b] : intervals) {
+    part.noalias() = restriction_matrix(n, a, b) * along;
+    out.emplace_back(layout_);
+    Eigen::VectorXd& c = out.back().coefficients_;
+    for (Eigen::Index k = 0; k < num_lines; ++k)
+      for (int m = 0; m <= n; ++m) c[lines[k * (n + 1) + m]] = part(m, k);
   }
   return out;
 }

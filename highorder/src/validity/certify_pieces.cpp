@@ -70,12 +70,34 @@ std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order
   }
   const BernsteinPolynomial whole = detail::jacobian_determinant(shape, order, set, element_nodes);
   // The Bernstein variable of each segment direction: the prism's zeta is its third variable, a
-  // hexahedron's xi_d its variable d.
+  // hexahedron's xi_d its variable d. The pieces cut along one direction only (one stack's layers)
+  // are restricted together (restricted_to_each); the others one direction after another.
+  const int first_direction = shape == Shape::Prism ? 2 : 0;
+  const auto cut = [&](std::size_t k, int d) { return t[k][d][0] != 0.0 || t[k][d][1] != 1.0; };
+  for (int d = first_direction; d < 3; ++d) {
+    std::vector<std::size_t> along;
+    std::vector<std::array<double, 2>> intervals;
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      if (!usable[k] || !cut(k, d)) continue;
+      bool only_d = true;
+      for (int e = first_direction; e < 3; ++e) only_d = only_d && (e == d || !cut(k, e));
+      if (!only_d) continue;
+      along.push_back(k);
+      intervals.push_back(t[k][d]);
+    }
+    std::vector<BernsteinPolynomial> pieces = whole.restricted_to_each(d, intervals);
+    for (std::size_t i = 0; i < along.size(); ++i) {
+      pieces[i] *= box_determinant(shape, boxes[along[i]]);
+      out[along[i]] = leaf_bounds(pieces[i]);
+    }
+  }
   for (std::size_t k = 0; k < boxes.size(); ++k) {
-    if (!usable[k]) continue;
+    int cuts = 0;
+    for (int d = first_direction; d < 3; ++d) cuts += cut(k, d);
+    if (!usable[k] || cuts == 1) continue;
     BernsteinPolynomial piece = whole;
-    for (int d = (shape == Shape::Prism ? 2 : 0); d < 3; ++d)
-      if (t[k][d][0] != 0.0 || t[k][d][1] != 1.0) piece = piece.restricted(d, t[k][d][0], t[k][d][1]);
+    for (int d = first_direction; d < 3; ++d)
+      if (cut(k, d)) piece = piece.restricted(d, t[k][d][0], t[k][d][1]);
     piece *= box_determinant(shape, boxes[k]);
     out[k] = leaf_bounds(piece);
   }

@@ -95,8 +95,14 @@ class BernsteinPolynomial {
   /// Throws std::invalid_argument when `var` is not a segment factor's or the interval is not inside
   /// [0, 1].
   BernsteinPolynomial restricted(int var, double a, double b) const;
+  /// restricted(var, a, b) for every interval [a, b] of `intervals`: each one matrix product over
+  /// all lines of `var` (the restriction's matrix made once per interval by restricted()'s de
+  /// Casteljau on the unit vectors), the same polynomials to round-off. For the pieces of one
+  /// element split along one direction (certify_pieces). Throws what restricted() throws.
+  std::vector<BernsteinPolynomial> restricted_to_each(int var, const std::vector<std::array<double, 2>>& intervals) const;
 
  private:
+  void check_restriction(int var, double a, double b) const;
   std::shared_ptr<const BernsteinLayout> layout_;
   Eigen::VectorXd coefficients_;
 };
