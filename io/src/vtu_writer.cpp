@@ -28,8 +28,8 @@ constexpr std::size_t kBatchBlocks = 64;  // compressed together, in parallel
 /// known in advance), is filled in at the end.
 class CompressedArray {
  public:
-  CompressedArray(AtomicFile& out, std::size_t raw_bytes)
-      : out_(out), raw_bytes_(raw_bytes), header_at_(out.bytes_written()) {
+  CompressedArray(AtomicFile& out, std::size_t raw_bytes, Content content)
+      : out_(out), raw_bytes_(raw_bytes), header_at_(out.bytes_written()), content_(content) {
     const std::vector<std::uint64_t> placeholder(3 + (raw_bytes + kBlockBytes - 1) / kBlockBytes, 0);
     out.write(placeholder.data(), placeholder.size() * sizeof(std::uint64_t));
   }
@@ -62,7 +62,7 @@ class CompressedArray {
 
  private:
   void flush() {
-    for (const std::string& z : zlib_compress_blocks(batch_)) {
+    for (const std::string& z : zlib_compress_blocks(batch_, content_)) {
       sizes_.push_back(z.size());
       out_.write(z.data(), z.size());
     }
@@ -70,6 +70,7 @@ class CompressedArray {
   }
   AtomicFile& out_;
   std::size_t raw_bytes_, header_at_;
+  Content content_;
   std::vector<std::string> batch_;
   std::vector<std::uint64_t> sizes_;
   std::size_t total_ = 0;
@@ -258,7 +259,7 @@ void write_compressed(AtomicFile& out, const Arrays& a, const ProgressCallback& 
     if (progress) progress(k / 6.0, kNames[k]);
     const std::string offset = fmt::format("{:<{}}", out.bytes_written() - base, kOffsetWidth);
     out.overwrite(placeholder[k], offset.data(), offset.size());
-    CompressedArray c(out, raw_bytes);
+    CompressedArray c(out, raw_bytes, k == 0 ? Content::Doubles : Content::Integers);
     fill(c);
     c.finish();
   };

@@ -13,6 +13,7 @@ namespace {
 
 constexpr std::size_t kChunkBytes = 1 << 20;
 constexpr int kLibdeflateLevel = 1;
+constexpr int kStoredLevel = 0;  // libdeflate and zlib alike: uncompressed blocks only
 
 std::runtime_error zlib_error(const char* what, int code) {
   return std::runtime_error(std::string("zlib: ") + what + " failed (code " + std::to_string(code) + ")");
@@ -20,12 +21,11 @@ std::runtime_error zlib_error(const char* what, int code) {
 
 std::size_t num_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-int strategy(Content content) { return content == Content::Doubles ? Z_RLE : Z_DEFAULT_STRATEGY; }
-
 /// Raw deflate of one chunk, ended by a sync flush (more chunks follow) or the final block.
 std::string deflate_chunk(const std::string& in, bool last, Content content) {
   z_stream z{};
-  int rc = deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, -15, 8, strategy(content));
+  const int level = content == Content::Doubles ? kStoredLevel : Z_BEST_SPEED;
+  int rc = deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY);
   if (rc != Z_OK) throw zlib_error("deflateInit2", rc);
   std::string out(deflateBound(&z, in.size()) + 16, '\0');
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
@@ -43,13 +43,16 @@ std::string deflate_chunk(const std::string& in, bool last, Content content) {
 /// One whole zlib stream, by libdeflate (faster than zlib's fastest level: the VTU of bench_io's
 /// prism block 0.49 s against 1.15 s CPU; it compresses whole buffers only, which is what an
 /// independent block is; on a real mesh's Float64 points the ratio is within 7 %). A compressor per
-/// thread: libdeflate's are not shared between threads, and making one costs more than a block.
-std::string compress_block(const std::string& in) {
+/// thread and level: libdeflate's are not shared between threads, and making one costs more than a
+/// block.
+std::string compress_block(const std::string& in, Content content) {
   struct Compressor {
-    libdeflate_compressor* c = libdeflate_alloc_compressor(kLibdeflateLevel);
+    explicit Compressor(int level) : c(libdeflate_alloc_compressor(level)) {}
     ~Compressor() { libdeflate_free_compressor(c); }
+    libdeflate_compressor* c;
   };
-  thread_local Compressor compressor;
+  thread_local Compressor fastest(kLibdeflateLevel), stored(kStoredLevel);
+  const Compressor& compressor = content == Content::Doubles ? stored : fastest;
   if (!compressor.c) throw std::runtime_error("libdeflate: cannot allocate a compressor");
   std::string out(libdeflate_zlib_compress_bound(compressor.c, in.size()), '\0');
   const std::size_t bytes = libdeflate_zlib_compress(compressor.c, in.data(), in.size(), out.data(), out.size());
@@ -131,8 +134,8 @@ void ZlibStream::finish() {
   finished_ = true;
 }
 
-std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks) {
-  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i]); });
+std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content) {
+  return parallel_map(blocks.size(), [&](std::size_t i) { return compress_block(blocks[i], content); });
 }
 
 void Base64Out::add(const char* data, std::size_t bytes) {

@@ -1,5 +1,7 @@
 // Deflate for the compressed writers, at the fastest level (mesh data compresses nearly as well as
-// at the default level, several times faster), on every hardware thread at once.
+// at the default level, several times faster), on every hardware thread at once. Arrays of doubles
+// (the node coordinates) go in stored blocks: deflate gains 16-19 % on them at ~100 MB/s a core,
+// ten times slower than the disk, where ids and indices shrink 3-7 times (docs/benchmarks.md).
 //  - ZlibStream (Nektar++'s B64Z: one zlib stream per array): zlib (Debian's zlib1g), 1 MiB chunks
 //    each deflated on its own and joined with sync flushes into one stream (the way pigz does; the
 //    dictionary restarts per chunk, which costs a fraction of a percent). libdeflate cannot join
@@ -22,8 +24,8 @@
 
 namespace semimesh::io {
 
-/// What the data is: doubles barely repeat, so LZ77 matching (the zlib default) costs much time
-/// for little gain on them; run-length matching keeps most of the gain at 2-3 times the speed.
+/// What the data is: doubles barely repeat, so deflate costs much time for little gain on them:
+/// they are stored (deflate's uncompressed blocks: a valid stream that every reader inflates).
 enum class Content { Integers, Doubles };
 
 /// One zlib-format (RFC 1950) stream fed piece by piece; its bytes go to `sink` in order.
@@ -57,7 +59,7 @@ class ZlibStream {
 };
 
 /// Each block compressed as its own zlib stream (VTK's vtkZLibDataCompressor layout), in parallel.
-std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks);
+std::vector<std::string> zlib_compress_blocks(const std::vector<std::string>& blocks, Content content);
 
 /// Standard base64 (RFC 4648, padded) of a byte stream fed piece by piece, appended to a file.
 class Base64Out {
