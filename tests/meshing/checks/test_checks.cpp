@@ -286,6 +286,28 @@ Mesh bent_element(ho::Shape shape, int order, ho::NodeSet set) {
   return m;
 }
 
+// The boundary flux reads only each face's own nodes (FaceRule): on a bent element of every shape,
+// order and node set, with every face a boundary face, it is the element volume (integrated from
+// all the nodes, by the divergence theorem: x . dA / 3 over the boundary).
+TEST(Volume, FluxThroughEveryFaceOfABentElementIsItsVolume) {
+  for (ho::Shape shape : {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron})
+    for (int order = 1; order <= 6; ++order)
+      for (ho::NodeSet set : {ho::NodeSet::Equispaced, ho::NodeSet::GLL}) {
+        SCOPED_TRACE(ho::to_string(shape) + " order " + std::to_string(order));
+        Mesh m = bent_element(shape, order, set);
+        for (std::size_t k = 0; k < ho::faces(shape).size(); ++k) {
+          const std::uint32_t f = m.elements()[0].faces[k];
+          m.add_boundary_face("outer", m.faces()[f].num_vertices == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral,
+                              m.face_nodes(f));
+        }
+        const MeshVolume v = mesh_volume(m);
+        EXPECT_GT(v.element_volume, 0.01);
+        EXPECT_NEAR(v.boundary_volume, v.element_volume, 1e-12 * v.element_volume);
+        const MeshVolume one = mesh_volume_one_thread(m);
+        EXPECT_EQ(one.boundary_volume, v.boundary_volume);
+      }
+}
+
 // `count` separate bent order-2 hexahedra side by side, every face of each a boundary face.
 Mesh separate_bent_hexes(int count) {
   Mesh m(2, ho::NodeSet::Equispaced);
