@@ -6,6 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace semimesh::ho {
@@ -419,8 +420,16 @@ void restrict_line(const double* c, int n, double a, double b, double* out) {
 }
 
 /// The matrix of restrict_line on [a, b] at degree n, (n + 1, n + 1): column j is the restriction
-/// of the j-th basis polynomial's coefficients (the unit vector e_j).
-Eigen::MatrixXd restriction_matrix(int n, double a, double b) {
+/// of the j-th basis polynomial's coefficients (the unit vector e_j). Kept per thread: the layers of
+/// a stack cut every element at the same interfaces, so a few intervals recur (making one is
+/// (n + 1)^3 operations, applying it (n + 1)^2 per line). The cache is emptied when it grows past
+/// kKeptMatrices (callers whose intervals never recur).
+const Eigen::MatrixXd& restriction_matrix(int n, double a, double b) {
+  constexpr std::size_t kKeptMatrices = 1024;
+  thread_local std::map<std::tuple<int, double, double>, Eigen::MatrixXd> kept;
+  const auto key = std::make_tuple(n, a, b);
+  if (const auto it = kept.find(key); it != kept.end()) return it->second;
+  if (kept.size() >= kKeptMatrices) kept.clear();
   Eigen::MatrixXd r(n + 1, n + 1);
   Eigen::VectorXd unit = Eigen::VectorXd::Zero(n + 1);
   for (int j = 0; j <= n; ++j) {
@@ -428,7 +437,7 @@ Eigen::MatrixXd restriction_matrix(int n, double a, double b) {
     restrict_line(unit.data(), n, a, b, r.col(j).data());
     unit[j] = 0.0;
   }
-  return r;
+  return kept.emplace(key, std::move(r)).first->second;
 }
 
 }  // namespace
