@@ -74,7 +74,7 @@ class Curver {
   };
   struct FaceNodes : PlacedNodes {
     Eigen::MatrixXd x;               // (face nodes, 3) canonical order of the stored face
-    std::vector<CadAttachment> att;  // [face nodes]
+    std::vector<CadAttachment> att;  // [face nodes], or empty: none attached
   };
 
   EdgeNodes place_edge(std::size_t e, const std::vector<double>& fraction, bool on_boundary) const;
@@ -109,8 +109,19 @@ class Curver {
   std::vector<std::vector<cad::Vec3>> poles_;       // [surfaces] detail::surface_poles
   std::vector<std::array<detail::KinkChart, 2>> surface_charts_;  // [surfaces] u and v
   std::vector<detail::KinkChart> curve_charts_;                   // [curves]
-  std::vector<std::vector<NodeId>> edge_interior_;  // [edges] from edge vertices[0] to vertices[1]
-  std::vector<std::vector<NodeId>> face_interior_;  // [faces] canonical order of the stored face
+  // The nodes made inside the input's edges and faces, each entity's in a fixed stride of one array
+  // (millions of small lists cost an allocation and a free each): edge e's P - 1 from its
+  // vertices[0] to vertices[1]; face f's in the canonical order of the stored face, in a stride of a
+  // quadrilateral's count (a triangle's are fewer).
+  std::vector<NodeId> edge_interior_;  // [edges * (P - 1)]
+  std::vector<NodeId> face_interior_;  // [faces * face_stride_]
+  std::size_t face_stride_ = 0;
+  NodeId edge_node(std::size_t edge, int slot) const {
+    return edge_interior_[edge * static_cast<std::size_t>(params_.order - 1) + static_cast<std::size_t>(slot)];
+  }
+  NodeId face_node(std::size_t face, int slot) const {
+    return face_interior_[face * face_stride_ + static_cast<std::size_t>(slot)];
+  }
   const CurvedAhead* ahead_;
   CurvedAhead* record_;
   const std::atomic<bool>* stop_;
@@ -207,9 +218,9 @@ std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, co
       ids[i] = vertices[s.local];
     } else if (s.kind == mesh::NodeSlot::Edge) {
       const auto& e = edges(shape)[s.local];
-      ids[i] = edge_interior_[edge_ids[s.local]][s.slot[vertices[e[0]] > vertices[e[1]] ? 1 : 0]];
+      ids[i] = edge_node(edge_ids[s.local], s.slot[vertices[e[0]] > vertices[e[1]] ? 1 : 0]);
     } else if (face >= 0) {
-      ids[i] = face_interior_[face][s.slot[code]];
+      ids[i] = face_node(static_cast<std::size_t>(face), s.slot[code]);
     }
   }
   return ids;
@@ -306,7 +317,7 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
   // Positions in parallel, then the nodes in edge order (ids independent of the thread count); a
   // block's nodes are made while the next block is placed (place_edge reads the input mesh and the
   // CAD only).
-  edge_interior_.resize(in_.edges().size());
+  edge_interior_.assign(in_.edges().size() * static_cast<std::size_t>(P - 1), mesh::kNoNode);
   detail::overlapped_blocks(
       in_.edges().size(), model_.thread_safe(), kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
@@ -318,7 +329,9 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
         note(placed);
         stats_.edges_on_curves += placed.place == CadPlace::Curve ? 1 : 0;
         stats_.edges_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
-        for (int i = 0; i < P - 1; ++i) edge_interior_[e].push_back(out_.add_node(placed.x[i], placed.att[i]));
+        for (int i = 0; i < P - 1; ++i)
+          edge_interior_[e * static_cast<std::size_t>(P - 1) + static_cast<std::size_t>(i)] =
+              out_.add_node(placed.x[i], placed.att[i]);
       },
       edge_progress_, "edges");
 }
@@ -335,7 +348,6 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
   for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
   extend_harmonically(detail::inner_extension(shape, P, params_.node_set), X);
-  out.att.resize(n);
 
   std::vector<CadAttachment> corner_att;
   for (int v = 0; v < face.num_vertices; ++v) corner_att.push_back(in_.cad_attachment(face.vertices[v]));
@@ -343,6 +355,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
       on_boundary ? detail::classify(model_, corner_att, false, X.colwise().mean().transpose()) : CadPlace{};
   out.place = place.kind;
   if (place.kind == CadPlace::Surface) {
+    out.att.resize(n);  // (off the CAD: none, every node unattached)
     // The straight-sided face (its linear map), to measure how far curving moves the nodes.
     Eigen::MatrixX3d corners(face.num_vertices, 3);
     for (int v = 0; v < face.num_vertices; ++v) corners.row(v) = in_.node(face.vertices[v]).transpose();
@@ -386,13 +399,14 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
       out.moved = std::max(out.moved, (straight.row(j) - X.row(j)).norm());
     }
   }
-  out.x = X;
+  out.x = std::move(X);
   return out;
 }
 
 void Curver::curve_faces(const std::vector<char>& on_boundary) {
   const int P = params_.order;
-  face_interior_.resize(in_.faces().size());
+  face_stride_ = static_cast<std::size_t>(mesh::face_interior_count(4, P));
+  face_interior_.assign(in_.faces().size() * face_stride_, mesh::kNoNode);
   detail::parallel_blocks(
       in_.faces().size(), model_.thread_safe(), kBlock,
       [&](std::size_t f) {
@@ -408,9 +422,9 @@ void Curver::curve_faces(const std::vector<char>& on_boundary) {
         stats_.faces_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
         // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
         const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
-        face_interior_[f].assign(ext.interior.size(), mesh::kNoNode);
         for (int j : ext.interior)
-          face_interior_[f][layout.slots[j].slot[0]] = out_.add_node(placed.x.row(j).transpose(), placed.att[j]);
+          face_interior_[f * face_stride_ + static_cast<std::size_t>(layout.slots[j].slot[0])] =
+              out_.add_node(placed.x.row(j).transpose(), placed.att.empty() ? CadAttachment{} : placed.att[j]);
       },
       face_progress_, "faces");
 }
@@ -423,8 +437,8 @@ std::vector<NodeId> Curver::element_node_ids(std::size_t e) const {
     const mesh::NodeSlot& s = layout.slots[i];
     switch (s.kind) {
       case mesh::NodeSlot::Vertex: ids[i] = el.vertices[s.local]; break;
-      case mesh::NodeSlot::Edge: ids[i] = edge_interior_[el.edges[s.local]][s.slot[(el.edge_reversed >> s.local) & 1]]; break;
-      case mesh::NodeSlot::Face: ids[i] = face_interior_[el.faces[s.local]][s.slot[el.face_orientation[s.local]]]; break;
+      case mesh::NodeSlot::Edge: ids[i] = edge_node(el.edges[s.local], s.slot[(el.edge_reversed >> s.local) & 1]); break;
+      case mesh::NodeSlot::Face: ids[i] = face_node(el.faces[s.local], s.slot[el.face_orientation[s.local]]); break;
       case mesh::NodeSlot::Interior: break;
     }
   }
