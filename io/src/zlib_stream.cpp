@@ -4,6 +4,8 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <future>
 #include <stdexcept>
 #include <thread>
@@ -162,14 +164,32 @@ void Base64Out::add(const char* data, std::size_t bytes) {
 
 void Base64Out::encode(const unsigned char* b, std::size_t n) {
   static const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  // Two characters per 12 bits from one lookup: a triple is two lookups and two 2-byte copies.
+  static const std::array<std::array<char, 2>, 4096> pairs = [] {
+    std::array<std::array<char, 2>, 4096> t{};
+    for (unsigned v = 0; v < 4096; ++v) t[v] = {alphabet[v >> 6], alphabet[v & 63]};
+    return t;
+  }();
   constexpr std::size_t kTextBytes = 1 << 16;
-  for (std::size_t i = 0; i < n; i += 3) {
-    const unsigned v = (b[i] << 16) | ((i + 1 < n ? b[i + 1] : 0) << 8) | (i + 2 < n ? b[i + 2] : 0);
-    const char quad[4] = {alphabet[(v >> 18) & 63], alphabet[(v >> 12) & 63], i + 1 < n ? alphabet[(v >> 6) & 63] : '=',
-                          i + 2 < n ? alphabet[v & 63] : '='};
-    text_.append(quad, 4);
+  std::size_t i = 0;
+  while (n - i >= 3) {  // the whole triples, a buffer's room at a time
+    const std::size_t room = kTextBytes > text_.size() ? (kTextBytes - text_.size()) / 4 : 0;
+    const std::size_t triples = std::min((n - i) / 3, std::max<std::size_t>(room, 1));
+    const std::size_t at = text_.size();
+    text_.resize(at + 4 * triples);
+    char* out = text_.data() + at;
+    for (std::size_t t = 0; t < triples; ++t, i += 3, out += 4) {
+      const unsigned v = (unsigned{b[i]} << 16) | (unsigned{b[i + 1]} << 8) | b[i + 2];
+      std::memcpy(out, pairs[v >> 12].data(), 2);
+      std::memcpy(out + 2, pairs[v & 4095].data(), 2);
+    }
     if (text_.size() >= kTextBytes) out_.write(text_), text_.clear();
   }
+  if (i == n) return;  // else the padded tail of one or two bytes (finish)
+  const unsigned v = (unsigned{b[i]} << 16) | (i + 1 < n ? unsigned{b[i + 1]} << 8 : 0u);
+  const char quad[4] = {alphabet[(v >> 18) & 63], alphabet[(v >> 12) & 63], i + 1 < n ? alphabet[(v >> 6) & 63] : '=',
+                        '='};
+  text_.append(quad, 4);
 }
 
 void Base64Out::finish() {
