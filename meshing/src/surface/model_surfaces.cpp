@@ -5,7 +5,12 @@
 #include "semimesh/surface/error.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <map>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 namespace semimesh::surface {
 namespace {
@@ -60,12 +65,41 @@ SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size
   std::vector<CurveMesh> curves = discretise_all_curves(model, size, options.curve_counts, options.min_segments).all();
   equalise_strip_counts(model, size, options.structured_surfaces, options.curve_counts, curves);
   out.curves = CurveMeshes(std::move(curves));
-  for (int s = 0; s < model.num_surfaces(); ++s) {
-    if (progress) progress((1.0 + s) / items, model.surface(s).name());
-    out.surfaces.push_back(options.structured_surfaces.count(s)
-                               ? mesh_surface_structured(model, s, out.curves, options.split_structured)
-                               : mesh_surface(model, s, out.curves, size, options.surface));
+  // Each surface is meshed on its own from the shared curves' nodes, so the surfaces go to every
+  // hardware thread when the model allows it (each mesh is the same whatever the threads). An
+  // error is the first failing surface's, as one after another; this thread reports the progress.
+  const auto num_surfaces = static_cast<std::size_t>(model.num_surfaces());
+  out.surfaces.resize(num_surfaces);
+  std::vector<std::exception_ptr> failed(num_surfaces);
+  std::atomic<std::size_t> next{0}, done{0};
+  const auto work = [&](bool reports) {
+    for (std::size_t s = next++; s < num_surfaces; s = next++) {
+      const int id = static_cast<int>(s);
+      if (reports && progress) progress((1.0 + static_cast<double>(done)) / items, model.surface(id).name());
+      try {
+        out.surfaces[s] = options.structured_surfaces.count(id)
+                              ? mesh_surface_structured(model, id, out.curves, options.split_structured)
+                              : mesh_surface(model, id, out.curves, size, options.surface);
+      } catch (...) {
+        failed[s] = std::current_exception();
+      }
+      ++done;
+    }
+  };
+  const std::size_t helpers =
+      model.thread_safe() ? std::min<std::size_t>(std::thread::hardware_concurrency(), num_surfaces) : 1;
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < helpers; ++t) {
+    try {
+      pool.emplace_back(work, false);
+    } catch (const std::system_error&) {  // no thread to be had: the others do its share
+      break;
+    }
   }
+  work(true);
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   if (progress) progress(1.0, "");
   return out;
 }

@@ -78,6 +78,30 @@ TEST(ModelSurfaces, WholeWingIsClosedAndConforming) {
   expect_closed_sphere(meshes);
 }
 
+// The surfaces are meshed on every thread when the model is thread-safe: each mesh is the one a
+// single thread makes (a model marked not thread-safe), point for point and element for element.
+TEST(ModelSurfaces, ThreadsGiveTheOneThreadMeshes) {
+  auto threaded = naca_model(), alone = naca_model();
+  alone->set_thread_safe(false);
+  SizeParams p;
+  p.max_size = 1.5;
+  p.min_size = 0.01;
+  p.le_size = 0.02;
+  p.te_size = 0.02;
+  const SurfaceMeshes a = mesh_model_surfaces(*threaded, SizeField(*threaded, p));
+  const SurfaceMeshes b = mesh_model_surfaces(*alone, SizeField(*alone, p));
+  ASSERT_TRUE(threaded->thread_safe());
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  for (std::size_t s = 0; s < a.surfaces.size(); ++s) {
+    SCOPED_TRACE(threaded->surface(static_cast<int>(s)).name());
+    EXPECT_EQ(a.surfaces[s].surface, static_cast<int>(s));
+    EXPECT_GT(a.surfaces[s].triangles.size(), 0u);
+    EXPECT_EQ(a.surfaces[s].points, b.surfaces[s].points);
+    EXPECT_EQ(a.surfaces[s].triangles, b.surfaces[s].triangles);
+    EXPECT_EQ(a.surfaces[s].quads, b.surfaces[s].quads);
+  }
+}
+
 TEST(ModelSurfaces, SharpTaperedSweptWing) {
   mock_cad::NacaWingParams params;
   params.code = "2412";
