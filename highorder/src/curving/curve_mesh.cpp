@@ -502,6 +502,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   std::size_t interior_nodes = 0;
   for (const mesh::Element& el : in_.elements()) interior_nodes += interior_node_count(el.shape, P);
   out_.reserve_nodes(out_.num_nodes() + interior_nodes);
+  out_.reserve_lookups(in_.edges().size(), in_.faces().size());  // the same elements: the same entities
   struct VolumeNodes {
     std::vector<NodeId> ids;  // canonical, kNoNode for the interior until made
     Eigen::MatrixXd x;        // (nodes, 3), interior rows filled

@@ -202,6 +202,11 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
   interior_pool_.reserve(num_elements * node_layout(typical_shape, order_).num_interior);
 }
 
+void Mesh::reserve_lookups(std::size_t num_edges, std::size_t num_faces) {
+  edge_index_.reserve(num_edges, [&](std::uint32_t e) { return edge_hash(e); });
+  face_index_.reserve(num_faces, [&](std::uint32_t f) { return face_hash(f); });
+}
+
 std::string Mesh::Named::text() const {
   return group ? "boundary " + element_name(shape, index) + " of group '" + *group + "'" : element_name(shape, index);
 }

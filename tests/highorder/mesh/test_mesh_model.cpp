@@ -271,9 +271,11 @@ TEST(MeshModel, ElementsKeepTheirRegion) {
   EXPECT_THROW(other.copy_regions_from(m), std::logic_error);
 }
 
-TEST(MeshModel, FindsEveryEdgeAndFaceByItsVerticesInAnyOrder) {
-  // 6 x 6 x 6 hexes of order 1: 882 edges, 756 faces, enough for the lookups to grow many times.
+// 6 x 6 x 6 hexes of order 1 (882 edges, 756 faces), the lookups sized first for `edges` and
+// `faces` (0: not at all, so they grow many times).
+Mesh hex_lattice(std::size_t edges, std::size_t faces) {
   Mesh mesh(1);
+  if (edges + faces > 0) mesh.reserve_lookups(edges, faces);
   NodeMaker make{mesh, {}, {}};
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
@@ -284,25 +286,37 @@ TEST(MeshModel, FindsEveryEdgeAndFaceByItsVerticesInAnyOrder) {
           v.emplace_back(i + c[0], j + c[1], k + c[2]);
         mesh.add_element(Shape::Hexahedron, make.element(Shape::Hexahedron, 1, v));
       }
-  ASSERT_EQ(mesh.edges().size(), 882u);
-  ASSERT_EQ(mesh.faces().size(), 756u);
-  for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
-    const auto& v = mesh.edges()[e].vertices;
-    ASSERT_EQ(mesh.find_edge(v[0], v[1]), static_cast<long>(e));
-    ASSERT_EQ(mesh.find_edge(v[1], v[0]), static_cast<long>(e));
+  return mesh;
+}
+
+TEST(MeshModel, FindsEveryEdgeAndFaceByItsVerticesInAnyOrder) {
+  // Grown, sized exactly, sized too small and too large: the same entities, each found.
+  const Mesh grown = hex_lattice(0, 0);
+  for (const auto& [edges, faces] : std::vector<std::pair<std::size_t, std::size_t>>{{0, 0}, {882, 756}, {10, 20}, {5000, 9000}}) {
+    SCOPED_TRACE("lookups sized for " + std::to_string(edges) + " edges, " + std::to_string(faces) + " faces");
+    const Mesh mesh = hex_lattice(edges, faces);
+    ASSERT_EQ(mesh.edges().size(), 882u);
+    ASSERT_EQ(mesh.faces().size(), 756u);
+    for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
+      const auto& v = mesh.edges()[e].vertices;
+      ASSERT_EQ(v, grown.edges()[e].vertices);
+      ASSERT_EQ(mesh.find_edge(v[0], v[1]), static_cast<long>(e));
+      ASSERT_EQ(mesh.find_edge(v[1], v[0]), static_cast<long>(e));
+    }
+    for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+      ASSERT_EQ(mesh.faces()[f].vertices, grown.faces()[f].vertices);
+      std::vector<NodeId> v(mesh.faces()[f].vertices.begin(), mesh.faces()[f].vertices.begin() + 4);
+      ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+      std::reverse(v.begin(), v.end());
+      ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+      std::rotate(v.begin(), v.begin() + 1, v.end());
+      ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
+    }
+    // Vertices 0 and the lattice's far corner share no edge; three vertices of a quad are no face.
+    EXPECT_EQ(mesh.find_edge(0, static_cast<NodeId>(mesh.num_nodes() - 1)), -1);
+    const auto& quad = mesh.faces()[0].vertices;
+    EXPECT_EQ(mesh.find_face({quad[0], quad[1], quad[2]}), -1);
   }
-  for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
-    std::vector<NodeId> v(mesh.faces()[f].vertices.begin(), mesh.faces()[f].vertices.begin() + 4);
-    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
-    std::reverse(v.begin(), v.end());
-    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
-    std::rotate(v.begin(), v.begin() + 1, v.end());
-    ASSERT_EQ(mesh.find_face(v), static_cast<long>(f));
-  }
-  // Vertices 0 and the lattice's far corner share no edge; three vertices of a quad are no face.
-  EXPECT_EQ(mesh.find_edge(0, static_cast<NodeId>(mesh.num_nodes() - 1)), -1);
-  const auto& quad = mesh.faces()[0].vertices;
-  EXPECT_EQ(mesh.find_face({quad[0], quad[1], quad[2]}), -1);
 }
 
 TEST(MeshModel, MemoryPerElementIsModest) {

@@ -136,6 +136,10 @@ class Mesh {
   void copy_regions_from(const Mesh& other);
   /// Reserves storage for about this many elements of one shape (avoids regrowing; optional).
   void reserve(ho::Shape typical_shape, std::size_t num_elements);
+  /// Sizes the edge and face lookups for this many entities (a builder that knows its counts: the
+  /// curving's are its input's): no table is rehashed as it fills, each rehash reading every
+  /// entity's key again (optional; the tables take the size they would grow to).
+  void reserve_lookups(std::size_t num_edges, std::size_t num_faces);
   /// Reserves storage for this many nodes (avoids regrowing; optional).
   void reserve_nodes(std::size_t num_nodes) { nodes_.reserve(num_nodes); }
   /// Takes the nodes and CAD attachments of `other` (same ids; this mesh must have none), leaving it
