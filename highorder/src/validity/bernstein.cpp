@@ -397,7 +397,6 @@ const std::vector<int>& lines_of(const BernsteinLayout& l, int var) {
   return lines;
 }
 
-
 /// restricted()'s step along one line: the degree-n coefficients `c` [n + 1] of the line on [0, 1]
 /// become those of its part [a, b], in `out` [n + 1]. 1D de Casteljau at b keeping [0, b], then at
 /// a / b keeping the rest.

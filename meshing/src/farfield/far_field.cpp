@@ -524,8 +524,8 @@ void add_tetrahedra(const TetgenOutput& output, std::vector<NodeId> plc_node, me
   for (std::size_t i = boundary_points; i < output.points.size(); ++i)
     if (used[i]) plc_node[i] = mesh.add_node(output.points[i]);
   mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
-  // Sized ahead (a lookup that grows rehashes every key it holds): a Delaunay mesh has about 1.2
-  // edges and 2.1 faces per tetrahedron (2.16 faces on the paper's case).
+  // Sized ahead (a lookup that grows rehashes every key it holds): a Delaunay mesh has about 1.2-1.4
+  // edges and 2.1-2.2 faces per tetrahedron (the paper's case: ~1.4 and ~2.16).
   const std::size_t tets = output.tets.size();
   mesh.reserve_lookups(mesh.edges().size() + 3 * tets / 2, mesh.faces().size() + 9 * tets / 4);
   const int region = mesh.region_index("farfield");
