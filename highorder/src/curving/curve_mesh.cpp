@@ -489,6 +489,8 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   choose_taken(edge_on_boundary, face_on_boundary);
   curve_edges(edge_on_boundary);
   curve_faces(face_on_boundary);
+  // The same elements in the same order: the input's edges and faces, now owning these nodes.
+  out_.adopt_entities(in_, edge_interior_, face_interior_, face_stride_);
 
   // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order; a
   // block's nodes and elements are made while the next block is extended, which reads the edges'
@@ -502,7 +504,6 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   std::size_t interior_nodes = 0;
   for (const mesh::Element& el : in_.elements()) interior_nodes += interior_node_count(el.shape, P);
   out_.reserve_nodes(out_.num_nodes() + interior_nodes);
-  out_.reserve_lookups(in_.edges().size(), in_.faces().size());  // the same elements: the same entities
   struct VolumeNodes {
     std::vector<NodeId> ids;  // canonical, kNoNode for the interior until made
     Eigen::MatrixXd x;        // (nodes, 3), interior rows filled
@@ -531,7 +532,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
         if (out_.num_nodes() + interior.size() > out_.nodes().capacity())
           throw std::logic_error("curve_mesh: no room left for the inner nodes of element " + std::to_string(e));
         for (int j : interior) v.ids[j] = out_.add_node(v.x.row(j).transpose());
-        out_.add_element(shape, v.ids, in_.elements()[e].region);
+        out_.add_element_as(in_, e, v.ids);
       },
       volume_progress_, "volumes");
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {

@@ -318,6 +318,65 @@ void Mesh::add_elements_of(const Mesh& other, std::size_t first, std::size_t end
       });
 }
 
+void Mesh::adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_nodes,
+                          const std::vector<NodeId>& face_nodes, std::size_t face_stride) {
+  if (!elements_.empty() || !edges_.empty() || !faces_.empty() || !boundary_.empty())
+    throw std::logic_error("Mesh::adopt_entities: the mesh already has elements or entities");
+  const auto per_edge = static_cast<std::size_t>(edge_interior_count(order_));
+  if (edge_nodes.size() != linear.edges_.size() * per_edge || face_nodes.size() != linear.faces_.size() * face_stride ||
+      face_stride < static_cast<std::size_t>(face_interior_count(4, order_)))
+    throw std::invalid_argument("Mesh::adopt_entities: node lists of " + std::to_string(edge_nodes.size()) + " and " +
+                                std::to_string(face_nodes.size()) + " ids for " + std::to_string(linear.edges_.size()) +
+                                " edges and " + std::to_string(linear.faces_.size()) + " faces at order " +
+                                std::to_string(order_));
+  edges_ = linear.edges_;
+  for (std::size_t e = 0; e < edges_.size(); ++e) edges_[e].first_node = static_cast<std::uint32_t>(e * per_edge);
+  edge_pool_ = edge_nodes;
+  faces_ = linear.faces_;
+  face_pool_.clear();
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const auto count = static_cast<std::size_t>(face_interior_count(faces_[f].num_vertices, order_));
+    faces_[f].first_node = static_cast<std::uint32_t>(face_pool_.size());
+    face_pool_.insert(face_pool_.end(), face_nodes.begin() + static_cast<long>(f * face_stride),
+                      face_nodes.begin() + static_cast<long>(f * face_stride + count));
+  }
+  edge_index_ = linear.edge_index_;
+  face_index_ = linear.face_index_;
+}
+
+std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const std::vector<NodeId>& canonical_nodes) {
+  const Element& was = linear.elements_.at(element);
+  const NodeLayout& layout = node_layout(was.shape, order_);
+  const Named who{was.shape, element, nullptr};
+  if (element != elements_.size() || edges_.size() != linear.edges_.size() || faces_.size() != linear.faces_.size())
+    throw std::logic_error(who.text() + ": add_element_as needs the adopted entities and the elements in order");
+  if (canonical_nodes.size() != layout.slots.size())
+    throw std::invalid_argument(who.text() + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
+                                std::to_string(order_) + ", got " + std::to_string(canonical_nodes.size()));
+  Element el = was;
+  el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
+  interior_pool_.resize(interior_pool_.size() + static_cast<std::size_t>(layout.num_interior));
+  // Every other node must be the one the vertex or adopted entity already names: the same mesh
+  // add_element would build (it would find these entities and compare the same nodes).
+  for (std::size_t i = 0; i < layout.slots.size(); ++i) {
+    const NodeSlot& s = layout.slots[i];
+    NodeId stored = kNoNode;
+    switch (s.kind) {
+      case NodeSlot::Vertex: stored = el.vertices[s.local]; break;
+      case NodeSlot::Edge:
+        stored = edge_pool_[edges_[el.edges[s.local]].first_node + s.slot[(el.edge_reversed >> s.local) & 1u]];
+        break;
+      case NodeSlot::Face: stored = face_pool_[faces_[el.faces[s.local]].first_node + s.slot[el.face_orientation[s.local]]]; break;
+      case NodeSlot::Interior: interior_pool_[el.first_node + s.slot[0]] = canonical_nodes[i]; continue;
+    }
+    if (stored != canonical_nodes[i] || stored >= nodes_.size())
+      throw std::logic_error(who.text() + ": node " + std::to_string(canonical_nodes[i]) + " at canonical position " +
+                             std::to_string(i) + " is not the adopted entity's node " + std::to_string(stored));
+  }
+  elements_.push_back(el);
+  return element;
+}
+
 Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
                              std::size_t index) {
   const Named who{shape, index, nullptr};

@@ -129,6 +129,77 @@ TEST(CurveMesh, ElementsKeepTheirRegion) {
     EXPECT_EQ(curved.elements()[e].region, linear.elements()[e].region) << "element " << e;
 }
 
+// The curved mesh takes the linear one's edges and faces (Mesh::adopt_entities, add_element_as):
+// the mesh add_element builds from the same nodes and node lists, entity for entity (ids,
+// vertices, orientations, the nodes each owns), orders 1-4.
+TEST(CurveMesh, AdoptedEntitiesAreTheOnesAddElementBuilds) {
+  const mesh::Mesh linear = upper_layer(6, 3, 0.02, true);
+  for (int P = 1; P <= 4; ++P) {
+    SCOPED_TRACE("P = " + std::to_string(P));
+    const mesh::Mesh curved = curve_mesh(linear, *wing().model, {P, NodeSet::GLL, 50, 1e-10});
+    mesh::Mesh built(P, NodeSet::GLL);
+    for (mesh::NodeId v = 0; v < curved.num_nodes(); ++v) built.add_node(curved.node(v), curved.cad_attachment(v));
+    built.copy_regions_from(curved);
+    built.add_elements_of(curved, 0, curved.elements().size());
+    ASSERT_EQ(curved.edges().size(), built.edges().size());
+    ASSERT_EQ(curved.faces().size(), built.faces().size());
+    for (std::size_t e = 0; e < curved.edges().size(); ++e) {
+      EXPECT_EQ(curved.edges()[e].vertices, built.edges()[e].vertices);
+      EXPECT_EQ(curved.edge_nodes(e), built.edge_nodes(e)) << "edge " << e;
+      EXPECT_EQ(curved.find_edge(curved.edges()[e].vertices[1], curved.edges()[e].vertices[0]), static_cast<long>(e));
+    }
+    for (std::size_t f = 0; f < curved.faces().size(); ++f) {
+      EXPECT_EQ(curved.faces()[f].vertices, built.faces()[f].vertices);
+      EXPECT_EQ(curved.faces()[f].edges, built.faces()[f].edges);
+      EXPECT_EQ(curved.faces()[f].edge_reversed, built.faces()[f].edge_reversed);
+      EXPECT_EQ(curved.face_nodes(f), built.face_nodes(f)) << "face " << f;
+    }
+    for (std::size_t e = 0; e < curved.elements().size(); ++e) {
+      const mesh::Element &a = curved.elements()[e], &b = built.elements()[e];
+      EXPECT_EQ(a.edges, b.edges);
+      EXPECT_EQ(a.edge_reversed, b.edge_reversed);
+      EXPECT_EQ(a.faces, b.faces);
+      EXPECT_EQ(a.face_orientation, b.face_orientation);
+      EXPECT_EQ(a.region, b.region);
+      EXPECT_EQ(curved.element_nodes(e), built.element_nodes(e)) << "element " << e;
+    }
+    EXPECT_EQ(curved.edge_pool(), built.edge_pool());
+    EXPECT_EQ(curved.face_pool(), built.face_pool());
+    EXPECT_EQ(curved.interior_pool(), built.interior_pool());
+  }
+}
+
+// add_element_as refuses a node list that is not the adopted entities' (what add_element would
+// have refused, or silently taken as the first element's word).
+TEST(CurveMesh, AddElementAsRefusesAnotherEntitysNodes) {
+  const mesh::Mesh linear = upper_layer(4, 2, 0.02, false);
+  const mesh::Mesh curved = curve_mesh(linear, *wing().model, {3, NodeSet::GLL, 50, 1e-10});
+  std::vector<mesh::NodeId> edge_nodes, face_nodes;
+  for (std::size_t e = 0; e < curved.edges().size(); ++e)
+    for (std::size_t k = 1; k + 1 < curved.edge_nodes(e).size(); ++k) edge_nodes.push_back(curved.edge_nodes(e)[k]);
+  const std::size_t stride = 4;  // a quadrilateral's interior nodes at order 3
+  for (std::size_t f = 0; f < curved.faces().size(); ++f) {
+    const mesh::Face& face = curved.faces()[f];
+    const std::size_t count = face.num_vertices == 3 ? 1 : 4;
+    for (std::size_t k = 0; k < stride; ++k)
+      face_nodes.push_back(k < count ? curved.face_pool()[face.first_node + k] : mesh::kNoNode);
+  }
+  mesh::Mesh again(3, NodeSet::GLL);
+  for (mesh::NodeId v = 0; v < curved.num_nodes(); ++v) again.add_node(curved.node(v));
+  again.copy_regions_from(curved);
+  again.adopt_entities(linear, edge_nodes, face_nodes, stride);
+  EXPECT_THROW(again.adopt_entities(linear, edge_nodes, face_nodes, stride), std::logic_error);
+  std::vector<mesh::NodeId> ids = curved.element_nodes(0);
+  EXPECT_THROW(again.add_element_as(linear, 1, curved.element_nodes(1)), std::logic_error);  // not the next
+  std::swap(ids[6], ids[7]);  // two edge nodes of the first edge
+  EXPECT_THROW(again.add_element_as(linear, 0, ids), std::logic_error);
+  std::swap(ids[6], ids[7]);
+  EXPECT_EQ(again.add_element_as(linear, 0, ids), 0u);
+  EXPECT_EQ(again.element_nodes(0), curved.element_nodes(0));
+  mesh::Mesh wrong(3, NodeSet::GLL);
+  EXPECT_THROW(wrong.adopt_entities(linear, edge_nodes, face_nodes, 3), std::invalid_argument);
+}
+
 TEST(CurveMesh, SkinStaysStraightAndAllElementsAreValid) {
   const int P = 3;
   const mesh::Mesh linear = upper_layer(12, 2, 0.02, true);

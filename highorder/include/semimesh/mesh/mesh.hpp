@@ -121,6 +121,22 @@ class Mesh {
   /// here), in order, with their regions: the same elements, entities and errors; their node lists
   /// are read from `other` a block ahead on another thread.
   void add_elements_of(const Mesh& other, std::size_t first, std::size_t end);
+  /// Takes the edges and faces of `linear`, a mesh with the same vertices (same ids) whose elements
+  /// this mesh is about to get in the same order at its own order (ho::curve_mesh): the same
+  /// entity ids, vertices, reference orientations and lookups (no key is hashed again), each
+  /// entity owning the nodes given here: edge e the P - 1 of edge_nodes[e * (P - 1), ...) from its
+  /// vertices[0] to vertices[1], face f the first face_interior_count of face_nodes[f *
+  /// face_stride, ...) in the canonical order of its stored vertices. The elements then come from
+  /// add_element_as. Throws std::logic_error if this mesh has elements or entities already, and
+  /// std::invalid_argument if the node lists do not have those sizes.
+  void adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_nodes, const std::vector<NodeId>& face_nodes,
+                      std::size_t face_stride);
+  /// add_element of element `element` of `linear` (whose entities adopt_entities took), the next
+  /// one, from its full canonical node list at this mesh's order: its edges, faces and their
+  /// orientations are linear's element's; its interior nodes are appended. The list must give the
+  /// element's vertices and the adopted entities' nodes (else std::logic_error naming the element:
+  /// the same mesh add_element would build, or none). Returns its index.
+  std::size_t add_element_as(const Mesh& linear, std::size_t element, const std::vector<NodeId>& canonical_nodes);
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
   std::size_t add_boundary_face(const std::string& group, ho::Shape shape, const std::vector<NodeId>& canonical_nodes);
