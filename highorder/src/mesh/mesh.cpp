@@ -353,6 +353,9 @@ std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const 
   if (canonical_nodes.size() != layout.slots.size())
     throw std::invalid_argument(who.text() + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
                                 std::to_string(order_) + ", got " + std::to_string(canonical_nodes.size()));
+  if (was.region >= regions_.size())
+    throw std::invalid_argument(who.text() + ": region " + std::to_string(was.region) + " does not exist (" +
+                                std::to_string(regions_.size()) + " regions: copy_regions_from first)");
   Element el = was;
   el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
   interior_pool_.resize(interior_pool_.size() + static_cast<std::size_t>(layout.num_interior));

@@ -186,8 +186,11 @@ TEST(CurveMesh, AddElementAsRefusesAnotherEntitysNodes) {
   }
   mesh::Mesh again(3, NodeSet::GLL);
   for (mesh::NodeId v = 0; v < curved.num_nodes(); ++v) again.add_node(curved.node(v));
-  again.copy_regions_from(curved);
   again.adopt_entities(linear, edge_nodes, face_nodes, stride);
+  // The linear mesh's elements are in regions 1 and 2 ("wing_layer", "junction"): this one has only
+  // "fluid" until it copies them.
+  EXPECT_THROW(again.add_element_as(linear, 0, curved.element_nodes(0)), std::invalid_argument);
+  again.copy_regions_from(curved);
   EXPECT_THROW(again.adopt_entities(linear, edge_nodes, face_nodes, stride), std::logic_error);
   std::vector<mesh::NodeId> ids = curved.element_nodes(0);
   EXPECT_THROW(again.add_element_as(linear, 1, curved.element_nodes(1)), std::logic_error);  // not the next
