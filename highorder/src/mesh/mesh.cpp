@@ -356,25 +356,21 @@ std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const 
   if (was.region >= regions_.size())
     throw std::invalid_argument(who.text() + ": region " + std::to_string(was.region) + " does not exist (" +
                                 std::to_string(regions_.size()) + " regions: copy_regions_from first)");
+  for (NodeId id : canonical_nodes)
+    if (id >= nodes_.size()) throw std::invalid_argument(who.text() + ": unknown node id " + std::to_string(id));
   Element el = was;
-  el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
-  interior_pool_.resize(interior_pool_.size() + static_cast<std::size_t>(layout.num_interior));
+  el.first_node = append_interior(layout, canonical_nodes);
   // Every other node must be the one the vertex or adopted entity already names: the same mesh
   // add_element would build (it would find these entities and compare the same nodes).
-  for (std::size_t i = 0; i < layout.slots.size(); ++i) {
-    const NodeSlot& s = layout.slots[i];
-    NodeId stored = kNoNode;
-    switch (s.kind) {
-      case NodeSlot::Vertex: stored = el.vertices[s.local]; break;
-      case NodeSlot::Edge:
-        stored = edge_pool_[edges_[el.edges[s.local]].first_node + s.slot[(el.edge_reversed >> s.local) & 1u]];
-        break;
-      case NodeSlot::Face: stored = face_pool_[faces_[el.faces[s.local]].first_node + s.slot[el.face_orientation[s.local]]]; break;
-      case NodeSlot::Interior: interior_pool_[el.first_node + s.slot[0]] = canonical_nodes[i]; continue;
-    }
-    if (stored != canonical_nodes[i] || stored >= nodes_.size())
-      throw std::logic_error(who.text() + ": node " + std::to_string(canonical_nodes[i]) + " at canonical position " +
-                             std::to_string(i) + " is not the adopted entity's node " + std::to_string(stored));
+  thread_local std::vector<NodeId> stored;
+  assemble(el.shape, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(), el.face_orientation.data(),
+           el.first_node, stored);
+  const auto differs = std::mismatch(stored.begin(), stored.end(), canonical_nodes.begin());
+  if (differs.first != stored.end()) {
+    interior_pool_.resize(el.first_node);
+    throw std::logic_error(who.text() + ": node " + std::to_string(*differs.second) + " at canonical position " +
+                           std::to_string(differs.first - stored.begin()) + " is not the adopted entity's node " +
+                           std::to_string(*differs.first));
   }
   elements_.push_back(el);
   return element;
@@ -392,13 +388,16 @@ Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonic
   std::copy(canonical_nodes.begin(), canonical_nodes.begin() + nv, el.vertices.begin());
   link_entities(shape, canonical_nodes, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(),
                 el.face_orientation.data(), who);
-  const NodeLayout& layout = node_layout(shape, order_);
-  el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
+  el.first_node = append_interior(node_layout(shape, order_), canonical_nodes);
+  return el;
+}
+
+std::uint32_t Mesh::append_interior(const NodeLayout& layout, const std::vector<NodeId>& canonical_nodes) {
+  const auto first = static_cast<std::uint32_t>(interior_pool_.size());
   interior_pool_.resize(interior_pool_.size() + layout.num_interior);
   for (std::size_t i = 0; i < layout.slots.size(); ++i)
-    if (layout.slots[i].kind == NodeSlot::Interior)
-      interior_pool_[el.first_node + layout.slots[i].slot[0]] = canonical_nodes[i];
-  return el;
+    if (layout.slots[i].kind == NodeSlot::Interior) interior_pool_[first + layout.slots[i].slot[0]] = canonical_nodes[i];
+  return first;
 }
 
 std::size_t Mesh::add_boundary_face(const std::string& group, ho::Shape shape,

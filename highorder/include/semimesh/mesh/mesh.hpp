@@ -37,6 +37,8 @@
 
 namespace semimesh::mesh {
 
+struct NodeLayout;  // node_layout.hpp
+
 using NodeId = std::uint32_t;
 constexpr NodeId kNoNode = 0xffffffffu;
 
@@ -247,6 +249,9 @@ class Mesh {
   /// add_element's element (its entities found or created, its interior nodes appended), not yet
   /// stored; `index` names it in errors.
   Element linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region, std::size_t index);
+  /// Appends an element's interior nodes (its canonical list's Interior slots) to the interior
+  /// pool; returns where they start.
+  std::uint32_t append_interior(const NodeLayout& layout, const std::vector<NodeId>& canonical_nodes);
   /// Keeps the nodes `used` marks, in order (the `moved` ones at their new points); new id by old.
   std::vector<NodeId> compact_nodes(const std::vector<char>& used,
                                     const std::unordered_map<NodeId, Eigen::Vector3d>& moved);
