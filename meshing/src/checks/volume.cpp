@@ -1,5 +1,7 @@
 #include "semimesh/checks/volume.hpp"
 
+#include "face_nodes.hpp"
+
 #include "semimesh/ho/quadrature.hpp"
 
 #include "semimesh/ho/basis.hpp"
@@ -116,24 +118,20 @@ int exact_points_per_direction(ho::Shape shape, int order) {
   }
 }
 
-// A face's rule from the element's whole one at the face's points: the columns of the nodes whose
-// values and tangential derivatives are not zero there (up to the round-off of the basis: 1e-12).
-FaceRule face_rule(const ShapeRule& whole, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) {
-  const Eigen::MatrixXd d1 = whole.gradients[0] * t1[0] + whole.gradients[1] * t1[1] + whole.gradients[2] * t1[2];
-  const Eigen::MatrixXd d2 = whole.gradients[0] * t2[0] + whole.gradients[1] * t2[1] + whole.gradients[2] * t2[2];
+// A face's rule from the element's whole one at the face's points, kept for the element's nodes
+// on that face (`positions`: detail::nodes_on_faces, the conformity check's own).
+FaceRule face_rule(const ShapeRule& whole, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2,
+                   const std::vector<int>& positions) {
   FaceRule r;
+  r.positions = positions;
   r.weights = whole.weights;
-  for (int i = 0; i < whole.values.cols(); ++i) {
-    const double largest = std::max({whole.values.col(i).cwiseAbs().maxCoeff(), d1.col(i).cwiseAbs().maxCoeff(),
-                                     d2.col(i).cwiseAbs().maxCoeff()});
-    if (largest > 1e-12) r.positions.push_back(i);
-  }
-  const auto n = static_cast<Eigen::Index>(r.positions.size());
-  r.values.resize(whole.values.rows(), n), r.along_t1.resize(d1.rows(), n), r.along_t2.resize(d2.rows(), n);
+  const auto n = static_cast<Eigen::Index>(positions.size()), q = whole.values.rows();
+  r.values.resize(q, n), r.along_t1.resize(q, n), r.along_t2.resize(q, n);
   for (Eigen::Index k = 0; k < n; ++k) {
-    r.values.col(k) = whole.values.col(r.positions[k]);
-    r.along_t1.col(k) = d1.col(r.positions[k]);
-    r.along_t2.col(k) = d2.col(r.positions[k]);
+    const int i = positions[static_cast<std::size_t>(k)];
+    r.values.col(k) = whole.values.col(i);
+    r.along_t1.col(k) = t1[0] * whole.gradients[0].col(i) + t1[1] * whole.gradients[1].col(i) + t1[2] * whole.gradients[2].col(i);
+    r.along_t2.col(k) = t2[0] * whole.gradients[0].col(i) + t2[1] * whole.gradients[1].col(i) + t2[2] * whole.gradients[2].col(i);
   }
   return r;
 }
@@ -180,7 +178,7 @@ class RuleCache {
       Eigen::MatrixX3d points(q.points.rows(), 3);
       for (int i = 0; i < q.points.rows(); ++i) points.row(i) = (r0 + q.points(i, 0) * t1 + q.points(i, 1) * t2).transpose();
       q.points = points;
-      it = face_.emplace(key, face_rule(pull(basis, q), t1, t2)).first;
+      it = face_.emplace(key, face_rule(pull(basis, q), t1, t2, detail::nodes_on_faces(shape, order_, set_)[local])).first;
     }
     return it->second;
   }
