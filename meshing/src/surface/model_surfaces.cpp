@@ -5,11 +5,9 @@
 #include "semimesh/surface/error.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <map>
-#include <system_error>
-#include <thread>
+#include <mutex>
 #include <vector>
 
 namespace semimesh::surface {
@@ -66,40 +64,27 @@ SurfaceMeshes mesh_model_surfaces(const cad::Model& model, const SizeField& size
   equalise_strip_counts(model, size, options.structured_surfaces, options.curve_counts, curves);
   out.curves = CurveMeshes(std::move(curves));
   // Each surface is meshed on its own from the shared curves' nodes, so the surfaces go to every
-  // hardware thread when the model allows it (each mesh is the same whatever the threads). An
-  // error is the first failing surface's, as one after another; this thread reports the progress.
-  const auto num_surfaces = static_cast<std::size_t>(model.num_surfaces());
-  out.surfaces.resize(num_surfaces);
-  std::vector<std::exception_ptr> failed(num_surfaces);
-  std::atomic<std::size_t> next{0}, done{0};
-  const auto work = [&](bool reports) {
-    for (std::size_t s = next++; s < num_surfaces; s = next++) {
-      const int id = static_cast<int>(s);
-      if (reports && progress) progress((1.0 + static_cast<double>(done)) / items, model.surface(id).name());
-      try {
-        out.surfaces[s] = options.structured_surfaces.count(id)
-                              ? mesh_surface_structured(model, id, out.curves, options.split_structured)
-                              : mesh_surface(model, id, out.curves, size, options.surface);
-      } catch (...) {
-        failed[s] = std::current_exception();
-      }
-      ++done;
-    }
-  };
-  const std::size_t helpers =
-      model.thread_safe() ? std::min<std::size_t>(std::thread::hardware_concurrency(), num_surfaces) : 1;
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < helpers; ++t) {
+  // thread when the model allows it, each writing its own slot (each mesh is the same whatever the
+  // threads); the lowest failing surface's error is rethrown, as one after another.
+  const int num_surfaces = model.num_surfaces();
+  out.surfaces.resize(static_cast<std::size_t>(num_surfaces));
+  std::mutex mutex;
+  int done = 0, failed_at = num_surfaces;
+  std::exception_ptr error;
+#pragma omp parallel for schedule(dynamic, 1) if (model.thread_safe())
+  for (int s = 0; s < num_surfaces; ++s) {
     try {
-      pool.emplace_back(work, false);
-    } catch (const std::system_error&) {  // no thread to be had: the others do its share
-      break;
+      out.surfaces[static_cast<std::size_t>(s)] =
+          options.structured_surfaces.count(s) ? mesh_surface_structured(model, s, out.curves, options.split_structured)
+                                               : mesh_surface(model, s, out.curves, size, options.surface);
+      const std::lock_guard<std::mutex> lock(mutex);  // whichever thread ends a surface reports it
+      if (progress) progress((1.0 + ++done) / items, model.surface(s).name());
+    } catch (...) {  // may not leave the parallel region
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (s < failed_at) failed_at = s, error = std::current_exception();
     }
   }
-  work(true);
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  if (error) std::rethrow_exception(error);
   if (progress) progress(1.0, "");
   return out;
 }
