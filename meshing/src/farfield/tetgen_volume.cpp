@@ -117,6 +117,29 @@ struct TetgenRun {
   std::vector<std::array<int, 4>> tets;
 };
 
+// Reads exactly `bytes` into data; false when the pipe ends first.
+bool read_all(int fd, void* data, std::size_t bytes) {
+  char* p = static_cast<char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::read(fd, p, bytes);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    p += n;
+    bytes -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// Reads the pipe to its end.
+void drain(int fd) {
+  char chunk[4096];
+  for (;;) {
+    const ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+  }
+}
+
 void write_all(int fd, const void* data, std::size_t bytes) {
   const char* p = static_cast<const char*>(data);
   while (bytes > 0) {
@@ -155,9 +178,12 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
       header[0] = code;
     }
     write_all(pipe_fds[1], header, sizeof header);
-    if (header[0] == 0) {
+    if (header[0] == 0) {  // each array in one write: a call per tetrahedron cost a tenth of TetGen's time
       write_all(pipe_fds[1], out.pointlist, sizeof(REAL) * 3 * header[1]);
-      for (int t = 0; t < header[2]; ++t) write_all(pipe_fds[1], out.tetrahedronlist + t * out.numberofcorners, sizeof(int) * 4);
+      std::vector<int> corners(4 * static_cast<std::size_t>(header[2]));
+      for (int t = 0; t < header[2]; ++t)
+        std::copy_n(out.tetrahedronlist + t * out.numberofcorners, 4, corners.begin() + 4 * t);
+      write_all(pipe_fds[1], corners.data(), sizeof(int) * corners.size());
     }
     ::_exit(0);  // no atexit handlers or destructors of the parent's state in the child
   }
@@ -180,14 +206,19 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
     } catch (const std::system_error&) {  // no thread to be had: TetGen alone, as before
     }
   }
-  std::string bytes;
-  char chunk[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(pipe_fds[0], chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    bytes.append(chunk, static_cast<std::size_t>(n));
+  // The answer is read straight into its arrays; a short read (the child died) leaves it truncated.
+  int header[3] = {0, 0, 0};
+  const bool whole_header = read_all(pipe_fds[0], header, sizeof header);
+  TetgenRun run;
+  bool whole_answer = whole_header;
+  if (whole_header && header[0] == 0 && header[1] >= 0 && header[2] >= 0) {
+    run.points.resize(static_cast<std::size_t>(header[1]));
+    run.tets.resize(static_cast<std::size_t>(header[2]));
+    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double) && sizeof(std::array<int, 4>) == 4 * sizeof(int));
+    whole_answer = read_all(pipe_fds[0], run.points.data(), sizeof(double) * 3 * run.points.size()) &&
+                   read_all(pipe_fds[0], run.tets.data(), sizeof(int) * 4 * run.tets.size());
   }
+  drain(pipe_fds[0]);  // whatever else the child wrote: it must not block on a full pipe
   ::close(pipe_fds[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
@@ -195,38 +226,24 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
   stop = true;
   if (beside_run.valid()) beside_run.wait();
 
-  TetgenRun run;
   if (WIFSIGNALED(status)) {
+    run = TetgenRun();
     run.crashed = true;
     run.crash_description = std::string("TetGen crashed (signal ") + std::to_string(WTERMSIG(status)) + ", " +
                             strsignal(WTERMSIG(status)) + ")";
     return run;
   }
-  int header[3];
-  if (bytes.size() < sizeof header) {
+  if (!whole_header) {
     run.crashed = true;
     run.crash_description = "TetGen's process ended without an answer";
     return run;
   }
-  std::memcpy(header, bytes.data(), sizeof header);
   run.code = header[0];
   if (run.code != 0) return run;
-  const std::size_t expected = sizeof header + sizeof(double) * 3 * header[1] + sizeof(int) * 4 * header[2];
-  if (bytes.size() != expected) {
+  if (!whole_answer) {
+    run = TetgenRun();
     run.crashed = true;
     run.crash_description = "TetGen's answer is truncated";
-    return run;
-  }
-  run.points.resize(header[1]);
-  run.tets.resize(header[2]);
-  const char* p = bytes.data() + sizeof header;
-  for (auto& x : run.points) {
-    std::memcpy(x.data(), p, sizeof(double) * 3);
-    p += sizeof(double) * 3;
-  }
-  for (auto& t : run.tets) {
-    std::memcpy(t.data(), p, sizeof(int) * 4);
-    p += sizeof(int) * 4;
   }
   return run;
 }
