@@ -287,8 +287,8 @@ Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCa
   report(0.2, "mesh");
   {
     BesideThread beside_rebuild(beside, mesh);
-    mesh.replace_nodes(std::move(to), moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); },
-                       beside_rebuild.rebuilt());
+    out.entities = mesh.replace_nodes(std::move(to), moved, [&](double done) { report(0.2 + 0.8 * done, "mesh"); },
+                                      beside_rebuild.rebuilt());
   }
   out.mesh = std::move(mesh);
   return out;

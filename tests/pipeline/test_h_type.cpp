@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "highorder/mesh/same_entities.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -131,6 +133,9 @@ TEST(HTypeEndToEnd, CurvedAndSplitWakeRatiosAndGapMeasured) {
   const RunResult r = run_h("split", {"highorder.order=2", "boundary_layer.layers=4", "boundary_layer.ratio=2",
                                       "wake.ratio_end=1.3"});
   expect_valid_conforming(r, "order 2");
+  // The weld renamed and joined the split's entities (Mesh::replace_nodes): they are the ones a
+  // fresh build of the same node lists makes, id for id.
+  test::expect_same_entities(r.mesh, test::built_afresh(r.mesh));
   const std::vector<Eigen::Vector3d> wake = region_vertices(r.mesh, "wake");
 
   // The upper trailing-edge vertex nearest mid-span, its layer offset at the trailing edge.
@@ -263,6 +268,7 @@ TEST(HTypeEndToEnd, SharpTrailingEdgeWakeSheetSharedByBothSides) {
                                      "boundary_layer.ratio=2", "wake.ratio_end=1.3",
                                      "wake.direction=[" + std::to_string(d.x()) + ", " + std::to_string(d.y()) + ", 0.0]"});
     expect_valid_conforming(r, name);
+    test::expect_same_entities(r.mesh, test::built_afresh(r.mesh));  // the weld's, as in the blunt case
     int hexes = 0;
     const auto sheet = sheet_faces(r.mesh, d.normalized(), hexes);
     EXPECT_EQ(hexes, 4 * r.wake.hexes) << name;  // split into the wing's 4 layers

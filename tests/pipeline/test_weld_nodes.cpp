@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "highorder/mesh/same_entities.hpp"
+
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -198,6 +200,9 @@ TEST(WeldNodes, FarFieldElementFollowsTheMovedEdgeInwards) {
   EXPECT_TRUE(ho::certify_jacobian(ho::Shape::Hexahedron, kOrder, kSet, w.mesh.element_coordinates(0)).valid);
   // Moved: the inner node of the triangle face on the edge y = 0 and the pyramid's own.
   EXPECT_EQ(w.carried, 2u);
+  // The entities renamed and joined in place (the base snapped by slot), as a fresh build makes them.
+  EXPECT_EQ(w.entities, mesh::Mesh::EntityUpdate::Remapped);
+  test::expect_same_entities(w.mesh, test::built_afresh(w.mesh));
 }
 
 TEST(WeldNodes, FaceWhoseWeldedVerticesAreNoRotationOfAnothersIsAnInternalError) {

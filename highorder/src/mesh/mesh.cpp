@@ -2,6 +2,8 @@
 
 #include "semimesh/mesh/node_layout.hpp"
 
+#include "entity_keys.hpp"
+
 #include <algorithm>
 #include <future>
 #include <sstream>
@@ -10,6 +12,14 @@
 
 namespace semimesh::mesh {
 namespace {
+
+using detail::edge_key;
+using detail::face_edges_of;
+using detail::face_key;
+using detail::face_key_hash;
+using detail::FaceEdges;
+using detail::same_edge;
+using detail::same_face;
 
 // Elements whose old node lists replace_nodes holds at once, per block (two blocks: ~8 MB at order 4).
 constexpr std::size_t kRebuildBlock = 8192;
@@ -42,69 +52,8 @@ std::string point_text(const Eigen::Vector3d& x) {
   return out.str();
 }
 
-std::uint64_t edge_key(NodeId a, NodeId b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
-
-std::array<NodeId, 4> face_key(const NodeId* v, int n) {
-  std::array<NodeId, 4> key{kNoNode, kNoNode, kNoNode, kNoNode};
-  // Insertion sort of n <= 4 ids (std::sort trips -Warray-bounds on a 4-array prefix).
-  for (int i = 0; i < n; ++i) {
-    int j = i;
-    for (; j > 0 && key[j - 1] > v[i]; --j) key[j] = key[j - 1];
-    key[j] = v[i];
-  }
-  return key;
-}
-
-// Key comparisons written out: std::array's operator== calls memcmp for these few bytes, ~1 s of
-// the paper's case in the serial passes that build the entities.
-bool same_edge(const std::array<NodeId, 2>& a, const std::array<NodeId, 2>& b) { return a[0] == b[0] && a[1] == b[1]; }
-
-bool same_face(const std::array<NodeId, 4>& a, const std::array<NodeId, 4>& b) {
-  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2] && a[3] == b[3];
-}
-
-std::uint64_t face_key_hash(const std::array<NodeId, 4>& k) {
-  const std::uint64_t low = (static_cast<std::uint64_t>(k[0]) << 32) | k[1];
-  const std::uint64_t high = (static_cast<std::uint64_t>(k[2]) << 32) | k[3];
-  return IdTable::mix(IdTable::mix(low) ^ high);
-}
-
 std::string element_name(ho::Shape shape, std::size_t index) {
   return ho::to_string(shape) + " " + std::to_string(index);
-}
-
-// [shape][face][k]: the shape's local edge that is edge k of its face f (k in the order of the
-// face's own shape's edges): a new face takes its edges' ids from its element's, no lookup.
-using FaceEdges = std::vector<std::array<int, 4>>;
-
-FaceEdges face_edges(ho::Shape shape) {
-  FaceEdges table;
-  if (ho::dimension(shape) != 3) return table;
-  const auto& shape_edges = ho::edges(shape);
-  for (const std::vector<int>& f : ho::faces(shape)) {
-    const int n = static_cast<int>(f.size());
-    std::array<int, 4> row{-1, -1, -1, -1};
-    const auto& own = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
-    for (std::size_t k = 0; k < own.size(); ++k) {
-      const int a = f[own[k][0]], b = f[own[k][1]];
-      for (std::size_t e = 0; e < shape_edges.size(); ++e)
-        if ((shape_edges[e][0] == a && shape_edges[e][1] == b) || (shape_edges[e][0] == b && shape_edges[e][1] == a))
-          row[k] = static_cast<int>(e);
-    }
-    table.push_back(row);
-  }
-  return table;
-}
-
-const FaceEdges& face_edges_of(ho::Shape shape) {
-  static const std::array<FaceEdges, 7> tables = {
-      face_edges(ho::Shape::Segment),     face_edges(ho::Shape::Triangle), face_edges(ho::Shape::Quadrilateral),
-      face_edges(ho::Shape::Tetrahedron), face_edges(ho::Shape::Pyramid),  face_edges(ho::Shape::Prism),
-      face_edges(ho::Shape::Hexahedron)};
-  return tables[static_cast<int>(shape)];
 }
 
 }  // namespace
@@ -587,36 +536,66 @@ void Mesh::face_nodes(std::size_t face, std::vector<NodeId>& out) const {
 }
 
 std::vector<char> Mesh::referenced_nodes() const {
-  std::vector<char> used(nodes_.size(), 0);
-  std::vector<NodeId> ids;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    element_nodes(e, ids);
-    for (NodeId id : ids) used[id] = 1;
+  // An element's node list is its vertices, every node of its edges and faces and its interior
+  // nodes (assemble): marked through the entities, each pool entry once, without assembling lists.
+  std::vector<char> used(nodes_.size(), 0), edge_used(edges_.size(), 0), face_used(faces_.size(), 0);
+  for (const Element& el : elements_) {
+    for (int k = 0; k < ho::num_vertices(el.shape); ++k) used[el.vertices[k]] = 1;
+    for (std::size_t k = 0; k < ho::edges(el.shape).size(); ++k) edge_used[el.edges[k]] = 1;
+    for (std::size_t k = 0; k < ho::faces(el.shape).size(); ++k) face_used[el.faces[k]] = 1;
+    const int interior = node_layout(el.shape, order_).num_interior;
+    for (int k = 0; k < interior; ++k) used[interior_pool_[el.first_node + k]] = 1;
   }
-  for (std::size_t b = 0; b < boundary_.size(); ++b)
-    for (NodeId id : boundary_face_nodes(b)) used[id] = 1;
+  for (const BoundaryFace& bf : boundary_) {
+    for (int k = 0; k < ho::num_vertices(bf.shape); ++k) used[bf.vertices[k]] = 1;
+    for (std::size_t k = 0; k < ho::edges(bf.shape).size(); ++k) edge_used[bf.edges[k]] = 1;
+    face_used[bf.face] = 1;
+  }
+  const int per_edge = edge_interior_count(order_);
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    if (edge_used[e])
+      for (int k = 0; k < per_edge; ++k) used[edge_pool_[edges_[e].first_node + k]] = 1;
+  for (std::size_t f = 0; f < faces_.size(); ++f)
+    if (face_used[f])
+      for (int k = 0; k < face_interior_count(faces_[f].num_vertices, order_); ++k)
+        used[face_pool_[faces_[f].first_node + k]] = 1;
   return used;
 }
 
 std::vector<NodeId> Mesh::compact_nodes(const std::vector<char>& used,
                                         const std::unordered_map<NodeId, Eigen::Vector3d>& moved) {
   std::vector<NodeId> new_id(nodes_.size(), kNoNode);
-  std::unordered_map<NodeId, CadAttachment> cad;
   NodeId next = 0;
   for (NodeId id = 0; id < nodes_.size(); ++id) {
     if (!used[id]) continue;
-    const auto it = moved.find(id);
-    nodes_[next] = it == moved.end() ? nodes_[id] : it->second;  // next <= id: never a node still to be read
-    if (const auto c = cad_.find(id); c != cad_.end()) cad.emplace(next, c->second);
+    nodes_[next] = nodes_[id];  // next <= id: never a node still to be read
     new_id[id] = next++;
   }
   nodes_.resize(next);
+  // The few moved and attached nodes from their own maps: a lookup per node cost more than the copy.
+  for (const auto& [id, x] : moved)
+    if (id < new_id.size() && new_id[id] != kNoNode) nodes_[new_id[id]] = x;
+  std::unordered_map<NodeId, CadAttachment> cad;
+  cad.reserve(cad_.size());
+  for (const auto& [id, attachment] : cad_)
+    if (new_id[id] != kNoNode) cad.emplace(new_id[id], attachment);
   cad_ = std::move(cad);
   return new_id;
 }
 
-void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
-                         const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt) {
+Mesh::EntityUpdate Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                                       const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt) {
+  return replace_nodes_with(true, std::move(to), moved, done, rebuilt);
+}
+
+void Mesh::replace_nodes_by_rebuild(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                                    const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt) {
+  replace_nodes_with(false, std::move(to), moved, done, rebuilt);
+}
+
+Mesh::EntityUpdate Mesh::replace_nodes_with(bool remap, std::vector<NodeId> to,
+                                            const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                                            const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt) {
   for (const auto& [id, x] : moved)
     if (cad_attachment(id).kind != CadAttachment::None)
       throw std::invalid_argument("Mesh::replace_nodes: node " + std::to_string(id) +
@@ -624,6 +603,8 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
   if (to.size() != nodes_.size())
     throw std::invalid_argument("Mesh::replace_nodes: a map of " + std::to_string(to.size()) +
                                 " nodes for a mesh of " + std::to_string(nodes_.size()));
+  // The merges are found in the old ids, through the old lookups, before anything changes.
+  const EntityMerges merges = remap ? entity_merges(to) : EntityMerges{};
   std::vector<char> used(nodes_.size(), 0);
   {
     const std::vector<char> referenced = referenced_nodes();
@@ -645,6 +626,11 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
   edges_ = {}, faces_ = {}, boundary_ = {};
   edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
   edge_index_.clear(), face_index_.clear();
+  if (remap && remap_entities(old, to, merges)) {
+    if (rebuilt) rebuilt->store(elements_.size(), std::memory_order_release);
+    if (done) done(1.0);
+    return EntityUpdate::Remapped;
+  }
   // The rebuilt mesh has at most the old entities and pool entries: sized so, nothing regrows (a
   // vector that doubles holds its old and new copies at once).
   boundary_.reserve(old.boundary_.size());
@@ -681,6 +667,7 @@ void Mesh::replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId
     add_boundary_face(groups_[old.boundary_[b].group], old.boundary_[b].shape, ids);
   }
   if (done) done(1.0);
+  return EntityUpdate::Rebuilt;
 }
 
 std::size_t Mesh::memory_bytes() const {

@@ -4,6 +4,8 @@
 // Mesh::replace_nodes, which does it in place, gives the entities a fresh build would.
 #include "semimesh/mesh/compact.hpp"
 
+#include "highorder/mesh/same_entities.hpp"
+
 #include "semimesh/ho/element_type.hpp"
 
 #include <gtest/gtest.h>
@@ -25,6 +27,8 @@ using semimesh::ho::Shape;
 using semimesh::mesh::CadAttachment;
 using semimesh::mesh::Mesh;
 using semimesh::mesh::NodeId;
+using semimesh::test::built_afresh;
+using semimesh::test::expect_same_entities;
 
 /// Two order-2 tets sharing a face, a boundary triangle, and three orphans (one with a CAD tag).
 Mesh mesh_with_orphans() {
@@ -176,78 +180,40 @@ DoubledFace two_order3_hexes_with_a_doubled_face() {
   return d;
 }
 
-// The reference: a fresh mesh given the kept nodes in order and the welded node lists.
-Mesh built_afresh(const Mesh& m, const std::vector<NodeId>& to) {
-  std::vector<char> used(m.num_nodes(), 0);
-  for (std::size_t e = 0; e < m.elements().size(); ++e)
-    for (NodeId v : m.element_nodes(e)) used[to[v]] = 1;
-  Mesh out(m.order(), m.node_set());
-  std::vector<NodeId> new_id(m.num_nodes(), semimesh::mesh::kNoNode);
-  for (NodeId v = 0; v < m.num_nodes(); ++v)
-    if (used[v]) new_id[v] = out.add_node(m.node(v), m.cad_attachment(v));
-  out.copy_regions_from(m);
-  auto welded = [&](std::vector<NodeId> ids) {
-    for (NodeId& v : ids) v = new_id[to[v]];
-    return ids;
-  };
-  for (std::size_t e = 0; e < m.elements().size(); ++e)
-    out.add_element(m.elements()[e].shape, welded(m.element_nodes(e)), m.elements()[e].region);
-  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
-    out.add_boundary_face(m.group_names()[m.boundary_faces()[b].group], m.boundary_faces()[b].shape,
-                          welded(m.boundary_face_nodes(b)));
-  return out;
-}
-
-// Every entity, pool and element of `m` as in `expected`, and the lookups rebuilt.
-void expect_same_entities(const Mesh& m, const Mesh& expected) {
-  EXPECT_EQ(m.nodes(), expected.nodes());
-  EXPECT_EQ(m.edge_pool(), expected.edge_pool());
-  EXPECT_EQ(m.face_pool(), expected.face_pool());
-  EXPECT_EQ(m.interior_pool(), expected.interior_pool());
-  ASSERT_EQ(m.edges().size(), expected.edges().size());
-  for (std::size_t e = 0; e < m.edges().size(); ++e) {
-    EXPECT_EQ(m.edges()[e].vertices, expected.edges()[e].vertices) << e;
-    EXPECT_EQ(m.edges()[e].first_node, expected.edges()[e].first_node) << e;
-  }
-  ASSERT_EQ(m.faces().size(), expected.faces().size());
-  for (std::size_t f = 0; f < m.faces().size(); ++f) {
-    EXPECT_EQ(m.faces()[f].vertices, expected.faces()[f].vertices) << f;
-    EXPECT_EQ(m.faces()[f].edges, expected.faces()[f].edges) << f;
-    EXPECT_EQ(m.faces()[f].edge_reversed, expected.faces()[f].edge_reversed) << f;
-    EXPECT_EQ(m.faces()[f].first_node, expected.faces()[f].first_node) << f;
-  }
-  ASSERT_EQ(m.elements().size(), expected.elements().size());
-  for (std::size_t e = 0; e < m.elements().size(); ++e) {
-    EXPECT_EQ(m.elements()[e].vertices, expected.elements()[e].vertices) << e;
-    EXPECT_EQ(m.elements()[e].edges, expected.elements()[e].edges) << e;
-    EXPECT_EQ(m.elements()[e].edge_reversed, expected.elements()[e].edge_reversed) << e;
-    EXPECT_EQ(m.elements()[e].faces, expected.elements()[e].faces) << e;
-    EXPECT_EQ(m.elements()[e].face_orientation, expected.elements()[e].face_orientation) << e;
-    EXPECT_EQ(m.elements()[e].region, expected.elements()[e].region) << e;
-    EXPECT_EQ(m.element_nodes(e), expected.element_nodes(e)) << e;
-  }
-  ASSERT_EQ(m.boundary_faces().size(), expected.boundary_faces().size());
-  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
-    EXPECT_EQ(m.boundary_face_nodes(b), expected.boundary_face_nodes(b)) << b;
-  EXPECT_EQ(m.group_names(), expected.group_names());
-  for (std::size_t f = 0; f < m.faces().size(); ++f) {
-    const auto& v = m.faces()[f].vertices;
-    const std::vector<NodeId> vertices(v.begin(), v.begin() + m.faces()[f].num_vertices);
-    ASSERT_EQ(m.find_face(vertices), static_cast<long>(f)) << "the lookup tables are rebuilt too";
-  }
-}
-
 TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
   DoubledFace d = two_order3_hexes_with_a_doubled_face();
   const Mesh expected = built_afresh(d.mesh, d.to);
   ASSERT_EQ(d.mesh.faces().size(), 12u);
-  d.mesh.replace_nodes(d.to);
+  EXPECT_EQ(d.mesh.replace_nodes(d.to), Mesh::EntityUpdate::Remapped);
   const Mesh& m = d.mesh;
   EXPECT_EQ(m.num_nodes(), 2u * 64 - 16);
   EXPECT_EQ(m.faces().size(), 11u);
   ASSERT_EQ(m.elements().size(), 2u);
   ASSERT_EQ(m.boundary_faces().size(), 1u);
   expect_same_entities(m, expected);
+}
+
+// The weld's map the other way round: the first hex's x = 1 face onto the second's. The first
+// element then names the joined face through the entity that goes, in its own frame: the face
+// takes that frame (the rebuild meets it there first) and the second hex's code is found anew.
+TEST(Compact, ReplacingNodesOntoALaterElementsTakesTheFirstUsersFrame) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  std::vector<NodeId> other_way(d.to.size());
+  for (NodeId v = 0; v < other_way.size(); ++v) other_way[v] = v;
+  for (NodeId v = 0; v < d.to.size(); ++v)
+    if (d.to[v] != v) other_way[d.to[v]] = v;
+  const Mesh expected = built_afresh(d.mesh, other_way);
+  EXPECT_EQ(d.mesh.replace_nodes(other_way), Mesh::EntityUpdate::Remapped);
+  EXPECT_EQ(d.mesh.faces().size(), 11u);
+  expect_same_entities(d.mesh, expected);
+}
+
+// The reference itself, against the fresh build, on the same two cases.
+TEST(Compact, ReplacingNodesByRebuildGivesTheEntitiesOfAFreshBuild) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  const Mesh expected = built_afresh(d.mesh, d.to);
+  d.mesh.replace_nodes_by_rebuild(d.to);
+  expect_same_entities(d.mesh, expected);
 }
 
 // Order-2 tets, six to a unit cube, on n x n x n cubes, every node made twice (the second copies
@@ -311,12 +277,36 @@ TEST(Compact, ReplacingNodesInPlaceOverManyBlocksGivesTheEntitiesOfAFreshBuild) 
   ASSERT_GT(t.mesh.elements().size(), 30000u) << "several of replace_nodes' blocks";
   const Mesh expected = built_afresh(t.mesh, t.to);
   std::vector<double> reported;
-  t.mesh.replace_nodes(t.to, {}, [&](double f) { reported.push_back(f); });
+  EXPECT_EQ(t.mesh.replace_nodes(t.to, {}, [&](double f) { reported.push_back(f); }), Mesh::EntityUpdate::Remapped);
   EXPECT_EQ(t.mesh.num_nodes(), t.first.size());
   expect_same_entities(t.mesh, expected);
   ASSERT_FALSE(reported.empty());
   EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
   EXPECT_EQ(reported.back(), 1.0);
+}
+
+TEST(Compact, ReplacingNodesByRebuildOverManyBlocksGivesTheEntitiesOfAFreshBuild) {
+  ManyTets t = many_doubled_tets(6);
+  const Mesh expected = built_afresh(t.mesh, t.to);
+  t.mesh.replace_nodes_by_rebuild(t.to);
+  expect_same_entities(t.mesh, expected);
+}
+
+// Only the vertices welded: the joined edges' and faces' inner nodes are other ids at the same
+// places, which the rebuild accepts (the first element's stay, the others' are left unused); the
+// remap does not guess, and the rebuild runs.
+TEST(Compact, JoinedEntitiesWithOtherInnerNodesAreRebuilt) {
+  ManyTets t = many_doubled_tets(4);
+  std::vector<NodeId> vertices_only(t.to.size());
+  for (NodeId v = 0; v < vertices_only.size(); ++v) vertices_only[v] = v;
+  for (std::size_t e = 0; e < t.mesh.elements().size(); ++e)
+    for (int k = 0; k < 4; ++k) {
+      const NodeId v = t.mesh.elements()[e].vertices[k];
+      vertices_only[v] = t.to[v];
+    }
+  const Mesh expected = built_afresh(t.mesh, vertices_only);
+  EXPECT_EQ(t.mesh.replace_nodes(vertices_only), Mesh::EntityUpdate::Rebuilt);
+  expect_same_entities(t.mesh, expected);
 }
 
 // Another thread reading each element as soon as `rebuilt` passes it sees the node list and points

@@ -205,22 +205,34 @@ class Mesh {
   // ---- renumbering ----------------------------------------------------------------------------
   /// Whether some element or boundary face uses node v: [num_nodes()].
   std::vector<char> referenced_nodes() const;
+  /// How replace_nodes brought the edges and faces up to date.
+  enum class EntityUpdate {
+    Remapped,  ///< renamed, merged and renumbered in linear passes (remap_entities.cpp)
+    Rebuilt,   ///< rebuilt element by element (replace_nodes_by_rebuild): a case the remap does not take
+  };
   /// In place, what mesh::with_nodes_replaced gives (compact.hpp): every node id v of an element or
   /// boundary face replaced by to[v] ([num_nodes()]), only the nodes then referenced kept, in their
   /// relative order with their CAD attachments (those listed in `moved`, by old id, at the listed
-  /// points), and the edges, faces and pools rebuilt in element order as add_element builds them.
-  /// The nodes and elements are held once (each element rebuilt in its place); the old edges, faces
-  /// and pools only until the new ones are built. `to` is taken by
-  /// value: a caller that moves it in holds no second map of the nodes.
+  /// points), and the edges, faces and pools exactly as add_element would build them in element
+  /// order (replace_nodes_by_rebuild, the reference, does so). The old entities are renamed and the
+  /// few whose vertices were merged join the entity holding their new vertices; where that would
+  /// not give the rebuild's mesh (merged entities with different inner nodes, an element naming a
+  /// vertex twice, a twisted face), the rebuild runs instead and gives its result or its error.
+  /// The nodes and elements are held once; the old edges, faces and pools only until the new ones
+  /// are built. `to` is taken by value: a caller that moves it in holds no second map of the nodes.
   /// Throws std::invalid_argument, leaving the mesh unchanged, if `to` has the wrong size or a
   /// listed node is attached to the CAD; the exceptions of add_element (two elements giving one
   /// entity different nodes) leave it unusable. `done` (optional) receives the fraction of
-  /// elements rebuilt, about a hundred times. `rebuilt` (optional) is set (release) to the number
-  /// of elements rebuilt after each one: their node lists and the nodes' positions no longer
-  /// change, and another thread may read them (element_nodes, element_coordinates, node) while
-  /// the rebuild goes on.
-  void replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
-                     const std::function<void(double)>& done = {}, std::atomic<std::size_t>* rebuilt = nullptr);
+  /// elements done, up to a hundred times. `rebuilt` (optional) is set (release) to the number
+  /// of elements done: their node lists and the nodes' positions no longer change, and another
+  /// thread may read them (element_nodes, element_coordinates, node) while the rest goes on.
+  EntityUpdate replace_nodes(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
+                             const std::function<void(double)>& done = {}, std::atomic<std::size_t>* rebuilt = nullptr);
+  /// replace_nodes by the rebuild alone: each element's renamed node list linked anew, as
+  /// add_element does (the reference the remap is tested against).
+  void replace_nodes_by_rebuild(std::vector<NodeId> to, const std::unordered_map<NodeId, Eigen::Vector3d>& moved = {},
+                                const std::function<void(double)>& done = {},
+                                std::atomic<std::size_t>* rebuilt = nullptr);
 
   /// Bytes held by the mesh (nodes, entities, pools, lookup tables; hash tables estimated).
   std::size_t memory_bytes() const;
@@ -252,6 +264,20 @@ class Mesh {
   /// Appends an element's interior nodes (its canonical list's Interior slots) to the interior
   /// pool; returns where they start.
   std::uint32_t append_interior(const NodeLayout& layout, const std::vector<NodeId>& canonical_nodes);
+  /// Old edge and face ids whose vertices, renamed by `to` (old ids onto old ids), are those of
+  /// another entity: the one they join. `collapsed`: an entity whose renamed vertices repeat.
+  struct EntityMerges {
+    std::unordered_map<std::uint32_t, std::uint32_t> edges, faces;
+    bool collapsed = false;
+  };
+  EntityMerges entity_merges(const std::vector<NodeId>& to) const;
+  /// replace_nodes' remap of the entities moved into `old` (its edges, faces, pools and boundary
+  /// faces; this mesh's elements still name them), `to`: old node ids onto new. False, with
+  /// this mesh's elements and boundary untouched, where the result would not be the rebuild's.
+  bool remap_entities(const Mesh& old, const std::vector<NodeId>& to, const EntityMerges& merges);
+  EntityUpdate replace_nodes_with(bool remap, std::vector<NodeId> to,
+                                  const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
+                                  const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt);
   /// Keeps the nodes `used` marks, in order (the `moved` ones at their new points); new id by old.
   std::vector<NodeId> compact_nodes(const std::vector<char>& used,
                                     const std::unordered_map<NodeId, Eigen::Vector3d>& moved);

@@ -17,6 +17,7 @@ struct Welded {
   std::size_t merged = 0;     ///< nodes replaced by another (vertices, inner nodes of welded entities)
   double largest_move = 0.0;  ///< farthest an inner node of a welded entity was from the one it became
   std::size_t carried = 0;    ///< face and element inner nodes re-placed around moved edges
+  mesh::Mesh::EntityUpdate entities = mesh::Mesh::EntityUpdate::Remapped;  ///< how (Mesh::replace_nodes)
 };
 
 /// `mesh` (taken by value: moved in, it is renumbered in place, never copied) in which every element vertex that lies within `tolerance` of a vertex seen
