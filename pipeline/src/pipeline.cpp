@@ -606,9 +606,11 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
   std::vector<ho::InheritedBounds> certified_behind;  // beside the weld's rebuild, for the checks
   if (weld)
     split.mesh = stage("weld", progress, result, [&](const ProgressCallback& report) {
-      // The weld rebuilds the entities on one thread: the other certifies, behind that rebuild, the
-      // elements the split gave no bounds (the wake's pieces, the curved unsplit ones) as the checks
-      // will; the checks take those whose nodes are then still the same (fingerprints).
+      // Where the weld rebuilds the entities (on one thread), the other core certifies behind that
+      // rebuild the elements the split gave no bounds (the wake's pieces, the curved unsplit ones)
+      // as the checks will; the checks take those whose nodes are then still the same
+      // (fingerprints). A remap (the usual case) publishes the elements only at its end: the
+      // checks then certify them, on every core.
       const std::vector<std::size_t> wanted = curved_without_bounds(split.mesh, split.inherited);
       const double floor = config.checks.min_scaled_jacobian;
       // Depth 0: the checks take only bounds decided by the first expansion (certify_mesh), which

@@ -29,16 +29,18 @@ struct Welded {
 /// edge or face take the harmonic extension of their new boundary, as ho::curve_mesh gives them
 /// (ho::extend_inward), so a far-field element follows the split's curved edge. Only the nodes
 /// some element or boundary face then uses are kept (in their relative order, with their CAD
-/// attachments: one rebuild of the entities, as Mesh::replace_nodes).
+/// attachments; the entities renamed and joined in place, or rebuilt where that would differ:
+/// Mesh::replace_nodes, whose answer is Welded::entities).
 /// Throws std::logic_error (an internal error) naming both faces when a face's welded vertices
 /// are another face's in no rotation or reflection, and std::invalid_argument (from
 /// Mesh::add_element) when two elements would then give one edge or face different nodes.
-/// `progress`: the search (steps "vertices", "edges and faces", "inwards"), then the rebuild
-/// ("mesh"), from the calling thread. `beside` (optional): work for the core the rebuild leaves
-/// idle, run on a thread of its own at the lowest priority with the mesh being rebuilt, the number
-/// of its elements rebuilt so far (Mesh::replace_nodes' `rebuilt`) and a flag set once the rebuild
-/// is over (or failed), after which it must not read the mesh; the weld waits for it before it
-/// returns. Its exceptions are dropped: what it did not do, the stages after do.
+/// `progress`: the search (steps "vertices", "edges and faces", "inwards"), then the renumbering
+/// ("mesh"), from the calling thread. `beside` (optional): work for the core a rebuild leaves
+/// idle, run on a thread of its own at the lowest priority with the mesh being renumbered, the
+/// number of its elements done so far (Mesh::replace_nodes' `rebuilt`: element by element in a
+/// rebuild, all at once at the end of a remap) and a flag set once the renumbering is over (or
+/// failed), after which it must not read the mesh; the weld waits for it before it returns. Its
+/// exceptions are dropped: what it did not do, the stages after do.
 using BesideRebuild =
     std::function<void(const mesh::Mesh&, const std::atomic<std::size_t>& rebuilt, const std::atomic<bool>& stop)>;
 Welded weld_coincident_nodes(mesh::Mesh mesh, double tolerance, const ProgressCallback& progress = {},
