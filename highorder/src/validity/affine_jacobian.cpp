@@ -14,11 +14,21 @@ namespace semimesh::ho {
 namespace {
 
 const Eigen::MatrixX3d& cached_reference_nodes(Shape shape, int order, NodeSet set) {
+  // The last one this thread asked for first: the checks ask for the same one element after
+  // element, on every thread, and a shared lock per element made them queue.
+  thread_local struct {
+    Shape shape;
+    int order = 0;
+    NodeSet set;
+    const Eigen::MatrixX3d* nodes = nullptr;
+  } last;
+  if (last.nodes && last.shape == shape && last.order == order && last.set == set) return *last.nodes;
   static std::mutex mutex;
   static std::map<std::tuple<Shape, int, NodeSet>, std::unique_ptr<Eigen::MatrixX3d>> cache;
   std::lock_guard<std::mutex> lock(mutex);
   auto& slot = cache[{shape, order, set}];
   if (!slot) slot = std::make_unique<Eigen::MatrixX3d>(reference_nodes(shape, order, set));
+  last.shape = shape, last.order = order, last.set = set, last.nodes = slot.get();  // entries never move
   return *slot;
 }
 

@@ -237,7 +237,12 @@ double reference_volume(ho::Shape shape) {
 // three products (q, nodes) x (nodes, 3 n): one product per batch instead of one per element, which
 // spends its time packing the left matrix.
 double quadrature_volume(const Eigen::Ref<const Eigen::MatrixXd>& x, long n, const ShapeRule& rule) {
-  const Eigen::MatrixXd d_xi = rule.gradients[0] * x, d_eta = rule.gradients[1] * x, d_zeta = rule.gradients[2] * x;
+  // Per-thread products, reused batch after batch: fresh ones of this size were mapped and
+  // faulted in anew each time (a third of the volume's time).
+  thread_local Eigen::MatrixXd d_xi, d_eta, d_zeta;
+  d_xi.noalias() = rule.gradients[0] * x;
+  d_eta.noalias() = rule.gradients[1] * x;
+  d_zeta.noalias() = rule.gradients[2] * x;
   double volume = 0.0;
   for (long i = 0; i < n; ++i)
     for (int q = 0; q < rule.weights.size(); ++q) {
@@ -253,18 +258,21 @@ double quadrature_volume(const Eigen::Ref<const Eigen::MatrixXd>& x, long n, con
 // derivatives), and each such (base nodes, 3 n) matrix then across the base at every base point.
 double factored_volume(const Eigen::Ref<const Eigen::MatrixXd>& x, long n, const ProductRule& rule) {
   const long nt = rule.base_nodes;
-  Eigen::MatrixXd by_line(nt * 3 * n, rule.line_nodes);
+  thread_local Eigen::MatrixXd by_line, values, derivatives, d_xi, d_eta, d_zeta;  // as quadrature_volume's
+  by_line.resize(nt * 3 * n, rule.line_nodes);
   for (long i = 0; i < n; ++i)
     for (int l = 0; l < rule.line_nodes; ++l)
       for (long t = 0; t < nt; ++t)
         for (int c = 0; c < 3; ++c) by_line(t + nt * (c + 3 * i), l) = x(rule.node_of[static_cast<std::size_t>(t + nt * l)], 3 * i + c);
-  const Eigen::MatrixXd values = by_line * rule.line_values_t, derivatives = by_line * rule.line_derivatives_t;
+  values.noalias() = by_line * rule.line_values_t;
+  derivatives.noalias() = by_line * rule.line_derivatives_t;
   double volume = 0.0;
   for (int b = 0; b < rule.line_weights.size(); ++b) {
     const Eigen::Map<const Eigen::MatrixXd> at_b(values.col(b).data(), nt, 3 * n);
     const Eigen::Map<const Eigen::MatrixXd> d_at_b(derivatives.col(b).data(), nt, 3 * n);
-    const Eigen::MatrixXd d_xi = rule.base_gradients[0] * at_b, d_eta = rule.base_gradients[1] * at_b,
-                          d_zeta = rule.base_values * d_at_b;
+    d_xi.noalias() = rule.base_gradients[0] * at_b;
+    d_eta.noalias() = rule.base_gradients[1] * at_b;
+    d_zeta.noalias() = rule.base_values * d_at_b;
     for (long i = 0; i < n; ++i)
       for (int a = 0; a < rule.base_weights.size(); ++a) {
         const Eigen::Vector3d u = d_xi.block<1, 3>(a, 3 * i).transpose(), v = d_eta.block<1, 3>(a, 3 * i).transpose(),
@@ -287,11 +295,16 @@ struct BatchRule {
 // straight-sided far-field tet) has the constant det J = det A, so its integral is det A times the
 // reference volume, with no quadrature.
 double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const BatchRule& rule) {
-  Eigen::MatrixXd x(rule.full->gradients[0].cols(), 3 * static_cast<long>(batch.elements.size()));
-  long integrated = 0;  // elements in x: element i in columns 3i..3i+2
+  thread_local Eigen::MatrixXd x;  // elements in x: element i in columns 3i..3i+2
+  thread_local Eigen::MatrixX3d nodes;
+  thread_local std::vector<mesh::NodeId> ids;
+  x.resize(rule.full->gradients[0].cols(), 3 * static_cast<long>(batch.elements.size()));
+  long integrated = 0;
   double volume = 0.0;
   for (std::size_t e : batch.elements) {
-    const Eigen::MatrixX3d nodes = mesh.element_coordinates(e);
+    mesh.element_nodes(e, ids);
+    nodes.resize(static_cast<Eigen::Index>(ids.size()), 3);
+    for (std::size_t k = 0; k < ids.size(); ++k) nodes.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
     ho::JacobianBounds affine;
     if (rule.closed_form && ho::affine_jacobian(batch.shape, mesh.order(), mesh.node_set(), nodes, affine))
       volume += affine.min_lower * reference_volume(batch.shape);
