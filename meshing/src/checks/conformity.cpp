@@ -60,12 +60,12 @@ std::vector<Occurrence> collect_occurrences(const mesh::Mesh& mesh) {
 
 int key_size(const std::array<NodeId, 4>& key) { return key[3] == mesh::kNoNode ? 3 : 4; }
 
-// Vertex ids of an element's local face in the element's (outward) order.
-std::vector<unsigned> element_face_cycle(const mesh::Mesh& mesh, const Occurrence& o) {
+// Vertex ids of an element's local face in the element's (outward) order, into `cycle` (a buffer
+// of the caller's: this runs for both uses of every interior face).
+void element_face_cycle(const mesh::Mesh& mesh, const Occurrence& o, std::vector<unsigned>& cycle) {
   const mesh::Element& element = mesh.elements()[o.owner];
-  std::vector<unsigned> cycle;
+  cycle.clear();
   for (int v : ho::faces(element.shape)[o.local]) cycle.push_back(element.vertices[v]);
-  return cycle;
 }
 
 // All node ids (vertices and high-order nodes) a user gives the face, sorted, into `nodes`. The
@@ -82,7 +82,8 @@ void face_node_set(const mesh::Mesh& mesh, const Occurrence& o, std::vector<Node
 
 // Classifies the uses of one face; adds at most one problem per face (the most severe).
 void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses, ConformityResult& result) {
-  std::vector<const Occurrence*> elements, boundary;
+  thread_local std::vector<const Occurrence*> elements, boundary;  // per face: no allocation each
+  elements.clear(), boundary.clear();
   for (const Occurrence* o : uses) (o->boundary ? boundary : elements).push_back(o);
 
   auto report = [&](FaceProblem::Kind kind) {
@@ -113,8 +114,10 @@ void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses
   if (elements.empty()) return report(Kind::BoundaryWithoutElement);
   if (nodes_differ()) return report(Kind::DifferentNodes);
   if (elements.size() == 2) {
-    if (detail::same_cycle(element_face_cycle(mesh, *elements[0]), element_face_cycle(mesh, *elements[1])))
-      return report(Kind::SameSide);
+    thread_local std::vector<unsigned> one, other;
+    element_face_cycle(mesh, *elements[0], one);
+    element_face_cycle(mesh, *elements[1], other);
+    if (detail::same_cycle(one, other)) return report(Kind::SameSide);
     if (!boundary.empty()) return report(Kind::BoundaryOnInteriorFace);
     ++result.interior_faces;
     return;
@@ -155,8 +158,18 @@ std::string FaceProblem::describe(const mesh::Mesh& mesh) const {
 
 namespace {
 
+// (key, boundary, owner, local) in lexicographic order, as three 64-bit words: the sort's
+// comparisons, millions of them, no longer walk the key's array id by id.
 bool occurs_before(const Occurrence& a, const Occurrence& b) {
-  return std::tie(a.key, a.boundary, a.owner, a.local) < std::tie(b.key, b.boundary, b.owner, b.local);
+  const auto word = [](NodeId high, NodeId low) { return (static_cast<std::uint64_t>(high) << 32) | low; };
+  const auto use = [](const Occurrence& o) {
+    return (static_cast<std::uint64_t>(o.boundary) << 40) | (static_cast<std::uint64_t>(o.owner) << 8) | o.local;
+  };
+  const std::uint64_t a0 = word(a.key[0], a.key[1]), b0 = word(b.key[0], b.key[1]);
+  if (a0 != b0) return a0 < b0;
+  const std::uint64_t a1 = word(a.key[2], a.key[3]), b1 = word(b.key[2], b.key[3]);
+  if (a1 != b1) return a1 < b1;
+  return use(a) < use(b);
 }
 
 // Runs part(k) for k in [0, parts) on threads of their own, part 0 on this one.
