@@ -707,7 +707,8 @@ double curved_wall_volume_gap(const cad::Surface& wall, const surface::SurfaceMe
 
 // The checks' serial passes: conformity, and the element volume against box minus body. They read
 // result.mesh and write result.conformity, result.volume and result.expected_volume_tolerance only.
-void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces, RunResult& result) {
+void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces,
+                           const std::vector<ho::InheritedBounds>& inherited, RunResult& result) {
   result.conformity = checks::check_conformity(result.mesh);
   std::vector<const surface::SurfaceMesh*> body, box;
   for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
@@ -720,8 +721,9 @@ void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surf
   if (curved_far_field) box.clear();
   const cad::Surface& wall = g.model->surface(g.roles.wall);
   const surface::SurfaceMesh& wall_mesh = surfaces.surfaces[g.roles.wall];
-  result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh)
-                                   : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh);
+  // The split pieces' integrals come with their inherited bounds (from their coarse element's det J).
+  result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh, &inherited)
+                                   : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh, &inherited);
   // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
   // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
   double gap = 0.0;
@@ -738,7 +740,7 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     // the serial passes no longer leave a core idle (the same figures, in less wall time).
     if (report) report(0.0, "conformity, volume and certification");
     std::future<void> serial_checks =
-        std::async(std::launch::async, [&] { conformity_and_volume(g, surfaces, result); });
+        std::async(std::launch::async, [&] { conformity_and_volume(g, surfaces, inherited, result); });
     std::exception_ptr validity_error, geometric_error;
     try {
       result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,

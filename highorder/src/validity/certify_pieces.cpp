@@ -31,8 +31,13 @@ double box_determinant(Shape shape, const ReferenceBox& box) {
   return det;
 }
 
-/// What certify_jacobian_by_subdivision returns when the whole element is one conclusive leaf.
-std::optional<JacobianBounds> leaf_bounds(const BernsteinPolynomial& det_j) {
+/// The reference element's volume (Gmsh's: the unit triangle times [-1, 1]; [-1, 1]^3).
+double reference_volume(Shape shape) { return shape == Shape::Prism ? 1.0 : 8.0; }
+
+/// What certify_jacobian_by_subdivision returns when the whole element is one conclusive leaf, and
+/// its volume: every Bernstein function of the piece's degrees has the same integral over the
+/// reference element, the reference volume over their number.
+std::optional<JacobianBounds> leaf_bounds(Shape shape, const BernsteinPolynomial& det_j) {
   const Eigen::VectorXd& c = det_j.coefficients();
   const double lowest = c.minCoeff(), highest = c.maxCoeff();
   if (!(lowest > kPieceMargin * highest)) return std::nullopt;  // near zero: the piece bisects itself
@@ -42,6 +47,7 @@ std::optional<JacobianBounds> leaf_bounds(const BernsteinPolynomial& det_j) {
   b.min_upper = std::numeric_limits<double>::infinity();
   for (int id : det_j.layout().corners) b.min_upper = std::min(b.min_upper, c[id]);
   b.valid = b.proven = true;
+  b.integral = c.mean() * reference_volume(shape);
   return b;
 }
 
@@ -64,6 +70,7 @@ std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order
       if (!(det > 0.0)) continue;  // an inverted element's pieces: certify them themselves
       JacobianBounds b = affine;
       b.min_lower = b.min_upper = b.max_upper = det;
+      b.integral = det * reference_volume(shape);
       out[k] = b;
     }
     return out;
@@ -88,7 +95,7 @@ std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order
     std::vector<BernsteinPolynomial> pieces = whole.restricted_to_each(d, intervals);
     for (std::size_t i = 0; i < along.size(); ++i) {
       pieces[i] *= box_determinant(shape, boxes[along[i]]);
-      out[along[i]] = leaf_bounds(pieces[i]);
+      out[along[i]] = leaf_bounds(shape, pieces[i]);
     }
   }
   for (std::size_t k = 0; k < boxes.size(); ++k) {
@@ -99,7 +106,7 @@ std::vector<std::optional<JacobianBounds>> certify_pieces(Shape shape, int order
     for (int d = first_direction; d < 3; ++d)
       if (cut(k, d)) piece = piece.restricted(d, t[k][d][0], t[k][d][1]);
     piece *= box_determinant(shape, boxes[k]);
-    out[k] = leaf_bounds(piece);
+    out[k] = leaf_bounds(shape, piece);
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <thread>
@@ -294,7 +295,15 @@ struct BatchRule {
 // Sum over the batch of the integral of det J. An affine element (ho::affine_jacobian: every
 // straight-sided far-field tet) has the constant det J = det A, so its integral is det A times the
 // reference volume, with no quadrature.
-double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const BatchRule& rule) {
+// Integrals known ahead (inherited bounds): by element, NaN where none, with the fingerprint the
+// element had then.
+struct KnownIntegrals {
+  std::vector<double> integral;
+  std::vector<std::uint64_t> fingerprint;
+};
+
+double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const BatchRule& rule,
+                    const KnownIntegrals& known, std::size_t& taken) {
   thread_local Eigen::MatrixXd x;  // elements in x: element i in columns 3i..3i+2
   thread_local Eigen::MatrixX3d nodes;
   thread_local std::vector<mesh::NodeId> ids;
@@ -302,6 +311,12 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
   long integrated = 0;
   double volume = 0.0;
   for (std::size_t e : batch.elements) {
+    if (!known.integral.empty() && std::isfinite(known.integral[e]) &&
+        ho::element_fingerprint(mesh, e) == known.fingerprint[e]) {
+      volume += known.integral[e];
+      ++taken;
+      continue;
+    }
     mesh.element_nodes(e, ids);
     nodes.resize(static_cast<Eigen::Index>(ids.size()), 3);
     for (std::size_t k = 0; k < ids.size(); ++k) nodes.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
@@ -417,23 +432,35 @@ double boundary_flux(const mesh::Mesh& mesh, RuleCache& rules, Keep keep, Field 
 std::size_t volume_workers() { return std::max<std::size_t>(1, std::thread::hardware_concurrency()); }
 
 // mesh_volume on `threads` threads; 1: the reference, every sum a plain loop on this thread.
-MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t threads) {
+MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t threads,
+                          const std::vector<ho::InheritedBounds>* inherited) {
   RuleCache rules(mesh.order(), mesh.node_set(), rule);
   MeshVolume result;
   const std::vector<ElementBatch> batches = element_batches(mesh);
   std::vector<BatchRule> batch_rules;  // looked up before the threads: the cache is not thread-safe
   for (const ElementBatch& batch : batches)
     batch_rules.push_back({&rules.volume(batch.shape), rules.product(batch.shape), rule == VolumeRule::Exact});
+  KnownIntegrals known;
+  if (inherited && !inherited->empty()) {
+    known.integral.assign(mesh.elements().size(), std::numeric_limits<double>::quiet_NaN());
+    known.fingerprint.assign(mesh.elements().size(), 0);
+    for (const ho::InheritedBounds& b : *inherited)
+      if (b.element < mesh.elements().size())
+        known.integral[b.element] = b.bounds.integral, known.fingerprint[b.element] = b.fingerprint;
+  }
   std::vector<double> partial(batches.size(), 0.0);
+  std::vector<std::size_t> taken(batches.size(), 0);
   const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(threads, batches.size()));
   auto integrate_stride = [&](std::size_t first) {
-    for (std::size_t b = first; b < batches.size(); b += workers) partial[b] = batch_volume(mesh, batches[b], batch_rules[b]);
+    for (std::size_t b = first; b < batches.size(); b += workers)
+      partial[b] = batch_volume(mesh, batches[b], batch_rules[b], known, taken[b]);
   };
   std::vector<std::thread> pool;
   for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(integrate_stride, w);
   integrate_stride(0);
   for (std::thread& t : pool) t.join();
   for (double v : partial) result.element_volume += v;  // in batch order: independent of the threads
+  for (std::size_t t : taken) result.inherited += t;
 
   const auto all = [](const mesh::BoundaryFace&) { return true; };
   const auto x_dot_area = [](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return x.dot(area); };
@@ -446,9 +473,13 @@ MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t t
 
 }  // namespace
 
-MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule) { return mesh_volume_on(mesh, rule, volume_workers()); }
+MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule, const std::vector<ho::InheritedBounds>* inherited) {
+  return mesh_volume_on(mesh, rule, volume_workers(), inherited);
+}
 
-MeshVolume mesh_volume_one_thread(const mesh::Mesh& mesh, VolumeRule rule) { return mesh_volume_on(mesh, rule, 1); }
+MeshVolume mesh_volume_one_thread(const mesh::Mesh& mesh, VolumeRule rule) {
+  return mesh_volume_on(mesh, rule, 1, nullptr);
+}
 
 namespace {
 
@@ -490,10 +521,11 @@ double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& fac
 
 VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                                      const std::vector<const surface::SurfaceMesh*>& farfield,
-                                     const surface::SurfaceMesh& wall) {
+                                     const surface::SurfaceMesh& wall,
+                                     const std::vector<ho::InheritedBounds>* inherited) {
   const Eigen::Vector3d p = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
   VolumeCheck result;
-  result.mesh = mesh_volume(mesh);
+  result.mesh = mesh_volume(mesh, VolumeRule::Exact, inherited);
   result.body_volume = fluid_normal_flux(body, p);
   result.box_volume = -fluid_normal_flux({&wall}, p);
   if (!farfield.empty()) {
@@ -511,7 +543,8 @@ VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<c
 }
 
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
-                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall) {
+                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall,
+                         const std::vector<ho::InheritedBounds>* inherited) {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   for (const auto& t : wall.triangles)
     normal += (wall.points[t[1]] - wall.points[t[0]]).cross(wall.points[t[2]] - wall.points[t[0]]);
@@ -520,7 +553,7 @@ VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface
   const Eigen::Vector3d point = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
 
   VolumeCheck result;
-  result.mesh = mesh_volume(mesh);
+  result.mesh = mesh_volume(mesh, VolumeRule::Exact, inherited);
   result.body_volume = volume_under_surfaces(body, point, normal);
   // The far-field faces' normals point into the box: their flux is minus the box volume.
   if (!farfield.empty()) {

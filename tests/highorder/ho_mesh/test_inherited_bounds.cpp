@@ -2,6 +2,7 @@
 // certification of every element on its own nodes: same verdicts, same bounds to rounding, on
 // prisms and hexahedra (one and two directions) of orders 1-4; none inherited where the interfaces
 // vary (a ratio field) or a piece's nodes moved after the split.
+#include "semimesh/checks/volume.hpp"
 #include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/ho/quality.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
@@ -88,6 +89,52 @@ TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
         expect_same(fast, reference);
       }
     }
+}
+
+// The pieces' volumes from their inherited bounds (the mean of the coarse det J's Bernstein
+// coefficients on the piece, times the reference volume) pinned to each piece's own quadrature:
+// the volume check takes them (all pieces), and a piece without its entry, integrated on its own
+// nodes, changes the sum by rounding only.
+TEST(InheritedBounds, SplitPiecesVolumesMatchTheirOwnQuadrature) {
+  for (Shape shape : {Shape::Prism, Shape::Hexahedron})
+    for (int order = 1; order <= 4; ++order) {
+      SCOPED_TRACE(to_string(shape) + " P" + std::to_string(order));
+      const mesh::Mesh coarse = curved_elements(shape, order, bent);
+      std::vector<LayerSplit> split;
+      for (std::size_t e = 0; e < coarse.elements().size(); ++e)
+        split.push_back({e, {2, shape == Shape::Hexahedron ? 1 : -1}, {0, 1}});
+      std::vector<InheritedBounds> inherited;
+      const mesh::Mesh fine =
+          split_layers(coarse, split, {{{5, 2.0}, {}}, {{3, 1.5}, {}}}, nullptr, nullptr, {}, &inherited);
+      const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
+      const checks::MeshVolume reference = checks::mesh_volume(fine);
+      EXPECT_EQ(fast.inherited, fine.elements().size());
+      EXPECT_EQ(reference.inherited, 0u);
+      EXPECT_NEAR(fast.element_volume, reference.element_volume, 1e-13 * reference.element_volume);
+      EXPECT_NEAR(reference.element_volume, checks::mesh_volume(coarse).element_volume, 1e-13 * reference.element_volume);
+      for (std::size_t k = 0; k < inherited.size(); ++k) {
+        std::vector<InheritedBounds> without_k = inherited;
+        without_k.erase(without_k.begin() + static_cast<long>(k));
+        const checks::MeshVolume own = checks::mesh_volume(fine, checks::VolumeRule::Exact, &without_k);
+        ASSERT_EQ(own.inherited, fine.elements().size() - 1);
+        // The sum with piece k's own quadrature: its inherited integral differs by rounding.
+        EXPECT_NEAR(own.element_volume, fast.element_volume, 1e-13 * std::abs(inherited[k].bounds.integral)) << k;
+        EXPECT_GT(inherited[k].bounds.integral, 0.0);
+      }
+    }
+}
+
+// A piece whose node moved after the split is integrated on its own nodes (its fingerprint is no
+// longer the one its integral came with).
+TEST(InheritedBounds, AMovedPieceIsIntegratedOnItsOwn) {
+  const mesh::Mesh coarse = curved_elements(Shape::Prism, 3, bent);
+  std::vector<InheritedBounds> inherited;
+  mesh::Mesh fine = split_layers(coarse, {{0, {2, -1}, {0, 0}}}, {{{5, 2.0}, {}}}, nullptr, nullptr, {}, &inherited);
+  const std::vector<mesh::NodeId> last = fine.element_nodes(fine.elements().size() - 1);
+  fine.place_node(last.back(), fine.node(last.back()) + Eigen::Vector3d(0.0, 0.0, 1e-3));  // an interior node
+  const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
+  EXPECT_EQ(fast.inherited, fine.elements().size() - 1);
+  EXPECT_NEAR(fast.element_volume, checks::mesh_volume(fine).element_volume, 1e-13 * fast.element_volume);
 }
 
 // Only the pieces have bounds: a copied element before or after them is certified on its own, and

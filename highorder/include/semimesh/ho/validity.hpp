@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include <limits>
+
 #include <array>
 #include <optional>
 #include <vector>
@@ -37,6 +39,10 @@ struct JacobianBounds {
   bool valid = false;
   bool proven = false;
   int subdivisions = 0;
+  /// The integral of det J over the reference element (the element's volume) where the
+  /// certification had it whole: certify_pieces (the mean of a piece's Bernstein coefficients times
+  /// the reference volume, or det A times it); NaN elsewhere.
+  double integral = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Certifies the sign of det J of one 3D element (tetrahedron, pyramid, prism, hexahedron; orders

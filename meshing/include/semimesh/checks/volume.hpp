@@ -7,6 +7,7 @@
 //    mesh's own far-field faces when they are curved.
 #pragma once
 
+#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 
@@ -21,6 +22,7 @@ struct MeshVolume {
   double element_volume = 0.0;              ///< sum of the integrals of det J
   double boundary_volume = 0.0;             ///< (1/3) flux of x through the boundary faces
   std::size_t boundary_faces_without_element = 0;  ///< skipped (the conformity check names them)
+  std::size_t inherited = 0;                 ///< elements whose integral came with inherited bounds
   double boundary_relative_error() const;   ///< |element - boundary| / |boundary|
 };
 
@@ -36,7 +38,11 @@ enum class VolumeRule { Exact, Quadrature, Generous };
 
 /// Integrates every element and every boundary face of `mesh` (any order; quadrature exact for the
 /// polynomial det J of tets, prisms and hexes; faces always with the generous rule).
-MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact);
+/// `inherited` (optional, as certify_mesh takes it): an element whose entry has an integral
+/// (JacobianBounds::integral: a split piece's, from its coarse element's det J) and whose
+/// fingerprint is still its own takes that integral instead of a quadrature of its own.
+MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact,
+                       const std::vector<ho::InheritedBounds>* inherited = nullptr);
 
 /// mesh_volume on this thread alone, each sum a plain loop: the reference mesh_volume's threads
 /// must match bit for bit (they compute the same terms and add them in the same order).
@@ -64,13 +70,15 @@ struct VolumeCheck {
 /// integrated at the mesh's order: a curved far field (a sphere) curved onto its CAD at order > 1
 /// encloses more than its triangulation does.
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
-                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall);
+                         const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall,
+                         const std::vector<ho::InheritedBounds>* inherited = nullptr);
 
 /// check_volume for a curved wall (a fuselage): no plane closes the body, so the flux of (x - p) / 3
 /// runs through the wall's surface mesh too; box_volume is then the far field's and the wall's part
 /// of the fluid's volume, body_volume the body's (its root left open onto the wall).
 VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                                      const std::vector<const surface::SurfaceMesh*>& farfield,
-                                     const surface::SurfaceMesh& wall);
+                                     const surface::SurfaceMesh& wall,
+                                     const std::vector<ho::InheritedBounds>* inherited = nullptr);
 
 }  // namespace semimesh::checks
