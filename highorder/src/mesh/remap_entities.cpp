@@ -271,18 +271,21 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
       if (reframed[face] && element_code(el, f, face) < 0) return false;
     }
 
+  // An element's or boundary face's vertices and edges renamed; the bits of its reversed edges.
+  const auto rename = [&](ho::Shape shape, NodeId* vertices, std::uint32_t* edge_ids) {
+    for (int k = 0; k < ho::num_vertices(shape); ++k) vertices[k] = to[vertices[k]];
+    const auto& local_edges = ho::edges(shape);
+    std::uint16_t reversed = 0;
+    for (std::size_t k = 0; k < local_edges.size(); ++k) {
+      edge_ids[k] = new_edge[edge_target[edge_ids[k]]];
+      if (vertices[local_edges[k][0]] > vertices[local_edges[k][1]]) reversed |= static_cast<std::uint16_t>(1u << k);
+    }
+    return reversed;
+  };
   std::vector<NodeId> interior_pool;
   interior_pool.reserve(old.interior_pool_.size());
   for (Element& el : elements_) {
-    const int nv = ho::num_vertices(el.shape);
-    for (int k = 0; k < nv; ++k) el.vertices[k] = to[el.vertices[k]];
-    const auto& local_edges = ho::edges(el.shape);
-    el.edge_reversed = 0;
-    for (std::size_t k = 0; k < local_edges.size(); ++k) {
-      el.edges[k] = new_edge[edge_target[el.edges[k]]];
-      if (el.vertices[local_edges[k][0]] > el.vertices[local_edges[k][1]])
-        el.edge_reversed |= static_cast<std::uint16_t>(1u << k);
-    }
+    el.edge_reversed = rename(el.shape, el.vertices.data(), el.edges.data());
     for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f) {
       el.faces[f] = new_face[face_target[el.faces[f]]];
       if (reframed[el.faces[f]]) {
@@ -301,17 +304,10 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
   }
   boundary_ = old.boundary_;
   for (BoundaryFace& bf : boundary_) {
-    const int nv = ho::num_vertices(bf.shape);
-    for (int k = 0; k < nv; ++k) bf.vertices[k] = to[bf.vertices[k]];
-    const auto& local_edges = ho::edges(bf.shape);
-    bf.edge_reversed = 0;
-    for (std::size_t k = 0; k < local_edges.size(); ++k) {
-      bf.edges[k] = new_edge[edge_target[bf.edges[k]]];
-      if (bf.vertices[local_edges[k][0]] > bf.vertices[local_edges[k][1]])
-        bf.edge_reversed |= static_cast<std::uint8_t>(1u << k);
-    }
+    bf.edge_reversed = static_cast<std::uint8_t>(rename(bf.shape, bf.vertices.data(), bf.edges.data()));
     bf.face = new_face[face_target[bf.face]];
-    bf.face_orientation = static_cast<std::uint8_t>(face_orientation_code(bf.vertices.data(), faces[bf.face].vertices.data(), nv));
+    bf.face_orientation = static_cast<std::uint8_t>(
+        face_orientation_code(bf.vertices.data(), faces[bf.face].vertices.data(), ho::num_vertices(bf.shape)));
   }
   if (lookups.valid())
     lookups.get();
