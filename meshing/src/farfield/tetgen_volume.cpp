@@ -210,7 +210,7 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
   int header[3] = {0, 0, 0};
   const bool whole_header = read_all(pipe_fds[0], header, sizeof header);
   TetgenRun run;
-  bool whole_answer = whole_header;
+  bool whole_answer = whole_header && (header[0] != 0 || (header[1] >= 0 && header[2] >= 0));
   if (whole_header && header[0] == 0 && header[1] >= 0 && header[2] >= 0) {
     run.points.resize(static_cast<std::size_t>(header[1]));
     run.tets.resize(static_cast<std::size_t>(header[2]));
