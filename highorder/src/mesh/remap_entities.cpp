@@ -54,8 +54,14 @@ bool repeats(const NodeId* v, int n) {
 Mesh::EntityMerges Mesh::entity_merges(const std::vector<NodeId>& to) const {
   EntityMerges merges;
   // Entities whose vertices all stay keep distinct keys; one with a moved vertex takes the entity
-  // already holding its new key (whose vertices stay: the weld's targets), else the first other
-  // moved one with that key.
+  // that holds its new key and keeps it (its vertices stay: the weld's targets), else the first
+  // other moved one with that key. (An entity holding that key whose own vertices move has
+  // another key afterwards: a map that chains, v onto w and w elsewhere.)
+  const auto stays = [&](const NodeId* v, int n) {
+    for (int k = 0; k < n; ++k)
+      if (to[v[k]] != v[k]) return false;
+    return true;
+  };
   std::unordered_map<std::uint64_t, std::uint32_t> moved_edges;
   for (std::uint32_t e = 0; e < edges_.size(); ++e) {
     const NodeId a = to[edges_[e].vertices[0]], b = to[edges_[e].vertices[1]];
@@ -65,9 +71,9 @@ Mesh::EntityMerges Mesh::entity_merges(const std::vector<NodeId>& to) const {
       continue;
     }
     const long other = find_edge(a, b);
-    if (other >= 0 && static_cast<std::uint32_t>(other) != e) {
+    if (other >= 0 && stays(edges_[other].vertices.data(), 2)) {
       merges.edges.emplace(e, static_cast<std::uint32_t>(other));
-    } else if (other < 0) {
+    } else {
       const auto [it, fresh] = moved_edges.try_emplace(detail::edge_key(a, b), e);
       if (!fresh) merges.edges.emplace(e, it->second);
     }
@@ -85,9 +91,9 @@ Mesh::EntityMerges Mesh::entity_merges(const std::vector<NodeId>& to) const {
       continue;
     }
     const long other = find_face(mapped);
-    if (other >= 0 && static_cast<std::uint32_t>(other) != f) {
+    if (other >= 0 && stays(faces_[other].vertices.data(), faces_[other].num_vertices)) {
       merges.faces.emplace(f, static_cast<std::uint32_t>(other));
-    } else if (other < 0) {
+    } else {
       const auto [it, fresh] = moved_faces.try_emplace(detail::face_key(mapped.data(), face.num_vertices), f);
       if (!fresh) merges.faces.emplace(f, it->second);
     }

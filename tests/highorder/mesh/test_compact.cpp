@@ -208,6 +208,20 @@ TEST(Compact, ReplacingNodesOntoALaterElementsTakesTheFirstUsersFrame) {
   expect_same_entities(d.mesh, expected);
 }
 
+// A map that chains: the doubled face's nodes swapped between the hexes (each hex's onto the
+// other's). Each face then has the other's old vertices but its own new ones: nothing joins (the
+// face found under a moved face's new key moves too), and the hexes stay apart.
+TEST(Compact, ReplacingNodesByASwapJoinsNothing) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  std::vector<NodeId> swap = d.to;
+  for (NodeId v = 0; v < d.to.size(); ++v)
+    if (d.to[v] != v) swap[d.to[v]] = v;
+  const Mesh expected = built_afresh(d.mesh, swap);
+  EXPECT_EQ(d.mesh.replace_nodes(swap), Mesh::EntityUpdate::Remapped);
+  EXPECT_EQ(d.mesh.faces().size(), 12u);
+  expect_same_entities(d.mesh, expected);
+}
+
 // The reference itself, against the fresh build, on the same two cases.
 TEST(Compact, ReplacingNodesByRebuildGivesTheEntitiesOfAFreshBuild) {
   DoubledFace d = two_order3_hexes_with_a_doubled_face();
