@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -193,33 +194,45 @@ TEST(Compact, ReplacingNodesInPlaceGivesTheEntitiesOfAFreshBuild) {
   expect_same_entities(m, expected);
 }
 
+// replace_nodes on the doubled hexes with map_of(the weld's map): remapped, `faces` faces after,
+// the entities a fresh build of the renamed node lists makes.
+void expect_remapped_as_built_afresh(const std::function<std::vector<NodeId>(const std::vector<NodeId>&)>& map_of,
+                                     std::size_t faces) {
+  DoubledFace d = two_order3_hexes_with_a_doubled_face();
+  const std::vector<NodeId> map = map_of(d.to);
+  const Mesh expected = built_afresh(d.mesh, map);
+  EXPECT_EQ(d.mesh.replace_nodes(map), Mesh::EntityUpdate::Remapped);
+  EXPECT_EQ(d.mesh.faces().size(), faces);
+  expect_same_entities(d.mesh, expected);
+}
+
 // The weld's map the other way round: the first hex's x = 1 face onto the second's. The first
 // element then names the joined face through the entity that goes, in its own frame: the face
 // takes that frame (the rebuild meets it there first) and the second hex's code is found anew.
 TEST(Compact, ReplacingNodesOntoALaterElementsTakesTheFirstUsersFrame) {
-  DoubledFace d = two_order3_hexes_with_a_doubled_face();
-  std::vector<NodeId> other_way(d.to.size());
-  for (NodeId v = 0; v < other_way.size(); ++v) other_way[v] = v;
-  for (NodeId v = 0; v < d.to.size(); ++v)
-    if (d.to[v] != v) other_way[d.to[v]] = v;
-  const Mesh expected = built_afresh(d.mesh, other_way);
-  EXPECT_EQ(d.mesh.replace_nodes(other_way), Mesh::EntityUpdate::Remapped);
-  EXPECT_EQ(d.mesh.faces().size(), 11u);
-  expect_same_entities(d.mesh, expected);
+  expect_remapped_as_built_afresh(
+      [](const std::vector<NodeId>& to) {
+        std::vector<NodeId> other_way(to.size());
+        for (NodeId v = 0; v < other_way.size(); ++v) other_way[v] = v;
+        for (NodeId v = 0; v < to.size(); ++v)
+          if (to[v] != v) other_way[to[v]] = v;
+        return other_way;
+      },
+      11);
 }
 
 // A map that chains: the doubled face's nodes swapped between the hexes (each hex's onto the
 // other's). Each face then has the other's old vertices but its own new ones: nothing joins (the
 // face found under a moved face's new key moves too), and the hexes stay apart.
 TEST(Compact, ReplacingNodesByASwapJoinsNothing) {
-  DoubledFace d = two_order3_hexes_with_a_doubled_face();
-  std::vector<NodeId> swap = d.to;
-  for (NodeId v = 0; v < d.to.size(); ++v)
-    if (d.to[v] != v) swap[d.to[v]] = v;
-  const Mesh expected = built_afresh(d.mesh, swap);
-  EXPECT_EQ(d.mesh.replace_nodes(swap), Mesh::EntityUpdate::Remapped);
-  EXPECT_EQ(d.mesh.faces().size(), 12u);
-  expect_same_entities(d.mesh, expected);
+  expect_remapped_as_built_afresh(
+      [](const std::vector<NodeId>& to) {
+        std::vector<NodeId> swap = to;
+        for (NodeId v = 0; v < to.size(); ++v)
+          if (to[v] != v) swap[to[v]] = v;
+        return swap;
+      },
+      12);
 }
 
 // The reference itself, against the fresh build, on the same two cases.
