@@ -291,18 +291,11 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
   std::vector<NodeId> interior_pool;
   interior_pool.reserve(old.interior_pool_.size());
   for (Element& el : elements_) {
-    el.edge_reversed = rename(el.shape, el.vertices.data(), el.edges.data());
-    for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f) {
+    for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f) {  // before the vertices are renamed
       el.faces[f] = new_face[face_target[el.faces[f]]];
-      if (reframed[el.faces[f]]) {
-        // The vertices are renamed already: the code of the renamed frame against the new face.
-        const auto& local = ho::faces(el.shape)[f];
-        std::array<NodeId, 4> frame{};
-        for (std::size_t k = 0; k < local.size(); ++k) frame[k] = el.vertices[local[k]];
-        el.face_orientation[f] = static_cast<std::uint8_t>(
-            face_orientation_code(frame.data(), faces[el.faces[f]].vertices.data(), static_cast<int>(local.size())));
-      }
+      if (reframed[el.faces[f]]) el.face_orientation[f] = static_cast<std::uint8_t>(element_code(el, f, el.faces[f]));
     }
+    el.edge_reversed = rename(el.shape, el.vertices.data(), el.edges.data());
     const int count = node_layout(el.shape, P).num_interior;
     const auto first = static_cast<std::uint32_t>(interior_pool.size());
     for (int k = 0; k < count; ++k) interior_pool.push_back(to[old.interior_pool_[el.first_node + k]]);

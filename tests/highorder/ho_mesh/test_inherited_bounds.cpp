@@ -78,22 +78,30 @@ mesh::Mesh split_bent(Shape shape, int order, std::vector<InheritedBounds>& inhe
   return split_layers(coarse, split, {{{5, 2.0}, {}}, {{3, 1.5}, {}}}, nullptr, nullptr, {}, &inherited);
 }
 
-TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
+// check(shape, order, fine, inherited) on split_bent's pieces of prisms and hexahedra of orders 1-4.
+void for_each_split_bent(
+    const std::function<void(Shape, int, const mesh::Mesh&, const std::vector<InheritedBounds>&)>& check) {
   for (Shape shape : {Shape::Prism, Shape::Hexahedron})
     for (int order = 1; order <= 4; ++order) {
       SCOPED_TRACE(to_string(shape) + " P" + std::to_string(order));
       std::vector<InheritedBounds> inherited;
       const mesh::Mesh fine = split_bent(shape, order, inherited);
-      ASSERT_EQ(inherited.size(), fine.elements().size());
-      for (double floor : {0.0, 1e-5}) {
-        const MeshValidity fast = certify_mesh(fine, 8, floor, {}, &inherited);
-        const MeshValidity reference = certify_mesh(fine, 8, floor);
-        EXPECT_EQ(fast.inherited, fine.elements().size());
-        EXPECT_EQ(reference.inherited, 0u);
-        EXPECT_TRUE(reference.all_valid());
-        expect_same(fast, reference);
-      }
+      check(shape, order, fine, inherited);
     }
+}
+
+TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
+  for_each_split_bent([](Shape, int, const mesh::Mesh& fine, const std::vector<InheritedBounds>& inherited) {
+    ASSERT_EQ(inherited.size(), fine.elements().size());
+    for (double floor : {0.0, 1e-5}) {
+      const MeshValidity fast = certify_mesh(fine, 8, floor, {}, &inherited);
+      const MeshValidity reference = certify_mesh(fine, 8, floor);
+      EXPECT_EQ(fast.inherited, fine.elements().size());
+      EXPECT_EQ(reference.inherited, 0u);
+      EXPECT_TRUE(reference.all_valid());
+      expect_same(fast, reference);
+    }
+  });
 }
 
 // The pieces' volumes from their inherited bounds (the mean of the coarse det J's Bernstein
@@ -101,28 +109,25 @@ TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
 // the volume check takes them (all pieces), and a piece without its entry, integrated on its own
 // nodes, changes the sum by rounding only.
 TEST(InheritedBounds, SplitPiecesVolumesMatchTheirOwnQuadrature) {
-  for (Shape shape : {Shape::Prism, Shape::Hexahedron})
-    for (int order = 1; order <= 4; ++order) {
-      SCOPED_TRACE(to_string(shape) + " P" + std::to_string(order));
-      std::vector<InheritedBounds> inherited;
-      const mesh::Mesh fine = split_bent(shape, order, inherited);
-      const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
-      const checks::MeshVolume reference = checks::mesh_volume(fine);
-      EXPECT_EQ(fast.inherited, fine.elements().size());
-      EXPECT_EQ(reference.inherited, 0u);
-      EXPECT_NEAR(fast.element_volume, reference.element_volume, 1e-13 * reference.element_volume);
-      EXPECT_NEAR(reference.element_volume, checks::mesh_volume(curved_elements(shape, order, bent)).element_volume,
-                  1e-13 * reference.element_volume);
-      for (std::size_t k = 0; k < inherited.size(); ++k) {
-        std::vector<InheritedBounds> without_k = inherited;
-        without_k.erase(without_k.begin() + static_cast<long>(k));
-        const checks::MeshVolume own = checks::mesh_volume(fine, checks::VolumeRule::Exact, &without_k);
-        ASSERT_EQ(own.inherited, fine.elements().size() - 1);
-        // The sum with piece k's own quadrature: its inherited integral differs by rounding.
-        EXPECT_NEAR(own.element_volume, fast.element_volume, 1e-13 * std::abs(inherited[k].bounds.integral)) << k;
-        EXPECT_GT(inherited[k].bounds.integral, 0.0);
-      }
+  for_each_split_bent([](Shape shape, int order, const mesh::Mesh& fine,
+                         const std::vector<InheritedBounds>& inherited) {
+    const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
+    const checks::MeshVolume reference = checks::mesh_volume(fine);
+    EXPECT_EQ(fast.inherited, fine.elements().size());
+    EXPECT_EQ(reference.inherited, 0u);
+    EXPECT_NEAR(fast.element_volume, reference.element_volume, 1e-13 * reference.element_volume);
+    EXPECT_NEAR(reference.element_volume, checks::mesh_volume(curved_elements(shape, order, bent)).element_volume,
+                1e-13 * reference.element_volume);
+    for (std::size_t k = 0; k < inherited.size(); ++k) {
+      std::vector<InheritedBounds> without_k = inherited;
+      without_k.erase(without_k.begin() + static_cast<long>(k));
+      const checks::MeshVolume own = checks::mesh_volume(fine, checks::VolumeRule::Exact, &without_k);
+      ASSERT_EQ(own.inherited, fine.elements().size() - 1);
+      // The sum with piece k's own quadrature: its inherited integral differs by rounding.
+      EXPECT_NEAR(own.element_volume, fast.element_volume, 1e-13 * std::abs(inherited[k].bounds.integral)) << k;
+      EXPECT_GT(inherited[k].bounds.integral, 0.0);
     }
+  });
 }
 
 // A piece whose node moved after the split is integrated on its own nodes (its fingerprint is no
