@@ -595,9 +595,10 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     StackSplit fine = split_stacks(std::move(coarse), stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
                                    {ho::LayerDistribution{wall_layers, wall_ratio},
                                     ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
-                                   report, config.checks.inherit_bounds);
-    // The coarse elements' inner nodes are no longer used by any element: drop them (the weld
-    // does it in its own renumbering of the mesh).
+                                   report, config.checks.inherit_bounds, ho::SplitEntities::Adopted);
+    // The coarse elements' inner nodes and the entities only they used are no longer used by
+    // any element: drop them, and number the entities as an element by element build would (the
+    // weld does both in its own renumbering of the mesh).
     if (!weld) fine.mesh = mesh::without_unreferenced_nodes(std::move(fine.mesh));
     return fine;
   });

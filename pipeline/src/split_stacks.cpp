@@ -6,7 +6,7 @@ namespace semimesh::pipeline {
 
 StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress,
-                        bool inherit_bounds) {
+                        bool inherit_bounds, ho::SplitEntities entities) {
   // Family 0 the wing's layers, 1 the wall's; a family of one layer leaves its directions unsplit.
   const std::vector<ho::SplitFamily> families = {{wing.distribution, wing.ratio}, {wall.distribution, wall.ratio}};
   std::vector<ho::LayerSplit> split;
@@ -26,7 +26,7 @@ StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack
   std::vector<ho::SplitStats> stats;
   std::vector<std::size_t> first;
   result.mesh = ho::split_layers(std::move(mesh), split, families, &stats, &first, progress,
-                                 inherit_bounds ? &result.inherited : nullptr);
+                                 inherit_bounds ? &result.inherited : nullptr, entities);
   result.wing = stats[0];
   result.wall = stats[1];
   for (const nearfield::LayerStack& s : stacks) result.first_layer.push_back(first[s.element]);

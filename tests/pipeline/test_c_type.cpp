@@ -10,6 +10,8 @@
 #include "semimesh/nearfield/c_shell.hpp"
 #include "semimesh/pipeline/split_stacks.hpp"
 #include "semimesh/surface/model_surfaces.hpp"
+#include "highorder/mesh/same_entities.hpp"
+#include "semimesh/mesh/compact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -119,6 +121,28 @@ TEST(CTypeEndToEnd, LinearMeshOnTheAnalyticWing) {
   EXPECT_EQ(b.far.stacks.size(),
             static_cast<std::size_t>(regions.at("junction") + regions.at("wall_layer") + regions.at("wing_layer")));
   expect_sound(m, c, 2e-3);
+}
+
+// The split that adopts the coarse mesh's entities (the pipeline's: its tetrahedra come over
+// without a lookup) keeps those only the split elements used, unused; renumbered
+// (without_unreferenced_nodes) it is the canonical split's mesh, entity for entity.
+TEST(CTypeEndToEnd, AdoptedEntitiesRenumberToTheCanonicalSplit) {
+  const Case c;
+  const Built b = build(c, 0.05, 0.04);
+  ho::CurvingParams curving;
+  curving.order = 4;  // the copied tetrahedra have an interior node
+  const mesh::Mesh curved = ho::curve_mesh(b.far.mesh, *b.model, curving);
+  const pipeline::FamilySplit wing{{3, 1.5}, {}}, wall{{2, 2.0}, {}};
+  const pipeline::StackSplit canonical = pipeline::split_stacks(curved, b.far.stacks, wing, wall);
+  pipeline::StackSplit adopted =
+      pipeline::split_stacks(curved, b.far.stacks, wing, wall, {}, false, ho::SplitEntities::Adopted);
+  ASSERT_EQ(adopted.mesh.elements().size(), canonical.mesh.elements().size());
+  for (std::size_t e = 0; e < canonical.mesh.elements().size(); ++e)
+    ASSERT_EQ(adopted.mesh.element_nodes(e), canonical.mesh.element_nodes(e)) << "element " << e;
+  EXPECT_GT(adopted.mesh.edges().size(), canonical.mesh.edges().size());  // the coarse ones only split ones used
+  EXPECT_GT(adopted.mesh.faces().size(), canonical.mesh.faces().size());
+  test::expect_same_entities(mesh::without_unreferenced_nodes(std::move(adopted.mesh)),
+                             mesh::without_unreferenced_nodes(canonical.mesh));
 }
 
 TEST(CTypeEndToEnd, CurvedAndSplitInBothDirections) {

@@ -293,6 +293,46 @@ void Mesh::adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_no
   face_index_ = linear.face_index_;
 }
 
+void Mesh::adopt_all_entities(const Mesh& other) {
+  if (!elements_.empty() || !edges_.empty() || !faces_.empty() || !boundary_.empty())
+    throw std::logic_error("Mesh::adopt_all_entities: the mesh already has elements or entities");
+  if (other.order_ != order_)
+    throw std::invalid_argument("Mesh::adopt_all_entities: a mesh of order " + std::to_string(other.order_) +
+                                " into one of order " + std::to_string(order_));
+  edges_ = other.edges_, faces_ = other.faces_;
+  edge_pool_ = other.edge_pool_, face_pool_ = other.face_pool_;
+  edge_index_ = other.edge_index_, face_index_ = other.face_index_;
+}
+
+void Mesh::add_elements_as_in(const Mesh& other, std::size_t first, std::size_t end) {
+  if (first > end || end > other.elements_.size())
+    throw std::out_of_range("Mesh::add_elements_as_in: elements [" + std::to_string(first) + ", " +
+                            std::to_string(end) + ") of a mesh of " + std::to_string(other.elements_.size()));
+  if (first == end) return;
+  // The ids must name the same entities here: checked on the range's first element (a mesh that
+  // took other entities differs there).
+  const Element& probe = other.elements_[first];
+  bool same = edges_.size() >= other.edges_.size() && faces_.size() >= other.faces_.size() && order_ == other.order_;
+  for (std::size_t k = 0; same && k < ho::edges(probe.shape).size(); ++k)
+    same = edges_[probe.edges[k]].vertices == other.edges_[probe.edges[k]].vertices;
+  for (std::size_t k = 0; same && k < ho::faces(probe.shape).size(); ++k)
+    same = faces_[probe.faces[k]].vertices == other.faces_[probe.faces[k]].vertices;
+  if (!same)
+    throw std::logic_error("Mesh::add_elements_as_in: " + element_name(probe.shape, first) +
+                           " names entities this mesh did not take (adopt_all_entities)");
+  for (std::size_t e = first; e < end; ++e) {
+    Element el = other.elements_[e];
+    if (el.region >= regions_.size())
+      throw std::invalid_argument(element_name(el.shape, e) + ": region " + std::to_string(el.region) +
+                                  " does not exist (copy_regions_from first)");
+    const int interior = node_layout(el.shape, order_).num_interior;
+    const auto from = other.interior_pool_.begin() + el.first_node;
+    el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
+    interior_pool_.insert(interior_pool_.end(), from, from + interior);
+    elements_.push_back(el);
+  }
+}
+
 std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const std::vector<NodeId>& canonical_nodes) {
   const Element& was = linear.elements_.at(element);
   const NodeLayout& layout = node_layout(was.shape, order_);

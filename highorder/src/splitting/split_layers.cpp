@@ -41,7 +41,9 @@ using mesh::NodeId;
 struct DirectionData {
   std::vector<int> bottom;  // local vertices on the face at coordinate -1
   std::vector<int> top_of;  // [vertices] partner on the opposite face (-1 if none)
+  std::vector<int> across;  // [vertices] the local edge from a bottom vertex to its top_of (-1 if none)
   std::vector<std::array<int, 2>> bottom_edges;
+  std::vector<int> side_face;  // [bottom_edges] the local face standing on it
 };
 
 /// What does not change from one element of a shape to the next.
@@ -66,12 +68,36 @@ DirectionData make_direction_data(const ShapeData& data, int order, int directio
     partner[direction] = order;
     d.top_of[v] = data.index.at(partner);
   }
+  const auto local_edge = [&](int a, int b) {
+    const auto& all = edges(data.shape);
+    for (std::size_t k = 0; k < all.size(); ++k)
+      if ((all[k][0] == a && all[k][1] == b) || (all[k][0] == b && all[k][1] == a)) return static_cast<int>(k);
+    throw std::logic_error("split: no local edge joins vertices " + std::to_string(a) + " and " + std::to_string(b));
+  };
+  const auto local_face = [&](std::array<int, 4> corners) {
+    std::sort(corners.begin(), corners.end());
+    const auto& all = faces(data.shape);
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      if (all[k].size() != 4) continue;
+      std::array<int, 4> f{all[k][0], all[k][1], all[k][2], all[k][3]};
+      std::sort(f.begin(), f.end());
+      if (f == corners) return static_cast<int>(k);
+    }
+    throw std::logic_error("split: no local face stands on a bottom edge");
+  };
+  d.across.assign(nv, -1);
+  for (int v : d.bottom) d.across[v] = local_edge(v, d.top_of[v]);
   for (const auto& e : edges(data.shape))
-    if (data.lattice[e[0]][direction] == 0 && data.lattice[e[1]][direction] == 0) d.bottom_edges.push_back(e);
+    if (data.lattice[e[0]][direction] == 0 && data.lattice[e[1]][direction] == 0) {
+      d.bottom_edges.push_back(e);
+      d.side_face.push_back(local_face({e[0], e[1], d.top_of[e[0]], d.top_of[e[1]]}));
+    }
   return d;
 }
 
-using NodeKey = std::array<std::int64_t, 7>;
+/// A new node's name (key_of): its kind, then what names it; kinds 1 and 2 (on a coarse edge
+/// or side face) carry that entity's id last, where its slots are kept (slot_of).
+using NodeKey = std::array<std::int64_t, 8>;
 constexpr std::uint32_t kNoBlock = 0xffffffffu;  // a coarse entity without slots yet
 
 // Split elements whose sub-node positions are held at once (bounds the memory of the parallel pass).
@@ -90,9 +116,10 @@ class Splitter {
   /// `give_nodes`: the input itself, whose nodes then move into the output instead of being copied
   /// (the input keeps its topology only; coordinates are read from the output, same ids).
   Splitter(const mesh::Mesh& in, std::vector<SplitFamily> families, std::string caller,
-           mesh::Mesh* give_nodes = nullptr)
+           mesh::Mesh* give_nodes = nullptr, SplitEntities entities = SplitEntities::Canonical)
       : in_(in),
         give_nodes_(give_nodes),
+        adopt_(entities == SplitEntities::Adopted),
         families_(std::move(families)),
         caller_(std::move(caller)),
         out_(in.order(), in.node_set()),
@@ -181,6 +208,7 @@ class Splitter {
 
   const mesh::Mesh& in_;
   mesh::Mesh* give_nodes_;
+  bool adopt_;  // SplitEntities::Adopted
   std::vector<SplitFamily> families_;
   std::string caller_;
   mesh::Mesh out_;
@@ -197,7 +225,6 @@ class Splitter {
   std::size_t edge_block_size_ = 0, face_block_size_ = 0;
   std::size_t nodes_bound_ = 0;  // the most nodes the output can have: room reserved for them
   std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
-  std::vector<NodeId> face_vertices_;                          // scratch of node_for
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
   // nodes, its pieces' node lists.
   std::vector<NodeId> coarse_;
@@ -281,8 +308,8 @@ double Splitter::ratio_at(const Eigen::Vector3d& x, std::size_t element, int fam
   return r;
 }
 
-// Kinds of key_of: 1 on a coarse edge (its ends, level), 2 on a coarse face (bottom edge, top
-// edge, place along, level), 3 inside the element, 4 on a face cut both ways.
+// Kinds of key_of: 1 on a coarse edge (its ends, level, the edge), 2 on a coarse face (bottom edge,
+// top edge, place along, level, the face), 3 inside the element, 4 on a face cut both ways.
 NodeId& Splitter::slot_of(const NodeKey& key) {
   auto slot = [&](std::uint32_t& block, std::size_t size, std::size_t i) -> NodeId& {
     if (i >= size) throw std::logic_error(caller_ + ": a node's slot lies beyond its coarse entity's block");
@@ -292,16 +319,10 @@ NodeId& Splitter::slot_of(const NodeKey& key) {
     }
     return slots_[block + i];
   };
-  if (key[0] == 1) {
-    const long edge = in_.find_edge(static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]));
-    if (edge >= 0) return slot(edge_block_[edge], edge_block_size_, static_cast<std::size_t>(key[3]));
-  } else if (key[0] == 2) {
-    face_vertices_.assign({static_cast<NodeId>(key[1]), static_cast<NodeId>(key[2]), static_cast<NodeId>(key[4]),
-                           static_cast<NodeId>(key[3])});
-    const long face = in_.find_face(face_vertices_);
-    if (face >= 0)
-      return slot(face_block_[face], face_block_size_, static_cast<std::size_t>(key[6] * in_.order() + key[5]));
-  } else if (key[0] == 3) {
+  if (key[0] == 1) return slot(edge_block_[key[7]], edge_block_size_, static_cast<std::size_t>(key[3]));
+  if (key[0] == 2)
+    return slot(face_block_[key[7]], face_block_size_, static_cast<std::size_t>(key[6] * in_.order() + key[5]));
+  if (key[0] == 3) {
     return element_nodes_.try_emplace(key, mesh::kNoNode).first->second;
   }
   return other_nodes_.try_emplace(key, mesh::kNoNode).first->second;
@@ -427,20 +448,21 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
     h[plan.direction[0]] = 0, h[plan.direction[1]] = 0;
     const int v = data.index.at(h);
     if (v < num_vertices(data.shape))
-      return {
-          4,    coarse[v], coarse[direction_of(element, 0).top_of[v]], coarse[direction_of(element, 1).top_of[v]], g[0],
-          g[1], 0};
-    return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[0], 1 + g[1]};
+      return {4,    coarse[v], coarse[direction_of(element, 0).top_of[v]], coarse[direction_of(element, 1).top_of[v]],
+              g[0], g[1], 0, 0};
+    return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[0], 1 + g[1], 0};
   }
   const int s = inside[0] ? 0 : 1, d = plan.direction[s];
   LatticePoint h = l;
   h[d] = 0;
   if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
   const DirectionData& side = direction_of(element, s);
+  const mesh::Element& el = in_.elements()[element];
   for (int v : side.bottom)
     if (data.lattice[v][0] == h[0] && data.lattice[v][1] == h[1] && data.lattice[v][2] == h[2])  // no memcmp call
-      return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0};  // on a coarse edge across the layer
-  for (const auto& e : side.bottom_edges) {
+      return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0, el.edges[side.across[v]]};  // across the layer
+  for (std::size_t k = 0; k < side.bottom_edges.size(); ++k) {
+    const auto& e = side.bottom_edges[k];
     const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
     int steps = 0, along = 0;
     bool on = true;
@@ -455,9 +477,9 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
       std::swap(ta, tb);
       along = steps - along;
     }
-    return {2, va, vb, ta, tb, along, g[s]};
+    return {2, va, vb, ta, tb, along, g[s], el.faces[side.side_face[k]]};
   }
-  return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[s], plan.two() ? -1 - s : 0};
+  return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[s], plan.two() ? -1 - s : 0, 0};
 }
 
 void Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
@@ -649,6 +671,7 @@ std::size_t Splitter::copy_nodes_groups_and_regions() {
   // edges and 3 faces more per new element than the coarse mesh has (the paper's H-type case gains
   // 2.2 and 2.6, its O-type 2.0 and 2.5).
   const std::size_t new_elements = elements - in_.elements().size();
+  if (adopt_) out_.adopt_all_entities(in_);
   out_.reserve_lookups(in_.edges().size() + 5 * new_elements / 2, in_.faces().size() + 3 * new_elements);
   if (give_nodes_) {
     give_nodes_->reserve_nodes(nodes);
@@ -708,7 +731,10 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
 void Splitter::copy_elements(std::size_t from, std::size_t end, std::vector<std::size_t>* first_piece) {
   if (first_piece)
     for (std::size_t e = from; e < end; ++e) (*first_piece)[e] = out_.elements().size() + (e - from);
-  out_.add_elements_of(in_, from, end);
+  if (adopt_)
+    out_.add_elements_as_in(in_, from, end);
+  else
+    out_.add_elements_of(in_, from, end);
 }
 
 void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,
@@ -802,8 +828,8 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
 mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
-                        std::vector<InheritedBounds>* inherited) {
-  return Splitter(mesh, families, "split_layers", &mesh).run(split, stats, first_piece, progress, inherited);
+                        std::vector<InheritedBounds>* inherited, SplitEntities entities) {
+  return Splitter(mesh, families, "split_layers", &mesh, entities).run(split, stats, first_piece, progress, inherited);
 }
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,

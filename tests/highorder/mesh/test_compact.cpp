@@ -407,6 +407,34 @@ TEST(Compact, AddingAnotherMeshsElementsOverManyBlocksIsAddingThemOneByOne) {
   EXPECT_THROW(out.add_elements_of(out, 0, 1), std::invalid_argument);
 }
 
+// Elements that come over as they are into a mesh that took all the entities (the split's
+// copies): the elements add_element makes, and, renumbered, its entities; a mesh that did not
+// take them refuses them.
+TEST(Compact, ElementsComeOverAsTheyAreIntoAMeshThatTookTheEntities) {
+  const ManyTets t = many_doubled_tets(4);
+  const Mesh& m = t.mesh;
+  Mesh out(m.order(), m.node_set());
+  for (NodeId v = 0; v < m.num_nodes(); ++v) out.add_node(m.node(v), m.cad_attachment(v));
+  out.copy_regions_from(m);
+  out.adopt_all_entities(m);
+  const std::size_t half = m.elements().size() / 2;
+  out.add_elements_as_in(m, 0, half);
+  for (std::size_t e = half; e < m.elements().size(); ++e)  // new elements find the taken entities
+    out.add_element(m.elements()[e].shape, m.element_nodes(e), m.elements()[e].region);
+  for (std::size_t b = 0; b < m.boundary_faces().size(); ++b)
+    out.add_boundary_face(m.group_names()[m.boundary_faces()[b].group], m.boundary_faces()[b].shape,
+                          m.boundary_face_nodes(b));
+  ASSERT_EQ(out.elements().size(), m.elements().size());
+  for (std::size_t e = 0; e < m.elements().size(); ++e) EXPECT_EQ(out.element_nodes(e), m.element_nodes(e)) << e;
+  EXPECT_EQ(out.edges().size(), m.edges().size());
+  EXPECT_EQ(out.faces().size(), m.faces().size());
+  expect_same_entities(semimesh::mesh::without_unreferenced_nodes(out), semimesh::mesh::without_unreferenced_nodes(m));
+  EXPECT_THROW(out.add_elements_as_in(m, 5, 4), std::out_of_range);
+  EXPECT_THROW(out.adopt_all_entities(m), std::logic_error);  // it has entities already
+  Mesh fresh = first_elements_of(m, m.num_nodes(), 0);
+  EXPECT_THROW(fresh.add_elements_as_in(m, 0, 1), std::logic_error);  // it took no entities
+}
+
 TEST(Compact, AddingAnotherMeshsElementsThrowsTheOneByOneErrorFromALateBlock) {
   const ManyTets t = many_doubled_tets(18);
   const Mesh& m = t.mesh;

@@ -133,6 +133,19 @@ class Mesh {
   /// std::invalid_argument if the node lists do not have those sizes.
   void adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_nodes, const std::vector<NodeId>& face_nodes,
                       std::size_t face_stride);
+  /// Takes every edge and face of `other` (a mesh of the same order whose node ids mean the same
+  /// nodes here) with their ids, nodes and lookups, so that its elements can come over as they are
+  /// (add_elements_as_in) while new elements find or add entities as usual (add_element). Entities
+  /// that no element comes to use stay, unused: replace_nodes (without_unreferenced_nodes) drops
+  /// them, and renumbers the rest as add_element in element order would have. Throws
+  /// std::logic_error if this mesh has elements or entities already, std::invalid_argument if the
+  /// orders differ.
+  void adopt_all_entities(const Mesh& other);
+  /// Elements [first, end) of `other`, whose entities this mesh took (adopt_all_entities, same
+  /// ids), as they are, with their regions and interior nodes: the elements add_element would
+  /// make of their node lists, without a lookup. Throws std::logic_error unless this mesh took
+  /// `other`'s entities, std::out_of_range for a bad range.
+  void add_elements_as_in(const Mesh& other, std::size_t first, std::size_t end);
   /// add_element of element `element` of `linear` (whose entities adopt_entities took), the next
   /// one, from its full canonical node list at this mesh's order: its edges, faces and their
   /// orientations are linear's element's; its interior nodes are appended. The list must give the

@@ -30,9 +30,10 @@ struct StackSplit {
 /// Throws std::invalid_argument (from split_layers) when two stacks sharing a face would cut it
 /// differently, naming both elements.
 /// `progress` as split_layers'. inherit_bounds: fill `inherited`. The mesh is taken by value: a
-/// caller that moves it in holds its nodes once (they move into the output).
+/// caller that moves it in holds its nodes once (they move into the output). `entities`: the
+/// output's edges and faces (ho::SplitEntities; Adopted for a caller that renumbers them next).
 StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {},
-                        bool inherit_bounds = false);
+                        bool inherit_bounds = false, ho::SplitEntities entities = ho::SplitEntities::Canonical);
 
 }  // namespace semimesh::pipeline

@@ -105,13 +105,22 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                         std::vector<InheritedBounds>* inherited = nullptr);
+/// The output's edges and faces: Canonical, as add_element makes them element by element;
+/// Adopted, every entity of the input under its id (the elements that are not split come over
+/// without a lookup: mesh::Mesh::adopt_all_entities), then the pieces' new ones, with the input's
+/// entities that only split elements used left unused: for a caller that renumbers the entities
+/// next (mesh::Mesh::replace_nodes, without_unreferenced_nodes), which then gives the Canonical
+/// output's.
+enum class SplitEntities { Canonical, Adopted };
+
 /// The same on a mesh given up: its nodes move into the output instead of being copied, so they
 /// are held once. The mesh is left without nodes (only the moved-from mesh's destruction or
 /// assignment is then meaningful).
 mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
-                        std::vector<InheritedBounds>* inherited = nullptr);
+                        std::vector<InheritedBounds>* inherited = nullptr,
+                        SplitEntities entities = SplitEntities::Canonical);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a
