@@ -512,9 +512,9 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
       num_elements, true, kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t e) {
         check_stop();
-        VolumeNodes v{element_node_ids(e), {}};
         const detail::HarmonicExtension& ext = detail::inner_extension(in_.elements()[e].shape, P, params_.node_set);
-        if (ext.interior.empty()) return v;
+        if (ext.interior.empty()) return VolumeNodes{};  // all its nodes are its entities'
+        VolumeNodes v{element_node_ids(e), {}};
         v.x = Eigen::MatrixXd::Zero(v.ids.size(), 3);
         if (!element_taken_.empty() && element_taken_[e]) {  // the interior rows, as placed ahead
           const std::vector<NodeId> ids = ahead_->curved.element_nodes(e);
@@ -531,8 +531,10 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
         // Never reallocate under the threads reading the nodes (the room was counted above).
         if (out_.num_nodes() + interior.size() > out_.nodes().capacity())
           throw std::logic_error("curve_mesh: no room left for the inner nodes of element " + std::to_string(e));
-        for (int j : interior) v.ids[j] = out_.add_node(v.x.row(j).transpose());
-        out_.add_element_as(in_, e, v.ids);
+        thread_local std::vector<NodeId> inner;  // the interior nodes in canonical order
+        inner.clear();
+        for (int j : interior) inner.push_back(out_.add_node(v.x.row(j).transpose()));
+        out_.add_element_adopted(in_, e, inner);
       },
       volume_progress_, "volumes");
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {

@@ -365,6 +365,37 @@ std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const 
   return element;
 }
 
+std::size_t Mesh::add_element_adopted(const Mesh& linear, std::size_t element,
+                                      const std::vector<NodeId>& interior_nodes) {
+  const Element& was = linear.elements_.at(element);
+  const NodeLayout& layout = node_layout(was.shape, order_);
+  const Named who{was.shape, element, nullptr};
+  if (element != elements_.size() || edges_.size() != linear.edges_.size() || faces_.size() != linear.faces_.size())
+    throw std::logic_error(who.text() + ": add_element_adopted needs the adopted entities and the elements in order");
+  if (interior_nodes.size() != static_cast<std::size_t>(layout.num_interior))
+    throw std::invalid_argument(who.text() + ": expected " + std::to_string(layout.num_interior) +
+                                " interior nodes for order " + std::to_string(order_) + ", got " +
+                                std::to_string(interior_nodes.size()));
+  if (was.region >= regions_.size())
+    throw std::invalid_argument(who.text() + ": region " + std::to_string(was.region) + " does not exist (" +
+                                std::to_string(regions_.size()) + " regions: copy_regions_from first)");
+  Element el = was;
+  el.first_node = static_cast<std::uint32_t>(interior_pool_.size());
+  interior_pool_.resize(interior_pool_.size() + interior_nodes.size());
+  std::size_t k = 0;
+  for (const NodeSlot& s : layout.slots) {
+    if (s.kind != NodeSlot::Interior) continue;
+    const NodeId id = interior_nodes[k++];
+    if (id >= nodes_.size()) {
+      interior_pool_.resize(el.first_node);
+      throw std::invalid_argument(who.text() + ": unknown node id " + std::to_string(id));
+    }
+    interior_pool_[el.first_node + s.slot[0]] = id;
+  }
+  elements_.push_back(el);
+  return element;
+}
+
 Element Mesh::linked_element(ho::Shape shape, const std::vector<NodeId>& canonical_nodes, int region,
                              std::size_t index) {
   const Named who{shape, index, nullptr};

@@ -1,6 +1,7 @@
 // CAD curving on the analytic NACA 0012 wing: a prism layer extruded from a structured mesh of the
 // `upper` surface, curved at P = 2..4; nodes on the CAD, geometric error convergence, validity.
 #include "semimesh/ho/curving/curve_mesh.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 #include "semimesh/ho/curving/geometric_error.hpp"
 #include "semimesh/ho/splitting/split_layers.hpp"
 
@@ -201,6 +202,26 @@ TEST(CurveMesh, AddElementAsRefusesAnotherEntitysNodes) {
   EXPECT_EQ(again.element_nodes(0), curved.element_nodes(0));
   mesh::Mesh wrong(3, NodeSet::GLL);
   EXPECT_THROW(wrong.adopt_entities(linear, edge_nodes, face_nodes, 3), std::invalid_argument);
+
+  // Given only the interior nodes (the curving's fast path), the next element in order is made
+  // as add_element_as makes it; a wrong count, an unknown id or the wrong element is refused.
+  const std::vector<int> inner = [&] {
+    std::vector<int> positions;
+    const mesh::NodeLayout& layout = mesh::node_layout(curved.elements()[1].shape, 3);
+    for (std::size_t i = 0; i < layout.slots.size(); ++i)
+      if (layout.slots[i].kind == mesh::NodeSlot::Interior) positions.push_back(static_cast<int>(i));
+    return positions;
+  }();
+  ASSERT_FALSE(inner.empty());  // a prism or hexahedron has interior nodes at order 3
+  std::vector<mesh::NodeId> interior;
+  for (int i : inner) interior.push_back(curved.element_nodes(1)[static_cast<std::size_t>(i)]);
+  EXPECT_THROW(again.add_element_adopted(linear, 2, interior), std::logic_error);  // not the next
+  EXPECT_THROW(again.add_element_adopted(linear, 1, {}), std::invalid_argument);
+  std::vector<mesh::NodeId> unknown = interior;
+  unknown.back() = static_cast<mesh::NodeId>(curved.num_nodes());
+  EXPECT_THROW(again.add_element_adopted(linear, 1, unknown), std::invalid_argument);
+  EXPECT_EQ(again.add_element_adopted(linear, 1, interior), 1u);
+  EXPECT_EQ(again.element_nodes(1), curved.element_nodes(1));
 }
 
 TEST(CurveMesh, SkinStaysStraightAndAllElementsAreValid) {
