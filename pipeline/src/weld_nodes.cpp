@@ -24,12 +24,15 @@ namespace {
 // Points hashed by cells of 2.5 x the tolerance: the points within tolerance of x lie in x's cell
 // and, per axis, the neighbour on the side of the cell's half x is in (a margin of a quarter of the
 // tolerance beyond rounding), so 8 cells are probed, not 27. A cell keeps a chain of its points'
-// entries (no list allocated per cell).
+// entries (no list allocated per cell); the cells sit in an open-addressing table (a node-based
+// map's allocation and pointer chase per cell were most of the weld's search).
 class PointIndex {
  public:
   PointIndex(const mesh::Mesh& mesh, double tolerance, std::size_t expected)
       : mesh_(mesh), tolerance_(tolerance), cell_size_(2.5 * tolerance) {
-    heads_.reserve(expected);
+    std::size_t capacity = 16;
+    while (capacity < 2 * expected) capacity *= 2;
+    cells_.assign(capacity, CellSlot{});
     entries_.reserve(expected);
   }
 
@@ -48,37 +51,59 @@ class PointIndex {
     for (int corner = 0; corner < 8; ++corner) {
       const Cell probe{c[0] + (corner & 1 ? side[0] : 0), c[1] + (corner & 2 ? side[1] : 0),
                        c[2] + (corner & 4 ? side[2] : 0)};
-      const auto it = heads_.find(probe);
-      if (it == heads_.end()) continue;
-      for (std::uint32_t e = it->second; e != kNone; e = entries_[e].next) {
+      const CellSlot& slot = cells_[place_of(probe)];
+      if (slot.head == kNone) continue;
+      for (std::uint32_t e = slot.head; e != kNone; e = entries_[e].next) {
         const mesh::NodeId w = entries_[e].node;
         if (e < first && (w == v || (mesh_.node(w) - x).norm() <= tolerance_)) first = e;
       }
     }
     if (first != kNone) return entries_[first].node;
     const auto entry = static_cast<std::uint32_t>(entries_.size());
-    auto [head, fresh] = heads_.try_emplace(c, entry);
-    entries_.push_back({v, fresh ? kNone : head->second});
-    head->second = entry;
+    CellSlot* slot = &cells_[place_of(c)];
+    if (slot->head == kNone) {  // a new cell: keep the table at most half full
+      if (2 * (++used_cells_) > cells_.size()) {
+        grow();
+        slot = &cells_[place_of(c)];
+      }
+      slot->cell = c;
+    }
+    entries_.push_back({v, slot->head});
+    slot->head = entry;
     return v;
   }
 
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;
   using Cell = std::array<long long, 3>;
-  struct CellHash {
-    std::size_t operator()(const Cell& c) const {
-      return static_cast<std::size_t>(mesh::IdTable::mix(static_cast<std::uint64_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^
-                                                                                    c[2] * 83492791LL)));
-    }
+  struct CellSlot {
+    Cell cell{};
+    std::uint32_t head = kNone;  // the cell's last entry; kNone: a free slot
   };
   struct Entry {
     mesh::NodeId node;
     std::uint32_t next;  // the cell's previous entry, kNone at its first
   };
+  static std::uint64_t hash(const Cell& c) {
+    return mesh::IdTable::mix(static_cast<std::uint64_t>(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL));
+  }
+  // The slot holding cell c, or the free slot where it would go (linear probing).
+  std::size_t place_of(const Cell& c) const {
+    const std::size_t mask = cells_.size() - 1;
+    std::size_t i = hash(c) & mask;
+    while (cells_[i].head != kNone && cells_[i].cell != c) i = (i + 1) & mask;
+    return i;
+  }
+  void grow() {
+    std::vector<CellSlot> old(2 * cells_.size(), CellSlot{});
+    old.swap(cells_);
+    for (const CellSlot& s : old)
+      if (s.head != kNone) cells_[place_of(s.cell)] = s;
+  }
   const mesh::Mesh& mesh_;
   double tolerance_, cell_size_;
-  std::unordered_map<Cell, std::uint32_t, CellHash> heads_;
+  std::vector<CellSlot> cells_;  // a power of two of slots
+  std::size_t used_cells_ = 0;
   std::vector<Entry> entries_;
 };
 
