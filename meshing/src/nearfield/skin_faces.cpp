@@ -10,29 +10,54 @@
 namespace semimesh::nearfield::h_type {
 namespace {
 
-// Every face by its sorted vertices: how many elements use it (a boundary face counts twice, so it
-// is never skin) and the last element face seen with its vertices in that element's order.
-std::map<std::vector<NodeId>, std::pair<int, SkinFace>> face_uses(const mesh::Mesh& m) {
-  std::map<std::vector<NodeId>, std::pair<int, SkinFace>> uses;
-  auto key = [](std::vector<NodeId> v) {
-    std::sort(v.begin(), v.end());
-    return v;
+// A face of an element (weight 1, with its vertices in that element's order) or a boundary face
+// (weight 2: a face that is both is never skin), keyed by its sorted vertices.
+struct FaceUse {
+  std::array<NodeId, 4> key{};
+  int count = 3;
+  int weight = 1;
+  SkinFace face;
+};
+
+// Keys in the order of their sorted vertex lists compared as sequences (a shorter one first where
+// it is the other's start).
+bool key_less(const FaceUse& a, const FaceUse& b) {
+  return std::lexicographical_compare(a.key.begin(), a.key.begin() + a.count, b.key.begin(), b.key.begin() + b.count);
+}
+
+// The faces exactly one element uses and no boundary face lies on, in key order: every use
+// sorted by key and counted in runs (no map node or vector per face).
+std::vector<FaceUse> single_uses(const mesh::Mesh& m) {
+  std::vector<FaceUse> uses;
+  const auto add = [&](const NodeId* vertices, int count, int weight) {
+    FaceUse u;
+    u.count = count;
+    u.weight = weight;
+    std::copy(vertices, vertices + count, u.face.nodes.begin());
+    if (count == 3) u.face.nodes[3] = mesh::kNoNode;
+    u.face.count = count;
+    std::copy(vertices, vertices + count, u.key.begin());
+    std::sort(u.key.begin(), u.key.begin() + count);
+    uses.push_back(u);
   };
+  std::array<NodeId, 4> v{};
   for (const mesh::Element& e : m.elements())
     for (const std::vector<int>& f : ho::faces(e.shape)) {
-      SkinFace face;
-      face.count = static_cast<int>(f.size());
-      std::vector<NodeId> v;
-      for (int k = 0; k < face.count; ++k) v.push_back(face.nodes[k] = e.vertices[f[k]]);
-      if (face.count == 3) face.nodes[3] = mesh::kNoNode;
-      auto& slot = uses[key(v)];
-      ++slot.first, slot.second = face;
+      for (std::size_t k = 0; k < f.size(); ++k) v[k] = e.vertices[f[k]];
+      add(v.data(), static_cast<int>(f.size()), 1);
     }
-  for (const mesh::BoundaryFace& b : m.boundary_faces()) {
-    const int count = b.shape == ho::Shape::Triangle ? 3 : 4;
-    uses[key(std::vector<NodeId>(b.vertices.begin(), b.vertices.begin() + count))].first += 2;
+  for (const mesh::BoundaryFace& b : m.boundary_faces())
+    add(b.vertices.data(), b.shape == ho::Shape::Triangle ? 3 : 4, 2);
+  std::sort(uses.begin(), uses.end(), key_less);
+  std::vector<FaceUse> single;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t end = i + 1;
+    int weight = uses[i].weight;
+    while (end < uses.size() && !key_less(uses[i], uses[end])) weight += uses[end++].weight;
+    if (weight == 1) single.push_back(uses[i]);
+    i = end;
   }
-  return uses;
+  return single;
 }
 
 // Vertex pairs (bottom, top) along reference axis 0, 1, 2 of a hexahedron (Gmsh order).
@@ -103,16 +128,12 @@ std::vector<SkinFace> skin_faces(const NearField& field, const std::vector<std::
                                  const std::vector<Quad>& exposed_base, const std::vector<std::array<int, 3>>& bare) {
   std::set<NodeId> on_footprint(field.footprint.begin(), field.footprint.end());
   on_footprint.insert(field.footprint_top.begin(), field.footprint_top.end());
-  auto all_in = [](const std::vector<NodeId>& face, const std::set<NodeId>& nodes) {
-    return std::all_of(face.begin(), face.end(), [&](NodeId v) { return nodes.count(v) > 0; });
-  };
   std::vector<SkinFace> skin;
-  for (const auto& [key, use] : face_uses(field.mesh)) {
-    const auto& k = key;  // a lambda may not capture a structured binding before C++20 (clang < 16)
-    if (use.first == 1 && !all_in(k, on_footprint) &&
-        std::none_of(fan_planes.begin(), fan_planes.end(),
-                     [&](const std::set<NodeId>& plane) { return all_in(k, plane); }))
-      skin.push_back(use.second);
+  for (const FaceUse& use : single_uses(field.mesh)) {
+    const auto all_in = [&](const std::set<NodeId>& nodes) {
+      return std::all_of(use.key.begin(), use.key.begin() + use.count, [&](NodeId v) { return nodes.count(v) > 0; });
+    };
+    if (!all_in(on_footprint) && std::none_of(fan_planes.begin(), fan_planes.end(), all_in)) skin.push_back(use.face);
   }
   for (const auto& q : exposed_base) skin.push_back({{q[0], q[1], q[2], q[3]}, 4});
   for (const auto& t : bare)
