@@ -237,6 +237,7 @@ void accumulate_runs(const std::vector<BoxRun>& runs, const double* __restrict s
 }
 
 using RunAccumulator = ScaledProduct::RunAccumulator;
+using RunGroup = ScaledProduct::RunGroup;
 
 /// The accumulate_runs for these runs: fixed lengths 1..kMaxFixedRun, else any length.
 constexpr int kMaxFixedRun = 16;
@@ -246,10 +247,19 @@ RunAccumulator pick_accumulator(int length, std::integer_sequence<int, kLengths.
   return length >= 1 && length <= kMaxFixedRun ? fixed[length - 1] : &accumulate_runs<0>;
 }
 
-RunAccumulator accumulator_for(const std::vector<BoxRun>& runs) {
-  const bool uniform = std::all_of(runs.begin(), runs.end(), [&](const BoxRun& r) { return r.length == runs[0].length; });
-  if (runs.empty() || !uniform) return &accumulate_runs<0>;
-  return pick_accumulator(runs[0].length, std::make_integer_sequence<int, kMaxFixedRun>{});
+/// The runs grouped by length, each group with its accumulate_runs (in order of first appearance).
+std::vector<RunGroup> run_groups(const std::vector<BoxRun>& runs) {
+  std::vector<RunGroup> groups;
+  std::vector<int> lengths;  // [groups]
+  for (const BoxRun& run : runs) {
+    auto at = std::find(lengths.begin(), lengths.end(), run.length);
+    if (at == lengths.end()) {
+      groups.push_back({{}, pick_accumulator(run.length, std::make_integer_sequence<int, kMaxFixedRun>{})});
+      at = lengths.insert(lengths.end(), run.length);
+    }
+    groups[static_cast<std::size_t>(at - lengths.begin())].runs.push_back(run);
+  }
+  return groups;
 }
 
 /// The product of two layouts (cached per pair of layouts, which live as long as the program).
@@ -266,8 +276,7 @@ const ScaledProduct& product_of(const BernsteinLayout& la, const BernsteinLayout
 ScaledProduct::ScaledProduct(const BernsteinLayout& a, const BernsteinLayout& b)
     : out_(BernsteinLayout::get(product_layout_factors(a, b))),
       offset_a_(box_offsets(a, *out_)),
-      runs_b_(box_runs(box_offsets(b, *out_))),
-      accumulate_(accumulator_for(runs_b_)),
+      groups_b_(run_groups(box_runs(box_offsets(b, *out_)))),
       places_(box_offsets(*out_, *out_)) {}
 
 void ScaledProduct::gather(const double* box, double* out) const {
@@ -278,7 +287,7 @@ void ScaledProduct::accumulate(const double* a, const double* b, double factor, 
   for (std::size_t i = 0; i < offset_a_.size(); ++i) {
     const double scaled_a = factor * a[i];
     if (scaled_a == 0.0) continue;
-    accumulate_(runs_b_, b, scaled_a, box + offset_a_[i]);
+    for (const RunGroup& group : groups_b_) group.accumulate(group.runs, b, scaled_a, box + offset_a_[i]);
   }
 }
 

@@ -131,12 +131,18 @@ class ScaledProduct {
     int length = 0;
   };
   using RunAccumulator = void (*)(const std::vector<BoxRun>&, const double*, double, double*);
+  /// b's runs of one length, with the loop for that length (a fixed one the compiler unrolls).
+  struct RunGroup {
+    std::vector<BoxRun> runs;
+    RunAccumulator accumulate = nullptr;
+  };
 
  private:
   std::shared_ptr<const BernsteinLayout> out_;
   std::vector<int> offset_a_;  // [a.size()] place of a's coefficients in the box
-  std::vector<BoxRun> runs_b_;
-  RunAccumulator accumulate_ = nullptr;
+  // b's runs grouped by length (a prism's triangle rows are of every length up to its degree +
+  // 1): each box entry still gets one term per coefficient of a, in a's order.
+  std::vector<RunGroup> groups_b_;
   std::vector<int> places_;  // [out().size()] place of the product's coefficients in the box
 };
 
