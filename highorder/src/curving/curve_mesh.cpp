@@ -349,10 +349,13 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
   extend_harmonically(detail::inner_extension(shape, P, params_.node_set), X);
 
+  if (!on_boundary) {  // off the CAD (most faces): its corners' attachments are not read
+    out.x = std::move(X);
+    return out;
+  }
   std::vector<CadAttachment> corner_att;
   for (int v = 0; v < face.num_vertices; ++v) corner_att.push_back(in_.cad_attachment(face.vertices[v]));
-  const CadPlace place =
-      on_boundary ? detail::classify(model_, corner_att, false, X.colwise().mean().transpose()) : CadPlace{};
+  const CadPlace place = detail::classify(model_, corner_att, false, X.colwise().mean().transpose());
   out.place = place.kind;
   if (place.kind == CadPlace::Surface) {
     out.att.resize(n);  // (off the CAD: none, every node unattached)
