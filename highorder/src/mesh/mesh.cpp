@@ -293,15 +293,22 @@ void Mesh::adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_no
   face_index_ = linear.face_index_;
 }
 
-void Mesh::adopt_all_entities(const Mesh& other) {
+void Mesh::adopt_all_entities(const Mesh& other, Mesh* lookups_from) {
   if (!elements_.empty() || !edges_.empty() || !faces_.empty() || !boundary_.empty())
     throw std::logic_error("Mesh::adopt_all_entities: the mesh already has elements or entities");
   if (other.order_ != order_)
     throw std::invalid_argument("Mesh::adopt_all_entities: a mesh of order " + std::to_string(other.order_) +
                                 " into one of order " + std::to_string(order_));
+  if (lookups_from && lookups_from != &other)
+    throw std::invalid_argument("Mesh::adopt_all_entities: the lookups must come from the mesh adopted");
   edges_ = other.edges_, faces_ = other.faces_;
   edge_pool_ = other.edge_pool_, face_pool_ = other.face_pool_;
-  edge_index_ = other.edge_index_, face_index_ = other.face_index_;
+  if (lookups_from) {
+    edge_index_ = std::move(lookups_from->edge_index_), face_index_ = std::move(lookups_from->face_index_);
+    lookups_from->edge_index_ = IdTable(), lookups_from->face_index_ = IdTable();
+  } else {
+    edge_index_ = other.edge_index_, face_index_ = other.face_index_;
+  }
 }
 
 void Mesh::add_elements_as_in(const Mesh& other, std::size_t first, std::size_t end) {

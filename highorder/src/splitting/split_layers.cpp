@@ -671,7 +671,7 @@ std::size_t Splitter::copy_nodes_groups_and_regions() {
   // edges and 3 faces more per new element than the coarse mesh has (the paper's H-type case gains
   // 2.2 and 2.6, its O-type 2.0 and 2.5).
   const std::size_t new_elements = elements - in_.elements().size();
-  if (adopt_) out_.adopt_all_entities(in_);
+  if (adopt_) out_.adopt_all_entities(in_, give_nodes_);  // a mesh given up gives its lookups too
   out_.reserve_lookups(in_.edges().size() + 5 * new_elements / 2, in_.faces().size() + 3 * new_elements);
   if (give_nodes_) {
     give_nodes_->reserve_nodes(nodes);

@@ -433,6 +433,21 @@ TEST(Compact, ElementsComeOverAsTheyAreIntoAMeshThatTookTheEntities) {
   EXPECT_THROW(out.adopt_all_entities(m), std::logic_error);  // it has entities already
   Mesh fresh = first_elements_of(m, m.num_nodes(), 0);
   EXPECT_THROW(fresh.add_elements_as_in(m, 0, 1), std::logic_error);  // it took no entities
+  // A mesh given up gives its lookups instead of a copy: the same finds here, none left there.
+  Mesh given = m, taker = first_elements_of(m, m.num_nodes(), 0);
+  EXPECT_THROW(taker.adopt_all_entities(m, &given), std::invalid_argument);  // not the mesh adopted
+  taker.adopt_all_entities(given, &given);
+  for (std::size_t e = 0; e < m.edges().size(); ++e) {
+    const auto& v = m.edges()[e].vertices;
+    EXPECT_EQ(taker.find_edge(v[0], v[1]), static_cast<long>(e));
+    EXPECT_EQ(given.find_edge(v[0], v[1]), -1);
+  }
+  for (std::size_t f = 0; f < m.faces().size(); ++f) {
+    const semimesh::mesh::Face& face = m.faces()[f];
+    const std::vector<NodeId> v(face.vertices.begin(), face.vertices.begin() + face.num_vertices);
+    EXPECT_EQ(taker.find_face(v), static_cast<long>(f));
+    EXPECT_EQ(given.find_face(v), -1);
+  }
 }
 
 TEST(Compact, AddingAnotherMeshsElementsThrowsTheOneByOneErrorFromALateBlock) {

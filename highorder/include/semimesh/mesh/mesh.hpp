@@ -139,8 +139,10 @@ class Mesh {
   /// that no element comes to use stay, unused: replace_nodes (without_unreferenced_nodes) drops
   /// them, and renumbers the rest as add_element in element order would have. Throws
   /// std::logic_error if this mesh has elements or entities already, std::invalid_argument if the
-  /// orders differ.
-  void adopt_all_entities(const Mesh& other);
+  /// orders differ or `lookups_from` is given and is not `other`. `lookups_from`: `other` itself,
+  /// given up: its lookups move here instead of being copied, and it is left without any (its
+  /// find_edge and find_face then find nothing; its elements and entities stay readable).
+  void adopt_all_entities(const Mesh& other, Mesh* lookups_from = nullptr);
   /// Elements [first, end) of `other`, whose entities this mesh took (adopt_all_entities, same
   /// ids), as they are, with their regions and interior nodes: the elements add_element would
   /// make of their node lists, without a lookup. Throws std::logic_error unless this mesh took
