@@ -170,6 +170,40 @@ TEST(CurveMesh, AdoptedEntitiesAreTheOnesAddElementBuilds) {
   }
 }
 
+// Elements off the CAD stay straight-sided: every node, the interior ones too, at the linear map's
+// image of its reference node (a tetrahedron, a prism and a hexahedron sharing faces, skewed;
+// orders 2-4). Pins each interior node to its slot, which a comparison with a mesh built from the
+// curved mesh's own node lists cannot see.
+TEST(CurveMesh, ElementsOffTheCadKeepEveryNodeOnTheirLinearMap) {
+  mesh::Mesh linear(1, NodeSet::GLL);
+  const auto skew = [](double x, double y, double z) { return Eigen::Vector3d(x + 0.2 * y, y + 0.1 * z, z + 0.3 * x); };
+  // Hexahedron 0-7 (Gmsh order; vertex 6 moved: not a parallelepiped), a prism 1 8 2 / 5 9 6 on
+  // its +x side, a tetrahedron on the prism.
+  const std::vector<Eigen::Vector3d> points = {skew(0, 0, 0), skew(1, 0, 0), skew(1, 1, 0), skew(0, 1, 0),
+                                               skew(0, 0, 1), skew(1, 0, 1), skew(1.1, 1.2, 1.05), skew(0, 1, 1),
+                                               skew(2, 0.5, 0), skew(2, 0.5, 1), skew(1.5, 0.5, 2)};
+  for (const Eigen::Vector3d& x : points) linear.add_node(x);
+  linear.add_element(Shape::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  linear.add_element(Shape::Prism, {1, 8, 2, 5, 9, 6});
+  linear.add_element(Shape::Tetrahedron, {5, 9, 6, 10});
+  for (int P = 2; P <= 4; ++P) {
+    SCOPED_TRACE("P = " + std::to_string(P));
+    const mesh::Mesh curved = curve_mesh(linear, *wing().model, {P, NodeSet::GLL, 50, 1e-10});
+    for (std::size_t e = 0; e < curved.elements().size(); ++e) {
+      const Shape shape = curved.elements()[e].shape;
+      const std::vector<mesh::NodeId> ids = curved.element_nodes(e);
+      Eigen::MatrixX3d corners(num_vertices(shape), 3);
+      for (int v = 0; v < num_vertices(shape); ++v) corners.row(v) = curved.node(ids[static_cast<std::size_t>(v)]).transpose();
+      const Eigen::MatrixX3d expected =
+          LagrangeBasis(shape, 1, NodeSet::Equispaced).values(reference_nodes(shape, P, NodeSet::GLL)) * corners;
+      ASSERT_EQ(static_cast<Eigen::Index>(ids.size()), expected.rows());
+      for (std::size_t i = 0; i < ids.size(); ++i)
+        EXPECT_LT((curved.node(ids[i]) - expected.row(static_cast<Eigen::Index>(i)).transpose()).norm(), 1e-12)
+            << to_string(shape) << " node " << i;
+    }
+  }
+}
+
 // add_element_as refuses a node list that is not the adopted entities' (what add_element would
 // have refused, or silently taken as the first element's word).
 TEST(CurveMesh, AddElementAsRefusesAnotherEntitysNodes) {
