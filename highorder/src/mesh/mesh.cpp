@@ -344,31 +344,30 @@ std::size_t Mesh::add_element_as(const Mesh& linear, std::size_t element, const 
   const Element& was = linear.elements_.at(element);
   const NodeLayout& layout = node_layout(was.shape, order_);
   const Named who{was.shape, element, nullptr};
-  if (element != elements_.size() || edges_.size() != linear.edges_.size() || faces_.size() != linear.faces_.size())
-    throw std::logic_error(who.text() + ": add_element_as needs the adopted entities and the elements in order");
   if (canonical_nodes.size() != layout.slots.size())
     throw std::invalid_argument(who.text() + ": expected " + std::to_string(layout.slots.size()) + " nodes for order " +
                                 std::to_string(order_) + ", got " + std::to_string(canonical_nodes.size()));
-  if (was.region >= regions_.size())
-    throw std::invalid_argument(who.text() + ": region " + std::to_string(was.region) + " does not exist (" +
-                                std::to_string(regions_.size()) + " regions: copy_regions_from first)");
   for (NodeId id : canonical_nodes)
     if (id >= nodes_.size()) throw std::invalid_argument(who.text() + ": unknown node id " + std::to_string(id));
-  Element el = was;
-  el.first_node = append_interior(layout, canonical_nodes);
+  thread_local std::vector<NodeId> interior;
+  interior.clear();
+  for (std::size_t i = 0; i < layout.slots.size(); ++i)
+    if (layout.slots[i].kind == NodeSlot::Interior) interior.push_back(canonical_nodes[i]);
+  add_element_adopted(linear, element, interior);
   // Every other node must be the one the vertex or adopted entity already names: the same mesh
   // add_element would build (it would find these entities and compare the same nodes).
+  const Element el = elements_.back();
   thread_local std::vector<NodeId> stored;
   assemble(el.shape, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(), el.face_orientation.data(),
            el.first_node, stored);
   const auto differs = std::mismatch(stored.begin(), stored.end(), canonical_nodes.begin());
   if (differs.first != stored.end()) {
+    elements_.pop_back();
     interior_pool_.resize(el.first_node);
     throw std::logic_error(who.text() + ": node " + std::to_string(*differs.second) + " at canonical position " +
                            std::to_string(differs.first - stored.begin()) + " is not the adopted entity's node " +
                            std::to_string(*differs.first));
   }
-  elements_.push_back(el);
   return element;
 }
 

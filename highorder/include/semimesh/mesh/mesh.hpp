@@ -156,8 +156,9 @@ class Mesh {
   std::size_t add_element_as(const Mesh& linear, std::size_t element, const std::vector<NodeId>& canonical_nodes);
   /// add_element_as given only the element's interior nodes (in canonical order; none for a shape
   /// without), for a caller whose other nodes are the adopted entities' by construction (ho::curve_mesh,
-  /// whose output tests pin to add_element's): nothing else is compared. Throws as add_element_as
-  /// for the order of elements, the region, a count or an unknown node id.
+  /// whose output tests pin to add_element's): nothing else is compared (add_element_as is this
+  /// plus that comparison). Throws as add_element_as for the order of elements, the region, a
+  /// count or an unknown node id.
   std::size_t add_element_adopted(const Mesh& linear, std::size_t element, const std::vector<NodeId>& interior_nodes);
   /// Adds a boundary triangle/quad (full canonical node list) to group `group` (created on first
   /// use). Its face entity is shared with the volume element that has the same vertices.
