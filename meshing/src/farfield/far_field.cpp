@@ -528,9 +528,11 @@ void add_tetrahedra(const TetgenOutput& output, std::vector<NodeId> plc_node, me
   // edges and 2.1-2.2 faces per tetrahedron (the paper's case: ~1.4 and ~2.16).
   const std::size_t tets = output.tets.size();
   mesh.reserve_lookups(mesh.edges().size() + 3 * tets / 2, mesh.faces().size() + 9 * tets / 4);
-  const int region = mesh.region_index("farfield");
+  std::vector<NodeId> corners;
+  corners.reserve(4 * tets);
   for (const auto& t : output.tets)
-    mesh.add_element(ho::Shape::Tetrahedron, {plc_node[t[0]], plc_node[t[1]], plc_node[t[2]], plc_node[t[3]]}, region);
+    for (int v : t) corners.push_back(plc_node[v]);
+  mesh.add_linear_elements(ho::Shape::Tetrahedron, corners, mesh.region_index("farfield"));
 }
 
 }  // namespace

@@ -123,6 +123,12 @@ class Mesh {
   /// here), in order, with their regions: the same elements, entities and errors; their node lists
   /// are read from `other` a block ahead on another thread.
   void add_elements_of(const Mesh& other, std::size_t first, std::size_t end);
+  /// add_element of each linear element of `shape` in `vertices` (num_vertices(shape) ids each, in
+  /// canonical order), in order, in region `region`: the same elements, entities and ids, linked on
+  /// two threads (edges, and a block behind them faces). Only for a mesh of order 1. The refusals of
+  /// an unknown node id or a repeated vertex (naming the element) come before anything is added;
+  /// after any other (a twisted quadrilateral face) none of these elements is added.
+  void add_linear_elements(ho::Shape shape, const std::vector<NodeId>& vertices, int region = 0);
   /// Takes the edges and faces of `linear`, a mesh with the same vertices (same ids) whose elements
   /// this mesh is about to get in the same order at its own order (ho::curve_mesh): the same
   /// entity ids, vertices, reference orientations and lookups (no key is hashed again), each
