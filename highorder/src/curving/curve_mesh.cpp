@@ -115,6 +115,14 @@ class Curver {
   // quadrilateral's count (a triangle's are fewer).
   std::vector<NodeId> edge_interior_;  // [edges * (P - 1)]
   std::vector<NodeId> face_interior_;  // [faces * face_stride_]
+  // The CAD attachments of the edges' nodes that have one: place_face reads them while the faces'
+  // nodes are being added (out_'s own table of attachments is then being written).
+  std::unordered_map<NodeId, CadAttachment> edge_node_cad_;
+  const CadAttachment& edge_node_cad(NodeId id) const {
+    static const CadAttachment none{};
+    const auto found = edge_node_cad_.find(id);
+    return found == edge_node_cad_.end() ? none : found->second;
+  }
   std::size_t face_stride_ = 0;
   NodeId edge_node(std::size_t edge, int slot) const {
     return edge_interior_[edge * static_cast<std::size_t>(params_.order - 1) + static_cast<std::size_t>(slot)];
@@ -329,9 +337,11 @@ void Curver::curve_edges(const std::vector<char>& on_boundary) {
         note(placed);
         stats_.edges_on_curves += placed.place == CadPlace::Curve ? 1 : 0;
         stats_.edges_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
-        for (int i = 0; i < P - 1; ++i)
-          edge_interior_[e * static_cast<std::size_t>(P - 1) + static_cast<std::size_t>(i)] =
-              out_.add_node(placed.x[i], placed.att[i]);
+        for (int i = 0; i < P - 1; ++i) {
+          const NodeId id = out_.add_node(placed.x[i], placed.att[i]);
+          edge_interior_[e * static_cast<std::size_t>(P - 1) + static_cast<std::size_t>(i)] = id;
+          if (placed.att[i].kind != CadAttachment::None) edge_node_cad_.emplace(id, placed.att[i]);
+        }
       },
       edge_progress_, "edges");
 }
@@ -373,7 +383,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     for (int j : ext.boundary)
       if (j >= face.num_vertices)
         uv.row(j) =
-            detail::surface_parameter(model_, place.id, out_.cad_attachment(ids[j]), X.row(j).transpose(), &guess)
+            detail::surface_parameter(model_, place.id, edge_node_cad(ids[j]), X.row(j).transpose(), &guess)
                 .transpose();
     detail::continuous_parameters(s, uv, static_cast<int>(uv.rows()), face.num_vertices);
     // The harmonic extension in the kink chart's parameters (the identity on most surfaces).
@@ -410,8 +420,11 @@ void Curver::curve_faces(const std::vector<char>& on_boundary) {
   const int P = params_.order;
   face_stride_ = static_cast<std::size_t>(mesh::face_interior_count(4, P));
   face_interior_.assign(in_.faces().size() * face_stride_, mesh::kNoNode);
-  detail::parallel_blocks(
-      in_.faces().size(), model_.thread_safe(), kBlock,
+  // A block's nodes are made while the next block is placed: place_face reads the input mesh, the
+  // CAD, the edges' nodes (their room reserved in run: adding nodes never moves them) and
+  // edge_node_cad_, nothing the adding writes.
+  detail::overlapped_blocks(
+      in_.faces().size(), model_.thread_safe(), kBlock, [](std::size_t, std::size_t) {},
       [&](std::size_t f) {
         check_stop();
         return !face_taken_.empty() && face_taken_[f] ? taken_face(f) : place_face(f, on_boundary[f] != 0);
@@ -425,6 +438,8 @@ void Curver::curve_faces(const std::vector<char>& on_boundary) {
         stats_.faces_on_surfaces += placed.place == CadPlace::Surface ? 1 : 0;
         // Interior nodes in the face's own canonical order (interior slot, orientation code 0).
         const mesh::NodeLayout& layout = mesh::node_layout(shape, P);
+        if (out_.num_nodes() + ext.interior.size() > out_.nodes().capacity())
+          throw std::logic_error("curve_mesh: no room left for the nodes of face " + std::to_string(f));
         for (int j : ext.interior)
           face_interior_[f * face_stride_ + static_cast<std::size_t>(layout.slots[j].slot[0])] =
               out_.add_node(placed.x.row(j).transpose(), placed.att.empty() ? CadAttachment{} : placed.att[j]);
@@ -470,6 +485,16 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     curve_charts_.push_back(detail::kink_chart(model_.curve(c)));
     stats_.kinked_curves += curve_charts_.back().identity() ? 0 : 1;
   }
+  // Room for every node the curving makes, reserved once: the faces' and the volumes' nodes are
+  // placed from nodes made before while later ones are added, which must never move them.
+  // (Counted from the node layouts, not the harmonic extensions: those are built on first use
+  // inside the parallel loops, where Eigen's products run on one thread; built here, outside them,
+  // they would take Eigen's multi-threaded blocking and differ in the last bits.)
+  std::size_t all_nodes = in_.num_nodes() + in_.edges().size() * static_cast<std::size_t>(params_.order - 1);
+  for (const mesh::Face& face : in_.faces())
+    all_nodes += static_cast<std::size_t>(mesh::face_interior_count(face.num_vertices, params_.order));
+  for (const mesh::Element& el : in_.elements()) all_nodes += interior_node_count(el.shape, params_.order);
+  out_.reserve_nodes(all_nodes);
   for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
@@ -497,16 +522,9 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
 
   // Volume interiors: harmonic extensions in parallel (no CAD), then the nodes in element order; a
   // block's nodes and elements are made while the next block is extended, which reads the edges'
-  // and faces' nodes only: room is reserved for the interior nodes, so that adding them never
-  // moves those.
+  // and faces' nodes only: their room was reserved up front, so that adding them never moves those.
   const int P = params_.order;
   const std::size_t num_elements = in_.elements().size();
-  // (Counted from the node layouts, not the harmonic extensions: those are built on first use
-  // inside the parallel loop, where Eigen's products run on one thread; built here, outside it,
-  // they would take Eigen's multi-threaded blocking and differ in the last bits.)
-  std::size_t interior_nodes = 0;
-  for (const mesh::Element& el : in_.elements()) interior_nodes += interior_node_count(el.shape, P);
-  out_.reserve_nodes(out_.num_nodes() + interior_nodes);
   struct VolumeNodes {
     std::vector<NodeId> ids;  // canonical, kNoNode for the interior until made
     Eigen::MatrixXd x;        // (nodes, 3), interior rows filled
