@@ -215,7 +215,8 @@ int run_pipeline_command(const RunOptions& options, std::ostream& out, std::ostr
   if (options.verbose && !options.quiet && !options.log_json) print_configuration(config, out);
   std::unique_ptr<pipeline::Progress> progress = progress_for(options, out);
   try {
-    const pipeline::RunResult result = pipeline::run(config, *progress);
+    // The summary reads counts and the checks' figures only: the mesh may stay as written.
+    const pipeline::RunResult result = pipeline::run(config, *progress, pipeline::MeshAfterWrite::AsWritten);
     progress.reset();  // a terminal line stops drawing before the summary
     const int code = result.checks_passed() ? kExitOk : kExitInvalidMesh;
     if (options.log_json) {

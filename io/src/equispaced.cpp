@@ -164,6 +164,11 @@ EquispacedNodes::EquispacedNodes(mesh::Mesh& m, InPlace) : nodes_(&m.nodes()) {
 
 EquispacedNodes::~EquispacedNodes() {
   if (!moved_) return;
+  if (leave_resampled_) {
+    moved_->relabel_node_set(ho::NodeSet::Equispaced);
+    moved_->clear_cad_attachments();
+    return;
+  }
   // Faces, then edges, resampled back, each reading only nodes not yet moved back; the interiors,
   // which no face or edge reads, get their kept positions.
   std::vector<Eigen::Vector3d>& x = moved_->positions_for_resampling();

@@ -785,10 +785,11 @@ namespace {
 /// in config order, is rethrown). Progress: the mean of the files' own fractions, reported under a
 /// lock (one call at a time).
 void write_mesh_files(mesh::Mesh& mesh, const std::vector<std::string>& formats,
-                      const std::vector<std::string>& paths, const ProgressCallback& report,
-                      std::vector<std::string>& written) {
+                      const std::vector<std::string>& paths, MeshAfterWrite after_write,
+                      const ProgressCallback& report, std::vector<std::string>& written) {
   if (formats.empty()) return;
-  const io::EquispacedNodes nodes(mesh, io::EquispacedNodes::InPlace{});
+  io::EquispacedNodes nodes(mesh, io::EquispacedNodes::InPlace{});
+  if (after_write == MeshAfterWrite::AsWritten) nodes.leave_resampled();
   std::mutex lock;
   std::vector<double> done(formats.size(), 0.0);
   auto file_progress = [&](std::size_t i) -> ProgressCallback {
@@ -819,7 +820,7 @@ void write_mesh_files(mesh::Mesh& mesh, const std::vector<std::string>& formats,
 
 }  // namespace
 
-void write_outputs(const Config& config, Progress& progress, RunResult& result) {
+void write_outputs(const Config& config, Progress& progress, RunResult& result, MeshAfterWrite after_write) {
   stage("write", progress, result, [&](const ProgressCallback& report) {
     const std::vector<std::string> paths = output_paths(config.output);
     // Progress: an equal part per mesh file, and one for the pictures and the report.
@@ -834,20 +835,24 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
       };
       std::vector<std::string> staged_paths;
       for (const std::string& path : paths) staged_paths.push_back(staged(path));
+      // The pictures from the mesh as made, before the writers resample its nodes.
+      if (report && config.output.pictures) report(0.0, "pictures");
+      const std::vector<Picture> pictures =
+          config.output.pictures ? mesh_pictures(result.mesh, result.validity, config.output.picture_station)
+                                 : std::vector<Picture>{};
       std::vector<std::string> staged_files;
-      write_mesh_files(result.mesh, config.output.formats, staged_paths,
+      write_mesh_files(result.mesh, config.output.formats, staged_paths, after_write,
                        progress_part(report, 0.0, (parts - 1) / parts), staged_files);
       for (const std::string& file : staged_files) result.written_files.push_back(outputs.final_path(file));
-      if (report) report((parts - 1) / parts, config.output.pictures ? "pictures" : "report.json");
-      if (config.output.pictures)
-        for (const Picture& picture : mesh_pictures(result.mesh, result.validity, config.output.picture_station)) {
-          const std::string name = config.output.basename + picture.suffix;
-          io::AtomicFile file(outputs.staged(name));
-          file.write(picture.svg);
-          file.commit();
-          result.written_files.push_back(outputs.final_path(name));
-          result.pictures.push_back(outputs.final_path(name));
-        }
+      if (report) report((parts - 1) / parts, "report.json");
+      for (const Picture& picture : pictures) {
+        const std::string name = config.output.basename + picture.suffix;
+        io::AtomicFile file(outputs.staged(name));
+        file.write(picture.svg);
+        file.commit();
+        result.written_files.push_back(outputs.final_path(name));
+        result.pictures.push_back(outputs.final_path(name));
+      }
       result.peak_memory_mb = peak_memory_mb();
       io::AtomicFile report_file(staged_paths.back());
       report_file.write(report_json(result, config));
@@ -862,7 +867,7 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result) 
   });
 }
 
-RunResult run(const Config& config, Progress& progress) {
+RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_write) {
   RunResult result;
   const Geometry geometry = load_geometry(config, progress, result);
   const surface::SurfaceMeshes surfaces = mesh_surfaces(config, geometry, progress, result);
@@ -893,7 +898,7 @@ RunResult run(const Config& config, Progress& progress) {
                   [](const std::string& f) { return f == "msh41-ascii" || f == "msh22"; }))
     for (const std::string& refusal : pyfr_refusals(result.mesh)) result.warnings.push_back("output: " + refusal);
   result.peak_memory_mb = peak_memory_mb();
-  if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result);
+  if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result, after_write);
   return result;
 }
 

@@ -534,6 +534,38 @@ TEST(Equispaced, InPlaceGivesTheInteriorNodesTheirExactPositionsBack) {
   }
 }
 
+// Left resampled, the mesh is the files' mesh: equispaced nodes of the same maps (the reference's
+// to round-off), labelled so, its CAD attachments (whose parameters no longer match) dropped.
+TEST(Equispaced, InPlaceLeftResampledIsTheEquispacedMesh) {
+  const semimesh::mesh::CadAttachment on_surface{semimesh::mesh::CadAttachment::Surface, 0, 0.25, 0.5};
+  for (auto [gll, what] : gll_meshes()) {
+    const NodeId attached = gll.elements()[0].vertices[1];
+    gll.place_node_on_cad(attached, gll.node(attached), on_surface);
+    const Mesh reference = semimesh::io::to_equispaced(gll);
+    Mesh moved = gll;
+    {
+      semimesh::io::EquispacedNodes in_place(moved, semimesh::io::EquispacedNodes::InPlace{});
+      in_place.leave_resampled();
+    }
+    EXPECT_EQ(moved.node_set(), NodeSet::Equispaced) << what;
+    EXPECT_EQ(moved.cad_attachment(attached).kind, semimesh::mesh::CadAttachment::None) << what;
+    ASSERT_EQ(moved.num_nodes(), reference.num_nodes()) << what;
+    for (NodeId i = 0; i < reference.num_nodes(); ++i)
+      ASSERT_LT((moved.node(i) - reference.node(i)).norm(), 1e-12) << what << " node " << i;
+  }
+  // Nothing resampled (equispaced already): nothing changes.
+  Mesh eq = two_prisms(3);
+  const NodeId attached = eq.elements()[0].vertices[0];
+  eq.place_node_on_cad(attached, eq.node(attached), on_surface);
+  const std::vector<Eigen::Vector3d> before = eq.nodes();
+  {
+    semimesh::io::EquispacedNodes in_place(eq, semimesh::io::EquispacedNodes::InPlace{});
+    in_place.leave_resampled();
+  }
+  EXPECT_EQ(eq.nodes(), before);
+  EXPECT_EQ(eq.cad_attachment(attached).kind, semimesh::mesh::CadAttachment::Surface);
+}
+
 TEST(Equispaced, AnEquispacedMeshIsNotCopied) {
   const Mesh eq = two_prisms(3);
   const semimesh::io::EquispacedNodes nodes(eq);

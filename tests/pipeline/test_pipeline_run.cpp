@@ -94,6 +94,44 @@ TEST(PipelineRun, CoarseWingIsAValidConformingHybridMesh) {
   fs::remove_all(dir);
 }
 
+// A caller that reads no position after the run may keep the mesh as written: the same files,
+// and a mesh that says what it is (equispaced nodes of the same maps, no CAD attachments), where
+// the default gives back the mesh as made.
+TEST(PipelineRun, TheMeshAsWrittenIsTheFilesMeshAndTheFilesAreTheSame) {
+  CountingProgress progress;
+  const fs::path made_dir = fresh_directory("as_meshed"), written_dir = fresh_directory("as_written");
+  const std::vector<std::string> order3 = {"highorder.order=3", "output.pictures=true"};
+  const RunResult made = run(coarse_config(made_dir, order3), progress);
+  const RunResult written = run(coarse_config(written_dir, order3), progress, MeshAfterWrite::AsWritten);
+  ASSERT_TRUE(made.checks_passed() && written.checks_passed());
+  ASSERT_EQ(made.written_files.size(), written.written_files.size());
+  for (const std::string& file : made.written_files) {
+    const std::string name = fs::path(file).filename().string();
+    if (name == "report.json") continue;  // its timings differ
+    EXPECT_EQ(read_text(made_dir / name), read_text(written_dir / name)) << name;
+  }
+  EXPECT_EQ(made.mesh.node_set(), ho::NodeSet::GLL);
+  EXPECT_EQ(written.mesh.node_set(), ho::NodeSet::Equispaced);
+  std::size_t attached = 0;
+  for (mesh::NodeId i = 0; i < made.mesh.num_nodes(); ++i) {
+    attached += made.mesh.cad_attachment(i).kind != mesh::CadAttachment::None;
+    ASSERT_EQ(written.mesh.cad_attachment(i).kind, mesh::CadAttachment::None) << i;
+  }
+  EXPECT_GT(attached, 0u);
+  // Vertices are not resampled; the other nodes moved from the GLL to the equispaced places.
+  ASSERT_EQ(written.mesh.num_nodes(), made.mesh.num_nodes());
+  std::size_t moved = 0;
+  for (mesh::NodeId i = 0; i < made.mesh.num_nodes(); ++i) moved += written.mesh.node(i) != made.mesh.node(i);
+  EXPECT_GT(moved, made.mesh.num_nodes() / 2);
+  for (std::size_t e = 0; e < made.mesh.elements().size(); ++e)
+    for (int v = 0; v < ho::num_vertices(made.mesh.elements()[e].shape); ++v) {
+      const mesh::NodeId id = made.mesh.elements()[e].vertices[v];
+      ASSERT_EQ(written.mesh.node(id), made.mesh.node(id)) << "vertex " << id;
+    }
+  fs::remove_all(made_dir);
+  fs::remove_all(written_dir);
+}
+
 // Order 2, shell split into 3 layers of ratio 2, against the same case at order 1 without a split.
 TEST(PipelineRun, CoarseWingAtOrderTwoWithThreeLayers) {
   CountingProgress progress;

@@ -27,6 +27,12 @@ class EquispacedNodes {
   /// Meanwhile `mesh` must be read through this object only (its node set and CAD attachments do
   /// not describe them).
   EquispacedNodes(mesh::Mesh& mesh, InPlace);
+  /// In place: the positions stay where they were resampled to when this object is destroyed,
+  /// and the mesh is relabelled the equispaced node set and loses its CAD attachments (whose
+  /// parameters its nodes no longer match): the mesh the files hold, to round-off, without
+  /// resampling back (a caller that reads no position afterwards, e.g. the command line). No effect
+  /// when nothing was resampled.
+  void leave_resampled() { leave_resampled_ = true; }
   ~EquispacedNodes();
   EquispacedNodes(const EquispacedNodes&) = delete;
   EquispacedNodes& operator=(const EquispacedNodes&) = delete;
@@ -39,6 +45,7 @@ class EquispacedNodes {
   const std::vector<Eigen::Vector3d>* nodes_;
   mesh::Mesh* moved_ = nullptr;             // in place: the mesh whose positions go back
   std::vector<Eigen::Vector3d> kept_;       // in place: the interior nodes' positions, in pool order
+  bool leave_resampled_ = false;
 };
 
 /// The slow, obviously right reference of EquispacedNodes: a copy of `mesh` whose nodes are the

@@ -128,14 +128,23 @@ struct RunResult {
 /// (units, scale, sewing) and, for a body-only file, the wall plane and far field to build.
 cad::Source cad_source(const GeometryConfig& geometry);
 
+/// What RunResult::mesh holds once the mesh files are written, whose nodes are equispaced (the
+/// writers resample the mesh's own nodes in place).
+enum class MeshAfterWrite {
+  AsMeshed,   ///< the mesh as made: its node set and CAD attachments (the resampling undone)
+  AsWritten,  ///< the mesh as the files hold it: equispaced nodes, no CAD attachments, nothing
+              ///< undone (~0.2 s less on the paper's case): for a caller that reads no position after
+};
+
 /// Runs every stage. Throws RunError (kinds as above). When a check fails the mesh is not written
 /// (unless config.output.allow_invalid): the result says which check failed. Files are written
 /// atomically, report.json last; if one fails, the files this run had already written are removed.
-RunResult run(const Config& config, Progress& progress);
+RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_write = MeshAfterWrite::AsMeshed);
 
 /// The write stage of run(): the mesh files in config order, then report.json, atomically; on a
 /// failure the files this call wrote are removed and the error rethrown. Sets written_files.
-void write_outputs(const Config& config, Progress& progress, RunResult& result);
+void write_outputs(const Config& config, Progress& progress, RunResult& result,
+                   MeshAfterWrite after_write = MeshAfterWrite::AsMeshed);
 
 /// Output file paths the configuration asks for, mesh formats in config order, then report.json.
 std::vector<std::string> output_paths(const OutputConfig& output);
