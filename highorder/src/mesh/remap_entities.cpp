@@ -10,6 +10,7 @@
 #include "entity_keys.hpp"
 
 #include <algorithm>
+#include <array>
 #include <future>
 #include <system_error>
 #include <map>
@@ -202,38 +203,58 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
   }
 
   // The new faces in their first user's frame; `reframed`: an element's code must be found anew.
+  // Two halves on two threads (each face's pool entries start after all those of the faces before
+  // it: the second half starts where the first's sum ends).
+  const std::array<std::size_t, 2> per_face{static_cast<std::size_t>(face_interior_count(3, P)),
+                                            static_cast<std::size_t>(face_interior_count(4, P))};
+  const std::size_t half = face_order.size() / 2;
+  std::size_t face_pool_size = 0, second_half_first = 0;
+  for (std::size_t i = 0; i < face_order.size(); ++i) {
+    if (i == half) second_half_first = face_pool_size;
+    face_pool_size += per_face[old.faces_[face_order[i]].num_vertices - 3];
+  }
   std::vector<Face> faces(face_order.size());
-  std::size_t face_pool_size = 0;
-  for (std::uint32_t f : face_order) face_pool_size += static_cast<std::size_t>(face_interior_count(old.faces_[f].num_vertices, P));
   std::vector<NodeId> face_pool(face_pool_size);
-  std::size_t face_pool_end = 0;
   std::vector<char> reframed(face_order.size(), 0);
   for (const auto& [from, into] : merges.faces)  // users of `from` now see `into`: their codes change
     if (new_face[into] != kNone) reframed[new_face[into]] = 1;
-  for (std::size_t i = 0; i < face_order.size(); ++i) {
-    const Face& was = old.faces_[face_order[i]];
-    const int n = was.num_vertices;
-    std::array<NodeId, 4> stored{kNoNode, kNoNode, kNoNode, kNoNode}, frame{kNoNode, kNoNode, kNoNode, kNoNode};
-    for (int k = 0; k < n; ++k) stored[k] = to[was.vertices[k]];
-    user_vertices(first_user[i], frame);
-    const int code = face_orientation_code(frame.data(), stored.data(), n);
-    if (code < 0) return false;  // a twisted quadrilateral: the rebuild's error names it
-    reframed[i] = reframed[i] || code != 0;
-    Face& face = faces[i];
-    face.vertices = frame;
-    face.num_vertices = static_cast<std::uint8_t>(n);
-    face.first_node = static_cast<std::uint32_t>(face_pool_end);
-    face_nodes_in_frame(old.face_pool_, was.first_node, frames[n - 3], code, to, face_pool.data() + face_pool_end);
-    face_pool_end += static_cast<std::size_t>(face_interior_count(n, P));
-    const FirstUser& u = first_user[i];
-    const auto& own = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
-    for (std::size_t k = 0; k < own.size(); ++k) {
-      const std::uint32_t e = u.boundary ? old.boundary_[u.owner].edges[k]
-                                         : elements_[u.owner].edges[detail::face_edges_of(elements_[u.owner].shape)[u.local][k]];
-      face.edges[k] = new_edge[edge_target[e]];
-      if (frame[own[k][0]] > frame[own[k][1]]) face.edge_reversed |= static_cast<std::uint8_t>(1u << k);
+  // Faces [begin, end), their pool entries from `pool_end` on; false at a twisted quadrilateral
+  // (the rebuild's error names it).
+  const auto make_faces = [&](std::size_t begin, std::size_t end, std::size_t pool_end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const Face& was = old.faces_[face_order[i]];
+      const int n = was.num_vertices;
+      std::array<NodeId, 4> stored{kNoNode, kNoNode, kNoNode, kNoNode}, frame{kNoNode, kNoNode, kNoNode, kNoNode};
+      for (int k = 0; k < n; ++k) stored[k] = to[was.vertices[k]];
+      user_vertices(first_user[i], frame);
+      const int code = face_orientation_code(frame.data(), stored.data(), n);
+      if (code < 0) return false;
+      reframed[i] = reframed[i] || code != 0;
+      Face& face = faces[i];
+      face.vertices = frame;
+      face.num_vertices = static_cast<std::uint8_t>(n);
+      face.first_node = static_cast<std::uint32_t>(pool_end);
+      face_nodes_in_frame(old.face_pool_, was.first_node, frames[n - 3], code, to, face_pool.data() + pool_end);
+      pool_end += per_face[n - 3];
+      const FirstUser& u = first_user[i];
+      const auto& own = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
+      for (std::size_t k = 0; k < own.size(); ++k) {
+        const std::uint32_t e = u.boundary ? old.boundary_[u.owner].edges[k]
+                                           : elements_[u.owner].edges[detail::face_edges_of(elements_[u.owner].shape)[u.local][k]];
+        face.edges[k] = new_edge[edge_target[e]];
+        if (frame[own[k][0]] > frame[own[k][1]]) face.edge_reversed |= static_cast<std::uint8_t>(1u << k);
+      }
     }
+    return true;
+  };
+  std::future<bool> second_half;
+  try {
+    second_half = std::async(std::launch::async, make_faces, half, face_order.size(), second_half_first);
+  } catch (const std::system_error&) {  // no thread to be had: both halves on this one
   }
+  const bool first_made = make_faces(0, half, 0);
+  const bool second_made = second_half.valid() ? second_half.get() : make_faces(half, face_order.size(), second_half_first);
+  if (!first_made || !second_made) return false;
 
   // The lookups of the new entities, on another thread while the elements are renamed: every key
   // is distinct, so each id goes to the first free slot of its hash.

@@ -383,6 +383,46 @@ TEST(Compact, ReplacingNodesInPlaceThrowsTheFreshBuildsErrorFromALateBlock) {
   EXPECT_EQ(in_place, fresh);
 }
 
+// A weld that makes two quadrilaterals one face in two vertex cycles (twisted) is refused as a
+// fresh build refuses it, wherever that face comes among the remap's faces (it makes them in two
+// halves, on two threads): first, or last.
+TEST(Compact, ReplacingNodesRefusesATwistedQuadrilateralAsAFreshBuildDoes) {
+  for (bool last : {false, true}) {
+    Mesh m(2);
+    // A hexahedron of its own nodes (order 2: 27), the unit cube at `at`; returns its node ids.
+    const auto add_cube = [&](const Eigen::Vector3d& at) {
+      const Eigen::MatrixX3d ref = semimesh::ho::reference_nodes(Shape::Hexahedron, 2, semimesh::ho::NodeSet::Equispaced);
+      std::vector<NodeId> ids;
+      for (int i = 0; i < ref.rows(); ++i) ids.push_back(m.add_node(at + 0.5 * (ref.row(i).transpose() + Eigen::Vector3d::Ones())));
+      m.add_element(Shape::Hexahedron, ids);
+      return ids;
+    };
+    std::vector<NodeId> below, above;
+    if (!last) below = add_cube({0, 0, -1}), above = add_cube({0, 0, 1});
+    for (int k = 0; k < 300; ++k) add_cube({3.0 + 2 * k, 0, 0});  // ~1,800 other faces
+    if (last) below = add_cube({0, 0, -1}), above = add_cube({0, 0, 1});
+    std::vector<NodeId> to(m.num_nodes());
+    for (NodeId v = 0; v < m.num_nodes(); ++v) to[v] = v;
+    // The upper cube's bottom (vertices 0-3) onto the lower one's top (4-7), two corners swapped: the
+    // same four vertices in another cycle. (Its other nodes go onto themselves: only the vertices matter.)
+    const int onto[4] = {4, 6, 5, 7};
+    for (int k = 0; k < 4; ++k) to[above[k]] = below[onto[k]];
+    std::string fresh, in_place;
+    try {
+      built_afresh(m, to);
+    } catch (const std::invalid_argument& e) {
+      fresh = e.what();
+    }
+    try {
+      m.replace_nodes(to);
+    } catch (const std::invalid_argument& e) {
+      in_place = e.what();
+    }
+    EXPECT_NE(fresh.find("different cycle"), std::string::npos) << (last ? "last: " : "first: ") << fresh;
+    EXPECT_EQ(in_place, fresh) << (last ? "last" : "first");
+  }
+}
+
 // A mesh with the nodes (the first `nodes` of them), regions and the first `elements` elements of
 // `m`, each added by add_element.
 Mesh first_elements_of(const Mesh& m, std::size_t nodes, std::size_t elements) {
