@@ -53,7 +53,9 @@ std::uint64_t element_fingerprint(const mesh::Mesh& mesh, std::size_t e) {
   mix(static_cast<std::uint64_t>(mesh.elements()[e].shape));
   mix(static_cast<std::uint64_t>(mesh.order()));
   mix(static_cast<std::uint64_t>(mesh.node_set()));
-  for (mesh::NodeId id : mesh.element_nodes(e)) {
+  thread_local std::vector<mesh::NodeId> ids;  // a buffer per thread: no allocation per element
+  mesh.element_nodes(e, ids);
+  for (mesh::NodeId id : ids) {
     const Eigen::Vector3d& x = mesh.node(id);
     for (int c = 0; c < 3; ++c) {
       std::uint64_t bits = 0;

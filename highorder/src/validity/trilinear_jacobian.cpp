@@ -36,34 +36,51 @@ BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degre
     throw std::invalid_argument("elevated_on_segments: a product of three segments is needed");
   BernsteinPolynomial out(std::vector<SimplexFactor>(3, SimplexFactor{1, degree}));
   // One direction at a time over a dense box (a separable elevation: ~7k products at order 4, not
-  // the 140k of all 27 x 1728 pairs), box index i + n0 (j + n1 k); the 1D matrices kept per thread.
-  thread_local std::map<std::pair<int, int>, Eigen::MatrixXd> elevations;
+  // the 140k of all 27 x 1728 pairs), box index i + n0 (j + n1 k). Each pass reads lines of the box
+  // along its direction with a fixed stride (three loops per direction, no index arithmetic per
+  // entry: the checks elevate every straight-sided hexahedron). The 1D matrices, row-major, are kept
+  // per thread, the last one asked for at hand.
+  struct Elevation {
+    int from = -1, to = -1;
+    std::vector<double> rows;  // [to + 1][from + 1]
+  };
+  thread_local std::vector<Elevation> elevations;
+  const auto elevation = [&](int from_degree) -> const std::vector<double>& {
+    for (const Elevation& e : elevations)
+      if (e.from == from_degree && e.to == degree) return e.rows;
+    const Eigen::MatrixXd m = bernstein_elevation_1d(from_degree, degree);
+    Elevation e{from_degree, degree, std::vector<double>(static_cast<std::size_t>(m.size()))};
+    for (Eigen::Index r = 0; r < m.rows(); ++r)
+      for (Eigen::Index c = 0; c < m.cols(); ++c) e.rows[static_cast<std::size_t>(r * m.cols() + c)] = m(r, c);
+    elevations.push_back(std::move(e));
+    return elevations.back().rows;
+  };
   thread_local std::vector<double> box, next;
   std::array<int, 3> n{};
   for (int k = 0; k < 3; ++k) n[k] = from.factors[k].degree + 1;
   box.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0);
   for (int id = 0; id < from.size(); ++id)
     box[from.index[id][0] + n[0] * (from.index[id][1] + n[1] * from.index[id][2])] = p.coefficients()[id];
+  const int m_var = degree + 1;
   for (int var = 0; var < 3; ++var) {
-    auto [it, made] = elevations.try_emplace({n[var] - 1, degree});
-    if (made) it->second = bernstein_elevation_1d(n[var] - 1, degree);
-    const Eigen::MatrixXd& e = it->second;
+    const std::vector<double>& e = elevation(n[var] - 1);
+    const int len = n[var];
     std::array<int, 3> m = n;
-    m[var] = degree + 1;
-    // Strides of the box along (var, the others) before and after.
-    const std::array<long, 3> stride_in{1, n[0], static_cast<long>(n[0]) * n[1]};
-    const std::array<long, 3> stride_out{1, m[0], static_cast<long>(m[0]) * m[1]};
-    next.assign(static_cast<std::size_t>(m[0]) * m[1] * m[2], 0.0);
+    m[var] = m_var;
+    const long stride = var == 0 ? 1 : var == 1 ? n[0] : static_cast<long>(n[0]) * n[1];
+    next.resize(static_cast<std::size_t>(m[0]) * m[1] * m[2]);
+    double* o = next.data();
+    // Output entries in memory order (i fastest); each the sum over its input line, in line order.
     for (int k = 0; k < m[2]; ++k)
       for (int j = 0; j < m[1]; ++j)
         for (int i = 0; i < m[0]; ++i) {
-          const std::array<int, 3> at{i, j, k};
-          long base = 0;
-          for (int d = 0; d < 3; ++d)
-            if (d != var) base += at[d] * stride_in[d];
+          const int row = var == 0 ? i : var == 1 ? j : k;
+          const double* line = box.data() + (var == 0 ? 0 : i) + (var == 1 ? 0 : static_cast<long>(j) * n[0]) +
+                               (var == 2 ? 0 : static_cast<long>(k) * n[0] * n[1]);
+          const double* weights = e.data() + static_cast<long>(row) * len;
           double sum = 0.0;
-          for (int r = 0; r < n[var]; ++r) sum += e(at[var], r) * box[base + r * stride_in[var]];
-          next[i * stride_out[0] + j * stride_out[1] + k * stride_out[2]] = sum;
+          for (int r = 0; r < len; ++r) sum += weights[r] * line[r * stride];
+          *o++ = sum;
         }
     std::swap(box, next);
     n = m;
