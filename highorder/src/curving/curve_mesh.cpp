@@ -495,7 +495,7 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
     all_nodes += static_cast<std::size_t>(mesh::face_interior_count(face.num_vertices, params_.order));
   for (const mesh::Element& el : in_.elements()) all_nodes += interior_node_count(el.shape, params_.order);
   out_.reserve_nodes(all_nodes);
-  for (NodeId id = 0; id < in_.num_nodes(); ++id) out_.add_node(in_.node(id), in_.cad_attachment(id));
+  out_.copy_nodes(in_);
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);
   std::vector<char> edge_on_boundary(in_.edges().size(), 0), face_on_boundary(in_.faces().size(), 0);

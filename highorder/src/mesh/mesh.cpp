@@ -86,6 +86,13 @@ void Mesh::take_nodes(Mesh& other) {
   cad_ = std::move(other.cad_), other.cad_ = {};
 }
 
+void Mesh::copy_nodes(const Mesh& other) {
+  if (!nodes_.empty()) throw std::logic_error("Mesh::copy_nodes: this mesh has nodes already");
+  if (&other == this) return;
+  nodes_.insert(nodes_.end(), other.nodes_.begin(), other.nodes_.end());  // keeps the reserved room
+  cad_ = other.cad_;
+}
+
 const CadAttachment& Mesh::cad_attachment(NodeId id) const {
   static const CadAttachment none{};
   const auto it = cad_.find(id);

@@ -248,6 +248,29 @@ TEST(MeshModel, CadAttachmentMovesWithTheNode) {
   mesh.place_node(on_curve, {4, 0, 0});
 }
 
+// copy_nodes: the nodes and attachments add_node of each would give, into the room reserved; a
+// mesh with nodes already refuses it.
+TEST(MeshModel, CopiedNodesAreTheOnesAddedOneByOne) {
+  Mesh source(1);
+  for (int i = 0; i < 50; ++i) {
+    const Eigen::Vector3d x(i, 0.5 * i, -i);
+    source.add_node(x, i % 7 == 0 ? CadAttachment{CadAttachment::Surface, i % 3, 0.1 * i, 0.2} : CadAttachment{});
+  }
+  Mesh copy(3), reference(3);
+  copy.reserve_nodes(80);
+  const Eigen::Vector3d* room = copy.nodes().data();
+  copy.copy_nodes(source);
+  for (NodeId v = 0; v < source.num_nodes(); ++v) reference.add_node(source.node(v), source.cad_attachment(v));
+  EXPECT_EQ(copy.nodes(), reference.nodes());
+  EXPECT_EQ(copy.nodes().data(), room) << "the reserved room is used, not reallocated";
+  for (NodeId v = 0; v < source.num_nodes(); ++v) {
+    EXPECT_EQ(copy.cad_attachment(v).kind, reference.cad_attachment(v).kind) << v;
+    EXPECT_EQ(copy.cad_attachment(v).entity, reference.cad_attachment(v).entity) << v;
+    EXPECT_EQ(copy.cad_attachment(v).u, reference.cad_attachment(v).u) << v;
+  }
+  EXPECT_THROW(copy.copy_nodes(source), std::logic_error);
+}
+
 TEST(MeshModel, ElementsKeepTheirRegion) {
   Mesh m(1);
   NodeMaker maker{m, {}, {}};

@@ -191,6 +191,9 @@ class Mesh {
   /// without nodes: for a stage that builds a new mesh on an old one's nodes and reads the old one's
   /// topology only (ho::split_layers).
   void take_nodes(Mesh& other);
+  /// A copy of the nodes and CAD attachments of `other` (same ids; this mesh must have none), into
+  /// the room reserve_nodes made: add_node of each in turn, without a lookup of each one's attachment.
+  void copy_nodes(const Mesh& other);
   /// Every node's position, to be moved to another node set's positions of the same element maps
   /// and back (io::EquispacedNodes for the writers): the CAD attachments and the node set are left
   /// as they are, so nobody else may read the positions until they are back.
