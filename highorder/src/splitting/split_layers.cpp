@@ -1,5 +1,6 @@
 #include "semimesh/ho/splitting/split_layers.hpp"
 
+#include "inside_nodes.hpp"
 #include "lattice_lines.hpp"
 #include "parallel_for.hpp"
 #include "reference_lattice.hpp"
@@ -224,7 +225,8 @@ class Splitter {
   std::vector<NodeId> slots_;
   std::size_t edge_block_size_ = 0, face_block_size_ = 0;
   std::size_t nodes_bound_ = 0;  // the most nodes the output can have: room reserved for them
-  std::map<NodeKey, NodeId> element_nodes_, other_nodes_;
+  detail::InsideNodes element_nodes_;       // inside the element being split
+  std::map<NodeKey, NodeId> other_nodes_;
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
   // nodes, its pieces' node lists.
   std::vector<NodeId> coarse_;
@@ -323,7 +325,7 @@ NodeId& Splitter::slot_of(const NodeKey& key) {
   if (key[0] == 2)
     return slot(face_block_[key[7]], face_block_size_, static_cast<std::size_t>(key[6] * in_.order() + key[5]));
   if (key[0] == 3) {
-    return element_nodes_.try_emplace(key, mesh::kNoNode).first->second;
+    return element_nodes_[key];
   }
   return other_nodes_.try_emplace(key, mesh::kNoNode).first->second;
 }
@@ -490,7 +492,7 @@ void Splitter::split_element(std::size_t element, const SplitGeometry& geometry)
   const std::vector<NodeId>& coarse = coarse_;
   const int nn = static_cast<int>(coarse.size());
   const Eigen::MatrixX3d& x = geometry.x;
-  element_nodes_.clear();  // the last element's inner nodes: no other element names them
+  element_nodes_.next_element();  // the last element's inner nodes: no other element names them
 
   std::vector<std::vector<NodeId>>& subs = pieces_;
   subs.resize(static_cast<std::size_t>(na) * nb);
