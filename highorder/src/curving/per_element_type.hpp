@@ -25,7 +25,8 @@ class PerElementType {
   template <class Build>
   const T& get(Shape shape, int order, NodeSet set, Build&& build) {
     if (order < 0 || order > kMaxOrder)
-      throw std::invalid_argument("order " + std::to_string(order) + " outside [0, " + std::to_string(kMaxOrder) + "]");
+      throw std::invalid_argument("reference-element table: order " + std::to_string(order) + " outside [0, " +
+                                  std::to_string(kMaxOrder) + "]");
     std::atomic<const T*>& slot =
         slots_[(static_cast<std::size_t>(shape) * (kMaxOrder + 1) + static_cast<std::size_t>(order)) * 2 +
                (set == NodeSet::GLL ? 1 : 0)];

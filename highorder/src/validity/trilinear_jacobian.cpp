@@ -36,10 +36,10 @@ BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degre
     throw std::invalid_argument("elevated_on_segments: a product of three segments is needed");
   BernsteinPolynomial out(std::vector<SimplexFactor>(3, SimplexFactor{1, degree}));
   // One direction at a time over a dense box (a separable elevation: ~7k products at order 4, not
-  // the 140k of all 27 x 1728 pairs), box index i + n0 (j + n1 k). Each pass reads lines of the box
-  // along its direction with a fixed stride (three loops per direction, no index arithmetic per
-  // entry: the checks elevate every straight-sided hexahedron). The 1D matrices, row-major, are kept
-  // per thread, the last one asked for at hand.
+  // the 140k of all 27 x 1728 pairs), box index i + n0 (j + n1 k). Each output entry is a weighted
+  // sum along one line of the box, read from its start with the direction's fixed stride (the checks
+  // elevate every straight-sided hexahedron). The 1D matrices, row-major, are kept per thread (a
+  // few: found by a scan).
   struct Elevation {
     int from = -1, to = -1;
     std::vector<double> rows;  // [to + 1][from + 1]

@@ -523,7 +523,7 @@ void add_tetrahedra(const TetgenOutput& output, std::vector<NodeId> plc_node, me
   plc_node.resize(output.points.size(), mesh::kNoNode);
   for (std::size_t i = boundary_points; i < output.points.size(); ++i)
     if (used[i]) plc_node[i] = mesh.add_node(output.points[i]);
-  mesh.reserve(ho::Shape::Tetrahedron, output.tets.size());
+  mesh.reserve(ho::Shape::Tetrahedron, mesh.elements().size() + output.tets.size());  // all it will hold
   // Sized ahead (a lookup that grows rehashes every key it holds): a Delaunay mesh has about 1.2-1.4
   // edges and 2.1-2.2 faces per tetrahedron (the paper's case: ~1.4 and ~2.16).
   const std::size_t tets = output.tets.size();
