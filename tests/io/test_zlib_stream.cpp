@@ -2,6 +2,8 @@
 // base64 decoder: RFC 4648's test vectors, data fed in pieces of every length, both contents.
 #include "zlib_stream.hpp"
 
+#include "temp_path.hpp"
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -12,15 +14,12 @@
 #include <iterator>
 #include <random>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace semimesh::io {
 namespace {
 
-std::string temporary_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("semimesh_" + std::to_string(::getpid()) + "_" + name)).string();
-}
+std::string temporary_path(const std::string& name) { return semimesh::test::temp_path(name).string(); }
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
