@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace semimesh::nearfield {
 namespace {
@@ -19,7 +20,40 @@ double dihedral_deg(const Vec3& n_face, const Vec3& into, const Vec3& n_wall) {
   return into.dot(n_wall) >= 0.0 ? opening : 360.0 - opening;
 }
 
+// The share of a limit thickness the message suggests: at the limit itself the halo stands
+// straight over the root and the skins cross there (a sharp tapered NACA 0006 root: 90 % of the
+// wall layer's limit and 110 % of the shell's ran, 99.8 % and 103 % did not).
+constexpr double kMargin = 0.9;
+
+// `value` rounded to 4 significant digits, down or up: a suggested bound that is safe as printed.
+double rounded(double value, bool up) {
+  if (!(value > 0.0)) return value;
+  const double unit = std::pow(10.0, std::floor(std::log10(value)) - 3);
+  return (up ? std::ceil(value / unit) : std::floor(value / unit)) * unit;
+}
+
 }  // namespace
+
+std::optional<ThicknessesThatFit> thicknesses_that_fit(const cad::Model& model, const std::vector<int>& body_surfaces,
+                                                       const Vec3& root, const Vec3& e, const Vec3& n_wall,
+                                                       double wing_offset, double wall_offset) {
+  const auto distance_at = [&](double height) {
+    return nearest_on_surfaces(model, body_surfaces, root + height * n_wall).distance;
+  };
+  const Vec3 top_point = root + wall_offset * n_wall;
+  const NearestPoint top_foot = nearest_on_surfaces(model, body_surfaces, top_point);
+  const double top = top_foot.distance;
+  // A lean away: the point is too far from the body on the fluid's side (away from it along e);
+  // on the other side it lies over a body leaning towards the wall, where medial_halo finds its point.
+  if (top_foot.surface < 0 || !(top > wing_offset) || !((top_point - top_foot.point).dot(e) > 0.0)) return std::nullopt;
+  // From the root (distance 0) up to wall_offset the distance passes wing_offset: bisection.
+  double lo = 0.0, hi = wall_offset;
+  for (int i = 0; i < 60 && hi - lo > 1e-12 * wall_offset; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (distance_at(mid) > wing_offset ? hi : lo) = mid;
+  }
+  return ThicknessesThatFit{rounded(lo, false), rounded(top, true)};
+}
 
 std::vector<WallCurve> wall_curves(const cad::Model& model, const std::vector<int>& body_surfaces, int wall,
                                    int samples) {
@@ -88,9 +122,17 @@ Vec3 medial_halo(const cad::Model& model, const std::vector<int>& body_surfaces,
     if (!(slope > 0.05)) break;
     a = std::clamp(a - residual / slope, 0.5 * a, 2.0 * a);
   }
-  throw NearFieldError("near field: no medial halo point at " + number_label(wing_offset) + " from the body and " +
-                       number_label(wall_offset) + " from the wall above the root point " + point_label(root) +
-                       "; the wing and the wall meet at too sharp or too open an angle there");
+  const std::string where = "near field: no medial halo point at " + number_label(wing_offset) + " from the body and " +
+                            number_label(wall_offset) + " from the wall above the root point " + point_label(root);
+  if (const auto fit = thicknesses_that_fit(model, body_surfaces, root, e, n_wall, wing_offset, wall_offset))
+    throw NearFieldError(where + ": the body leans away from the wall's normal there, so the point " +
+                         number_label(wall_offset) + " above the root is already " + number_label(fit->shell_at_least) +
+                         " from the body; use a wall layer thickness below " + number_label(fit->wall_below) +
+                         " (wall_layer.thickness; e.g. " + number_label(rounded(kMargin * fit->wall_below, false)) +
+                         ") or a shell thickness of at least " + number_label(fit->shell_at_least) +
+                         " (nearfield.thickness; e.g. " + number_label(rounded(fit->shell_at_least / kMargin, true)) +
+                         "): at the limit the halo stands straight over the root and the layer folds there");
+  throw NearFieldError(where + "; the wing and the wall meet at too sharp or too open an angle there");
 }
 
 }  // namespace semimesh::nearfield

@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
+#include <string>
 
 namespace semimesh::nearfield {
 namespace {
@@ -81,6 +83,40 @@ TEST(MedialHalo, NoPointBeyondTheWingIsAnErrorNamingThePlace) {
   // behind the root, inside the body; none in front of it.
   const auto model = leaning_wing(175.0);
   EXPECT_THROW(medial_halo(*model, {0}, Vec3(0.25, 0, 0), Vec3::UnitY(), Vec3::UnitZ(), 0.1, 0.5), NearFieldError);
+}
+
+std::string number(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+// At 120 degrees the wing leans away from the wall's normal: the point d2 up the normal is
+// d2 |cos a| from the wing plane. The closed form's window d2 < d1 / -cos a is the wall thickness
+// that fits, d2 |cos a| the shell thickness that does; the message names both, and both work.
+TEST(MedialHalo, ABodyLeaningAwayNamesTheThicknessesThatFitAndTheyDo) {
+  const auto model = leaning_wing(120.0);
+  const double d1 = 0.1, d2 = 0.5;  // the point 0.5 up is 0.25 from the wing
+  const Vec3 root(0.25, 0, 0);
+  const auto fit = thicknesses_that_fit(*model, {0}, root, Vec3::UnitY(), Vec3::UnitZ(), d1, d2);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_LE(fit->wall_below, 0.2);
+  EXPECT_GT(fit->wall_below, 0.2 - 1e-3);
+  EXPECT_GE(fit->shell_at_least, 0.25);
+  EXPECT_LT(fit->shell_at_least, 0.25 + 1e-3);
+  try {
+    medial_halo(*model, {0}, root, Vec3::UnitY(), Vec3::UnitZ(), d1, d2);
+    FAIL() << "no halo point expected";
+  } catch (const NearFieldError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("below " + number(fit->wall_below) + " (wall_layer.thickness;"), std::string::npos) << message;
+    EXPECT_NE(message.find("at least " + number(fit->shell_at_least) + " (nearfield.thickness;"), std::string::npos)
+        << message;
+  }
+  EXPECT_NO_THROW(medial_halo(*model, {0}, root, Vec3::UnitY(), Vec3::UnitZ(), d1, fit->wall_below));
+  EXPECT_NO_THROW(medial_halo(*model, {0}, root, Vec3::UnitY(), Vec3::UnitZ(), fit->shell_at_least, d2));
+  // Leaning towards the normal (60 degrees), the point up it lies beyond the wing: no lean to name.
+  EXPECT_FALSE(thicknesses_that_fit(*leaning_wing(60.0), {0}, root, Vec3::UnitY(), Vec3::UnitZ(), d1, d2).has_value());
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "semimesh/cad/model.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace semimesh::nearfield {
@@ -35,7 +36,8 @@ std::vector<WallCurve> concave_wall_curves(const cad::Model& model, const std::v
 /// such that H lies at distance `wing_offset` from the body surfaces, and at `wall_offset` from the
 /// (planar) wall. `e` is a unit direction in the wall plane pointing away from the body.
 /// Newton on a, distances by cadapi projections (the nearest of `body_surfaces`).
-/// Throws NearFieldError naming the place when no such point is found near the root.
+/// Throws NearFieldError naming the place when no such point is found near the root, and the
+/// thicknesses that fit where the body leans away from the wall there (thicknesses_that_fit).
 Vec3 medial_halo(const cad::Model& model, const std::vector<int>& body_surfaces, const Vec3& root, const Vec3& e,
                  const Vec3& n_wall, double wing_offset, double wall_offset);
 
@@ -47,5 +49,20 @@ struct NearestPoint {
   int surface = -1;
 };
 NearestPoint nearest_on_surfaces(const cad::Model& model, const std::vector<int>& surfaces, const Vec3& x);
+
+/// Where medial_halo finds no point because the body leans away from the wall's normal at `root`
+/// (the point `wall_offset` up that normal is farther than `wing_offset` from the body, on the side
+/// `e` leads to, away from the body): the
+/// thicknesses that would fit, each rounded to 4 digits on its safe side. The wall's (below
+/// `wall_below`, the distance up the normal still within `wing_offset` of the body, by bisection)
+/// with the shell's kept, or the shell's (at least `shell_at_least`, that point's distance) with
+/// the wall's kept. std::nullopt when the body does not lean away there.
+struct ThicknessesThatFit {
+  double wall_below = 0.0;
+  double shell_at_least = 0.0;
+};
+std::optional<ThicknessesThatFit> thicknesses_that_fit(const cad::Model& model, const std::vector<int>& body_surfaces,
+                                                       const Vec3& root, const Vec3& e, const Vec3& n_wall,
+                                                       double wing_offset, double wall_offset);
 
 }  // namespace semimesh::nearfield
