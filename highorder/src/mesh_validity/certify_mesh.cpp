@@ -80,18 +80,19 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
 
   MeshValidity out;
   out.bounds.resize(n);
-  std::atomic<std::size_t> taken{0};
+  std::atomic<std::size_t> from_parent{0}, certified_before{0};
   detail::parallel_for(n, true, [&](std::size_t e) {
     const InheritedBounds* entry = inherited ? entry_of(*inherited, e) : nullptr;
     if (entry && usable(*entry, mesh, min_scaled_jacobian)) {
       out.bounds[e] = entry->bounds;
-      taken.fetch_add(1, std::memory_order_relaxed);
+      (entry->from_parent ? from_parent : certified_before).fetch_add(1, std::memory_order_relaxed);
       return;
     }
     out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(),
                                      mesh.element_coordinates(e), max_depth, min_scaled_jacobian);
   }, progress, "elements");
-  out.inherited = taken.load();
+  out.inherited = from_parent.load();
+  out.certified_before = certified_before.load();
 
   std::vector<double> scaled(n);
   for (std::size_t e = 0; e < n; ++e) {
@@ -132,7 +133,8 @@ InheritedBounds certificate(const char* who, const mesh::Mesh& mesh, std::size_t
                                 "; only 3D elements can be certified");
   return {e, element_fingerprint(mesh, e),
           certify_jacobian(shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e), max_depth,
-                           min_scaled_jacobian)};
+                           min_scaled_jacobian),
+          /*from_parent=*/false};
 }
 
 }  // namespace

@@ -24,7 +24,10 @@ struct MeshValidity {
   double median_scaled_jacobian = 1.0;         ///< lower median over all elements; 1 for no elements
   std::vector<std::size_t> invalid_elements;   ///< [invalid] element indices, ascending
   std::vector<Eigen::Vector3d> invalid_centroids;  ///< [invalid] mean of each invalid element's vertices
-  std::size_t inherited = 0;                   ///< elements whose bounds came from their parent (InheritedBounds)
+  std::size_t inherited = 0;                   ///< elements whose bounds came from their parent (InheritedBounds
+                                               ///< from_parent): the same count at every run
+  std::size_t certified_before = 0;            ///< elements that took a certificate computed before (certify_ahead,
+                                               ///< certify_behind): speculative work, so a count that depends on timing
   bool all_valid() const { return invalid == 0; }
 };
 
@@ -36,6 +39,8 @@ struct InheritedBounds {
   std::size_t element = 0;        ///< the element's index in the mesh
   std::uint64_t fingerprint = 0;  ///< element_fingerprint when the bounds were derived
   JacobianBounds bounds;
+  bool from_parent = true;        ///< derived from the parent's map; false: the element's own certificate,
+                                  ///< computed before (certify_ahead, certify_behind)
 };
 
 /// A hash of element e's shape, the mesh's order and node set, and the bits of its nodes'
