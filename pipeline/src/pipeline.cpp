@@ -431,6 +431,7 @@ struct LinearMesh {
   std::vector<ho::PrecutFace> precut_faces;   ///< H-type: the fan's cuts on the junction hexes' faces
   ho::CurvedAhead curved_ahead;                   ///< order > 1: what was curved beside TetGen (may be empty)
   std::vector<ho::InheritedBounds> certified_ahead;  ///< and certified there (the repair's depth and floor)
+  ho::PieceBoundsAhead pieces_ahead;  ///< and the split pieces' inherited bounds derived there
 };
 
 // The wing layer's ratio and its field along the body (from boundary_layer, y+ resolved).
@@ -457,6 +458,24 @@ nearfield::LayerFractions layer_fractions(const Config& config, double chord) {
     for (double& z : f) z = 0.5 * (z + 1.0);
     return f;
   };
+}
+
+// The two layer families the split takes: the wing's (on an H-type its ratio field decays along
+// the wake) and the wall's, at the configured numbers of layers (the wall's 1 without a junction).
+struct LayerFamilies {
+  FamilySplit wing, wall;
+};
+
+LayerFamilies layer_families(const Config& config, double chord, const nearfield::WakeBlock& wake) {
+  const int layers = config.boundary_layer.split.layers;
+  const int wall_layers = builds_junction(config) ? config.wall_layer.split.layers : 1;
+  const WingRatio wing = wing_ratio(config, chord);
+  const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
+  ho::RatioField wing_field = wing.upstream;
+  if (wake.hexes > 0) wing_field = wake_ratio_field(wake, wing.upstream, wing.ratio, config.wake.ratio_end);
+  return {{ho::LayerDistribution{layers, wing.ratio}, wing_field},
+          {ho::LayerDistribution{wall_layers, wall_ratio},
+           ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)}};
 }
 
 // The linear mesh: the near-field shell (O: prisms; C: prisms and the root junction's hexes; H: and
@@ -489,27 +508,36 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
     result.warnings.push_back(fmt::format("near field: {} at ({:.4g}, {:.4g}, {:.4g})", w.message, w.where.x(),
                                           w.where.y(), w.where.z()));
   // While TetGen's process makes the far field (a core idle otherwise), the elements made so far
-  // are curved and certified as the curve and repair stages will: the curving takes the nodes
-  // placed for the same edges, faces and elements (ho::CurvedAhead), the repair the bounds of the
-  // elements whose nodes are then the same (fingerprints); each computes the rest itself. Stopped
-  // when TetGen answers: whatever was not done ahead is done by the stages, as without it.
+  // are curved and certified as the curve and repair stages will, and their split pieces' bounds
+  // derived as the split will: the curving takes the nodes placed for the same edges, faces and
+  // elements (ho::CurvedAhead), the repair the bounds of the elements whose nodes are then the same
+  // (fingerprints), the split the pieces' bounds of the elements whose nodes and pieces are then
+  // the same; each computes the rest itself. Stopped when TetGen answers: whatever was not done
+  // ahead is done by the stages, as without it.
   ho::CurvedAhead curved_ahead;
   std::vector<ho::InheritedBounds> certified_ahead;
+  ho::PieceBoundsAhead pieces_ahead;
+  const bool splits = config.boundary_layer.split.layers > 1 ||
+                      (junction && config.wall_layer.split.layers > 1);
   farfield::BesideTetgen beside;
   if (config.highorder.order > 1)
-    beside = [&](const mesh::Mesh& so_far, const std::atomic<bool>& stop) {
+    beside = [&](const mesh::Mesh& so_far, const std::vector<nearfield::LayerStack>& stacks,
+                 const std::atomic<bool>& stop) {
       curved_ahead = ho::curve_ahead(so_far, *g.model, config.highorder, stop);
-      if (!curved_ahead.empty())
-        certified_ahead =
-            ho::certify_ahead(curved_ahead.curved, kRepairDepth, config.checks.min_scaled_jacobian, stop);
+      if (curved_ahead.empty()) return;
+      certified_ahead = ho::certify_ahead(curved_ahead.curved, kRepairDepth, config.checks.min_scaled_jacobian, stop);
+      if (splits && config.checks.inherit_bounds && !stop) {
+        const LayerFamilies families = layer_families(config, chord, wake);
+        pieces_ahead = piece_bounds_ahead(curved_ahead.curved, stacks, families.wing, families.wall, stop);
+      }
     };
   farfield::FarField far = stage("far field", progress, result, [&](const ProgressCallback& report) {
     return farfield::build_far_field(*g.model, std::move(near), config.farfield, g.roles.farfield, g.roles.wall,
                                      junction ? config.wall_layer.thickness : 0.0, report, beside);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh), std::move(far.stacks), std::move(wake), std::move(precut_faces),
-          std::move(curved_ahead), std::move(certified_ahead)};
+  return {std::move(far.mesh),         std::move(far.stacks),      std::move(wake),        std::move(precut_faces),
+          std::move(curved_ahead),     std::move(certified_ahead), std::move(pieces_ahead)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -575,27 +603,22 @@ std::vector<ho::InheritedBounds> merged_bounds(std::vector<ho::InheritedBounds> 
 
 // Splitting after curving, every layer stack in one pass along its own direction(s): the pieces
 // inherit the coarse elements' curved map (isoparametric).
-mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& linear, double chord,
+mesh::Mesh split(const Config& config, mesh::Mesh coarse, LinearMesh& linear, double chord,
                  Progress& progress, RunResult& result, std::vector<ho::InheritedBounds>& inherited) {
   const std::vector<nearfield::LayerStack>& stacks = linear.stacks;
   const int layers = result.layers.layers, wall_layers = result.wall_layers.layers;
   const BoundaryLayerConfig layer = resolve_y_plus(config.boundary_layer, chord);
-  const WingRatio wing = wing_ratio(config, chord);
-  const double ratio = wing.ratio;
-  const double wall_ratio = wall_layers > 1 ? effective_wall_ratio(config.wall_layer) : 1.0;
-  ho::RatioField wing_field = wing.upstream;
+  const LayerFamilies families = layer_families(config, chord, linear.wake);
+  const double ratio = families.wing.distribution.ratio;
   if (linear.wake.hexes > 0) {
-    wing_field = wake_ratio_field(linear.wake, wing.upstream, ratio, config.wake.ratio_end);
     result.wake.ratio_first = ratio;
     result.wake.ratio_last = config.wake.ratio_end;
   }
   // H-type: the far field stands on skin quads cut like the split; the weld makes their nodes the split's.
   const bool weld = linear.wake.hexes > 0 && layers > 1;
   StackSplit split = stage("split", progress, result, [&](const ProgressCallback& report) {
-    StackSplit fine = split_stacks(std::move(coarse), stacks, {ho::LayerDistribution{layers, ratio}, wing_field},
-                                   {ho::LayerDistribution{wall_layers, wall_ratio},
-                                    ratio_field(config.wall_layer.ratio_line, config.wall_layer.ratio_end, wall_ratio)},
-                                   report, config.checks.inherit_bounds, ho::SplitEntities::Adopted);
+    StackSplit fine = split_stacks(std::move(coarse), stacks, families.wing, families.wall, report,
+                                   config.checks.inherit_bounds, ho::SplitEntities::Adopted, &linear.pieces_ahead);
     // The coarse elements' inner nodes and the entities only they used are no longer used by
     // any element: drop them, and number the entities as an element by element build would (the
     // weld does both in its own renumbering of the mesh).
@@ -603,6 +626,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     return fine;
   });
   coarse = mesh::Mesh();  // not needed any more
+  linear.pieces_ahead = ho::PieceBoundsAhead();  // served the split: the weld is the run's peak
   const std::size_t split_elements = split.mesh.elements().size();
   std::vector<ho::InheritedBounds> certified_behind;  // beside the weld's rebuild, for the checks
   if (weld)
@@ -645,8 +669,8 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, const LinearMesh& line
     }
   }
   if (wall_layers > 1) {
-    result.wall_layers.requested_ratio = wall_ratio;
-    result.wall_layers.requested_ratio_end = config.wall_layer.ratio_end.value_or(wall_ratio);
+    result.wall_layers.requested_ratio = families.wall.distribution.ratio;
+    result.wall_layers.requested_ratio_end = config.wall_layer.ratio_end.value_or(families.wall.distribution.ratio);
     result.wall_layers.achieved_ratio = split.wall.achieved_ratio;
     result.wall_layers.first_cell_height_min = split.wall.first_cell_height_min;
     result.wall_layers.first_cell_height_max = split.wall.first_cell_height_max;

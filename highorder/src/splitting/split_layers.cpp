@@ -5,12 +5,14 @@
 #include "parallel_for.hpp"
 #include "reference_lattice.hpp"
 #include "sparse_rows.hpp"
+#include "split_by_keys.hpp"
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -112,6 +114,31 @@ struct Plan {
   bool two() const { return direction[1] >= 0; }
 };
 
+/// One distinct node of the pieces of an element split by a plan, named without the element
+/// (what key_of computes from the element, worked out once per shape, plan and layer counts).
+struct SubNode {
+  enum class Kind : std::uint8_t {
+    Coarse,  ///< a coarse node: `local`
+    Edge,    ///< on the coarse edge `local` across the layers, at level `level`
+    Face,    ///< on the coarse side face `local` standing on bottom edge (a, b), `along` of `steps`
+    Inside,  ///< inside the element: no other element names it
+    Keyed,   ///< on a face cut both ways: named by key_of at `point`, `g`
+  };
+  Kind kind = Kind::Coarse;
+  int local = 0;
+  int a = 0, b = 0, along = 0, steps = 0, level = 0;
+  LatticePoint point{};
+  std::array<int, 2> g{0, 0};
+  int first_row = 0;  ///< piece * nodes + i of its first use: the row of the positions it is placed at
+};
+
+/// Every distinct node of an element's pieces in the order of first use (piece by piece, node by
+/// node, the order in which they are made), and for every piece's node which one it is.
+struct SplitRecipe {
+  std::vector<SubNode> nodes;
+  std::vector<std::uint32_t> node_of;  ///< [pieces * nodes] index into `nodes`
+};
+
 class Splitter {
  public:
   /// `give_nodes`: the input itself, whose nodes then move into the output instead of being copied
@@ -132,6 +159,12 @@ class Splitter {
   mesh::Mesh run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,
                  std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                  std::vector<InheritedBounds>* inherited = nullptr);
+  /// run names every node by key_of (split_element_by_keys): the reference.
+  void name_nodes_by_keys() { by_keys_ = true; }
+  /// run's inherited bounds taken from `ahead` where they still hold (null: none).
+  void take_bounds_from(const PieceBoundsAhead* ahead) { ahead_ = ahead; }
+  /// PieceBoundsAhead's entries for the listed elements of the input (piece_bounds_ahead).
+  std::vector<PieceBoundsAhead::Entry> bounds_ahead(const std::vector<LayerSplit>& split, const std::atomic<bool>& stop);
 
  private:
   /// Throws unless there is a family and each has layers >= 1 and a constant ratio >= 1.
@@ -192,14 +225,28 @@ class Splitter {
     std::vector<std::optional<JacobianBounds>> bounds;  // [pieces] inherited (certify_pieces), when asked
   };
   /// Per direction slot, the layer interfaces at each bottom vertex of that direction (calls the
-  /// ratio field; serial). Empty for a slot whose ratio is constant over the element.
+  /// ratio field at the vertices' points in `at`; serial). Empty for a slot whose ratio is constant
+  /// over the element.
   using VertexInterfaces = std::array<std::vector<std::vector<double>>, 2>;
-  VertexInterfaces interfaces_of(std::size_t element);
+  VertexInterfaces interfaces_of(std::size_t element, const mesh::Mesh& at) const;
+  /// Per direction slot, the interfaces of constant ratio the family's own (one for no split).
+  std::array<std::vector<double>, 2> uniform_interfaces(std::size_t element) const;
   SplitGeometry place_sub_nodes(std::size_t element, const VertexInterfaces& z_of_vertex) const;
   /// The reference boxes of the pieces of an element split with constant interfaces `z` per slot.
   std::vector<ReferenceBox> piece_boxes(std::size_t element, const std::array<std::vector<double>, 2>& z) const;
-  /// Piece node lists of one coarse element into pieces_, body-side pieces first; creates the new nodes.
+  /// Piece node lists of one coarse element into pieces_, body-side pieces first; creates the new
+  /// nodes, each named once through the element's recipe.
   void split_element(std::size_t element, const SplitGeometry& geometry);
+  /// The same, every node of every piece named by key_of and looked up: the reference.
+  void split_element_by_keys(std::size_t element, const SplitGeometry& geometry);
+  /// The recipe of an element's shape, plan and layer counts (made on first use).
+  const SplitRecipe& recipe_of(std::size_t element);
+  /// What key_of names the node at lattice point `l`, refined coordinates `g`, of an element of
+  /// `data`'s shape split by `plan` into (na, nb) layers, without the element.
+  SubNode describe(const ShapeData& data, const Plan& plan, int na, int nb, const LatticePoint& l,
+                   const std::array<int, 2>& g);
+  /// Stats of one split element.
+  void add_figures(std::size_t element, const SplitGeometry& geometry);
   NodeKey key_of(std::size_t element, const std::vector<NodeId>& coarse, const LatticePoint& l,
                  const std::array<int, 2>& g) const;
   NodeId node_for(const NodeKey& key, const Eigen::Vector3d& x);
@@ -225,19 +272,51 @@ class Splitter {
   std::vector<NodeId> slots_;
   std::size_t edge_block_size_ = 0, face_block_size_ = 0;
   std::size_t nodes_bound_ = 0;  // the most nodes the output can have: room reserved for them
-  detail::InsideNodes element_nodes_;       // inside the element being split
+  detail::InsideNodes element_nodes_;       // inside the element being split (split_element_by_keys)
   std::map<NodeKey, NodeId> other_nodes_;
   // Scratch of split_element, reused so that an element costs no allocation: the coarse element's
   // nodes, its pieces' node lists.
   std::vector<NodeId> coarse_;
   std::vector<std::vector<NodeId>> pieces_;
+  std::vector<NodeId> recipe_ids_;  // [recipe nodes] this element's ids
+  std::map<std::tuple<Shape, int, int, int, int>, SplitRecipe> recipes_;  // by shape, directions, layers
+  bool by_keys_ = false;  // split_element_by_keys (the reference) instead of split_element
   struct Figures {
     double height_min = 1e300, height_max = 0.0, ratio_sum = 0.0;
     int vertical_edges = 0, elements = 0;
   };
   std::vector<Figures> stats_;  // [families]
   bool inherit_ = false;        // derive the pieces' bounds (certify_pieces)
+  const PieceBoundsAhead* ahead_ = nullptr;  // or take them from here where they hold
 };
+
+// What a split element's pieces' bounds are derived from, bit for bit (FNV-1a on 64-bit words, as
+// element_fingerprint): its shape, order and node set, coarse nodes (n, 3) and pieces' boxes.
+std::uint64_t pieces_fingerprint(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& x,
+                                 const std::vector<ReferenceBox>& boxes) {
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&](std::uint64_t word) {
+    hash ^= word;
+    hash *= 1099511628211ull;
+  };
+  const auto mix_double = [&](double d) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &d, sizeof bits);
+    mix(bits);
+  };
+  mix(static_cast<std::uint64_t>(shape));
+  mix(static_cast<std::uint64_t>(order));
+  mix(static_cast<std::uint64_t>(set));
+  mix(static_cast<std::uint64_t>(x.rows()));
+  for (Eigen::Index i = 0; i < x.size(); ++i) mix_double(x.data()[i]);
+  mix(boxes.size());
+  for (const ReferenceBox& box : boxes)
+    for (const auto& interval : box) {
+      mix_double(interval[0]);
+      mix_double(interval[1]);
+    }
+  return hash;
+}
 
 ShapeData& Splitter::shape_data(Shape shape) {
   auto it = shapes_.find(shape);
@@ -336,7 +415,7 @@ NodeId Splitter::node_for(const NodeKey& key, const Eigen::Vector3d& x) {
   return id;
 }
 
-Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element) {
+Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element, const mesh::Mesh& at) const {
   const mesh::Element& el = in_.elements()[element];
   const Plan& plan = plans_[element];
   VertexInterfaces z_of_vertex;
@@ -346,7 +425,7 @@ Splitter::VertexInterfaces Splitter::interfaces_of(std::size_t element) {
     std::vector<std::vector<double>> z(num_vertices(el.shape));
     bool uniform = true;  // the field gives the family's own ratio at every bottom vertex
     for (int v : direction_of(element, slot).bottom) {
-      const double r = ratio_at(out_.node(el.vertices[v]), element, family);
+      const double r = ratio_at(at.node(el.vertices[v]), element, family);
       uniform = uniform && r == families_[family].distribution.ratio;
       z[v] = layer_interfaces(layers(element, slot), r);
     }
@@ -370,9 +449,7 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
   // constant ratios they are the same for every element of a shape and plan: the basis values are
   // cached.
   SplitGeometry out;
-  std::array<std::vector<double>, 2> uniform;
-  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot)
-    uniform[slot] = layer_interfaces(layers(element, slot), families_[plan.family[slot]].distribution.ratio);
+  const std::array<std::vector<double>, 2> uniform = uniform_interfaces(element);
   // Interfaces per bottom vertex, interpolated linearly in between (see RatioField). The first
   // direction's at the foot of the point across it; the second's at the foot across it taken at
   // the top of the first (a junction hex: along its wall foot L, where the wall layer's prisms
@@ -391,7 +468,12 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     out.x = detail::multiply(
         uniform_.at(std::make_tuple(el.shape, plan.direction[0], plan.family[0], plan.direction[1], plan.family[1])), X);
     // Constant interfaces: each piece is chi composed with an affine map, so its det J is chi's restricted.
-    if (inherit_) out.bounds = certify_pieces(el.shape, in_.order(), in_.node_set(), X, piece_boxes(element, uniform));
+    if (inherit_) {
+      const std::vector<ReferenceBox> boxes = piece_boxes(element, uniform);
+      const auto* known =
+          ahead_ ? ahead_->find(element, pieces_fingerprint(el.shape, in_.order(), in_.node_set(), X, boxes)) : nullptr;
+      out.bounds = known ? *known : certify_pieces(el.shape, in_.order(), in_.node_set(), X, boxes);
+    }
   } else {
     out.x = detail::map_along_lines(lines, X, sub_points(data, plan, interface_at));
   }
@@ -415,6 +497,14 @@ Splitter::SplitGeometry Splitter::place_sub_nodes(std::size_t element, const Ver
     }
   }
   return out;
+}
+
+std::array<std::vector<double>, 2> Splitter::uniform_interfaces(std::size_t element) const {
+  const Plan& plan = plans_[element];
+  std::array<std::vector<double>, 2> uniform;
+  for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot)
+    uniform[slot] = layer_interfaces(layers(element, slot), families_[plan.family[slot]].distribution.ratio);
+  return uniform;
 }
 
 std::vector<ReferenceBox> Splitter::piece_boxes(std::size_t element, const std::array<std::vector<double>, 2>& z) const {
@@ -484,7 +574,7 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
   return {3, static_cast<std::int64_t>(element), h[0], h[1], h[2], g[s], plan.two() ? -1 - s : 0, 0};
 }
 
-void Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
+void Splitter::split_element_by_keys(std::size_t element, const SplitGeometry& geometry) {
   const ShapeData& data = data_of(element);
   const Plan& plan = plans_[element];
   const int P = in_.order(), na = layers(element, 0), nb = layers(element, 1);
@@ -514,7 +604,144 @@ void Splitter::split_element(std::size_t element, const SplitGeometry& geometry)
         }
         subs[piece][i] = node_for(key_of(element, coarse, l, g), x.row(piece * nn + i).transpose());
       }
+  add_figures(element, geometry);
+}
 
+SubNode Splitter::describe(const ShapeData& data, const Plan& plan, int na, int nb, const LatticePoint& l,
+                           const std::array<int, 2>& g) {
+  const int P = in_.order();
+  SubNode node;
+  const bool end_a = g[0] == 0 || g[0] == na * P, end_b = !plan.two() || g[1] == 0 || g[1] == nb * P;
+  if (end_a && end_b) {
+    LatticePoint c = l;
+    c[plan.direction[0]] = g[0] == 0 ? 0 : P;
+    if (plan.two()) c[plan.direction[1]] = g[1] == 0 ? 0 : P;
+    node.local = data.index.at(c);
+    return node;
+  }
+  // As key_of, kind by kind.
+  const std::array<int, 2> layer_count{na, nb};
+  std::array<bool, 2> inside{false, false};
+  for (int s = 0; s < (plan.two() ? 2 : 1); ++s) inside[s] = g[s] > 0 && g[s] < layer_count[s] * P;
+  if (inside[0] && inside[1]) {
+    LatticePoint h = l;
+    h[plan.direction[0]] = 0, h[plan.direction[1]] = 0;
+    node.kind = data.index.at(h) < num_vertices(data.shape) ? SubNode::Kind::Keyed : SubNode::Kind::Inside;
+    node.point = l, node.g = g;
+    return node;
+  }
+  const int s = inside[0] ? 0 : 1, d = plan.direction[s];
+  LatticePoint h = l;
+  h[d] = 0;
+  if (plan.two()) h[plan.direction[1 - s]] = g[1 - s] == 0 ? 0 : P;
+  const DirectionData& side = data.directions.at(plan.direction[s]);
+  node.level = g[s];
+  for (int v : side.bottom)
+    if (data.lattice[v] == h) {
+      node.kind = SubNode::Kind::Edge;
+      node.local = side.across[v];
+      return node;
+    }
+  for (std::size_t k = 0; k < side.bottom_edges.size(); ++k) {
+    const auto& e = side.bottom_edges[k];
+    const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
+    int steps = 0, along = 0;
+    bool on = true;
+    for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
+    for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
+    for (int c = 0; c < 3 && on; ++c) on = (h[c] - a[c]) * steps == (b[c] - a[c]) * along;
+    if (!on || along <= 0 || along >= steps) continue;
+    node.kind = SubNode::Kind::Face;
+    node.local = side.side_face[k];
+    node.a = e[0], node.b = e[1], node.along = along, node.steps = steps;
+    return node;
+  }
+  node.kind = SubNode::Kind::Inside;
+  return node;
+}
+
+const SplitRecipe& Splitter::recipe_of(std::size_t element) {
+  const Plan& plan = plans_[element];
+  const int na = layers(element, 0), nb = layers(element, 1);
+  const Shape shape = in_.elements()[element].shape;
+  const auto key = std::make_tuple(shape, plan.direction[0], plan.direction[1], na, nb);
+  if (const auto it = recipes_.find(key); it != recipes_.end()) return it->second;
+  const ShapeData& data = data_of(element);
+  const int P = in_.order(), nn = static_cast<int>(data.lattice.size());
+  SplitRecipe recipe;
+  // A node is the same wherever its point of the lattice refined along the split directions is.
+  std::map<LatticePoint, std::uint32_t> seen;
+  recipe.node_of.resize(static_cast<std::size_t>(na) * nb * nn);
+  for (int kb = 0; kb < nb; ++kb)
+    for (int ka = 0; ka < na; ++ka)
+      for (int i = 0; i < nn; ++i) {
+        const LatticePoint& l = data.lattice[i];
+        const std::array<int, 2> g{ka * P + l[plan.direction[0]], plan.two() ? kb * P + l[plan.direction[1]] : 0};
+        LatticePoint refined = l;
+        refined[plan.direction[0]] = g[0];
+        if (plan.two()) refined[plan.direction[1]] = g[1];
+        const int row = (kb * na + ka) * nn + i;
+        const auto [it, added] = seen.try_emplace(refined, static_cast<std::uint32_t>(recipe.nodes.size()));
+        if (added) {
+          SubNode node = describe(data, plan, na, nb, l, g);
+          node.first_row = row;
+          recipe.nodes.push_back(node);
+        }
+        recipe.node_of[row] = it->second;
+      }
+  return recipes_.emplace(key, std::move(recipe)).first->second;
+}
+
+void Splitter::split_element(std::size_t element, const SplitGeometry& geometry) {
+  if (by_keys_) return split_element_by_keys(element, geometry);
+  const SplitRecipe& recipe = recipe_of(element);
+  const mesh::Element& el = in_.elements()[element];
+  const int na = layers(element, 0), nb = layers(element, 1);
+  in_.element_nodes(element, coarse_);
+  const std::vector<NodeId>& coarse = coarse_;
+  const int nn = static_cast<int>(coarse.size());
+  const Eigen::MatrixX3d& x = geometry.x;
+  // Each distinct node once, in the order key_of's reference names them (so the same ids).
+  recipe_ids_.resize(recipe.nodes.size());
+  const auto made = [&](NodeId& slot, int row) -> NodeId {
+    if (slot == mesh::kNoNode) slot = out_.add_node(x.row(row).transpose());
+    return slot;
+  };
+  for (std::size_t k = 0; k < recipe.nodes.size(); ++k) {
+    const SubNode& node = recipe.nodes[k];
+    NodeId& id = recipe_ids_[k];
+    switch (node.kind) {
+      case SubNode::Kind::Coarse: id = coarse[node.local]; break;
+      case SubNode::Kind::Edge: {
+        NodeKey key{1, 0, 0, node.level, 0, 0, 0, el.edges[node.local]};
+        id = made(slot_of(key), node.first_row);
+        break;
+      }
+      case SubNode::Kind::Face: {
+        // Named from the lower node id of the bottom edge, so both neighbours agree (key_of).
+        const int along = coarse[node.a] > coarse[node.b] ? node.steps - node.along : node.along;
+        NodeKey key{2, 0, 0, 0, 0, along, node.level, el.faces[node.local]};
+        id = made(slot_of(key), node.first_row);
+        break;
+      }
+      case SubNode::Kind::Inside: id = out_.add_node(x.row(node.first_row).transpose()); break;
+      case SubNode::Kind::Keyed:
+        id = node_for(key_of(element, coarse, node.point, node.g), x.row(node.first_row).transpose());
+        break;
+    }
+  }
+  std::vector<std::vector<NodeId>>& subs = pieces_;
+  subs.resize(static_cast<std::size_t>(na) * nb);
+  for (std::size_t piece = 0; piece < subs.size(); ++piece) {
+    subs[piece].resize(nn);
+    const std::uint32_t* of = recipe.node_of.data() + piece * nn;
+    for (int i = 0; i < nn; ++i) subs[piece][i] = recipe_ids_[of[i]];
+  }
+  add_figures(element, geometry);
+}
+
+void Splitter::add_figures(std::size_t element, const SplitGeometry& geometry) {
+  const Plan& plan = plans_[element];
   for (int slot = 0; slot < (plan.two() ? 2 : 1); ++slot) {
     Figures& f = stats_[plan.family[slot]];
     for (std::size_t j = 0; j < geometry.first_heights[slot].size(); ++j) {
@@ -590,6 +817,28 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
   if (stats) *stats = split_stats();
   return std::move(out_);
+}
+
+std::vector<PieceBoundsAhead::Entry> Splitter::bounds_ahead(const std::vector<LayerSplit>& split,
+                                                           const std::atomic<bool>& stop) {
+  check_families();
+  std::vector<LayerSplit> here;  // the entries of elements this mesh has
+  for (const LayerSplit& entry : split)
+    if (entry.element < in_.elements().size()) here.push_back(entry);
+  const std::vector<int> position = plan_elements(here);
+  const detail::OneThreadScope one_thread;  // beside another process, on the core it leaves idle
+  std::vector<PieceBoundsAhead::Entry> entries;
+  for (std::size_t e = 0; e < in_.elements().size() && !stop.load(std::memory_order_relaxed); ++e) {
+    if (position[e] < 0) continue;
+    const VertexInterfaces z = interfaces_of(e, in_);
+    if (!z[0].empty() || !z[1].empty()) continue;  // interfaces that vary: no bounds to inherit
+    const Shape shape = in_.elements()[e].shape;
+    const Eigen::MatrixX3d x = in_.element_coordinates(e);
+    const std::vector<ReferenceBox> boxes = piece_boxes(e, uniform_interfaces(e));
+    entries.push_back({e, pieces_fingerprint(shape, in_.order(), in_.node_set(), x, boxes),
+                       certify_pieces(shape, in_.order(), in_.node_set(), x, boxes)});
+  }
+  return entries;
 }
 
 void Splitter::check_families() const {
@@ -709,7 +958,7 @@ std::vector<std::size_t> Splitter::add_elements(const std::vector<int>& position
       ascending.size(), true, kSplitBlock,
       [&](std::size_t first, std::size_t count) {
         interfaces.resize(count);
-        for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k]);
+        for (std::size_t k = 0; k < count; ++k) interfaces[k] = interfaces_of(ascending[first + k], out_);
         interfaces_first = first;
       },
       [&](std::size_t i) { return place_sub_nodes(ascending[i], interfaces[i - interfaces_first]); },
@@ -830,9 +1079,42 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
 mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress,
-                        std::vector<InheritedBounds>* inherited, SplitEntities entities) {
-  return Splitter(mesh, families, "split_layers", &mesh, entities).run(split, stats, first_piece, progress, inherited);
+                        std::vector<InheritedBounds>* inherited, SplitEntities entities,
+                        const PieceBoundsAhead* ahead) {
+  Splitter splitter(mesh, families, "split_layers", &mesh, entities);
+  splitter.take_bounds_from(ahead);
+  return splitter.run(split, stats, first_piece, progress, inherited);
 }
+
+PieceBoundsAhead::PieceBoundsAhead(std::vector<Entry> entries) : entries_(std::move(entries)) {
+  for (std::size_t i = 1; i < entries_.size(); ++i)
+    if (entries_[i].element <= entries_[i - 1].element)
+      throw std::invalid_argument("PieceBoundsAhead: entries not in ascending element order at element " +
+                                  std::to_string(entries_[i].element));
+}
+
+const std::vector<std::optional<JacobianBounds>>* PieceBoundsAhead::find(std::size_t element,
+                                                                        std::uint64_t fingerprint) const {
+  const auto it = std::lower_bound(entries_.begin(), entries_.end(), element,
+                                   [](const Entry& entry, std::size_t e) { return entry.element < e; });
+  return it != entries_.end() && it->element == element && it->fingerprint == fingerprint ? &it->bounds : nullptr;
+}
+
+PieceBoundsAhead piece_bounds_ahead(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                                    const std::vector<SplitFamily>& families, const std::atomic<bool>& stop) {
+  return PieceBoundsAhead(Splitter(mesh, families, "piece_bounds_ahead").bounds_ahead(split, stop));
+}
+
+namespace detail {
+
+mesh::Mesh split_layers_by_keys(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                                const std::vector<SplitFamily>& families, std::vector<InheritedBounds>* inherited) {
+  Splitter splitter(mesh, families, "split_layers");
+  splitter.name_nodes_by_keys();
+  return splitter.run(split, nullptr, nullptr, {}, inherited);
+}
+
+}  // namespace detail
 
 mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<std::size_t>& layer_elements,
                         const LayerDistribution& distribution, const RatioField& ratio, SplitStats* stats) {

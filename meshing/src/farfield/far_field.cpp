@@ -632,7 +632,10 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   stats.interior_points = static_cast<int>(inside.size());
   report(0.15, "TetGen");
   BesideChild beside_child;
-  if (beside) beside_child = [&](const std::atomic<bool>& stop) { beside(static_cast<const mesh::Mesh&>(mesh), stop); };
+  if (beside)
+    beside_child = [&](const std::atomic<bool>& stop) {
+      beside(static_cast<const mesh::Mesh&>(mesh), static_cast<const std::vector<nearfield::LayerStack>&>(stacks), stop);
+    };
   const TetgenOutput output = run_tetgen_with_retries(input, pyramids, plc_index, mesh, beside_child);
   report(0.9, "elements");
   stats.seconds_tetgen = output.seconds;

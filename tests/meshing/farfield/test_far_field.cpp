@@ -243,19 +243,22 @@ TEST_F(FarFieldAroundCube, WallAndBoxNodesCarryTheirCadAttachment) {
     }
 }
 
-// Work beside TetGen's process: it sees every element but the tetrahedra, runs until TetGen has
-// answered, and changes nothing in the mesh built, also when it throws.
+// Work beside TetGen's process: it sees every element but the tetrahedra and the layer stacks the
+// far field returns, runs until TetGen has answered, and changes nothing in the mesh built, also
+// when it throws.
 TEST_F(FarFieldAroundCube, WorkBesideTetgenSeesTheMeshSoFarAndChangesNothing) {
   FarFieldParams params;
   params.box_size = 1.0;
   params.wall_size = 0.6;
   const int wall = *model_->find_surface("wall");
   std::size_t elements = 0, tets = 1;
+  std::vector<std::size_t> stack_elements;
   bool stopped = false;
   const FarField with = build_far_field(
       *model_, cube_->nf, params, box_surfaces(*model_), wall, 0.0, {},
-      [&](const mesh::Mesh& so_far, const std::atomic<bool>& stop) {
+      [&](const mesh::Mesh& so_far, const std::vector<nearfield::LayerStack>& stacks, const std::atomic<bool>& stop) {
         elements = so_far.elements().size();
+        for (const nearfield::LayerStack& s : stacks) stack_elements.push_back(s.element);
         tets = static_cast<std::size_t>(std::count_if(so_far.elements().begin(), so_far.elements().end(),
                                                       [](const mesh::Element& e) { return e.shape == ho::Shape::Tetrahedron; }));
         while (!stop) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -264,8 +267,12 @@ TEST_F(FarFieldAroundCube, WorkBesideTetgenSeesTheMeshSoFarAndChangesNothing) {
   EXPECT_TRUE(stopped);
   EXPECT_EQ(tets, 0u);
   EXPECT_EQ(elements, static_cast<std::size_t>(stats_.pyramids));
+  std::vector<std::size_t> returned;
+  for (const nearfield::LayerStack& s : with.stacks) returned.push_back(s.element);
+  EXPECT_EQ(stack_elements, returned);
   const FarField thrown = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), wall, 0.0, {},
-                                          [](const mesh::Mesh&, const std::atomic<bool>&) { throw std::runtime_error("x"); });
+                                          [](const mesh::Mesh&, const std::vector<nearfield::LayerStack>&,
+                                             const std::atomic<bool>&) { throw std::runtime_error("x"); });
   for (const mesh::Mesh* m : {&with.mesh, &thrown.mesh}) {
     ASSERT_EQ(m->nodes(), mesh().nodes());
     ASSERT_EQ(m->elements().size(), mesh().elements().size());

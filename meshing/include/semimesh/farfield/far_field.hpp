@@ -80,10 +80,12 @@ struct FarField {
 /// sub-step (steps "box and wall", "wall layer", "TetGen", "elements") and the end.
 /// `beside` (optional): work that only speeds up later stages, run on another thread while TetGen's
 /// process works (its first try), given the mesh so far (every element but the tetrahedra, which
-/// come after them; the mesh is not changed meanwhile) and a flag set when TetGen has answered,
+/// come after them; the mesh is not changed meanwhile), the layer stacks so far (the near field's
+/// and the wall layer's: FarField::stacks) and a flag set when TetGen has answered,
 /// after which it is waited for (it should then return soon). Its exceptions are dropped: the
 /// stages after must not need what it computes. The mesh built is the same with or without it.
-using BesideTetgen = std::function<void(const mesh::Mesh& so_far, const std::atomic<bool>& stop)>;
+using BesideTetgen = std::function<void(const mesh::Mesh& so_far, const std::vector<nearfield::LayerStack>& stacks,
+                                        const std::atomic<bool>& stop)>;
 FarField build_far_field(const cad::Model& model, nearfield::NearField near, const FarFieldParams& params,
                          const std::vector<int>& box_surfaces, int wall_surface, double wall_layer_thickness = 0.0,
                          const ProgressCallback& progress = {}, const BesideTetgen& beside = {});

@@ -8,6 +8,7 @@
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/nearfield/near_field.hpp"
 
+#include <atomic>
 #include <vector>
 
 namespace semimesh::pipeline {
@@ -32,8 +33,18 @@ struct StackSplit {
 /// `progress` as split_layers'. inherit_bounds: fill `inherited`. The mesh is taken by value: a
 /// caller that moves it in holds its nodes once (they move into the output). `entities`: the
 /// output's edges and faces (ho::SplitEntities; Adopted for a caller that renumbers them next).
+/// `ahead` (optional): the pieces' bounds derived before (piece_bounds_ahead), taken where they hold.
 StackSplit split_stacks(mesh::Mesh mesh, const std::vector<nearfield::LayerStack>& stacks,
                         const FamilySplit& wing, const FamilySplit& wall, const ProgressCallback& progress = {},
-                        bool inherit_bounds = false, ho::SplitEntities entities = ho::SplitEntities::Canonical);
+                        bool inherit_bounds = false, ho::SplitEntities entities = ho::SplitEntities::Canonical,
+                        const ho::PieceBoundsAhead* ahead = nullptr);
+
+/// The bounds split_stacks(..., inherit_bounds = true) derives for the pieces, derived before the
+/// split (ho::piece_bounds_ahead) on `curved`, a mesh whose elements are the first ones of the mesh
+/// split later (e.g. beside TetGen's process): for the stacks whose elements it has. `stop` as
+/// ho::piece_bounds_ahead's.
+ho::PieceBoundsAhead piece_bounds_ahead(const mesh::Mesh& curved, const std::vector<nearfield::LayerStack>& stacks,
+                                        const FamilySplit& wing, const FamilySplit& wall,
+                                        const std::atomic<bool>& stop);
 
 }  // namespace semimesh::pipeline

@@ -17,8 +17,11 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace semimesh::ho {
@@ -105,6 +108,39 @@ mesh::Mesh split_layers(const mesh::Mesh& mesh, const std::vector<LayerSplit>& s
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                         std::vector<InheritedBounds>* inherited = nullptr);
+/// The bounds split_layers' `inherited` derives for the pieces of elements whose interfaces are
+/// constant (certify_pieces), derived before the split: e.g. beside TetGen's process, from a
+/// curved mesh whose elements are the first ones of the mesh split later. Each element's entry
+/// carries a fingerprint of what the bounds were derived from (its shape, the order and node set,
+/// its coarse nodes' coordinates and its pieces' reference boxes, bit for bit): split_layers takes
+/// an entry whose fingerprint is still that of the element it splits, else derives the bounds
+/// itself, so the bounds are the same either way.
+class PieceBoundsAhead {
+ public:
+  struct Entry {
+    std::size_t element = 0;
+    std::uint64_t fingerprint = 0;
+    std::vector<std::optional<JacobianBounds>> bounds;  ///< [pieces] as certify_pieces gives them
+  };
+  /// `entries` in ascending element order (else std::invalid_argument).
+  explicit PieceBoundsAhead(std::vector<Entry> entries = {});
+  /// The entry of `element` if it has one with this fingerprint, else null.
+  const std::vector<std::optional<JacobianBounds>>* find(std::size_t element, std::uint64_t fingerprint) const;
+  std::size_t size() const { return entries_.size(); }
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  std::vector<Entry> entries_;
+};
+
+/// The entries of PieceBoundsAhead for the listed elements of `mesh` (those with an index in it;
+/// `split` and `families` as split_layers takes them) whose interfaces are constant, in ascending
+/// element order, on the calling thread alone (one OpenMP thread: the same bits as inside the
+/// split's parallel loop). When `stop` is set, the entries derived so far (checked between
+/// elements). Throws what split_layers throws for a bad list or family.
+PieceBoundsAhead piece_bounds_ahead(const mesh::Mesh& mesh, const std::vector<LayerSplit>& split,
+                                    const std::vector<SplitFamily>& families, const std::atomic<bool>& stop);
+
 /// The output's edges and faces: Canonical, as add_element makes them element by element;
 /// Adopted, every entity of the input under its id (the elements that are not split come over
 /// without a lookup: mesh::Mesh::adopt_all_entities), then the pieces' new ones, with the input's
@@ -115,12 +151,13 @@ enum class SplitEntities { Canonical, Adopted };
 
 /// The same on a mesh given up: its nodes move into the output instead of being copied, so they
 /// are held once. The mesh is left without nodes (only the moved-from mesh's destruction or
-/// assignment is then meaningful).
+/// assignment is then meaningful). `ahead` (optional): pieces' bounds derived before, taken where
+/// they still hold (PieceBoundsAhead).
 mesh::Mesh split_layers(mesh::Mesh&& mesh, const std::vector<LayerSplit>& split,
                         const std::vector<SplitFamily>& families, std::vector<SplitStats>* stats,
                         std::vector<std::size_t>* first_piece, const ProgressCallback& progress = {},
                         std::vector<InheritedBounds>* inherited = nullptr,
-                        SplitEntities entities = SplitEntities::Canonical);
+                        SplitEntities entities = SplitEntities::Canonical, const PieceBoundsAhead* ahead = nullptr);
 
 /// The same for hexahedra along reference direction `direction` (0 xi, 1 eta, 2 zeta), e.g. the
 /// second wall-normal direction of root junction blocks. Throws for a non-hex element or a
