@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -96,6 +97,18 @@ DirectionData make_direction_data(const ShapeData& data, int order, int directio
       d.side_face.push_back(local_face({e[0], e[1], d.top_of[e[0]], d.top_of[e[1]]}));
     }
   return d;
+}
+
+/// Where lattice point h lies strictly inside the segment from a to b: {along, steps}, h being `along`
+/// of the segment's `steps` lattice steps from a; std::nullopt elsewhere.
+std::optional<std::array<int, 2>> place_on_segment(const LatticePoint& a, const LatticePoint& b, const LatticePoint& h) {
+  int steps = 0, along = 0;
+  for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
+  for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
+  for (int c = 0; c < 3; ++c)
+    if ((h[c] - a[c]) * steps != (b[c] - a[c]) * along) return std::nullopt;
+  if (along <= 0 || along >= steps) return std::nullopt;
+  return std::array<int, 2>{along, steps};
 }
 
 /// A new node's name (key_of): its kind, then what names it; kinds 1 and 2 (on a coarse edge
@@ -555,13 +568,10 @@ NodeKey Splitter::key_of(std::size_t element, const std::vector<NodeId>& coarse,
       return {1, coarse[v], coarse[side.top_of[v]], g[s], 0, 0, 0, el.edges[side.across[v]]};  // across the layer
   for (std::size_t k = 0; k < side.bottom_edges.size(); ++k) {
     const auto& e = side.bottom_edges[k];
-    const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
-    int steps = 0, along = 0;
-    bool on = true;
-    for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
-    for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
-    for (int c = 0; c < 3 && on; ++c) on = (h[c] - a[c]) * steps == (b[c] - a[c]) * along;
-    if (!on || along <= 0 || along >= steps) continue;
+    const auto place = place_on_segment(data.lattice[e[0]], data.lattice[e[1]], h);
+    if (!place) continue;
+    int along = (*place)[0];
+    const int steps = (*place)[1];
     // On a coarse side face: name the slot from the lower node id so both neighbours agree.
     NodeId va = coarse[e[0]], vb = coarse[e[1]], ta = coarse[side.top_of[e[0]]], tb = coarse[side.top_of[e[1]]];
     if (va > vb) {
@@ -644,16 +654,11 @@ SubNode Splitter::describe(const ShapeData& data, const Plan& plan, int na, int 
     }
   for (std::size_t k = 0; k < side.bottom_edges.size(); ++k) {
     const auto& e = side.bottom_edges[k];
-    const LatticePoint &a = data.lattice[e[0]], &b = data.lattice[e[1]];
-    int steps = 0, along = 0;
-    bool on = true;
-    for (int c = 0; c < 3; ++c) steps = std::max(steps, std::abs(b[c] - a[c]));
-    for (int c = 0; c < 3; ++c) along = std::max(along, std::abs(h[c] - a[c]));
-    for (int c = 0; c < 3 && on; ++c) on = (h[c] - a[c]) * steps == (b[c] - a[c]) * along;
-    if (!on || along <= 0 || along >= steps) continue;
+    const auto place = place_on_segment(data.lattice[e[0]], data.lattice[e[1]], h);
+    if (!place) continue;
     node.kind = SubNode::Kind::Face;
     node.local = side.side_face[k];
-    node.a = e[0], node.b = e[1], node.along = along, node.steps = steps;
+    node.a = e[0], node.b = e[1], node.along = (*place)[0], node.steps = (*place)[1];
     return node;
   }
   node.kind = SubNode::Kind::Inside;
