@@ -536,8 +536,8 @@ LinearMesh build_linear_mesh(const Config& config, const Geometry& g, const surf
                                      junction ? config.wall_layer.thickness : 0.0, report, beside);
   });
   result.far_field = far.stats;
-  return {std::move(far.mesh),         std::move(far.stacks),      std::move(wake),        std::move(precut_faces),
-          std::move(curved_ahead),     std::move(certified_ahead), std::move(pieces_ahead)};
+  return {std::move(far.mesh),     std::move(far.stacks),      std::move(wake), std::move(precut_faces),
+          std::move(curved_ahead), std::move(certified_ahead), std::move(pieces_ahead)};
 }
 
 // Order P: nodes on the CAD (the far field and the skin stay straight-sided), then the repair of
@@ -626,7 +626,7 @@ mesh::Mesh split(const Config& config, mesh::Mesh coarse, LinearMesh& linear, do
     return fine;
   });
   coarse = mesh::Mesh();  // not needed any more
-  linear.pieces_ahead = ho::PieceBoundsAhead();  // served the split: the weld is the run's peak
+  linear.pieces_ahead = ho::PieceBoundsAhead();  // served the split: not held through the weld
   const std::size_t split_elements = split.mesh.elements().size();
   std::vector<ho::InheritedBounds> certified_behind;  // beside the weld's rebuild, for the checks
   if (weld)
