@@ -717,7 +717,7 @@ void Splitter::split_element(std::size_t element, const SplitGeometry& geometry)
     NodeId& id = recipe_ids_[k];
     switch (node.kind) {
       case SubNode::Kind::Coarse: id = coarse[node.local]; break;
-      case SubNode::Kind::Edge: {
+      case SubNode::Kind::Edge: {  // slot_of reads a coarse edge's or face's key by its id and place only
         NodeKey key{1, 0, 0, node.level, 0, 0, 0, el.edges[node.local]};
         id = made(slot_of(key), node.first_row);
         break;
