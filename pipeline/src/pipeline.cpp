@@ -730,11 +730,10 @@ double curved_wall_volume_gap(const cad::Surface& wall, const surface::SurfaceMe
   return gap;
 }
 
-// The checks' serial passes: conformity, and the element volume against box minus body. They read
-// result.mesh and write result.conformity, result.volume and result.expected_volume_tolerance only.
-void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces,
-                           const std::vector<ho::InheritedBounds>& inherited, RunResult& result) {
-  result.conformity = checks::check_conformity(result.mesh);
+// The element volume against box minus body (result.volume, result.expected_volume_tolerance).
+// `known`: the elements' integrals the certification found (checks::ValidityResult::integrals).
+void check_mesh_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces, const std::vector<double>& known,
+                       RunResult& result) {
   std::vector<const surface::SurfaceMesh*> body, box;
   for (int s : g.roles.body) body.push_back(&surfaces.surfaces[s]);
   for (int s : g.roles.farfield) box.push_back(&surfaces.surfaces[s]);
@@ -746,9 +745,8 @@ void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surf
   if (curved_far_field) box.clear();
   const cad::Surface& wall = g.model->surface(g.roles.wall);
   const surface::SurfaceMesh& wall_mesh = surfaces.surfaces[g.roles.wall];
-  // The split pieces' integrals come with their inherited bounds (from their coarse element's det J).
-  result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh, &inherited)
-                                   : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh, &inherited);
+  result.volume = wall.is_planar() ? checks::check_volume(result.mesh, body, box, wall_mesh, &known)
+                                   : checks::check_volume_curved_wall(result.mesh, body, box, wall_mesh, &known);
   // A curved body bulges out of its triangulation by O(h^2) of its size: the element volume may
   // then differ from box - (triangulated) body by a small fraction of the body, not by round-off.
   double gap = 0.0;
@@ -760,31 +758,36 @@ void conformity_and_volume(const Geometry& g, const surface::SurfaceMeshes& surf
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
-    // Conformity and volume are serial passes that only read the mesh, the certification an
-    // OpenMP loop: they run side by side on another thread, each filling its own figures, so that
-    // the serial passes no longer leave a core idle (the same figures, in less wall time).
+    // Conformity and the geometric error are serial passes that only read the mesh, the
+    // certification an OpenMP loop: they run side by side on another thread, each filling its own
+    // figures, so that the serial passes no longer leave a core idle. The volume comes after the
+    // certification: it takes the integrals that found (affine elements, split pieces) instead of
+    // gathering those elements' nodes again (the same figures, in less time).
     if (report) report(0.0, "conformity, volume and certification");
-    std::future<void> serial_checks =
-        std::async(std::launch::async, [&] { conformity_and_volume(g, surfaces, inherited, result); });
-    std::exception_ptr validity_error, geometric_error;
+    std::exception_ptr geometric_error;
+    std::future<void> serial_checks = std::async(std::launch::async, [&] {
+      result.conformity = checks::check_conformity(result.mesh);
+      try {
+        std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
+        curved.push_back(g.roles.wall);
+        const ho::GeometricError error =
+            ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
+        result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
+      } catch (...) {
+        geometric_error = std::current_exception();
+      }
+    });
+    std::exception_ptr validity_error;
     try {
       result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
                                                progress_part(report, 0.0, 0.9), &inherited);
+      if (report) report(0.9, "volume");
+      check_mesh_volume(g, surfaces, result.validity.integrals, result);
+      result.validity.integrals = {};  // served the volume
     } catch (...) {
       validity_error = std::current_exception();
     }
-    // The geometric error (serial, reads the mesh only) while the serial passes may still run.
-    if (report) report(0.9, "geometric error");
-    try {
-      std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
-      curved.push_back(g.roles.wall);
-      const ho::GeometricError error =
-          ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
-      result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
-    } catch (...) {
-      geometric_error = std::current_exception();
-    }
-    serial_checks.get();  // the errors in the order the passes were written: theirs first
+    serial_checks.get();  // the errors in the order the passes were written: conformity's first
     if (validity_error) std::rethrow_exception(validity_error);
     if (geometric_error) std::rethrow_exception(geometric_error);
   });

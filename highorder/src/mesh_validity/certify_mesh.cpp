@@ -88,8 +88,14 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
       (entry->from_parent ? from_parent : certified_before).fetch_add(1, std::memory_order_relaxed);
       return;
     }
-    out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(),
-                                     mesh.element_coordinates(e), max_depth, min_scaled_jacobian);
+    // The nodes into buffers of this thread's: no allocation per element.
+    thread_local std::vector<mesh::NodeId> ids;
+    thread_local Eigen::MatrixX3d x;
+    mesh.element_nodes(e, ids);
+    x.resize(static_cast<Eigen::Index>(ids.size()), 3);
+    for (std::size_t k = 0; k < ids.size(); ++k) x.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
+    out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), x, max_depth,
+                                     min_scaled_jacobian);
   }, progress, "elements");
   out.inherited = from_parent.load();
   out.certified_before = certified_before.load();

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <tuple>
 
 namespace semimesh::ho {
@@ -43,6 +44,16 @@ std::array<int, 4> spanning_vertices(Shape shape) {
 
 }  // namespace
 
+double reference_volume(Shape shape) {
+  switch (shape) {
+    case Shape::Tetrahedron: return 1.0 / 6.0;
+    case Shape::Pyramid: return 4.0 / 3.0;
+    case Shape::Prism: return 1.0;
+    case Shape::Hexahedron: return 8.0;
+    default: throw std::invalid_argument("reference_volume: '" + to_string(shape) + "' is not a 3D shape");
+  }
+}
+
 bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d& element_nodes,
                      JacobianBounds& bounds) {
   if (dimension(shape) != 3 || order < 1 || order > kMaxOrder || element_nodes.rows() != num_nodes(shape, order))
@@ -68,6 +79,7 @@ bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d
   bounds.min_lower = bounds.min_upper = bounds.max_upper = det;
   bounds.valid = det > 0.0;
   bounds.proven = true;
+  bounds.integral = det * reference_volume(shape);
   return true;
 }
 

@@ -31,9 +31,6 @@ double box_determinant(Shape shape, const ReferenceBox& box) {
   return det;
 }
 
-/// The reference element's volume (Gmsh's: the unit triangle times [-1, 1]; [-1, 1]^3).
-double reference_volume(Shape shape) { return shape == Shape::Prism ? 1.0 : 8.0; }
-
 /// What certify_jacobian_by_subdivision returns when the whole element is one conclusive leaf, and
 /// its volume: every Bernstein function of the piece's degrees has the same integral over the
 /// reference element, the reference volume over their number.

@@ -17,7 +17,11 @@ ValidityResult check_validity(const mesh::Mesh& mesh, std::size_t max_listed, do
   result.min_scaled_jacobian = certified.min_scaled_jacobian;
   result.median_scaled_jacobian = certified.median_scaled_jacobian;
   result.scaled_jacobians.reserve(certified.bounds.size());
-  for (const ho::JacobianBounds& b : certified.bounds) result.scaled_jacobians.push_back(ho::scaled_jacobian(b));
+  result.integrals.reserve(certified.bounds.size());
+  for (const ho::JacobianBounds& b : certified.bounds) {
+    result.scaled_jacobians.push_back(ho::scaled_jacobian(b));
+    result.integrals.push_back(b.integral);
+  }
   for (std::size_t i = 0; i < certified.invalid_elements.size(); ++i) {
     const std::size_t e = certified.invalid_elements[i];
     InvalidElement bad;

@@ -12,9 +12,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace semimesh::checks {
@@ -223,16 +223,6 @@ std::vector<ElementBatch> element_batches(const mesh::Mesh& mesh) {
   return batches;
 }
 
-// Volume of Gmsh's reference element: det J = 1 integrates to it.
-double reference_volume(ho::Shape shape) {
-  switch (shape) {
-    case ho::Shape::Tetrahedron: return 1.0 / 6.0;
-    case ho::Shape::Pyramid: return 4.0 / 3.0;  // base 2 x 2, height 1
-    case ho::Shape::Prism: return 1.0;          // the unit triangle times [-1, 1]
-    default: return 8.0;                        // [-1, 1]^3
-  }
-}
-
 // Sum of the integrals of det J of the `n` elements in x (nodes, 3 n) (element i in columns
 // 3i..3i+2). The reference derivatives of the map at all quadrature points of all of them come from
 // three products (q, nodes) x (nodes, 3 n): one product per batch instead of one per element, which
@@ -294,16 +284,10 @@ struct BatchRule {
 
 // Sum over the batch of the integral of det J. An affine element (ho::affine_jacobian: every
 // straight-sided far-field tet) has the constant det J = det A, so its integral is det A times the
-// reference volume, with no quadrature.
-// Integrals known ahead (inherited bounds): by element, NaN where none, with the fingerprint the
-// element had then.
-struct KnownIntegrals {
-  std::vector<double> integral;
-  std::vector<std::uint64_t> fingerprint;
-};
-
+// reference volume, with no quadrature. `known` (may be null): by element, the integral its
+// certification found (NaN where none), taken as it is; `taken` counts them.
 double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const BatchRule& rule,
-                    const KnownIntegrals& known, std::size_t& taken) {
+                    const std::vector<double>* known, std::size_t& taken) {
   thread_local Eigen::MatrixXd x;  // elements in x: element i in columns 3i..3i+2
   thread_local Eigen::MatrixX3d nodes;
   thread_local std::vector<mesh::NodeId> ids;
@@ -311,9 +295,8 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
   long integrated = 0;
   double volume = 0.0;
   for (std::size_t e : batch.elements) {
-    if (!known.integral.empty() && std::isfinite(known.integral[e]) &&
-        ho::element_fingerprint(mesh, e) == known.fingerprint[e]) {
-      volume += known.integral[e];
+    if (known && std::isfinite((*known)[e])) {
+      volume += (*known)[e];
       ++taken;
       continue;
     }
@@ -322,7 +305,7 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
     for (std::size_t k = 0; k < ids.size(); ++k) nodes.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
     ho::JacobianBounds affine;
     if (rule.closed_form && ho::affine_jacobian(batch.shape, mesh.order(), mesh.node_set(), nodes, affine))
-      volume += affine.min_lower * reference_volume(batch.shape);
+      volume += affine.integral;
     else
       x.middleCols<3>(3 * integrated++) = nodes;
   }
@@ -433,21 +416,16 @@ std::size_t volume_workers() { return std::max<std::size_t>(1, std::thread::hard
 
 // mesh_volume on `threads` threads; 1: the reference, every sum a plain loop on this thread.
 MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t threads,
-                          const std::vector<ho::InheritedBounds>* inherited) {
+                          const std::vector<double>* known) {
   RuleCache rules(mesh.order(), mesh.node_set(), rule);
   MeshVolume result;
   const std::vector<ElementBatch> batches = element_batches(mesh);
   std::vector<BatchRule> batch_rules;  // looked up before the threads: the cache is not thread-safe
   for (const ElementBatch& batch : batches)
     batch_rules.push_back({&rules.volume(batch.shape), rules.product(batch.shape), rule == VolumeRule::Exact});
-  KnownIntegrals known;
-  if (inherited && !inherited->empty()) {
-    known.integral.assign(mesh.elements().size(), std::numeric_limits<double>::quiet_NaN());
-    known.fingerprint.assign(mesh.elements().size(), 0);
-    for (const ho::InheritedBounds& b : *inherited)
-      if (b.element < mesh.elements().size())
-        known.integral[b.element] = b.bounds.integral, known.fingerprint[b.element] = b.fingerprint;
-  }
+  if (known && known->size() != mesh.elements().size())
+    throw std::invalid_argument("mesh_volume: " + std::to_string(known->size()) + " known integrals for a mesh of " +
+                                std::to_string(mesh.elements().size()) + " elements");
   std::vector<double> partial(batches.size(), 0.0);
   std::vector<std::size_t> taken(batches.size(), 0);
   const std::size_t workers = std::max<std::size_t>(1, std::min<std::size_t>(threads, batches.size()));
@@ -460,7 +438,7 @@ MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t t
   integrate_stride(0);
   for (std::thread& t : pool) t.join();
   for (double v : partial) result.element_volume += v;  // in batch order: independent of the threads
-  for (std::size_t t : taken) result.inherited += t;
+  for (std::size_t t : taken) result.known += t;
 
   const auto all = [](const mesh::BoundaryFace&) { return true; };
   const auto x_dot_area = [](const Eigen::Vector3d& x, const Eigen::Vector3d& area) { return x.dot(area); };
@@ -473,8 +451,8 @@ MeshVolume mesh_volume_on(const mesh::Mesh& mesh, VolumeRule rule, std::size_t t
 
 }  // namespace
 
-MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule, const std::vector<ho::InheritedBounds>* inherited) {
-  return mesh_volume_on(mesh, rule, volume_workers(), inherited);
+MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule, const std::vector<double>* known) {
+  return mesh_volume_on(mesh, rule, volume_workers(), known);
 }
 
 MeshVolume mesh_volume_one_thread(const mesh::Mesh& mesh, VolumeRule rule) {
@@ -522,10 +500,10 @@ double volume_under_surfaces(const std::vector<const surface::SurfaceMesh*>& fac
 VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                                      const std::vector<const surface::SurfaceMesh*>& farfield,
                                      const surface::SurfaceMesh& wall,
-                                     const std::vector<ho::InheritedBounds>* inherited) {
+                                     const std::vector<double>* known) {
   const Eigen::Vector3d p = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
   VolumeCheck result;
-  result.mesh = mesh_volume(mesh, VolumeRule::Exact, inherited);
+  result.mesh = mesh_volume(mesh, VolumeRule::Exact, known);
   result.body_volume = fluid_normal_flux(body, p);
   result.box_volume = -fluid_normal_flux({&wall}, p);
   if (!farfield.empty()) {
@@ -544,7 +522,7 @@ VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<c
 
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                          const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall,
-                         const std::vector<ho::InheritedBounds>* inherited) {
+                         const std::vector<double>* known) {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
   for (const auto& t : wall.triangles)
     normal += (wall.points[t[1]] - wall.points[t[0]]).cross(wall.points[t[2]] - wall.points[t[0]]);
@@ -553,7 +531,7 @@ VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface
   const Eigen::Vector3d point = wall.points.empty() ? Eigen::Vector3d::Zero() : wall.points.front();
 
   VolumeCheck result;
-  result.mesh = mesh_volume(mesh, VolumeRule::Exact, inherited);
+  result.mesh = mesh_volume(mesh, VolumeRule::Exact, known);
   result.body_volume = volume_under_surfaces(body, point, normal);
   // The far-field faces' normals point into the box: their flux is minus the box volume.
   if (!farfield.empty()) {

@@ -104,42 +104,53 @@ TEST(InheritedBounds, SplitPiecesMatchTheReferenceCertification) {
   });
 }
 
+// The integrals certify_mesh found for fine's elements (NaN where none), as the checks give
+// them to the volume check.
+std::vector<double> integrals_of(const MeshValidity& certified) {
+  std::vector<double> out;
+  for (const JacobianBounds& b : certified.bounds) out.push_back(b.integral);
+  return out;
+}
+
 // The pieces' volumes from their inherited bounds (the mean of the coarse det J's Bernstein
 // coefficients on the piece, times the reference volume) pinned to each piece's own quadrature:
-// the volume check takes them (all pieces), and a piece without its entry, integrated on its own
-// nodes, changes the sum by rounding only.
+// the certification passes them on (all pieces) and the volume check takes them, and a piece
+// without its integral, integrated on its own nodes, changes the sum by rounding only.
 TEST(InheritedBounds, SplitPiecesVolumesMatchTheirOwnQuadrature) {
   for_each_split_bent([](Shape shape, int order, const mesh::Mesh& fine,
                          const std::vector<InheritedBounds>& inherited) {
-    const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
+    const std::vector<double> known = integrals_of(certify_mesh(fine, 8, 0.0, {}, &inherited));
+    const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &known);
     const checks::MeshVolume reference = checks::mesh_volume(fine);
-    EXPECT_EQ(fast.inherited, fine.elements().size());
-    EXPECT_EQ(reference.inherited, 0u);
+    EXPECT_EQ(fast.known, fine.elements().size());
+    EXPECT_EQ(reference.known, 0u);
     EXPECT_NEAR(fast.element_volume, reference.element_volume, 1e-13 * reference.element_volume);
     EXPECT_NEAR(reference.element_volume, checks::mesh_volume(curved_elements(shape, order, bent)).element_volume,
                 1e-13 * reference.element_volume);
-    for (std::size_t k = 0; k < inherited.size(); ++k) {
-      std::vector<InheritedBounds> without_k = inherited;
-      without_k.erase(without_k.begin() + static_cast<long>(k));
+    for (std::size_t k = 0; k < known.size(); ++k) {
+      std::vector<double> without_k = known;
+      without_k[k] = std::numeric_limits<double>::quiet_NaN();
       const checks::MeshVolume own = checks::mesh_volume(fine, checks::VolumeRule::Exact, &without_k);
-      ASSERT_EQ(own.inherited, fine.elements().size() - 1);
+      ASSERT_EQ(own.known, fine.elements().size() - 1);
       // The sum with piece k's own quadrature: its inherited integral differs by rounding.
-      EXPECT_NEAR(own.element_volume, fast.element_volume, 1e-13 * std::abs(inherited[k].bounds.integral)) << k;
-      EXPECT_GT(inherited[k].bounds.integral, 0.0);
+      EXPECT_NEAR(own.element_volume, fast.element_volume, 1e-13 * std::abs(known[k])) << k;
+      EXPECT_GT(known[k], 0.0);
     }
   });
 }
 
-// A piece whose node moved after the split is integrated on its own nodes (its fingerprint is no
-// longer the one its integral came with).
+// A piece whose node moved after the split is certified on its own (its fingerprint is no longer
+// the one its bounds came with), with no integral: the volume check integrates it on its nodes.
 TEST(InheritedBounds, AMovedPieceIsIntegratedOnItsOwn) {
   const mesh::Mesh coarse = curved_elements(Shape::Prism, 3, bent);
   std::vector<InheritedBounds> inherited;
   mesh::Mesh fine = split_layers(coarse, {{0, {2, -1}, {0, 0}}}, {{{5, 2.0}, {}}}, nullptr, nullptr, {}, &inherited);
   const std::vector<mesh::NodeId> last = fine.element_nodes(fine.elements().size() - 1);
   fine.place_node(last.back(), fine.node(last.back()) + Eigen::Vector3d(0.0, 0.0, 1e-3));  // an interior node
-  const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &inherited);
-  EXPECT_EQ(fast.inherited, fine.elements().size() - 1);
+  const std::vector<double> known = integrals_of(certify_mesh(fine, 8, 0.0, {}, &inherited));
+  EXPECT_TRUE(std::isnan(known.back()));
+  const checks::MeshVolume fast = checks::mesh_volume(fine, checks::VolumeRule::Exact, &known);
+  EXPECT_EQ(fast.known, fine.elements().size() - 1);
   EXPECT_NEAR(fast.element_volume, checks::mesh_volume(fine).element_volume, 1e-13 * fast.element_volume);
 }
 

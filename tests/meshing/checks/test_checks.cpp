@@ -383,6 +383,38 @@ TEST(Volume, ClosedFormOfAffineElementsMatchesTheQuadratureOnEveryShapeAndOrder)
       }
 }
 
+// The checks give the volume check the integrals their certification found: an affine element's
+// is det A times the reference volume, the very closed form mesh_volume computes itself, so the sum
+// is the same bits; a bent element has none (NaN) and is integrated on its nodes. An element's
+// known integral is taken as given (a doctored one shows), and a list of the wrong size is refused.
+TEST(Volume, TakesTheIntegralsTheCertificationFound) {
+  for (ho::Shape shape : {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron})
+    for (int order = 1; order <= 4; ++order) {
+      SCOPED_TRACE(ho::to_string(shape) + " order " + std::to_string(order));
+      const Mesh affine = affine_element(shape, order, ho::NodeSet::GLL);
+      const ValidityResult certified = check_validity(affine);
+      ASSERT_EQ(certified.integrals.size(), 1u);
+      ASSERT_TRUE(std::isfinite(certified.integrals[0]));
+      const MeshVolume taken = mesh_volume(affine, VolumeRule::Exact, &certified.integrals);
+      EXPECT_EQ(taken.known, 1u);
+      EXPECT_EQ(taken.element_volume, mesh_volume(affine).element_volume);
+      std::vector<double> doctored = certified.integrals;
+      doctored[0] *= 2.0;
+      EXPECT_EQ(mesh_volume(affine, VolumeRule::Exact, &doctored).element_volume, 2.0 * taken.element_volume);
+
+      const std::vector<double> too_many(2, 1.0);
+      EXPECT_THROW(mesh_volume(affine, VolumeRule::Exact, &too_many), std::invalid_argument);
+      if (order == 1) continue;  // a tetrahedron of order 1 is affine, however bent its vertices
+
+      const Mesh bent = bent_element(shape, order, ho::NodeSet::GLL);
+      const ValidityResult bent_certified = check_validity(bent);
+      ASSERT_TRUE(std::isnan(bent_certified.integrals[0]));
+      const MeshVolume bent_volume = mesh_volume(bent, VolumeRule::Exact, &bent_certified.integrals);
+      EXPECT_EQ(bent_volume.known, 0u);
+      EXPECT_EQ(bent_volume.element_volume, mesh_volume(bent).element_volume);
+    }
+}
+
 TEST(Volume, AMissingElementShowsInTheBoundaryVolume) {
   TwoTets t;
   // Boundary faces of the first tet are there, so without the second the closed volume is 1/6 +

@@ -40,10 +40,15 @@ struct JacobianBounds {
   bool proven = false;
   int subdivisions = 0;
   /// The integral of det J over the reference element (the element's volume) where the
-  /// certification had it whole: certify_pieces (the mean of a piece's Bernstein coefficients times
-  /// the reference volume, or det A times it); NaN elsewhere.
+  /// certification had it whole: affine_jacobian (det A times the reference volume) and
+  /// certify_pieces (the mean of a piece's Bernstein coefficients times it, or det A times it);
+  /// NaN elsewhere.
   double integral = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// The volume of the reference element of a 3D shape (Gmsh's): 1/6 (tetrahedron), 4/3 (pyramid:
+/// base [-1, 1]^2, height 1), 1 (prism: the unit triangle times [-1, 1]), 8 (hexahedron: [-1, 1]^3).
+double reference_volume(Shape shape);
 
 /// Certifies the sign of det J of one 3D element (tetrahedron, pyramid, prism, hexahedron; orders
 /// 1..kMaxOrder). element_nodes: (num_nodes(shape, order), 3), canonical (Gmsh) order, nodes of the
@@ -73,7 +78,8 @@ JacobianBounds certify_jacobian_by_subdivision(Shape shape, int order, NodeSet s
 /// When every node is within kAffineTolerance x sigma_min(A) (bounded below by 2 |det A| / |A|_F^2)
 /// of the image of its reference node
 /// under one affine map x = A r + b (fitted on four vertices), returns the bounds min_lower =
-/// min_upper = max_upper = det A (proven, subdivisions 0); otherwise false. Why that is a proof: the
+/// min_upper = max_upper = det A (proven, subdivisions 0) and the integral det A x
+/// reference_volume(shape); otherwise false. Why that is a proof: the
 /// true J = A + E with |E| <= L d, d the largest node deviation and L the largest sum of the
 /// reference gradients of the Lagrange basis (< 1e4 for orders <= 10), so |E| < 1e-6 sigma_min(A)
 /// and det J has the sign of det A with a relative error below 3e-6.

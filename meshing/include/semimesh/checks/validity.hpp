@@ -33,6 +33,9 @@ struct ValidityResult {
   std::map<std::string, double> min_scaled_jacobian_by_region;  ///< region name -> its smallest
   std::vector<InvalidElement> worst;         ///< the invalid elements, worst first, at most max_listed
   std::vector<double> scaled_jacobians;      ///< [elements] certified scaled Jacobian of each element
+  std::vector<double> integrals;             ///< [elements] its volume where the certification had it
+                                             ///< whole (ho::JacobianBounds::integral), NaN elsewhere:
+                                             ///< what mesh_volume takes as known
   std::size_t inherited = 0;                 ///< elements whose bounds came from their coarse element
   bool ok() const { return invalid == 0; }
 };

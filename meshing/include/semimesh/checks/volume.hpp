@@ -7,7 +7,6 @@
 //    mesh's own far-field faces when they are curved.
 #pragma once
 
-#include "semimesh/ho/mesh_validity.hpp"
 #include "semimesh/mesh/mesh.hpp"
 #include "semimesh/surface/surface_mesh.hpp"
 
@@ -22,7 +21,7 @@ struct MeshVolume {
   double element_volume = 0.0;              ///< sum of the integrals of det J
   double boundary_volume = 0.0;             ///< (1/3) flux of x through the boundary faces
   std::size_t boundary_faces_without_element = 0;  ///< skipped (the conformity check names them)
-  std::size_t inherited = 0;                 ///< elements whose integral came with inherited bounds
+  std::size_t known = 0;                     ///< elements whose integral was given (their certification's)
   double boundary_relative_error() const;   ///< |element - boundary| / |boundary|
 };
 
@@ -38,11 +37,13 @@ enum class VolumeRule { Exact, Quadrature, Generous };
 
 /// Integrates every element and every boundary face of `mesh` (any order; quadrature exact for the
 /// polynomial det J of tets, prisms and hexes; faces always with the generous rule).
-/// `inherited` (optional, as certify_mesh takes it): an element whose entry has an integral
-/// (JacobianBounds::integral: a split piece's, from its coarse element's det J) and whose
-/// fingerprint is still its own takes that integral instead of a quadrature of its own.
+/// `known` (optional): by element, the integral of det J its certification of this very mesh found
+/// (ho::JacobianBounds::integral: an affine element's det A times the reference volume, a split
+/// piece's from its coarse element's det J), NaN where it found none; an element with one takes it
+/// instead of integrating its nodes again. Throws std::invalid_argument unless it has one entry per
+/// element.
 MeshVolume mesh_volume(const mesh::Mesh& mesh, VolumeRule rule = VolumeRule::Exact,
-                       const std::vector<ho::InheritedBounds>* inherited = nullptr);
+                       const std::vector<double>* known = nullptr);
 
 /// mesh_volume on this thread alone, each sum a plain loop: the reference mesh_volume's threads
 /// must match bit for bit (they compute the same terms and add them in the same order).
@@ -71,7 +72,7 @@ struct VolumeCheck {
 /// encloses more than its triangulation does.
 VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                          const std::vector<const surface::SurfaceMesh*>& farfield, const surface::SurfaceMesh& wall,
-                         const std::vector<ho::InheritedBounds>* inherited = nullptr);
+                         const std::vector<double>* known = nullptr);
 
 /// check_volume for a curved wall (a fuselage): no plane closes the body, so the flux of (x - p) / 3
 /// runs through the wall's surface mesh too; box_volume is then the far field's and the wall's part
@@ -79,6 +80,6 @@ VolumeCheck check_volume(const mesh::Mesh& mesh, const std::vector<const surface
 VolumeCheck check_volume_curved_wall(const mesh::Mesh& mesh, const std::vector<const surface::SurfaceMesh*>& body,
                                      const std::vector<const surface::SurfaceMesh*>& farfield,
                                      const surface::SurfaceMesh& wall,
-                                     const std::vector<ho::InheritedBounds>* inherited = nullptr);
+                                     const std::vector<double>* known = nullptr);
 
 }  // namespace semimesh::checks
