@@ -4,6 +4,7 @@
 #include "mapped_nodes.hpp"
 #include "semimesh/ho/quality.hpp"
 #include "semimesh/ho/validity.hpp"
+#include "validity/jacobian_polynomial.hpp"
 
 #include <gtest/gtest.h>
 
@@ -98,7 +99,7 @@ TEST(CertifyJacobian, AffineFastPathAgreesWithSubdivision) {
 
 // The trilinear fast path against the Bernstein reference: the same verdict and bounds (to
 // rounding) on random trilinear hexahedra, graded like the wake's layers, of every order and node
-// set; bounds that hold against dense sampling; no fast path for a curved or inverted element.
+// set; its volume; bounds that hold against dense sampling; no fast path for a curved or inverted element.
 TEST(CertifyJacobian, TrilinearFastPathAgreesWithSubdivision) {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -136,6 +137,10 @@ TEST(CertifyJacobian, TrilinearFastPathAgreesWithSubdivision) {
         EXPECT_NEAR(fast.min_upper, slow.min_upper, 1e-9 * scale);
         EXPECT_NEAR(fast.max_upper, slow.max_upper, 1e-9 * scale);
         EXPECT_EQ(fast.subdivisions, slow.subdivisions);
+        // Its volume against the mean of the element's own det J coefficients (all its nodes).
+        const double volume = detail::jacobian_determinant(Shape::Hexahedron, order, set, nodes).coefficients().mean() *
+                              reference_volume(Shape::Hexahedron);
+        EXPECT_NEAR(fast.integral, volume, 1e-12 * std::abs(volume));
         const SampledJacobian sampled = sample_jacobian(Shape::Hexahedron, order, set, nodes, 9);
         EXPECT_LE(fast.min_lower, sampled.min * (1 + 1e-9));
         EXPECT_GE(fast.max_upper, sampled.max * (1 - 1e-9));

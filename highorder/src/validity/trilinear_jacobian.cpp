@@ -111,6 +111,9 @@ bool trilinear_jacobian(int order, NodeSet set, const Eigen::MatrixX3d& element_
   const double g = std::sqrt(3.0) * longest, e = kGradientSum * deviation;
   const double delta = 3.0 * g * g * e + 3.0 * g * e * e + e * e * e;
   if (!b.valid || !b.proven || !(b.min_lower > delta)) return false;
+  // Every Bernstein function of the degrees has the same integral: the mean coefficient times the
+  // reference volume is the trilinear element's volume (as det A's is the affine element's).
+  b.integral = trilinear.coefficients().mean() * reference_volume(Shape::Hexahedron);
   bounds = b;
   return true;
 }

@@ -234,6 +234,26 @@ Mesh affine_element(ho::Shape shape, int order, ho::NodeSet set) {
   return m;
 }
 
+// A hexahedron of `order` whose nodes are the trilinear map of a box with its corners moved (not
+// affine: its det J varies).
+Mesh trilinear_hexahedron(int order, ho::NodeSet set) {
+  const Eigen::MatrixX3d corners_r = ho::reference_nodes(ho::Shape::Hexahedron, 1);
+  Eigen::MatrixX3d corners = corners_r;
+  for (int v = 0; v < 8; ++v) corners.row(v) += 0.1 * Eigen::RowVector3d(std::sin(v), std::cos(3.0 * v), 0.5 * std::sin(2.0 * v));
+  Mesh m(order, set);
+  const Eigen::MatrixX3d r = ho::reference_nodes(ho::Shape::Hexahedron, order, set);
+  std::vector<NodeId> ids;
+  for (Eigen::Index i = 0; i < r.rows(); ++i) {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int v = 0; v < 8; ++v)
+      x += corners.row(v).transpose() * (1 + corners_r(v, 0) * r(i, 0)) * (1 + corners_r(v, 1) * r(i, 1)) *
+           (1 + corners_r(v, 2) * r(i, 2)) / 8;
+    ids.push_back(m.add_node(x));
+  }
+  m.add_element(ho::Shape::Hexahedron, ids);
+  return m;
+}
+
 // The linear affine element of `shape` with each of its faces a boundary face of group "outer".
 Mesh single_element(ho::Shape shape) {
   Mesh m = affine_element(shape, 1, ho::NodeSet::Equispaced);
@@ -385,7 +405,8 @@ TEST(Volume, ClosedFormOfAffineElementsMatchesTheQuadratureOnEveryShapeAndOrder)
 
 // The checks give the volume check the integrals their certification found: an affine element's
 // is det A times the reference volume, the very closed form mesh_volume computes itself, so the sum
-// is the same bits; a bent element has none (NaN) and is integrated on its nodes. An element's
+// is the same bits; a trilinear hexahedron's is its trilinear element's, its volume to rounding; a
+// bent element has none (NaN) and is integrated on its nodes. An element's
 // known integral is taken as given (a doctored one shows), and a list of the wrong size is refused.
 TEST(Volume, TakesTheIntegralsTheCertificationFound) {
   for (ho::Shape shape : {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron})
@@ -405,6 +426,16 @@ TEST(Volume, TakesTheIntegralsTheCertificationFound) {
       const std::vector<double> too_many(2, 1.0);
       EXPECT_THROW(mesh_volume(affine, VolumeRule::Exact, &too_many), std::invalid_argument);
       if (order == 1) continue;  // a tetrahedron of order 1 is affine, however bent its vertices
+
+      if (shape == ho::Shape::Hexahedron) {  // a trilinear one: its volume to rounding
+        const Mesh trilinear = trilinear_hexahedron(order, ho::NodeSet::GLL);
+        const ValidityResult trilinear_certified = check_validity(trilinear);
+        ASSERT_TRUE(std::isfinite(trilinear_certified.integrals[0]));
+        const MeshVolume trilinear_volume = mesh_volume(trilinear, VolumeRule::Exact, &trilinear_certified.integrals);
+        EXPECT_EQ(trilinear_volume.known, 1u);
+        EXPECT_NEAR(trilinear_volume.element_volume, mesh_volume(trilinear).element_volume,
+                    1e-13 * trilinear_volume.element_volume);
+      }
 
       const Mesh bent = bent_element(shape, order, ho::NodeSet::GLL);
       const ValidityResult bent_certified = check_validity(bent);

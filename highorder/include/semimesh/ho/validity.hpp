@@ -40,8 +40,8 @@ struct JacobianBounds {
   bool proven = false;
   int subdivisions = 0;
   /// The integral of det J over the reference element (the element's volume) where the
-  /// certification had it whole: affine_jacobian (det A times the reference volume) and
-  /// certify_pieces (the mean of a piece's Bernstein coefficients times it, or det A times it);
+  /// certification had it whole: affine_jacobian (det A times the reference volume),
+  /// trilinear_jacobian (the trilinear element's) and certify_pieces (the mean of a piece's Bernstein coefficients times it, or det A times it);
   /// NaN elsewhere.
   double integral = std::numeric_limits<double>::quiet_NaN();
 };
@@ -97,7 +97,8 @@ bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d
 /// longest edge: J_1's columns are averages of edge vectors), det J is within delta = 3 G^2 e +
 /// 3 G e^2 + e^3 (e = L d) of det J_1: valid when the trilinear element's lower bound exceeds
 /// delta. The bounds returned are the trilinear element's (as affine_jacobian returns det A: within
-/// delta, a rounding-sized relative error, of the element's). `element_nodes`: an order-`order`
+/// delta, a rounding-sized relative error, of the element's), and its integral (the mean of its
+/// Bernstein coefficients times the reference volume). `element_nodes`: an order-`order`
 /// hexahedron's. Returns false (nothing set) for order 1 or a wrong node count, nodes off the
 /// trilinear image by more than kAffineTolerance x the longest edge, or when the bounds do not
 /// prove the element valid with that margin: the general path decides.
