@@ -1,7 +1,8 @@
 // Robustness sweep: N random plausible configurations of the analytic wing (a subset on the OCC
 // backend), each run through the `semimesh` command line as a user would. Prints one line per run
 // (exit code, seconds, min scaled Jacobian), the pass rate, and for every run that did not end
-// with exit 0 the command that reproduces it and its error lines. Exit 1 must be a refusal that
+// with exit 0 the command that reproduces it and its error lines (its files stay in DIR/run<N>; a
+// passing run's are removed). Exit 1 must be a refusal that
 // names the place and the remedy; exit 2 (invalid mesh produced) and 3 (internal error) are bugs.
 //
 //   bench_robustness [--exe PATH] [--config TOML] [--runs N] [--seed S] [--occ-every K] [--out DIR]
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <random>
 #include <string>
@@ -142,6 +144,9 @@ int main(int argc, char** argv) {
     fmt::print("run {:3} {} exit {} {:6.1f} s {}\n", i, occ ? "occ " : "naca", r.exit_code, r.seconds,
                jacobian.empty() ? std::string() : jacobian.front());
     std::fflush(stdout);
+    // A passing run's files are of no further use (a sweep of 200 left gigabytes in /tmp); the
+    // others' stay for inspection.
+    if (r.exit_code == 0) std::filesystem::remove_all(fmt::format("{}/run{}", o.out, i));
     if (r.exit_code == 0 && !std::getenv("BENCH_PRINT_ALL")) continue;
     std::string report = fmt::format("run {} exit {}:\n  {}\n", i, r.exit_code, command);
     for (const char* prefix : {"semimesh: error", "semimesh: config error", "semimesh: internal", "semimesh: validity", "element "})
@@ -156,5 +161,10 @@ int main(int argc, char** argv) {
     fmt::print("of which config errors: {} (the configuration refused, no mesh tried: e.g. --occ-every with a config "
                "whose wall only the analytic backend has)\n", config_errors);
   fmt::print("total {:.0f} s, mean {:.1f} s per run\n", total_seconds, total_seconds / o.runs);
+  std::error_code ignored;
+  if (std::filesystem::is_empty(o.out, ignored) && !ignored)
+    std::filesystem::remove(o.out, ignored);
+  else if (by_exit[0] < o.runs)
+    fmt::print("the files of the runs that did not pass are in {}/run<N>\n", o.out);
   return 0;
 }
