@@ -32,6 +32,22 @@ constexpr std::size_t kBlock = 4096;
 // length midpoint takes its nodes by arc length.
 constexpr double kUnevenParameter = 0.1;
 
+// (num_nodes(shape, order), corners): the linear face's map at the face's reference nodes of
+// `set`. Kept per thread and shape: building a basis (a Vandermonde solve) for every face on the
+// CAD was a tenth of the curving.
+const Eigen::MatrixXd& linear_face_map(Shape shape, int order, NodeSet set) {
+  struct Cached {
+    int order = -1;
+    NodeSet set = NodeSet::Equispaced;
+    Eigen::MatrixXd values;
+  };
+  thread_local std::array<Cached, 2> cache;  // triangle, quadrilateral
+  Cached& c = cache[shape == Shape::Triangle ? 0 : 1];
+  if (c.order != order || c.set != set)
+    c = {order, set, LagrangeBasis(shape, 1, NodeSet::Equispaced).values(reference_nodes(shape, order, set))};
+  return c.values;
+}
+
 // Nodes inside a volume element of this shape and order (none on its edges or faces).
 std::size_t interior_node_count(Shape shape, int order) {
   const mesh::NodeLayout& layout = mesh::node_layout(shape, order);
@@ -372,8 +388,7 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
     // The straight-sided face (its linear map), to measure how far curving moves the nodes.
     Eigen::MatrixX3d corners(face.num_vertices, 3);
     for (int v = 0; v < face.num_vertices; ++v) corners.row(v) = in_.node(face.vertices[v]).transpose();
-    const Eigen::MatrixXd straight =
-        LagrangeBasis(shape, 1, NodeSet::Equispaced).values(reference_nodes(shape, P, params_.node_set)) * corners;
+    const Eigen::MatrixXd straight = linear_face_map(shape, P, params_.node_set) * corners;
     const cad::Surface& s = model_.surface(place.id);
     Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(n, 2);
     for (int v = 0; v < face.num_vertices; ++v)

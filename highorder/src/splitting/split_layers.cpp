@@ -10,9 +10,11 @@
 #include "semimesh/ho/validity.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -127,6 +129,29 @@ struct Plan {
   bool two() const { return direction[1] >= 0; }
 };
 
+/// How a split cuts one face of an element, per split direction crossing it: the direction's family
+/// and the face's vertices on that direction's bottom (sorted; unused entries kNoNode). A value
+/// with room for both directions of a hexahedron: the side-face checks ask for every face of every
+/// split element, and vectors there cost an allocation each.
+struct FaceCut {
+  int family = 0;
+  std::array<NodeId, 4> bottom{mesh::kNoNode, mesh::kNoNode, mesh::kNoNode, mesh::kNoNode};
+  bool operator==(const FaceCut& o) const { return family == o.family && bottom == o.bottom; }
+  bool operator<(const FaceCut& o) const { return std::tie(family, bottom) < std::tie(o.family, o.bottom); }
+};
+struct FaceCuts {
+  std::array<FaceCut, 2> cut{};
+  int count = 0;
+  bool empty() const { return count == 0; }
+  void add(const FaceCut& c) { cut[count++] = c; }
+  void sort() {
+    if (count == 2 && cut[1] < cut[0]) std::swap(cut[0], cut[1]);
+  }
+  bool operator==(const FaceCuts& o) const {
+    return count == o.count && std::equal(cut.begin(), cut.begin() + count, o.cut.begin());
+  }
+};
+
 /// One distinct node of the pieces of an element split by a plan, named without the element
 /// (what key_of computes from the element, worked out once per shape, plan and layer counts).
 struct SubNode {
@@ -229,7 +254,7 @@ class Splitter {
   /// element that does not cut it the same way (same families, same body-side vertices).
   void check_side_faces(const std::vector<LayerSplit>& split);
   /// Per split direction of a face of an element: (family, sorted body-side vertex ids).
-  std::vector<std::pair<int, std::vector<NodeId>>> cuts(std::size_t element, std::uint32_t face) const;
+  FaceCuts cuts(std::size_t element, std::uint32_t face) const;
 
   struct SplitGeometry {
     Eigen::MatrixX3d x;                                // (pieces * nodes, 3)
@@ -759,8 +784,8 @@ void Splitter::add_figures(std::size_t element, const SplitGeometry& geometry) {
   }
 }
 
-std::vector<std::pair<int, std::vector<NodeId>>> Splitter::cuts(std::size_t element, std::uint32_t face) const {
-  std::vector<std::pair<int, std::vector<NodeId>>> result;
+FaceCuts Splitter::cuts(std::size_t element, std::uint32_t face) const {
+  FaceCuts result;
   const mesh::Element& el = in_.elements()[element];
   const Plan& plan = plans_[element];
   if (!plan.split()) return result;
@@ -768,15 +793,17 @@ std::vector<std::pair<int, std::vector<NodeId>>> Splitter::cuts(std::size_t elem
   for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
     if (el.faces[f] != face) continue;
     for (int s = 0; s < (plan.two() ? 2 : 1); ++s) {
-      std::vector<NodeId> bottom;
+      FaceCut cut;
+      cut.family = plan.family[s];
+      int on_bottom = 0;
       for (int v : faces(el.shape)[f])
-        if (data.lattice[v][plan.direction[s]] == 0) bottom.push_back(el.vertices[v]);
-      if (bottom.empty() || bottom.size() == faces(el.shape)[f].size()) continue;
-      std::sort(bottom.begin(), bottom.end());
-      result.push_back({plan.family[s], bottom});
+        if (data.lattice[v][plan.direction[s]] == 0) cut.bottom[on_bottom++] = el.vertices[v];
+      if (on_bottom == 0 || on_bottom == static_cast<int>(faces(el.shape)[f].size())) continue;
+      std::sort(cut.bottom.begin(), cut.bottom.begin() + on_bottom);  // the unused entries stay kNoNode
+      result.add(cut);
     }
   }
-  std::sort(result.begin(), result.end());
+  result.sort();
   return result;
 }
 
@@ -1010,7 +1037,8 @@ void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<Nod
 // piece lying on the face gives one), copied otherwise.
 void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
                                   const std::vector<std::size_t>& first_out) {
-  std::map<std::uint32_t, std::size_t> cut_face_owner;  // input face id -> split element
+  constexpr std::size_t kUncut = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> cut_face_owner(in_.faces().size(), kUncut);  // input face id -> split element
   for (const LayerSplit& s : split) {
     const mesh::Element& el = in_.elements()[s.element];
     for (std::size_t f = 0; f < faces(el.shape).size(); ++f)
@@ -1019,12 +1047,11 @@ void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const st
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
     const std::string& group = in_.group_names()[bf.group];
-    const auto owner = cut_face_owner.find(bf.face);
-    if (owner == cut_face_owner.end()) {
+    const std::size_t e = cut_face_owner[bf.face];
+    if (e == kUncut) {
       out_.add_boundary_face(group, bf.shape, in_.boundary_face_nodes(b));
       continue;
     }
-    const std::size_t e = owner->second;
     const mesh::Element& el = in_.elements()[e];
     std::vector<int> local(num_vertices(bf.shape));
     for (std::size_t j = 0; j < local.size(); ++j)
