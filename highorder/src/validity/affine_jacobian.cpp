@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -72,8 +73,14 @@ bool affine_jacobian(Shape shape, int order, NodeSet set, const Eigen::MatrixX3d
   const Eigen::RowVector3d b = element_nodes.row(v[0]) - r.row(v[0]) * a.transpose();
   // The deviation as computed, plus what rounding at the coordinates' magnitude can hide from it.
   const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * element_nodes.rowwise().norm().maxCoeff();
-  const double deviation =
-      ((r * a.transpose()).rowwise() + b - element_nodes).rowwise().norm().maxCoeff() + rounding;
+  // Row by row: the (nodes, 3) image as one expression cost an allocation per element.
+  double deviation = 0.0;
+  for (Eigen::Index i = 0; i < r.rows(); ++i) {
+    const double d = (r.row(i) * a.transpose() + b - element_nodes.row(i)).norm();
+    if (std::isnan(d)) return false;
+    deviation = std::max(deviation, d);
+  }
+  deviation += rounding;
   if (!(smallest_stretch > 0.0) || !(deviation <= kAffineTolerance * smallest_stretch)) return false;
   bounds = JacobianBounds{};
   bounds.min_lower = bounds.min_upper = bounds.max_upper = det;
