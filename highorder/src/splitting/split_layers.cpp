@@ -14,7 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -1037,21 +1037,27 @@ void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<Nod
 // piece lying on the face gives one), copied otherwise.
 void Splitter::add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
                                   const std::vector<std::size_t>& first_out) {
-  constexpr std::size_t kUncut = std::numeric_limits<std::size_t>::max();
-  std::vector<std::size_t> cut_face_owner(in_.faces().size(), kUncut);  // input face id -> split element
+  // (input face id, split element) of every cut face, sorted by face (stable: of a face cut by two
+  // elements, the later in `split` comes last and owns it). The split's peak memory is reached
+  // here: a list of the cut faces, not an entry for every face of the mesh.
+  std::vector<std::pair<std::uint32_t, std::size_t>> cut_faces;
   for (const LayerSplit& s : split) {
     const mesh::Element& el = in_.elements()[s.element];
     for (std::size_t f = 0; f < faces(el.shape).size(); ++f)
-      if (!cuts(s.element, el.faces[f]).empty()) cut_face_owner[el.faces[f]] = s.element;
+      if (!cuts(s.element, el.faces[f]).empty()) cut_faces.emplace_back(el.faces[f], s.element);
   }
+  std::stable_sort(cut_faces.begin(), cut_faces.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
     const std::string& group = in_.group_names()[bf.group];
-    const std::size_t e = cut_face_owner[bf.face];
-    if (e == kUncut) {
+    const auto after = std::upper_bound(cut_faces.begin(), cut_faces.end(), bf.face,
+                                        [](std::uint32_t face, const auto& c) { return face < c.first; });
+    if (after == cut_faces.begin() || std::prev(after)->first != bf.face) {
       out_.add_boundary_face(group, bf.shape, in_.boundary_face_nodes(b));
       continue;
     }
+    const std::size_t e = std::prev(after)->second;
     const mesh::Element& el = in_.elements()[e];
     std::vector<int> local(num_vertices(bf.shape));
     for (std::size_t j = 0; j < local.size(); ++j)
