@@ -759,25 +759,22 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
            const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
     // Conformity and the geometric error are serial passes that only read the mesh, the
-    // certification an OpenMP loop: they run side by side on another thread, each filling its own
-    // figures, so that the serial passes no longer leave a core idle. The volume comes after the
-    // certification: it takes the integrals that found (affine elements, split pieces) instead of
-    // gathering those elements' nodes again (the same figures, in less time).
+    // certification an OpenMP loop: they run side by side on threads of their own, each filling
+    // its own figures, so that no serial pass leaves a core idle at the end (as one after the
+    // other on one thread did). The volume comes after the certification: it takes the integrals
+    // that found (affine elements, split pieces) instead of gathering those elements' nodes again
+    // (the same figures, in less time).
     if (report) report(0.0, "conformity, volume and certification");
-    std::exception_ptr geometric_error;
-    std::future<void> serial_checks = std::async(std::launch::async, [&] {
-      result.conformity = checks::check_conformity(result.mesh);
-      try {
-        std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
-        curved.push_back(g.roles.wall);
-        const ho::GeometricError error =
-            ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
-        result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
-      } catch (...) {
-        geometric_error = std::current_exception();
-      }
+    std::future<void> conformity =
+        std::async(std::launch::async, [&] { result.conformity = checks::check_conformity(result.mesh); });
+    std::future<void> geometric = std::async(std::launch::async, [&] {
+      std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
+      curved.push_back(g.roles.wall);
+      const ho::GeometricError error =
+          ho::geometric_error(result.mesh, *g.model, chord, kGeometricErrorSamples, curved);
+      result.geometric_error = GeometricErrorFigures{chord, error.max_rel, error.rms_rel, error.samples};
     });
-    std::exception_ptr validity_error;
+    std::exception_ptr validity_error, geometric_error;
     try {
       result.validity = checks::check_validity(result.mesh, 100, config.checks.min_scaled_jacobian,
                                                progress_part(report, 0.0, 0.9), &inherited);
@@ -787,7 +784,12 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     } catch (...) {
       validity_error = std::current_exception();
     }
-    serial_checks.get();  // the errors in the order the passes were written: conformity's first
+    try {
+      geometric.get();
+    } catch (...) {
+      geometric_error = std::current_exception();
+    }
+    conformity.get();  // the errors in the order the passes were written: conformity's first
     if (validity_error) std::rethrow_exception(validity_error);
     if (geometric_error) std::rethrow_exception(geometric_error);
   });
