@@ -5,6 +5,8 @@
 #include "semimesh/ho/basis.hpp"
 #include "semimesh/ho/validity.hpp"
 
+#include "prisms_on_square.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -164,28 +166,10 @@ TEST(SplitLayers, CurvedSideFaceIsKept) {
 // Two prisms sharing the side face (1, 2, 5, 4) of the first: a flat layer of thickness 0.1 under
 // a smooth global bending, nodes placed element by element.
 mesh::Mesh two_prisms(int order, NodeSet set) {
-  const Eigen::Vector3d corners[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  const int tris[2][3] = {{0, 1, 2}, {1, 3, 2}};
-  const auto bend = [](const Eigen::Vector3d& p) {
+  return prisms_on_square(order, set, {{0, 1, 2}, {1, 3, 2}}, [](const Eigen::Vector3d& flat, double zeta) {
+    const Eigen::Vector3d p = flat + Eigen::Vector3d(0, 0, 0.05 * (zeta + 1.0));
     return Eigen::Vector3d(p(0), p(1), p(2) + 0.1 * std::sin(p(0)) * std::cos(p(1)));
-  };
-  mesh::Mesh m(order, set);
-  const Eigen::MatrixX3d r = reference_nodes(Shape::Prism, order, set);
-  // Nodes at the same place are one node (the elements are placed independently).
-  std::map<std::array<long, 3>, mesh::NodeId> by_place;
-  for (const auto& t : tris) {
-    std::vector<mesh::NodeId> ids;
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-      const double a = r(i, 0), b = r(i, 1), h = 0.05 * (r(i, 2) + 1.0);
-      const Eigen::Vector3d flat = (1 - a - b) * corners[t[0]] + a * corners[t[1]] + b * corners[t[2]];
-      const Eigen::Vector3d x = bend(flat + Eigen::Vector3d(0, 0, h));
-      const std::array<long, 3> key{std::lround(x(0) * 1e9), std::lround(x(1) * 1e9), std::lround(x(2) * 1e9)};
-      const auto it = by_place.find(key);
-      ids.push_back(it != by_place.end() ? it->second : by_place[key] = m.add_node(x));
-    }
-    m.add_element(Shape::Prism, ids);
-  }
-  return m;
+  });
 }
 
 TEST(SplitLayers, SplitNeighboursConform) {

@@ -6,6 +6,7 @@
 // is unchanged, derived anew where a node moved, the split's bounds either way.
 #include "semimesh/ho/splitting/split_layers.hpp"
 
+#include "prisms_on_square.hpp"
 #include "splitting/split_by_keys.hpp"
 
 #include <gtest/gtest.h>
@@ -47,25 +48,10 @@ mesh::Mesh bent_row(Shape shape, int order, NodeSet set, int count) {
 // their shared side face stands on the edge 1-2, which each names from its other end (the split's
 // nodes on it are named from the lower id, so that both agree).
 mesh::Mesh prism_pair(int order, NodeSet set) {
-  const Eigen::Vector3d corners[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  const int triangles[2][3] = {{0, 1, 2}, {2, 1, 3}};
-  mesh::Mesh m(order, set);
-  const Eigen::MatrixX3d r = reference_nodes(Shape::Prism, order, set);
-  std::map<std::array<long, 3>, mesh::NodeId> node_at;
-  for (const auto& t : triangles) {
-    std::vector<mesh::NodeId> ids;
-    for (Eigen::Index i = 0; i < r.rows(); ++i) {
-      const double a = r(i, 0), b = r(i, 1);
-      Eigen::Vector3d x = (1 - a - b) * corners[t[0]] + a * corners[t[1]] + b * corners[t[2]];
-      x(2) = 0.1 * (r(i, 2) + 1.0) + 0.05 * std::sin(2 * x(0)) * std::cos(x(1));
-      const std::array<long, 3> key{std::lround(x(0) * 1e9), std::lround(x(1) * 1e9), std::lround(x(2) * 1e9)};
-      auto it = node_at.find(key);
-      if (it == node_at.end()) it = node_at.emplace(key, m.add_node(x)).first;
-      ids.push_back(it->second);
-    }
-    m.add_element(Shape::Prism, ids);
-  }
-  return m;
+  return prisms_on_square(order, set, {{0, 1, 2}, {2, 1, 3}}, [](Eigen::Vector3d x, double zeta) {
+    x(2) = 0.1 * (zeta + 1.0) + 0.05 * std::sin(2 * x(0)) * std::cos(x(1));
+    return x;
+  });
 }
 
 void expect_same_mesh(const mesh::Mesh& a, const mesh::Mesh& b) {
