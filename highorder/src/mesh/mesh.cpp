@@ -577,10 +577,16 @@ std::vector<NodeId> Mesh::element_nodes(std::size_t element) const {
 }
 
 Eigen::MatrixX3d Mesh::element_coordinates(std::size_t element) const {
-  const std::vector<NodeId> ids = element_nodes(element);
-  Eigen::MatrixX3d x(ids.size(), 3);
-  for (std::size_t i = 0; i < ids.size(); ++i) x.row(i) = nodes_[ids[i]].transpose();
+  Eigen::MatrixX3d x;
+  element_coordinates(element, x);
   return x;
+}
+
+void Mesh::element_coordinates(std::size_t element, Eigen::MatrixX3d& out) const {
+  thread_local std::vector<NodeId> ids;
+  element_nodes(element, ids);
+  out.resize(static_cast<Eigen::Index>(ids.size()), 3);
+  for (std::size_t i = 0; i < ids.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = nodes_[ids[i]].transpose();
 }
 
 std::vector<NodeId> Mesh::boundary_face_nodes(std::size_t boundary_face) const {

@@ -88,12 +88,8 @@ MeshValidity certify_mesh(const mesh::Mesh& mesh, int max_depth, double min_scal
       (entry->from_parent ? from_parent : certified_before).fetch_add(1, std::memory_order_relaxed);
       return;
     }
-    // The nodes into buffers of this thread's: no allocation per element.
-    thread_local std::vector<mesh::NodeId> ids;
-    thread_local Eigen::MatrixX3d x;
-    mesh.element_nodes(e, ids);
-    x.resize(static_cast<Eigen::Index>(ids.size()), 3);
-    for (std::size_t k = 0; k < ids.size(); ++k) x.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
+    thread_local Eigen::MatrixX3d x;  // this thread's: no allocation per element
+    mesh.element_coordinates(e, x);
     out.bounds[e] = certify_jacobian(mesh.elements()[e].shape, mesh.order(), mesh.node_set(), x, max_depth,
                                      min_scaled_jacobian);
   }, progress, "elements");
@@ -137,9 +133,10 @@ InheritedBounds certificate(const char* who, const mesh::Mesh& mesh, std::size_t
   if (dimension(shape) != 3)
     throw std::invalid_argument(std::string(who) + ": element " + std::to_string(e) + " is a " + to_string(shape) +
                                 "; only 3D elements can be certified");
+  thread_local Eigen::MatrixX3d x;  // this thread's: no allocation per element
+  mesh.element_coordinates(e, x);
   return {e, element_fingerprint(mesh, e),
-          certify_jacobian(shape, mesh.order(), mesh.node_set(), mesh.element_coordinates(e), max_depth,
-                           min_scaled_jacobian),
+          certify_jacobian(shape, mesh.order(), mesh.node_set(), x, max_depth, min_scaled_jacobian),
           /*from_parent=*/false};
 }
 

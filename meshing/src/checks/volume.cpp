@@ -290,7 +290,6 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
                     const std::vector<double>* known, std::size_t& taken) {
   thread_local Eigen::MatrixXd x;  // elements in x: element i in columns 3i..3i+2
   thread_local Eigen::MatrixX3d nodes;
-  thread_local std::vector<mesh::NodeId> ids;
   x.resize(rule.full->gradients[0].cols(), 3 * static_cast<long>(batch.elements.size()));
   long integrated = 0;
   double volume = 0.0;
@@ -300,9 +299,7 @@ double batch_volume(const mesh::Mesh& mesh, const ElementBatch& batch, const Bat
       ++taken;
       continue;
     }
-    mesh.element_nodes(e, ids);
-    nodes.resize(static_cast<Eigen::Index>(ids.size()), 3);
-    for (std::size_t k = 0; k < ids.size(); ++k) nodes.row(static_cast<Eigen::Index>(k)) = mesh.node(ids[k]).transpose();
+    mesh.element_coordinates(e, nodes);
     ho::JacobianBounds affine;
     if (rule.closed_form && ho::affine_jacobian(batch.shape, mesh.order(), mesh.node_set(), nodes, affine))
       volume += affine.integral;

@@ -41,8 +41,8 @@ struct JacobianBounds {
   int subdivisions = 0;
   /// The integral of det J over the reference element (the element's volume) where the
   /// certification had it whole: affine_jacobian (det A times the reference volume),
-  /// trilinear_jacobian (the trilinear element's) and certify_pieces (the mean of a piece's Bernstein coefficients times it, or det A times it);
-  /// NaN elsewhere.
+  /// trilinear_jacobian (the trilinear element's) and certify_pieces (the mean of a piece's
+  /// Bernstein coefficients times it, or det A times it); NaN elsewhere.
   double integral = std::numeric_limits<double>::quiet_NaN();
 };
 

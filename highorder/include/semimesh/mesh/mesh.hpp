@@ -223,6 +223,9 @@ class Mesh {
   void element_nodes_at(std::size_t element, const std::vector<int>& positions, std::vector<NodeId>& out) const;
   /// Node coordinates of an element in canonical order, shape (num_nodes, 3).
   Eigen::MatrixX3d element_coordinates(std::size_t element) const;
+  /// The same into `out` (resized), through a buffer of the calling thread's for the ids: no
+  /// allocation per element in the loops that read every element's nodes.
+  void element_coordinates(std::size_t element, Eigen::MatrixX3d& out) const;
   /// Node ids of a boundary face in canonical order of its own vertex order.
   std::vector<NodeId> boundary_face_nodes(std::size_t boundary_face) const;
   /// Node ids along an edge, vertices included, from vertices[0] to vertices[1]; shape (P+1).
