@@ -2,8 +2,8 @@
 // backend), each run through the `semimesh` command line as a user would. Prints one line per run
 // (exit code, seconds, min scaled Jacobian), the pass rate, and for every run that did not end
 // with exit 0 the command that reproduces it and its error lines (its files stay in DIR/run<N>; a
-// passing run's are removed). Exit 1 must be a refusal that
-// names the place and the remedy; exit 2 (invalid mesh produced) and 3 (internal error) are bugs.
+// passing run's are removed). Exit 1 must be a refusal that names the place and the remedy;
+// exit 2 (invalid mesh produced) and 3 (internal error) are bugs.
 //
 //   bench_robustness [--exe PATH] [--config TOML] [--runs N] [--seed S] [--occ-every K] [--out DIR]
 //

@@ -762,8 +762,8 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     // certification an OpenMP loop: they run side by side on threads of their own, each filling
     // its own figures, so that no serial pass leaves a core idle at the end (as one after the
     // other on one thread did). The volume comes after the certification: it takes the integrals
-    // that found (affine elements, split pieces) instead of gathering those elements' nodes again
-    // (the same figures, in less time).
+    // the certification found (affine elements, trilinear hexahedra, split pieces) instead of
+    // gathering those elements' nodes again (the same figures, in less time).
     if (report) report(0.0, "conformity, volume and certification");
     std::future<void> conformity =
         std::async(std::launch::async, [&] { result.conformity = checks::check_conformity(result.mesh); });
