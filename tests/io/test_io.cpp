@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <dirent.h>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <utility>
 #include <vector>
@@ -165,6 +167,56 @@ TEST(AtomicFile, LargePiecesGoInOrderAndPlaceholdersAreFilledIn) {
   }
   want[1] = 'E', want[10] = 'X', want[11] = 'Y', want.back() = 'Z';
   EXPECT_EQ(read_text(path), want);
+}
+
+// Text and binary pieces of every size across many buffers (each written by the file's own thread
+// while the next is filled) land in the order they were given.
+TEST(AtomicFile, ManyBuffersLandInOrder) {
+  const std::string path = temp_dir() + "/many.bin";
+  std::string want;
+  {
+    semimesh::io::AtomicFile out(path);
+    for (int i = 0; i < 400000; ++i) {
+      out.print("{} ", i);
+      want += std::to_string(i) + " ";
+      if (i % 50000 == 7) {
+        const std::string piece(std::size_t(i % 3 + 1) << 19, static_cast<char>('a' + i % 26));
+        out.write(piece.data(), piece.size());
+        want += piece;
+      }
+    }
+    EXPECT_EQ(out.bytes_written(), want.size());
+    out.commit();
+  }
+  EXPECT_EQ(read_text(path), want);
+}
+
+// A write that fails on the file's own thread (here at the process's file size limit: EFBIG) is
+// thrown to the caller by a later write or by commit, naming the file; the old file stays.
+TEST(AtomicFile, AFailedBackgroundWriteIsThrownAndTheOldFileStays) {
+  const std::string dir = temp_dir();
+  const std::string path = dir + "/big.msh";
+  { std::ofstream(path) << "old\n"; }
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of the signal
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  rlimit limit = old_limit;
+  limit.rlim_cur = rlim_t{2} << 20;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+  std::string error;
+  try {
+    semimesh::io::AtomicFile out(path);
+    const std::string piece(std::size_t{1} << 20, 'x');
+    for (int i = 0; i < 8; ++i) out.write(piece.data(), piece.size());
+    out.commit();
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(error.find("cannot write to '" + dir + "/big.msh.tmp-"), std::string::npos) << error;
+  EXPECT_EQ(read_text(path), "old\n");
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"big.msh"});
 }
 
 TEST(Msh, WriteFailureKeepsExistingFile) {

@@ -1,11 +1,13 @@
 // Atomic file output: write `path.tmp-XXXXXX` in the same directory, fsync, rename over `path`.
 // If anything fails (or the writer is destroyed without commit) the temporary file is removed and
-// an existing `path` is left untouched. Output is buffered and formatted with fmt (fast).
+// an existing `path` is left untouched. Output is buffered and formatted with fmt (fast); each full
+// buffer goes to the file on a thread of the file's own while the caller fills the next one.
 #pragma once
 
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 namespace semimesh::io {
@@ -37,22 +39,24 @@ class AtomicFile {
   /// is known only once what follows it is written); throws std::logic_error past the end.
   void overwrite(std::size_t position, const void* data, std::size_t bytes);
   /// Flushes, fsyncs and renames the temporary file to the final path; throws on any failure.
+  /// A failure of an earlier buffer's write is thrown here or by the write after it, naming the file.
   void commit();
 
   const std::string& path() const { return path_; }
 
  private:
   static constexpr std::size_t kFlushBytes = 1 << 20;
-  static constexpr std::size_t kWritebackBytes = std::size_t{16} << 20;
+  class BackgroundWrite;
+  /// Hands the buffer to the background write (after the one before it is done) and starts a new one.
   void flush_buffer();
-  /// Appends to the file after what the buffer held (which must be flushed already).
-  void write_to_file(const char* data, std::size_t bytes);
+  /// Waits until every buffer handed over is in the file; rethrows the first failure.
+  void drain();
 
   std::string path_, temp_path_;
   std::FILE* file_ = nullptr;
   fmt::memory_buffer buffer_;
-  std::size_t written_ = 0;
-  std::size_t started_writeback_ = 0;  ///< bytes [0, this) handed to the kernel's writeback
+  std::size_t written_ = 0;  ///< bytes handed to the background write
+  std::unique_ptr<BackgroundWrite> background_;  ///< started by the first full buffer
   bool committed_ = false;
 };
 
