@@ -9,6 +9,7 @@
 #include <future>
 #include <thread>
 #include <tuple>
+#include <utility>
 
 namespace semimesh::checks {
 namespace {
@@ -188,17 +189,42 @@ void run_parts(std::size_t parts, const Part& part) {
   for (auto& other : others) other.get();
 }
 
-// `all` sorted by occurs_before: equal parts sorted on their own threads, then merged. Every
-// occurrence differs from every other (owner, local face), so the order is the one std::sort gives.
-void sort_occurrences(std::vector<Occurrence>& all, std::size_t parts) {
+// `all` sorted by occurs_before, without comparing most pairs: a counting pass puts each
+// occurrence in the bucket of its smallest vertex's range (a few faces a bucket; stable, so a
+// bucket keeps the collection's order), then each bucket is sorted on its own. Buckets follow
+// each other in key order, so the whole is sorted: a face's uses are next to each other (the brute
+// force check, which groups them without sorting, is the tests' reference). The counts, the moves
+// and the buckets' sorts are shared among `parts` threads.
+void sort_occurrences(std::vector<Occurrence>& all, std::size_t parts, std::size_t num_nodes) {
+  int shift = 0;  // buckets of 2^shift smallest vertices: about one bucket per 8 occurrences
+  while ((num_nodes >> shift) > std::max<std::size_t>(1, all.size() / 8)) ++shift;
+  const std::size_t buckets = (num_nodes >> shift) + 1;
+  const auto bucket = [shift](const Occurrence& o) { return static_cast<std::size_t>(o.key[0]) >> shift; };
   std::vector<std::size_t> bounds;
   for (std::size_t k = 0; k <= parts; ++k) bounds.push_back(all.size() * k / parts);
+  // starts[k][b]: where part k's first occurrence in bucket b goes (parts in order within a bucket).
+  std::vector<std::vector<std::size_t>> starts(parts, std::vector<std::size_t>(buckets + 1, 0));
   run_parts(parts, [&](std::size_t k) {
-    std::sort(all.begin() + static_cast<long>(bounds[k]), all.begin() + static_cast<long>(bounds[k + 1]), occurs_before);
+    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) ++starts[k][bucket(all[i])];
   });
-  for (std::size_t k = 1; k < parts; ++k)
-    std::inplace_merge(all.begin(), all.begin() + static_cast<long>(bounds[k]),
-                       all.begin() + static_cast<long>(bounds[k + 1]), occurs_before);
+  std::size_t at = 0;
+  std::vector<std::size_t> bucket_start(buckets + 1);
+  for (std::size_t b = 0; b < buckets; ++b) {
+    bucket_start[b] = at;
+    for (std::size_t k = 0; k < parts; ++k) at += std::exchange(starts[k][b], at);
+  }
+  bucket_start[buckets] = at;
+  std::vector<Occurrence> sorted(all.size());
+  run_parts(parts, [&](std::size_t k) {
+    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) sorted[starts[k][bucket(all[i])]++] = all[i];
+  });
+  starts = {};
+  all = std::move(sorted);
+  run_parts(parts, [&](std::size_t k) {
+    for (std::size_t b = buckets * k / parts; b < buckets * (k + 1) / parts; ++b)
+      std::sort(all.begin() + static_cast<long>(bucket_start[b]), all.begin() + static_cast<long>(bucket_start[b + 1]),
+                occurs_before);
+  });
 }
 
 // The faces of sorted occurrences [first, end) classified into `result`.
@@ -233,7 +259,7 @@ ConformityResult check_conformity(const mesh::Mesh& mesh) {
   // problems do not depend on how the faces are shared out).
   const std::size_t parts = std::max(1u, std::thread::hardware_concurrency());
   std::vector<Occurrence> all = collect_occurrences(mesh);
-  sort_occurrences(all, parts);
+  sort_occurrences(all, parts, mesh.num_nodes());
   const std::vector<std::size_t> bounds = face_aligned_bounds(all, parts);
   std::vector<ConformityResult> part_results(parts);
   run_parts(parts, [&](std::size_t k) { classify_range(mesh, all, bounds[k], bounds[k + 1], part_results[k]); });
