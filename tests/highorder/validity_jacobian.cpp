@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -146,6 +147,9 @@ TEST(CertifyJacobian, TrilinearFastPathAgreesWithSubdivision) {
         EXPECT_GE(fast.max_upper, sampled.max * (1 - 1e-9));
         // One interior node moved by a hundredth of the thickness: curved, left to the general path.
         nodes(nodes.rows() - 1, 2) += 2e-4;
+        EXPECT_FALSE(trilinear_jacobian(order, set, nodes, fast));
+        // A node that is not a number (corrupt input) is no trilinear element's either.
+        nodes(nodes.rows() - 1, 2) = std::numeric_limits<double>::quiet_NaN();
         EXPECT_FALSE(trilinear_jacobian(order, set, nodes, fast));
       }
       // Inverted (two corners' layers swapped): refused, and the general path finds it invalid.

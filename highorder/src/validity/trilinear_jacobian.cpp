@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <utility>
 
@@ -34,17 +35,19 @@ BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degre
   const BernsteinLayout& from = p.layout();
   if (from.num_vars != 3 || from.factors.size() != 3)
     throw std::invalid_argument("elevated_on_segments: a product of three segments is needed");
-  BernsteinPolynomial out(std::vector<SimplexFactor>(3, SimplexFactor{1, degree}));
-  // One direction at a time over a dense box (a separable elevation: ~7k products at order 4, not
-  // the 140k of all 27 x 1728 pairs), box index i + n0 (j + n1 k). Each output entry is a weighted
-  // sum along one line of the box, read from its start with the direction's fixed stride (the checks
-  // elevate every straight-sided hexahedron). The 1D matrices, row-major, are kept per thread (a
-  // few: found by a scan).
+  // One direction at a time (a separable elevation: ~7k products at order 4, not the 140k of all
+  // 27 x 1728 pairs). A product of segments numbers its coefficients in box order, i + n0 (j + n1 k)
+  // (every box entry is inside), so the coefficients are the box. Each output entry is the sum along
+  // its input line, started at 0 and taken in line order; the loops run over whole rows (planes) of
+  // outputs at a time, which the compiler vectorises (the checks elevate every straight-sided
+  // hexahedron). The 1D matrices, row-major, and the output layouts are kept per thread (a few:
+  // found by a scan; the layout cache's lock would serialise the threads).
   struct Elevation {
     int from = -1, to = -1;
     std::vector<double> rows;  // [to + 1][from + 1]
   };
   thread_local std::vector<Elevation> elevations;
+  thread_local std::vector<std::shared_ptr<const BernsteinLayout>> layouts;
   const auto elevation = [&](int from_degree) -> const std::vector<double>& {
     for (const Elevation& e : elevations)
       if (e.from == from_degree && e.to == degree) return e.rows;
@@ -55,39 +58,46 @@ BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degre
     elevations.push_back(std::move(e));
     return elevations.back().rows;
   };
+  std::shared_ptr<const BernsteinLayout> to_layout;
+  for (const auto& layout : layouts)
+    if (layout->factors[0].degree == degree) to_layout = layout;
+  if (!to_layout) {
+    to_layout = BernsteinLayout::get(std::vector<SimplexFactor>(3, SimplexFactor{1, degree}));
+    layouts.push_back(to_layout);
+  }
   thread_local std::vector<double> box, next;
   std::array<int, 3> n{};
   for (int k = 0; k < 3; ++k) n[k] = from.factors[k].degree + 1;
-  box.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0.0);
-  for (int id = 0; id < from.size(); ++id)
-    box[from.index[id][0] + n[0] * (from.index[id][1] + n[1] * from.index[id][2])] = p.coefficients()[id];
+  box.assign(p.coefficients().data(), p.coefficients().data() + p.size());
   const int m_var = degree + 1;
   for (int var = 0; var < 3; ++var) {
     const std::vector<double>& e = elevation(n[var] - 1);
     const int len = n[var];
     std::array<int, 3> m = n;
     m[var] = m_var;
-    const long stride = var == 0 ? 1 : var == 1 ? n[0] : static_cast<long>(n[0]) * n[1];
-    next.resize(static_cast<std::size_t>(m[0]) * m[1] * m[2]);
+    next.assign(static_cast<std::size_t>(m[0]) * m[1] * m[2], 0.0);
     double* o = next.data();
-    // Output entries in memory order (i fastest); each the sum over its input line, in line order.
-    for (int k = 0; k < m[2]; ++k)
-      for (int j = 0; j < m[1]; ++j)
-        for (int i = 0; i < m[0]; ++i) {
-          const int row = var == 0 ? i : var == 1 ? j : k;
-          const double* line = box.data() + (var == 0 ? 0 : i) + (var == 1 ? 0 : static_cast<long>(j) * n[0]) +
-                               (var == 2 ? 0 : static_cast<long>(k) * n[0] * n[1]);
-          const double* weights = e.data() + static_cast<long>(row) * len;
-          double sum = 0.0;
-          for (int r = 0; r < len; ++r) sum += weights[r] * line[r * stride];
-          *o++ = sum;
-        }
+    const double* in = box.data();
+    if (var == 0) {  // along i (stride 1): one output at a time, the line contiguous
+      for (int line = 0; line < n[1] * n[2]; ++line, in += n[0])
+        for (int i = 0; i < m_var; ++i, ++o)
+          for (int r = 0; r < len; ++r) *o += e[static_cast<std::size_t>(i * len + r)] * in[r];
+    } else {  // along j (k): a row (plane) of outputs from `len` input rows (planes)
+      const long run = var == 1 ? n[0] : static_cast<long>(n[0]) * n[1];
+      const long blocks = var == 1 ? n[2] : 1, block_in = run * len;
+      for (long b = 0; b < blocks; ++b, in += block_in)
+        for (int row = 0; row < m_var; ++row, o += run)
+          for (int r = 0; r < len; ++r) {
+            const double w = e[static_cast<std::size_t>(row * len + r)];
+            const double* src = in + r * run;
+            for (long q = 0; q < run; ++q) o[q] += w * src[q];
+          }
+    }
     std::swap(box, next);
     n = m;
   }
-  const BernsteinLayout& to = out.layout();
-  for (int id = 0; id < to.size(); ++id)
-    out.coefficients()[id] = box[to.index[id][0] + n[0] * (to.index[id][1] + n[1] * to.index[id][2])];
+  BernsteinPolynomial out(std::move(to_layout));
+  out.coefficients() = Eigen::Map<const Eigen::VectorXd>(box.data(), static_cast<Eigen::Index>(box.size()));
   return out;
 }
 
@@ -96,14 +106,24 @@ BernsteinPolynomial elevated_on_segments(const BernsteinPolynomial& p, int degre
 bool trilinear_jacobian(int order, NodeSet set, const Eigen::MatrixX3d& element_nodes, JacobianBounds& bounds,
                         int max_depth, double floor_ratio) {
   if (order < 2 || order > kMaxOrder || element_nodes.rows() != num_nodes(Shape::Hexahedron, order)) return false;
-  const Eigen::MatrixX3d vertices = element_nodes.topRows(8);
+  thread_local Eigen::MatrixX3d vertices;  // this thread's: no allocation per element
+  vertices = element_nodes.topRows(8);
   double longest = 0.0;
   for (const auto& e : edges(Shape::Hexahedron))
     longest = std::max(longest, (vertices.row(e[1]) - vertices.row(e[0])).norm());
-  // The deviation as computed, plus what rounding at the coordinates' magnitude can hide from it.
+  // The deviation as computed, plus what rounding at the coordinates' magnitude can hide from it
+  // (node by node: no (nodes, 3) temporary).
   const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * element_nodes.rowwise().norm().maxCoeff();
-  const double deviation =
-      (vertex_interpolation(order, set) * vertices - element_nodes).rowwise().norm().maxCoeff() + rounding;
+  const Eigen::MatrixXd& trilinear_at_nodes = vertex_interpolation(order, set);
+  double deviation = 0.0;
+  for (Eigen::Index r = 0; r < element_nodes.rows(); ++r) {
+    Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
+    for (int v = 0; v < 8; ++v) x += trilinear_at_nodes(r, v) * vertices.row(v);
+    const double d = (x - element_nodes.row(r)).norm();
+    if (std::isnan(d)) return false;  // no trilinear element's nodes
+    deviation = std::max(deviation, d);
+  }
+  deviation += rounding;
   if (!(longest > 0.0) || !(deviation <= kAffineTolerance * longest)) return false;
   const BernsteinPolynomial trilinear = detail::jacobian_determinant(Shape::Hexahedron, 1, set, vertices);
   JacobianBounds b =
