@@ -205,10 +205,13 @@ Curver::EdgeNodes Curver::taken_edge(std::size_t e) const {
   out.place = static_cast<CadPlace::Kind>(placed.place);
   out.fallback = placed.fallback;
   out.moved = placed.moved;
-  const std::vector<NodeId> ids = m.edge_nodes(e);  // vertices[0], the interior, vertices[1]
+  thread_local std::vector<NodeId> ids;  // this thread's: no allocation per edge
+  m.edge_nodes(e, ids);                   // vertices[0], the interior, vertices[1]
+  out.x.resize(ids.size() - 2);
+  out.att.resize(ids.size() - 2);
   for (std::size_t i = 1; i + 1 < ids.size(); ++i) {
-    out.x.push_back(m.node(ids[i]));
-    out.att.push_back(m.cad_attachment(ids[i]));
+    out.x[i - 1] = m.node(ids[i]);
+    out.att[i - 1] = m.cad_attachment(ids[i]);
   }
   return out;
 }
@@ -222,7 +225,8 @@ Curver::FaceNodes Curver::taken_face(std::size_t f) const {
   out.place = static_cast<CadPlace::Kind>(placed.place);
   out.fallback = placed.fallback;
   out.moved = placed.moved;
-  const std::vector<NodeId> ids = m.face_nodes(f);  // canonical order of the stored face
+  thread_local std::vector<NodeId> ids;  // this thread's: no allocation per face
+  m.face_nodes(f, ids);                   // canonical order of the stored face
   out.x.resize(static_cast<Eigen::Index>(ids.size()), 3);
   out.att.resize(ids.size());
   for (std::size_t j = 0; j < ids.size(); ++j) {

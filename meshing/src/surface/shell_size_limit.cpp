@@ -51,9 +51,12 @@ struct Arc {
 // from the evaluations the walk makes anyway.
 Arc march(const cad::Surface& s, const Vec2& start, Vec3 dir, double length) {
   const auto box = s.bounds();
-  std::vector<Vec2> path{start};
+  // The path and its normals in this thread's buffers: the size field marches ~10^6 times.
+  thread_local std::vector<Vec2> path;
+  thread_local std::vector<Vec3> normals;
+  path.assign(1, start);
   cad::SurfaceDerivatives d = s.derivatives(start);  // at the path's end: the step's Jacobian, the normal
-  std::vector<Vec3> normals{s.normal(d)};
+  normals.assign(1, s.normal(d));
   for (int k = 0; k < kMarchSteps; ++k) {
     Eigen::Matrix<double, 3, 2> jacobian;
     jacobian << d.du, d.dv;
