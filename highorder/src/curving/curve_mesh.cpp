@@ -84,9 +84,9 @@ class Curver {
     bool fallback = false;  // the spring optimisation kept its start positions
     double moved = 0.0;     // largest distance from a straight-sided position to the placed one
   };
-  struct EdgeNodes : PlacedNodes {
-    std::vector<Eigen::Vector3d> x;  // [P-1] from edge vertices[0] to vertices[1]
-    std::vector<CadAttachment> att;  // [P-1]
+  struct EdgeNodes : PlacedNodes {  // in place (no allocation per edge): [0, P-1) used
+    std::array<Eigen::Vector3d, kMaxOrder - 1> x;  // from edge vertices[0] to vertices[1]
+    std::array<CadAttachment, kMaxOrder - 1> att;
   };
   struct FaceNodes : PlacedNodes {
     Eigen::MatrixXd x;               // (face nodes, 3) canonical order of the stored face
@@ -110,9 +110,10 @@ class Curver {
   std::vector<NodeId> element_node_ids(std::size_t e) const;
   /// Canonical node ids of a 2D shape with these vertices and edges (the input's ids, in the order
   /// of the shape's edges, as a mesh::Face or BoundaryFace stores them), from the edge nodes
-  /// already made and, when `face` >= 0, that face's interior nodes seen with orientation `code`.
-  std::vector<NodeId> planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face,
-                                   int code) const;
+  /// already made and, when `face` >= 0, that face's interior nodes seen with orientation `code`;
+  /// into `ids` (a buffer of the caller's: this runs for every face).
+  void planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face, int code,
+                    std::vector<NodeId>& ids) const;
 
   const mesh::Mesh& in_;
   const cad::Model& model_;
@@ -207,8 +208,6 @@ Curver::EdgeNodes Curver::taken_edge(std::size_t e) const {
   out.moved = placed.moved;
   thread_local std::vector<NodeId> ids;  // this thread's: no allocation per edge
   m.edge_nodes(e, ids);                   // vertices[0], the interior, vertices[1]
-  out.x.resize(ids.size() - 2);
-  out.att.resize(ids.size() - 2);
   for (std::size_t i = 1; i + 1 < ids.size(); ++i) {
     out.x[i - 1] = m.node(ids[i]);
     out.att[i - 1] = m.cad_attachment(ids[i]);
@@ -236,10 +235,10 @@ Curver::FaceNodes Curver::taken_face(std::size_t f) const {
   return out;
 }
 
-std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face,
-                                         int code) const {
+void Curver::planar_nodes(Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, long face, int code,
+                          std::vector<NodeId>& ids) const {
   const mesh::NodeLayout& layout = mesh::node_layout(shape, params_.order);
-  std::vector<NodeId> ids(layout.slots.size(), mesh::kNoNode);
+  ids.assign(layout.slots.size(), mesh::kNoNode);
   for (std::size_t i = 0; i < ids.size(); ++i) {
     const mesh::NodeSlot& s = layout.slots[i];
     if (s.kind == mesh::NodeSlot::Vertex) {
@@ -251,7 +250,6 @@ std::vector<NodeId> Curver::planar_nodes(Shape shape, const NodeId* vertices, co
       ids[i] = face_node(static_cast<std::size_t>(face), s.slot[code]);
     }
   }
-  return ids;
 }
 
 Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& fraction, bool on_boundary) const {
@@ -259,8 +257,6 @@ Curver::EdgeNodes Curver::place_edge(std::size_t e, const std::vector<double>& f
   const NodeId a = in_.edges()[e].vertices[0], b = in_.edges()[e].vertices[1];
   const Eigen::Vector3d xa = in_.node(a), xb = in_.node(b);
   EdgeNodes out;
-  out.x.resize(P - 1);
-  out.att.resize(P - 1);
   for (int i = 0; i < P - 1; ++i) out.x[i] = xa + fraction[i] * (xb - xa);
   const CadPlace place =
       on_boundary ? detail::classify(model_, {in_.cad_attachment(a), in_.cad_attachment(b)}, true, 0.5 * (xa + xb))
@@ -373,7 +369,8 @@ Curver::FaceNodes Curver::place_face(std::size_t f, bool on_boundary) const {
   const detail::HarmonicExtension& ext = detail::harmonic_extension(shape, P, params_.node_set);
   FaceNodes out;
   if (ext.interior.empty()) return out;
-  const std::vector<NodeId> ids = planar_nodes(shape, face.vertices.data(), face.edges.data(), -1, 0);
+  thread_local std::vector<NodeId> ids;  // this thread's: no allocation per face
+  planar_nodes(shape, face.vertices.data(), face.edges.data(), -1, 0, ids);
   const int n = static_cast<int>(ids.size());
   Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, 3);
   for (int j : ext.boundary) X.row(j) = out_.node(ids[j]).transpose();
@@ -577,10 +574,11 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
         out_.add_element_adopted(in_, e, inner);
       },
       volume_progress_, "volumes");
+  std::vector<NodeId> ids;
   for (std::size_t b = 0; b < in_.boundary_faces().size(); ++b) {
     const mesh::BoundaryFace& bf = in_.boundary_faces()[b];
-    out_.add_boundary_face(in_.group_names()[bf.group], bf.shape,
-                           planar_nodes(bf.shape, bf.vertices.data(), bf.edges.data(), bf.face, bf.face_orientation));
+    planar_nodes(bf.shape, bf.vertices.data(), bf.edges.data(), bf.face, bf.face_orientation, ids);
+    out_.add_boundary_face(in_.group_names()[bf.group], bf.shape, ids);
   }
   if (stats) *stats = stats_;
   return std::move(out_);
