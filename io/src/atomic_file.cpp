@@ -3,8 +3,8 @@
 
 #include <cerrno>
 #include <condition_variable>
-#include <exception>
 #include <cstring>
+#include <exception>
 #include <mutex>
 #include <fcntl.h>
 #include <sys/stat.h>
