@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -242,19 +243,36 @@ std::unordered_map<mesh::NodeId, Eigen::Vector3d> carry_inwards(const mesh::Mesh
   return moved;
 }
 
-// to[v]: the vertex seen first (in element order) within tolerance of vertex v's point, else v.
+// [num_nodes()]: 1 at the vertices of the open faces, those one element uses and no boundary face
+// covers. Two copies of one face are both open until welded, so only these vertices can weld; the
+// rest of the mesh is closed (its vertices need no search, and no thin element there is collapsed).
+std::vector<char> open_face_vertices(const mesh::Mesh& mesh) {
+  std::vector<std::uint8_t> uses(mesh.faces().size(), 0);  // 0, 1, 2 = two or more
+  for (const mesh::Element& e : mesh.elements())
+    for (std::size_t k = 0; k < ho::faces(e.shape).size(); ++k)
+      uses[e.faces[k]] = static_cast<std::uint8_t>(std::min(2, uses[e.faces[k]] + 1));
+  for (const mesh::BoundaryFace& b : mesh.boundary_faces()) uses[b.face] = 2;
+  std::vector<char> open(mesh.num_nodes(), 0);
+  for (std::size_t f = 0; f < uses.size(); ++f)
+    if (uses[f] == 1)
+      for (int k = 0; k < mesh.faces()[f].num_vertices; ++k) open[mesh.faces()[f].vertices[k]] = 1;
+  return open;
+}
+
+// to[v]: for a vertex of an open face, the open-face vertex seen first (in element order) within
+// tolerance of its point; else v.
 std::vector<mesh::NodeId> coincident_vertices(const mesh::Mesh& mesh, double tolerance) {
   const std::size_t n = mesh.num_nodes();
   std::vector<mesh::NodeId> to(n);
   for (std::size_t v = 0; v < n; ++v) to[v] = static_cast<mesh::NodeId>(v);
-  std::vector<char> seen(n, 0);
-  // A room hint: a tetrahedral mesh has about edges / 6 vertices, a hexahedral one edges / 3.
-  PointIndex vertices(mesh, tolerance, mesh.edges().size() / 4 + 16);
+  std::vector<char> candidate = open_face_vertices(mesh);
+  PointIndex vertices(mesh, tolerance,
+                      static_cast<std::size_t>(std::count(candidate.begin(), candidate.end(), 1)) + 16);
   for (const mesh::Element& e : mesh.elements())
     for (int k = 0; k < ho::num_vertices(e.shape); ++k) {
       const mesh::NodeId v = e.vertices[k];
-      if (seen[v]) continue;
-      seen[v] = 1;
+      if (!candidate[v]) continue;
+      candidate[v] = 0;  // indexed once, at its first element
       to[v] = vertices.find_or_add(v);
     }
   return to;

@@ -15,9 +15,11 @@
 
 #include "highorder/mesh/same_entities.hpp"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -91,6 +93,45 @@ TEST(WeldNodes, PointsWithinTheToleranceWeldAcrossTheIndexCellsAndOthersDoNot) {
     EXPECT_EQ(w.merged, within ? 4u : 0u) << "trial " << trial;
     EXPECT_EQ(w.mesh.faces().size(), within ? 11u : 12u) << "trial " << trial;
   }
+}
+
+// Only open faces' vertices weld (those of a face one element uses and no boundary face covers):
+// in a stack of hexes x in [0, 1], [1, 1 + thin], [1 + thin, 2 + thin], the thin one thinner than
+// the tolerance (a thin boundary layer's), the third given its own copy of the face it shares
+// with the second, and boundary faces on the rest of the outside, the copies weld and the thin
+// hex's two faces, within tolerance of each other, stay apart.
+TEST(WeldNodes, VerticesOffTheOpenFacesNeverWeldHoweverNear) {
+  const double tolerance = 1e-3, thin = 0.5 * tolerance;
+  const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  mesh::Mesh m(1);
+  std::array<std::vector<mesh::NodeId>, 3> hexes;
+  for (const auto& c : corner) hexes[0].push_back(m.add_node(Eigen::Vector3d(c[0], c[1], c[2])));
+  for (int k = 0; k < 8; ++k)  // at x = 1: hex 0's vertex with the same y, z (corner k ^ 1)
+    hexes[1].push_back(corner[k][0] == 0 ? hexes[0][k ^ 1]
+                                          : m.add_node(Eigen::Vector3d(1 + thin, corner[k][1], corner[k][2])));
+  for (const auto& c : corner) hexes[2].push_back(m.add_node(Eigen::Vector3d(1 + thin + c[0], c[1], c[2])));
+  for (const auto& hex : hexes) m.add_element(ho::Shape::Hexahedron, hex);
+  // Boundary faces on every face one hex uses, but the doubled one (its two copies at x = 1 + thin).
+  std::map<std::vector<mesh::NodeId>, int> uses;
+  const auto key = [](std::vector<mesh::NodeId> ids) { return std::sort(ids.begin(), ids.end()), ids; };
+  std::vector<std::vector<mesh::NodeId>> faces;
+  for (const auto& hex : hexes)
+    for (const auto& local : ho::faces(ho::Shape::Hexahedron)) {
+      std::vector<mesh::NodeId> ids;
+      for (int v : local) ids.push_back(hex[v]);
+      ++uses[key(ids)];
+      faces.push_back(ids);
+    }
+  for (const auto& ids : faces) {
+    const bool doubled = std::all_of(ids.begin(), ids.end(), [&](mesh::NodeId v) { return m.node(v).x() == 1 + thin; });
+    if (uses[key(ids)] == 1 && !doubled) m.add_boundary_face("outside", ho::Shape::Quadrilateral, ids);
+  }
+  ASSERT_EQ(m.faces().size(), 17u);  // 3 x 6, the face at x = 1 once
+  const Welded w = weld_coincident_nodes(m, tolerance);
+  EXPECT_EQ(w.merged, 4u);
+  EXPECT_EQ(w.mesh.num_nodes(), 16u);  // 20 less the copy's 4
+  EXPECT_EQ(w.mesh.faces().size(), 16u);
+  EXPECT_EQ(w.mesh.elements().size(), 3u);
 }
 
 // The work beside the rebuild reads each element once it is rebuilt and sees its final points; it

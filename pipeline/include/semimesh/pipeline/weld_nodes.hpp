@@ -20,8 +20,11 @@ struct Welded {
   mesh::Mesh::EntityUpdate entities = mesh::Mesh::EntityUpdate::Remapped;  ///< how (Mesh::replace_nodes)
 };
 
-/// `mesh` (taken by value: moved in, it is renumbered in place, never copied) in which every element vertex that lies within `tolerance` of a vertex seen
-/// before it (in element order) is replaced by that one, and an edge or face whose vertices were
+/// `mesh` (taken by value: moved in, it is renumbered in place, never copied) in which every
+/// vertex of an open face (a face one element uses and no boundary face covers: each side's copy of
+/// a doubled face) that lies within `tolerance` of such a vertex seen before it (in element order)
+/// is replaced by that one (the closed rest of the mesh is left alone, however thin its elements),
+/// and an edge or face whose vertices were
 /// all so welded onto those of another takes that one's inner nodes, matched by their place in it
 /// (order along the edge, slot in the face; never by distance: the far field's pre-cut skin quads
 /// are straight, the split's pieces of a curved rear interface are not). Where that moved an edge's
