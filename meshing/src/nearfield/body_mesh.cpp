@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <tuple>
 
 namespace semimesh::nearfield {
 
@@ -64,24 +65,34 @@ BodyMesh merge_body_meshes(const cad::Model& model, const surface::SurfaceMeshes
 }
 
 std::vector<std::pair<int, int>> open_edges(const BodyMesh& body) {
-  // Directed uses of each undirected edge: +1 for (lo, hi), -1 for (hi, lo).
-  std::map<std::pair<int, int>, std::vector<int>> uses;
+  // Each directed use of an undirected edge (lo, hi): +1 for (lo, hi), -1 for (hi, lo). Sorted by
+  // edge, every edge's uses lie side by side (in no particular order: none is needed).
+  struct Use {
+    int lo, hi, direction;
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * body.triangles.size());
   for (const auto& t : body.triangles)
     for (int i = 0; i < 3; ++i) {
       const int a = t[i], b = t[(i + 1) % 3];
-      uses[std::minmax(a, b)].push_back(a < b ? +1 : -1);
+      uses.push_back({std::min(a, b), std::max(a, b), a < b ? +1 : -1});
     }
+  std::sort(uses.begin(), uses.end(),
+            [](const Use& x, const Use& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); });
   std::vector<std::pair<int, int>> open;
-  for (const auto& [edge, dirs] : uses) {
-    const Vec3 mid = 0.5 * (body.points[edge.first] + body.points[edge.second]);
-    if (dirs.size() > 2)
+  for (std::size_t first = 0, last = 0; first < uses.size(); first = last) {
+    while (last < uses.size() && uses[last].lo == uses[first].lo && uses[last].hi == uses[first].hi) ++last;
+    const std::size_t count = last - first;
+    const Vec3 mid = 0.5 * (body.points[uses[first].lo] + body.points[uses[first].hi]);
+    if (count > 2)
       throw NearFieldError("near field: the body mesh is not a surface at " + point_label(mid) + ": an edge has " +
-                           std::to_string(dirs.size()) + " triangles");
-    if (dirs.size() == 2 && dirs[0] == dirs[1])
+                           std::to_string(count) + " triangles");
+    if (count == 2 && uses[first].direction == uses[first + 1].direction)
       throw NearFieldError("near field: body triangles on both sides of the edge at " + point_label(mid) +
                            " are oriented inconsistently");
-    if (dirs.size() == 1)
-      open.push_back(dirs[0] > 0 ? edge : std::make_pair(edge.second, edge.first));
+    if (count == 1)
+      open.push_back(uses[first].direction > 0 ? std::make_pair(uses[first].lo, uses[first].hi)
+                                               : std::make_pair(uses[first].hi, uses[first].lo));
   }
   return open;
 }
