@@ -6,16 +6,15 @@
 #include "labels.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace semimesh::nearfield::h_type {
 namespace {
 
-// A face of an element (weight 1, with its vertices in that element's order) or a boundary face
-// (weight 2: a face that is both is never skin), keyed by its sorted vertices.
+// A face one element uses (its vertices in that element's order), keyed by its sorted vertices.
 struct FaceUse {
   std::array<NodeId, 4> key{};
   int count = 3;
-  int weight = 1;
   SkinFace face;
 };
 
@@ -25,38 +24,34 @@ bool key_less(const FaceUse& a, const FaceUse& b) {
   return std::lexicographical_compare(a.key.begin(), a.key.begin() + a.count, b.key.begin(), b.key.begin() + b.count);
 }
 
-// The faces exactly one element uses and no boundary face lies on, in key order: every use
-// sorted by key and counted in runs (no map node or vector per face).
+// The faces exactly one element uses and no boundary face lies on, in key order: the uses of each
+// face entity counted (a face entity per vertex set), then only those faces sorted.
 std::vector<FaceUse> single_uses(const mesh::Mesh& m) {
-  std::vector<FaceUse> uses;
-  const auto add = [&](const NodeId* vertices, int count, int weight) {
-    FaceUse u;
-    u.count = count;
-    u.weight = weight;
-    std::copy(vertices, vertices + count, u.face.nodes.begin());
-    if (count == 3) u.face.nodes[3] = mesh::kNoNode;
-    u.face.count = count;
-    std::copy(vertices, vertices + count, u.key.begin());
-    std::sort(u.key.begin(), u.key.begin() + count);
-    uses.push_back(u);
-  };
-  std::array<NodeId, 4> v{};
-  for (const mesh::Element& e : m.elements())
-    for (const std::vector<int>& f : ho::faces(e.shape)) {
-      for (std::size_t k = 0; k < f.size(); ++k) v[k] = e.vertices[f[k]];
-      add(v.data(), static_cast<int>(f.size()), 1);
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<int> weight(m.faces().size(), 0);
+  std::vector<std::uint32_t> user(m.faces().size(), kNone);  // element * 8 + local face, of its first user
+  for (std::uint32_t e = 0; e < m.elements().size(); ++e) {
+    const mesh::Element& el = m.elements()[e];
+    for (std::uint32_t f = 0; f < ho::faces(el.shape).size(); ++f) {
+      if (weight[el.faces[f]]++ == 0) user[el.faces[f]] = 8 * e + f;
     }
-  for (const mesh::BoundaryFace& b : m.boundary_faces())
-    add(b.vertices.data(), b.shape == ho::Shape::Triangle ? 3 : 4, 2);
-  std::sort(uses.begin(), uses.end(), key_less);
-  std::vector<FaceUse> single;
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t end = i + 1;
-    int weight = uses[i].weight;
-    while (end < uses.size() && !key_less(uses[i], uses[end])) weight += uses[end++].weight;
-    if (weight == 1) single.push_back(uses[i]);
-    i = end;
   }
+  for (const mesh::BoundaryFace& b : m.boundary_faces()) weight[b.face] += 2;
+  std::vector<FaceUse> single;
+  for (std::size_t face = 0; face < weight.size(); ++face) {
+    if (weight[face] != 1) continue;
+    const mesh::Element& el = m.elements()[user[face] / 8];
+    const std::vector<int>& local = ho::faces(el.shape)[user[face] % 8];
+    FaceUse u;
+    u.count = static_cast<int>(local.size());
+    for (int k = 0; k < u.count; ++k) u.face.nodes[k] = el.vertices[local[k]];
+    if (u.count == 3) u.face.nodes[3] = mesh::kNoNode;
+    u.face.count = u.count;
+    std::copy(u.face.nodes.begin(), u.face.nodes.begin() + u.count, u.key.begin());
+    std::sort(u.key.begin(), u.key.begin() + u.count);
+    single.push_back(u);
+  }
+  std::sort(single.begin(), single.end(), key_less);
   return single;
 }
 
