@@ -7,6 +7,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
 
 namespace semimesh::nearfield::h_type {
 namespace {
@@ -59,41 +63,70 @@ std::vector<FaceUse> single_uses(const mesh::Mesh& m) {
 constexpr int kHexAxisEdges[3][4][2] = {
     {{0, 1}, {3, 2}, {4, 5}, {7, 6}}, {{0, 3}, {1, 2}, {4, 7}, {5, 6}}, {{0, 4}, {1, 5}, {2, 6}, {3, 7}}};
 
-// Every layer edge of the near field's stacks by its sorted ends: (bottom vertex, top vertex, family).
-using LayerEdges = std::map<std::pair<NodeId, NodeId>, std::tuple<NodeId, NodeId, LayerFamily>>;
+// A layer edge of the near field's stacks: its ends sorted (the key), its bottom and top vertex and
+// its family.
+struct LayerEdge {
+  NodeId lo = 0, hi = 0;
+  NodeId bottom = 0, top = 0;
+  LayerFamily family = LayerFamily::Wing;
+};
 
-LayerEdges layer_edges(const NearField& f) {
-  LayerEdges edges;
-  for (const LayerStack& s : f.stacks) {
-    const mesh::Element& e = f.mesh.elements()[s.element];
-    for (const LayerDirection& d : s.directions) {
-      auto add = [&](int a, int b) {
-        const NodeId u = e.vertices[a], w = e.vertices[b];
-        edges[{std::min(u, w), std::max(u, w)}] = {u, w, d.family};
-      };
-      if (e.shape == ho::Shape::Prism)
-        for (int i = 0; i < 3; ++i) add(i, i + 3);
-      else
-        for (const auto& pair : kHexAxisEdges[d.axis]) add(pair[0], pair[1]);
+// Every layer edge of the stacks, sorted by key (one array and a binary search, not a map node per
+// edge); where stacks give an edge more than once, the last stack's entry.
+class LayerEdges {
+ public:
+  explicit LayerEdges(const NearField& f) {
+    for (const LayerStack& s : f.stacks) {
+      const mesh::Element& e = f.mesh.elements()[s.element];
+      for (const LayerDirection& d : s.directions) {
+        auto add = [&](int a, int b) {
+          const NodeId u = e.vertices[a], w = e.vertices[b];
+          edges_.push_back({std::min(u, w), std::max(u, w), u, w, d.family});
+        };
+        if (e.shape == ho::Shape::Prism)
+          for (int i = 0; i < 3; ++i) add(i, i + 3);
+        else
+          for (const auto& pair : kHexAxisEdges[d.axis]) add(pair[0], pair[1]);
+      }
     }
+    std::stable_sort(edges_.begin(), edges_.end(), less);
+    // Of each run of one key, its last entry (the stack seen last).
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < edges_.size(); ++i)
+      if (i + 1 == edges_.size() || less(edges_[i], edges_[i + 1])) edges_[kept++] = edges_[i];
+    edges_.resize(kept);
   }
-  return edges;
-}
+
+  /// The layer edge between a and b (either way round), or null.
+  const LayerEdge* find(NodeId a, NodeId b) const {
+    const LayerEdge key{std::min(a, b), std::max(a, b)};
+    const auto it = std::lower_bound(edges_.begin(), edges_.end(), key, less);
+    return it != edges_.end() && it->lo == key.lo && it->hi == key.hi ? &*it : nullptr;
+  }
+
+ private:
+  static bool less(const LayerEdge& x, const LayerEdge& y) { return std::tie(x.lo, x.hi) < std::tie(y.lo, y.hi); }
+  std::vector<LayerEdge> edges_;
+};
 
 // The split's interfaces on the wing layer's edges as nodes, made once and shared by every skin
 // quad on an edge.
 class LayerEdgeCuts {
  public:
   LayerEdgeCuts(NearField& field, const LayerFractions& fractions, InterfaceNodes& made)
-      : field_(field), fractions_(fractions), edges_(layer_edges(field)), made_(made) {}
+      : field_(field), fractions_(fractions), edges_(field), made_(made) {}
 
-  bool is_layer_edge(NodeId a, NodeId b) const { return edges_.count({std::min(a, b), std::max(a, b)}) > 0; }
+  bool is_layer_edge(NodeId a, NodeId b) const { return edges_.find(a, b) != nullptr; }
 
   /// [interfaces] the nodes from -> to on a layer edge.
   std::vector<NodeId> along(NodeId from, NodeId to) {
     mesh::Mesh& m = field_.mesh;
-    const auto& [bottom, top, family] = edges_.at({std::min(from, to), std::max(from, to)});
-    if (family != LayerFamily::Wing)
+    const LayerEdge* edge = edges_.find(from, to);
+    if (!edge)
+      throw std::logic_error("H-type skin: no layer edge between nodes " + std::to_string(from) + " and " +
+                             std::to_string(to));
+    const NodeId bottom = edge->bottom, top = edge->top;
+    if (edge->family != LayerFamily::Wing)
       fail("the skin quad at " + point_label(m.node(from)) + " is cut by the wall layer's split (not supported)");
     const std::vector<double> f = fractions_(m.node(bottom), field_.wake);
     std::vector<NodeId> ids;
