@@ -147,7 +147,7 @@ JunctionShell build_junction_shell(const cad::Model& model, const surface::Surfa
   JunctionNodes j = place_junction_nodes(model, roles, root_surface, body, loop, segments, crack_curve, wall,
                                          delta_wing, delta_wall);
   if (!bare_surfaces.empty())
-    level_bare_strip_tops(model, wall, body, loop, bare_surfaces, segments.triangle_of_edge(), j.at);
+    level_bare_strip_tops(model, wall, body, loop, bare_surfaces, segments, j.at);
   std::vector<CadAttachment> root_cad;
   for (int r : loop) root_cad.push_back(body.cad[r]);
   const auto [strip, tip] = lift_onto_strip(model, wall, loop, j.at, delta_wall, body);

@@ -10,6 +10,7 @@
 #include "shell_common.hpp"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <utility>
@@ -32,14 +33,19 @@ class RootSegments {
  public:
   RootSegments(const BodyMesh& body, const Frame& wall);
 
+  /// The triangle with the directed edge a -> b (the last one given, where two have it); throws
+  /// std::out_of_range if none has.
+  int triangle(int a, int b) const;
   Vec3 outward(int a, int b) const;
-  int surface(int a, int b) const { return body_.triangle_surface[triangle_of_edge_.at({a, b})]; }
-  const std::map<std::pair<int, int>, int>& triangle_of_edge() const { return triangle_of_edge_; }
+  int surface(int a, int b) const { return body_.triangle_surface[triangle(a, b)]; }
 
  private:
+  static std::uint64_t key(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  }
   const BodyMesh& body_;
   const Frame& wall_;
-  std::map<std::pair<int, int>, int> triangle_of_edge_;
+  std::vector<std::pair<std::uint64_t, int>> triangle_of_edge_;  ///< (key(a, b), triangle), sorted by key
 };
 
 // The root curve a root node lies on (of its vertex: the first curve on the wall).
@@ -75,8 +81,7 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
 // 28.6 degrees: the short edge of the quad stood at 60 degrees to the long one).
 void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const BodyMesh& body,
                            const std::vector<int>& loop, const std::set<int>& bare_surfaces,
-                           const std::map<std::pair<int, int>, int>& triangle_of_edge,
-                           std::vector<JunctionNode>& nodes);
+                           const RootSegments& segments, std::vector<JunctionNode>& nodes);
 
 // Lifts the body mesh off the wall so its root row lands on the strip tops (lift_node), fading out
 // at the lowest CAD vertex of the body off the wall (the tip's corners on an ordinary wing; on a

@@ -9,6 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <stdexcept>
+#include <string>
 
 namespace semimesh::nearfield::c_type {
 namespace {
@@ -228,13 +232,27 @@ int fan_index(const cad::Model& model, const BodyMesh& body, const std::vector<i
 }  // namespace
 
 RootSegments::RootSegments(const BodyMesh& body, const Frame& wall) : body_(body), wall_(wall) {
+  triangle_of_edge_.reserve(3 * body.triangles.size());
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      triangle_of_edge_[{body.triangles[t][k], body.triangles[t][(k + 1) % 3]}] = static_cast<int>(t);
+      triangle_of_edge_.emplace_back(key(body.triangles[t][k], body.triangles[t][(k + 1) % 3]), static_cast<int>(t));
+  // Stable: of two triangles with one directed edge, the later stays last (the one triangle() gives).
+  std::stable_sort(triangle_of_edge_.begin(), triangle_of_edge_.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+}
+
+int RootSegments::triangle(int a, int b) const {
+  const std::uint64_t k = key(a, b);
+  const auto after = std::upper_bound(triangle_of_edge_.begin(), triangle_of_edge_.end(), k,
+                                      [](std::uint64_t x, const auto& entry) { return x < entry.first; });
+  if (after == triangle_of_edge_.begin() || std::prev(after)->first != k)
+    throw std::out_of_range("RootSegments: no body triangle has the edge " + std::to_string(a) + " -> " +
+                            std::to_string(b));
+  return std::prev(after)->second;
 }
 
 Vec3 RootSegments::outward(int a, int b) const {
-  const auto& t = body_.triangles[triangle_of_edge_.at({a, b})];
+  const auto& t = body_.triangles[triangle(a, b)];
   const Vec3 n_tri =
       (body_.points[t[1]] - body_.points[t[0]]).cross(body_.points[t[2]] - body_.points[t[0]]).normalized();
   return segment_outward(body_.points[a], body_.points[b], n_tri,
@@ -283,10 +301,9 @@ JunctionNodes place_junction_nodes(const cad::Model& model, const BodyRoles& rol
 
 void level_bare_strip_tops(const cad::Model& model, const Frame& wall, const BodyMesh& body,
                            const std::vector<int>& loop, const std::set<int>& bare_surfaces,
-                           const std::map<std::pair<int, int>, int>& triangle_of_edge,
-                           std::vector<JunctionNode>& nodes) {
+                           const RootSegments& segments, std::vector<JunctionNode>& nodes) {
   const int n = static_cast<int>(loop.size());
-  auto on_bare = [&](int a, int b) { return bare_surfaces.count(body.triangle_surface[triangle_of_edge.at({a, b})]) > 0; };
+  auto on_bare = [&](int a, int b) { return bare_surfaces.count(body.triangle_surface[segments.triangle(a, b)]) > 0; };
   std::vector<int> base;
   double level = -1e300;
   for (int i = 0; i < n; ++i)
