@@ -1,5 +1,6 @@
 # The near-field shell: one layer of prisms around the body (O-type), plus the root junction hexes (C-type), plus the wake block (H-type). Included from
 # meshing/CMakeLists.txt; paths are relative to this file's folder.
+find_package(OpenMP REQUIRED COMPONENTS CXX)  # the layer's per-node and per-triangle checks
 add_library(semimesh_nearfield
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/body_mesh.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/nearfield/node_normals.cpp
@@ -22,5 +23,5 @@ add_library(semimesh::nearfield ALIAS semimesh_nearfield)
 target_include_directories(semimesh_nearfield PUBLIC ${CMAKE_CURRENT_LIST_DIR}/include)
 target_link_libraries(semimesh_nearfield
   PUBLIC semimesh_mesh semimesh_surface_mesh semimesh_cadapi
-  PRIVATE semimesh_warnings)
+  PRIVATE OpenMP::OpenMP_CXX semimesh_warnings)
 set_target_properties(semimesh_nearfield PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -109,6 +109,8 @@ std::vector<char> crowded_nodes(const BodyMesh& body, const std::vector<std::vec
   std::vector<char> crowded(body.num_nodes(), 0);
   const std::vector<geometry::Box> boxes = geometry::triangle_boxes(body.points, body.triangles);
   const geometry::BoxTree tree(boxes);
+  // Each node on its own (its flag only): the nodes shared among threads, the flags the same.
+#pragma omp parallel for schedule(dynamic, 256)
   for (int i = 0; i < body.num_nodes(); ++i) {
     std::unordered_set<int> own;
     bool own_known = false;

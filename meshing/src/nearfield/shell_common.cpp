@@ -137,12 +137,19 @@ LayerOffsets offset_body_nodes(const cad::Model& model, const BodyMesh& body,
   for (int round = 0;; ++round) {
     place_outer();
     std::vector<unsigned> bad(count, 0);
-    for (const auto& t : body.triangles) {
+    // Each triangle's prism on its own (threads share the triangles), then its nodes flagged in order.
+    const int triangles = static_cast<int>(body.triangles.size());
+    std::vector<char> folded(triangles, 0);
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < triangles; ++k) {
+      const auto& t = body.triangles[k];
       const std::array<Vec3, 6> x{body.points[t[0]], body.points[t[1]], body.points[t[2]],
                                   outer[t[0]],       outer[t[1]],       outer[t[2]]};
-      if (!prism_is_sound(x))
-        for (int v : t) bad[v] |= kFold;
+      folded[k] = !prism_is_sound(x);
     }
+    for (int k = 0; k < triangles; ++k)
+      if (folded[k])
+        for (int v : body.triangles[k]) bad[v] |= kFold;
     const auto crowded = crowded_nodes(body, neighbours, outer, thickness);
     for (int i = 0; i < count; ++i) bad[i] |= crowded[i] ? kProximity : 0u;
     if (std::none_of(bad.begin(), bad.end(), [](unsigned b) { return b != 0; })) break;

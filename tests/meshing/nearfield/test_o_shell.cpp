@@ -9,6 +9,7 @@
 #include "wing_case.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -254,6 +255,27 @@ TEST(OShell, ConcaveRegionIsThinnedWithAWarning) {
     }
   EXPECT_EQ(steeper, 0) << "body edges where the thickness changes faster than the gradation allows";
   EXPECT_NEAR(thinnest, f.thickness_min, 1e-9);
+}
+
+// The layer's checks run on all threads (each prism, each node on its own): the thinned shell of
+// the concave section, rounds of reductions and all, is the same on one thread and on four.
+TEST(OShell, SameShellOnOneThreadAndOnFour) {
+  const WingCase c = wing_case(naca("9206", false), 0.2);
+  ShellParams params;
+  params.thickness = 0.4;
+  params.min_thickness_fraction = 0.02;
+  omp_set_num_threads(1);
+  const NearField one = build_o_shell(*c.model, c.meshes, c.roles, params);
+  omp_set_num_threads(4);
+  const NearField four = build_o_shell(*c.model, c.meshes, c.roles, params);
+  omp_set_num_threads(omp_get_num_procs());
+  ASSERT_LT(one.thickness_min, params.thickness);  // thinned: the checks found folds and crowding
+  ASSERT_EQ(one.mesh.num_nodes(), four.mesh.num_nodes());
+  for (NodeId v = 0; v < one.mesh.num_nodes(); ++v) ASSERT_EQ(one.mesh.node(v), four.mesh.node(v)) << "node " << v;
+  ASSERT_EQ(one.mesh.elements().size(), four.mesh.elements().size());
+  for (std::size_t e = 0; e < one.mesh.elements().size(); ++e)
+    EXPECT_EQ(one.mesh.elements()[e].vertices, four.mesh.elements()[e].vertices) << "element " << e;
+  EXPECT_EQ(one.warnings.size(), four.warnings.size());
 }
 
 TEST(OShell, ImpossibleThicknessThrowsWithThePlace) {
