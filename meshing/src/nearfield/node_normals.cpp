@@ -88,10 +88,14 @@ std::vector<Vec3> node_normals(const BodyMesh& body, const std::vector<Vec3>& pl
   const auto neighbours = node_neighbours(body);
   std::vector<Vec3> normals = angle_weighted_normals(body);
   std::vector<double> floor(count);
+  // Each node on its own, on every thread; the first node (by index) no direction sees is refused.
+#pragma omp parallel for schedule(dynamic, 256)
   for (int i = 0; i < count; ++i) {
     normals[i] = constrained(normals[i].normalized(), plane_normal[i]);
     normals[i] = widen_visibility(body, fans, i, normals[i], plane_normal[i], options.min_visibility);
     floor[i] = min_visibility(body, fans, i, normals[i]);
+  }
+  for (int i = 0; i < count; ++i) {
     if (!(floor[i] > kNoVisibility)) {
       // Usually coarse triangles wrapped round a small nose radius (seen at a swept, tapered 0006 tip).
       double longest = 0.0;
@@ -107,6 +111,7 @@ std::vector<Vec3> node_normals(const BodyMesh& body, const std::vector<Vec3>& pl
   }
   for (int pass = 0; pass < options.smoothing_passes; ++pass) {
     std::vector<Vec3> next = normals;
+#pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < count; ++i) {
       if (neighbours[i].empty()) continue;
       Vec3 mean = Vec3::Zero();

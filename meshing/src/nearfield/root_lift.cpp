@@ -56,6 +56,8 @@ std::pair<double, double> lift_onto_strip(const cad::Model& model, const Frame& 
                          " takes more than half of the body's height " + number_label(ceiling) +
                          " above the wall (up to its lowest corner off the wall); use a thinner wall layer");
   const std::vector<Vec3> unlifted = body.points;
+  // Each node on its own (its point and attachment only), on every thread where the CAD allows.
+#pragma omp parallel for schedule(dynamic, 64) if (model.thread_safe())
   for (int v = 0; v < body.num_nodes(); ++v)
     if (!on_root[v]) body.points[v] = detail::lift_node(model, wall, strip, ceiling, body.points[v], body.cad[v]);
   for (std::size_t i = 0; i < loop.size(); ++i)
