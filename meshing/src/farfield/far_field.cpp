@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -382,8 +384,32 @@ constexpr double kPi = 3.14159265358979323846;
 // right angle the caps leave the usual heights alone, but behind a tapered wing the trailing edge
 // leans forward under the wake block and the corner between the block's underside and the rear
 // interfaces below it closes to ~60 degrees, where the usual heights crossed (TetGen aborted).
+// The skin faces by their directed edges: (a << 32 | b, face), sorted; the last face given keeps an
+// edge two faces run the same way (as a map's assignment in turn).
+class SkinEdges {
+ public:
+  explicit SkinEdges(const std::vector<nearfield::SkinFace>& skin) {
+    for (std::size_t f = 0; f < skin.size(); ++f)
+      for (int k = 0; k < skin[f].count; ++k)
+        faces_.emplace_back(key(skin[f].nodes[k], skin[f].nodes[(k + 1) % skin[f].count]), f);
+    std::stable_sort(faces_.begin(), faces_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  }
+  /// The face with the directed edge a -> b, if any.
+  std::optional<std::size_t> face(NodeId a, NodeId b) const {
+    const std::uint64_t k = key(a, b);
+    const auto after = std::upper_bound(faces_.begin(), faces_.end(), k,
+                                        [](std::uint64_t x, const auto& entry) { return x < entry.first; });
+    if (after == faces_.begin() || std::prev(after)->first != k) return std::nullopt;
+    return std::prev(after)->second;
+  }
+
+ private:
+  static std::uint64_t key(NodeId a, NodeId b) { return static_cast<std::uint64_t>(a) << 32 | b; }
+  std::vector<std::pair<std::uint64_t, std::size_t>> faces_;
+};
+
 std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mesh& mesh, std::size_t q,
-                                 const std::map<std::pair<NodeId, NodeId>, std::size_t>& face_of_edge) {
+                                 const SkinEdges& face_of_edge) {
   auto centre = [&](const nearfield::SkinFace& f) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (int k = 0; k < f.count; ++k) c += mesh.node(f.nodes[k]);
@@ -399,9 +425,9 @@ std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mes
   std::array<double, 4> caps = nearfield::kNoSlopeCap;
   for (int k = 0; k < 4; ++k) {
     const NodeId a = face.nodes[k], b = face.nodes[(k + 1) % 4];
-    const auto it = face_of_edge.find({b, a});  // the neighbour runs the shared edge the other way
-    if (it == face_of_edge.end()) continue;
-    const nearfield::SkinFace& other = nf.skin[it->second];
+    const std::optional<std::size_t> neighbour = face_of_edge.face(b, a);  // runs the shared edge the other way
+    if (!neighbour) continue;
+    const nearfield::SkinFace& other = nf.skin[*neighbour];
     const Eigen::Vector3d m = 0.5 * (mesh.node(a) + mesh.node(b));
     if (!((centre(other) - m).dot(n) > 0.0)) continue;  // convex or flat: nothing closes in
     const double between_normals = std::acos(std::clamp(n.dot(unit_normal(other)), -1.0, 1.0));
@@ -419,11 +445,23 @@ struct SkinPyramid {
 // Each skin quad becomes a pyramid (listed in `pyramids`); returns the far field's view of the
 // skin: the skin triangles and the pyramids' four side triangles.
 std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh, std::vector<SkinPyramid>& pyramids) {
-  std::map<std::pair<NodeId, NodeId>, std::size_t> face_of_edge;
-  for (std::size_t f = 0; f < nf.skin.size(); ++f)
-    for (int k = 0; k < nf.skin[f].count; ++k)
-      face_of_edge[{nf.skin[f].nodes[k], nf.skin[f].nodes[(k + 1) % nf.skin[f].count]}] = f;
+  for (const nearfield::SkinFace& face : nf.skin)
+    if (face.count != 3 && face.count != 4)
+      throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
+  // The apexes first, each quad's on its own (they read the skin's nodes only), on every thread;
+  // then the nodes and pyramids in skin order.
+  const SkinEdges face_of_edge(nf.skin);
+  const long faces = static_cast<long>(nf.skin.size());
+  std::vector<Eigen::Vector3d> apex_at(nf.skin.size());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long f = 0; f < faces; ++f) {
+    const auto& v = nf.skin[f].nodes;
+    if (nf.skin[f].count == 4)
+      apex_at[f] = pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])},
+                                slope_caps(nf, mesh, static_cast<std::size_t>(f), face_of_edge));
+  }
   std::vector<Triangle> triangles;
+  int region = -1;
   for (std::size_t f = 0; f < nf.skin.size(); ++f) {
     const nearfield::SkinFace& face = nf.skin[f];
     const auto& v = face.nodes;
@@ -431,10 +469,9 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
       triangles.push_back({v[0], v[1], v[2]});
       continue;
     }
-    if (face.count != 4) throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
-    const NodeId apex = mesh.add_node(pyramid_apex({mesh.node(v[0]), mesh.node(v[1]), mesh.node(v[2]), mesh.node(v[3])},
-                                                   slope_caps(nf, mesh, f, face_of_edge)));
-    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, mesh.region_index("farfield"));
+    const NodeId apex = mesh.add_node(apex_at[f]);
+    if (region < 0) region = mesh.region_index("farfield");
+    mesh.add_element(ho::Shape::Pyramid, {v[0], v[1], v[2], v[3], apex}, region);
     pyramids.push_back({apex, {v[0], v[1], v[2], v[3]}});
     for (int k = 0; k < 4; ++k) triangles.push_back({v[k], v[(k + 1) % 4], apex});
   }

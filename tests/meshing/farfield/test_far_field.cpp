@@ -4,6 +4,7 @@
 #include "semimesh/mock_cad/naca.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <Eigen/Geometry>
 
@@ -279,6 +280,25 @@ TEST_F(FarFieldAroundCube, WorkBesideTetgenSeesTheMeshSoFarAndChangesNothing) {
     for (std::size_t e = 0; e < m->elements().size(); ++e) ASSERT_EQ(m->element_nodes(e), mesh().element_nodes(e)) << e;
     ASSERT_EQ(m->boundary_faces().size(), mesh().boundary_faces().size());
   }
+}
+
+// The pyramids' apexes (one per skin quad) and the interior points are found on every thread: the
+// far field is the same on one thread as on all of them, node for node.
+TEST_F(FarFieldAroundCube, SameMeshOnOneThreadAndOnFour) {
+  FarFieldParams params;
+  params.box_size = 1.0;
+  params.wall_size = 0.6;
+  const int wall = *model_->find_surface("wall");
+  omp_set_num_threads(1);
+  const FarField one = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), wall);
+  omp_set_num_threads(4);
+  const FarField four = build_far_field(*model_, cube_->nf, params, box_surfaces(*model_), wall);
+  omp_set_num_threads(omp_get_num_procs());
+  ASSERT_GT(stats_.pyramids, 0);
+  ASSERT_EQ(one.mesh.nodes(), four.mesh.nodes());
+  ASSERT_EQ(one.mesh.elements().size(), four.mesh.elements().size());
+  for (std::size_t e = 0; e < one.mesh.elements().size(); ++e)
+    ASSERT_EQ(one.mesh.element_nodes(e), four.mesh.element_nodes(e)) << e;
 }
 
 TEST(FarField, RejectsBadParametersAndANonPlanarWall) {
