@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 namespace semimesh::mesh {
 namespace {
@@ -693,14 +694,22 @@ Mesh::EntityUpdate Mesh::replace_nodes_with(bool remap, std::vector<NodeId> to,
   if (to.size() != nodes_.size())
     throw std::invalid_argument("Mesh::replace_nodes: a map of " + std::to_string(to.size()) +
                                 " nodes for a mesh of " + std::to_string(nodes_.size()));
-  // The merges are found in the old ids, through the old lookups, before anything changes.
-  const EntityMerges merges = remap ? entity_merges(to) : EntityMerges{};
+  // The merges are found in the old ids, through the old lookups, before anything changes; on
+  // another thread while this one marks the nodes still used (both only read the mesh).
+  std::future<EntityMerges> merging;
+  if (remap) {
+    try {
+      merging = std::async(std::launch::async, [&] { return entity_merges(to); });
+    } catch (const std::system_error&) {  // no thread to be had: found below, on this one
+    }
+  }
   std::vector<char> used(nodes_.size(), 0);
   {
     const std::vector<char> referenced = referenced_nodes();
     for (NodeId v = 0; v < nodes_.size(); ++v)
       if (referenced[v]) used[to[v]] = 1;
   }
+  const EntityMerges merges = merging.valid() ? merging.get() : remap ? entity_merges(to) : EntityMerges{};
   {
     // `to` then leads straight to the new ids: one map of 4 bytes a node held through the rebuild.
     const std::vector<NodeId> new_id = compact_nodes(used, moved);
