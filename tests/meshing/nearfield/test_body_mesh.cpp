@@ -74,26 +74,28 @@ TEST(BodyMesh, ClosedSurfaceHasNoOpenEdges) {
   EXPECT_TRUE(open_edges(tetrahedron).empty());
 }
 
+// The message open_edges refuses `body` with; empty when it takes it.
+std::string refusal(const BodyMesh& body) {
+  try {
+    open_edges(body);
+  } catch (const NearFieldError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(BodyMesh, EdgeOfThreeTrianglesOrOfTwoRunningTheSameWayIsRefusedAtItsMidpoint) {
   BodyMesh fin = grid(1, 1);  // the edge (0, 3) from (0, 0, 0) to (1, 1, 0), then a third triangle on it
   fin.points.emplace_back(0.5, 0.5, 1.0);
   fin.triangles.push_back({0, 3, 4});
-  try {
-    open_edges(fin);
-    FAIL() << "an edge of three triangles was taken";
-  } catch (const NearFieldError& e) {
-    EXPECT_NE(std::string(e.what()).find("an edge has 3 triangles"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("(0.5, 0.5, 0)"), std::string::npos) << e.what();
-  }
+  const std::string three = refusal(fin);
+  EXPECT_NE(three.find("an edge has 3 triangles"), std::string::npos) << three;
+  EXPECT_NE(three.find("(0.5, 0.5, 0)"), std::string::npos) << three;
   BodyMesh flipped = grid(1, 1);
   std::swap(flipped.triangles[1][1], flipped.triangles[1][2]);  // the second triangle turned over
-  try {
-    open_edges(flipped);
-    FAIL() << "two triangles running the same way along their edge were taken";
-  } catch (const NearFieldError& e) {
-    EXPECT_NE(std::string(e.what()).find("oriented inconsistently"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("(0.5, 0.5, 0)"), std::string::npos) << e.what();
-  }
+  const std::string same_way = refusal(flipped);
+  EXPECT_NE(same_way.find("oriented inconsistently"), std::string::npos) << same_way;
+  EXPECT_NE(same_way.find("(0.5, 0.5, 0)"), std::string::npos) << same_way;
 }
 
 }  // namespace
