@@ -77,7 +77,7 @@ NodeId Mesh::add_node(const Eigen::Vector3d& x, const CadAttachment& cad) {
   if (nodes_.size() >= kNoNode) throw std::length_error("Mesh: too many nodes for 32-bit node ids");
   const auto id = static_cast<NodeId>(nodes_.size());
   nodes_.push_back(x);
-  if (cad.kind != CadAttachment::None) cad_[id] = cad;
+  if (cad.kind != CadAttachment::None) cad_.set(id, cad);
   return id;
 }
 
@@ -96,13 +96,13 @@ void Mesh::copy_nodes(const Mesh& other) {
 
 const CadAttachment& Mesh::cad_attachment(NodeId id) const {
   static const CadAttachment none{};
-  const auto it = cad_.find(id);
-  return it == cad_.end() ? none : it->second;
+  const CadAttachment* attachment = cad_.find(id);
+  return attachment ? *attachment : none;
 }
 
 void Mesh::place_node(NodeId id, const Eigen::Vector3d& x) {
   if (id >= nodes_.size()) throw std::out_of_range("Mesh::place_node: no node " + std::to_string(id));
-  if (cad_.count(id))
+  if (cad_.contains(id))
     throw std::logic_error("Mesh::place_node: node " + std::to_string(id) +
                            " is attached to CAD; move it with place_node_on_cad so its parameters follow");
   nodes_[id] = x;
@@ -114,7 +114,7 @@ void Mesh::place_node_on_cad(NodeId id, const Eigen::Vector3d& x, const CadAttac
   if (cad.kind == CadAttachment::None)
     cad_.erase(id);
   else
-    cad_[id] = cad;
+    cad_.set(id, cad);
 }
 
 int Mesh::region_index(const std::string& name) {
@@ -666,10 +666,11 @@ std::vector<NodeId> Mesh::compact_nodes(const std::vector<char>& used,
   // The few moved and attached nodes from their own maps: a lookup per node cost more than the copy.
   for (const auto& [id, x] : moved)
     if (id < new_id.size() && new_id[id] != kNoNode) nodes_[new_id[id]] = x;
-  std::unordered_map<NodeId, CadAttachment> cad;
+  NodeMap<CadAttachment> cad;
   cad.reserve(cad_.size());
-  for (const auto& [id, attachment] : cad_)
-    if (new_id[id] != kNoNode) cad.emplace(new_id[id], attachment);
+  cad_.for_each([&](NodeId id, const CadAttachment& attachment) {
+    if (new_id[id] != kNoNode) cad.set(new_id[id], attachment);
+  });
   cad_ = std::move(cad);
   return new_id;
 }
@@ -770,17 +771,12 @@ Mesh::EntityUpdate Mesh::replace_nodes_with(bool remap, std::vector<NodeId> to,
 }
 
 std::size_t Mesh::memory_bytes() const {
-  // unordered_map: one bucket pointer per bucket, one heap node (value + next pointer + cached
-  // hash) per entry.
-  auto map_bytes = [](const auto& map, std::size_t value_size) {
-    return map.bucket_count() * sizeof(void*) + map.size() * (value_size + 2 * sizeof(void*));
-  };
   std::size_t bytes = sizeof(*this);
   bytes += nodes_.capacity() * sizeof(Eigen::Vector3d);
   bytes += edges_.capacity() * sizeof(Edge) + faces_.capacity() * sizeof(Face);
   bytes += elements_.capacity() * sizeof(Element) + boundary_.capacity() * sizeof(BoundaryFace);
   bytes += (edge_pool_.capacity() + face_pool_.capacity() + interior_pool_.capacity()) * sizeof(NodeId);
-  bytes += map_bytes(cad_, sizeof(std::pair<const NodeId, CadAttachment>));
+  bytes += cad_.memory_bytes();
   bytes += edge_index_.memory_bytes() + face_index_.memory_bytes();
   for (const auto& g : groups_) bytes += sizeof(g) + g.capacity();
   for (const auto& r : regions_) bytes += sizeof(r) + r.capacity();

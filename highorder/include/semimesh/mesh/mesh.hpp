@@ -23,6 +23,7 @@
 
 #include "semimesh/ho/element_type.hpp"
 #include "semimesh/mesh/id_table.hpp"
+#include "semimesh/mesh/node_map.hpp"
 
 #include <Eigen/Core>
 
@@ -325,7 +326,7 @@ class Mesh {
   int order_;
   ho::NodeSet node_set_;
   std::vector<Eigen::Vector3d> nodes_;
-  std::unordered_map<NodeId, CadAttachment> cad_;  // sparse: only boundary nodes are attached
+  NodeMap<CadAttachment> cad_;  // sparse: only boundary nodes are attached
   std::vector<Edge> edges_;
   std::vector<Face> faces_;
   std::vector<Element> elements_;
