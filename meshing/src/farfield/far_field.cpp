@@ -25,8 +25,8 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 namespace semimesh::farfield {
@@ -497,7 +497,14 @@ constexpr double kRefinementShare = 0.02;
 // pattern along the skin, breaks the tie; an apex whose pyramid would not stay valid keeps its place.
 constexpr double kApexVariation = 0.02;
 
-void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unordered_map<NodeId, int>& plc_index,
+// Node `id`'s index among TetGen's input points (plc_index: [nodes], -1 for a node not in it).
+int plc_point(const std::vector<int>& plc_index, NodeId id) {
+  const int index = plc_index.at(id);
+  if (index < 0) throw std::logic_error("far field: node " + std::to_string(id) + " is not on TetGen's boundary");
+  return index;
+}
+
+void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::vector<int>& plc_index,
                        mesh::Mesh& mesh, TetgenInput& input) {
   constexpr int kPattern = 5;  // factors 1 - v, 1 - v/2, 1, 1 + v/2, 1 + v
   for (std::size_t k = 0; k < pyramids.size(); ++k) {
@@ -513,7 +520,7 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unor
     nodes.row(4) = apex.transpose();
     if (!ho::certify_jacobian(ho::Shape::Pyramid, 1, ho::NodeSet::Equispaced, nodes).valid) continue;
     mesh.place_node(p.apex, apex);
-    input.points[plc_index.at(p.apex)] = apex;
+    input.points[plc_point(plc_index, p.apex)] = apex;
   }
 }
 
@@ -524,7 +531,7 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::unor
 // the apexes' heights varied; the first failure is the one reported when all fail.
 // `beside` runs beside the first try only (the last moves apexes of the mesh it reads).
 TetgenOutput run_tetgen_with_retries(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
-                                     const std::unordered_map<NodeId, int>& plc_index, mesh::Mesh& mesh,
+                                     const std::vector<int>& plc_index, mesh::Mesh& mesh,
                                      const BesideChild& beside) {
   std::optional<FarFieldError> first;
   try {
@@ -543,7 +550,7 @@ TetgenOutput run_tetgen_with_retries(TetgenInput& input, const std::vector<SkinP
   try {
     return run_tetgen(input);
   } catch (const FarFieldError&) {
-    for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_index.at(p.apex)]);
+    for (const SkinPyramid& p : pyramids) mesh.place_node(p.apex, points[plc_point(plc_index, p.apex)]);
     throw *first;
   }
 }
@@ -643,7 +650,7 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
   TetgenInput input;
   input.radius_edge_ratio = params.radius_edge_ratio;
   input.max_volume = params.max_volume;
-  std::unordered_map<NodeId, int> plc_index;
+  std::vector<int> plc_index(mesh.num_nodes(), -1);  // [nodes] its index in TetGen's input, -1: none
   std::vector<NodeId> plc_node;
   const std::pair<const std::vector<Triangle>*, const char*> groups[] = {
       {&skin, "the near field's outer skin"}, {&wall_side, "the wall"}, {&box, "the far field's outer boundary"}};
@@ -651,12 +658,13 @@ FarField build_far_field(const cad::Model& model, nearfield::NearField near, con
     for (const Triangle& t : *group) {
       std::array<int, 3> local;
       for (int k = 0; k < 3; ++k) {
-        auto [it, added] = plc_index.try_emplace(t[k], static_cast<int>(plc_node.size()));
-        if (added) {
+        int& index = plc_index.at(t[k]);
+        if (index < 0) {
+          index = static_cast<int>(plc_node.size());
           plc_node.push_back(t[k]);
           input.points.push_back(mesh.node(t[k]));
         }
-        local[k] = it->second;
+        local[k] = index;
       }
       input.triangles.push_back(local);
     }
