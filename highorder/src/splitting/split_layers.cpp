@@ -799,7 +799,10 @@ FaceCuts Splitter::cuts(std::size_t element, std::uint32_t face) const {
       for (int v : faces(el.shape)[f])
         if (data.lattice[v][plan.direction[s]] == 0) cut.bottom[on_bottom++] = el.vertices[v];
       if (on_bottom == 0 || on_bottom == static_cast<int>(faces(el.shape)[f].size())) continue;
-      std::sort(cut.bottom.begin(), cut.bottom.begin() + on_bottom);  // the unused entries stay kNoNode
+      // The first on_bottom entries sorted (the unused ones stay kNoNode), by insertion: std::sort on
+      // so short a range trips GCC 12's -Warray-bounds.
+      for (int i = 1; i < on_bottom; ++i)
+        for (int j = i; j > 0 && cut.bottom[j] < cut.bottom[j - 1]; --j) std::swap(cut.bottom[j], cut.bottom[j - 1]);
       result.add(cut);
     }
   }
