@@ -2,6 +2,7 @@
 
 #include "semimesh/ho/curving/extend_inward.hpp"
 #include "semimesh/mesh/node_layout.hpp"
+#include "semimesh/mesh/open_faces.hpp"
 
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -10,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <future>
 #include <stdexcept>
 #include <string>
@@ -243,19 +243,13 @@ std::unordered_map<mesh::NodeId, Eigen::Vector3d> carry_inwards(const mesh::Mesh
   return moved;
 }
 
-// [num_nodes()]: 1 at the vertices of the open faces, those one element uses and no boundary face
-// covers. Two copies of one face are both open until welded, so only these vertices can weld; the
-// rest of the mesh is closed (its vertices need no search, and no thin element there is collapsed).
+// [num_nodes()]: 1 at the vertices of the open faces. Two copies of one face are both open until
+// welded, so only these vertices can weld; the rest of the mesh is closed (its vertices need no
+// search, and no thin element there is collapsed).
 std::vector<char> open_face_vertices(const mesh::Mesh& mesh) {
-  std::vector<std::uint8_t> uses(mesh.faces().size(), 0);  // 0, 1, 2 = two or more
-  for (const mesh::Element& e : mesh.elements())
-    for (std::size_t k = 0; k < ho::faces(e.shape).size(); ++k)
-      uses[e.faces[k]] = static_cast<std::uint8_t>(std::min(2, uses[e.faces[k]] + 1));
-  for (const mesh::BoundaryFace& b : mesh.boundary_faces()) uses[b.face] = 2;
   std::vector<char> open(mesh.num_nodes(), 0);
-  for (std::size_t f = 0; f < uses.size(); ++f)
-    if (uses[f] == 1)
-      for (int k = 0; k < mesh.faces()[f].num_vertices; ++k) open[mesh.faces()[f].vertices[k]] = 1;
+  for (const mesh::OpenFace& f : mesh::open_faces(mesh))
+    for (int k = 0; k < mesh.faces()[f.face].num_vertices; ++k) open[mesh.faces()[f.face].vertices[k]] = 1;
   return open;
 }
 

@@ -6,6 +6,7 @@
 #include "semimesh/farfield/detail/pyramid_apex.hpp"
 #include "semimesh/farfield/detail/symmetry_faces.hpp"
 #include "semimesh/ho/validity.hpp"
+#include "semimesh/mesh/directed_edge_index.hpp"
 #include "semimesh/nearfield/pyramid_apex.hpp"
 #include "tetgen_volume.hpp"
 #include "semimesh/farfield/detail/wall_annulus.hpp"
@@ -21,8 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -384,32 +383,17 @@ constexpr double kPi = 3.14159265358979323846;
 // right angle the caps leave the usual heights alone, but behind a tapered wing the trailing edge
 // leans forward under the wake block and the corner between the block's underside and the rear
 // interfaces below it closes to ~60 degrees, where the usual heights crossed (TetGen aborted).
-// The skin faces by their directed edges: (a << 32 | b, face), sorted; the last face given keeps an
-// edge two faces run the same way (as a map's assignment in turn).
-class SkinEdges {
- public:
-  explicit SkinEdges(const std::vector<nearfield::SkinFace>& skin) {
-    for (std::size_t f = 0; f < skin.size(); ++f)
-      for (int k = 0; k < skin[f].count; ++k)
-        faces_.emplace_back(key(skin[f].nodes[k], skin[f].nodes[(k + 1) % skin[f].count]), f);
-    std::stable_sort(faces_.begin(), faces_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  }
-  /// The face with the directed edge a -> b, if any.
-  std::optional<std::size_t> face(NodeId a, NodeId b) const {
-    const std::uint64_t k = key(a, b);
-    const auto after = std::upper_bound(faces_.begin(), faces_.end(), k,
-                                        [](std::uint64_t x, const auto& entry) { return x < entry.first; });
-    if (after == faces_.begin() || std::prev(after)->first != k) return std::nullopt;
-    return std::prev(after)->second;
-  }
-
- private:
-  static std::uint64_t key(NodeId a, NodeId b) { return static_cast<std::uint64_t>(a) << 32 | b; }
-  std::vector<std::pair<std::uint64_t, std::size_t>> faces_;
-};
+// The skin faces by their directed edges.
+mesh::DirectedEdgeIndex skin_edges(const std::vector<nearfield::SkinFace>& skin) {
+  mesh::DirectedEdgeIndex edges;
+  for (std::size_t f = 0; f < skin.size(); ++f)
+    for (int k = 0; k < skin[f].count; ++k) edges.add(skin[f].nodes[k], skin[f].nodes[(k + 1) % skin[f].count], f);
+  edges.sort();
+  return edges;
+}
 
 std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mesh& mesh, std::size_t q,
-                                 const SkinEdges& face_of_edge) {
+                                 const mesh::DirectedEdgeIndex& face_of_edge) {
   auto centre = [&](const nearfield::SkinFace& f) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (int k = 0; k < f.count; ++k) c += mesh.node(f.nodes[k]);
@@ -425,7 +409,7 @@ std::array<double, 4> slope_caps(const nearfield::NearField& nf, const mesh::Mes
   std::array<double, 4> caps = nearfield::kNoSlopeCap;
   for (int k = 0; k < 4; ++k) {
     const NodeId a = face.nodes[k], b = face.nodes[(k + 1) % 4];
-    const std::optional<std::size_t> neighbour = face_of_edge.face(b, a);  // runs the shared edge the other way
+    const std::optional<std::size_t> neighbour = face_of_edge.find(b, a);  // runs the shared edge the other way
     if (!neighbour) continue;
     const nearfield::SkinFace& other = nf.skin[*neighbour];
     const Eigen::Vector3d m = 0.5 * (mesh.node(a) + mesh.node(b));
@@ -450,7 +434,7 @@ std::vector<Triangle> cap_skin(const nearfield::NearField& nf, mesh::Mesh& mesh,
       throw FarFieldError("far field: a skin face has " + std::to_string(face.count) + " nodes; 3 or 4 expected");
   // The apexes first, each quad's on its own (they read the skin's nodes only), on every thread;
   // then the nodes and pyramids in skin order.
-  const SkinEdges face_of_edge(nf.skin);
+  const mesh::DirectedEdgeIndex face_of_edge = skin_edges(nf.skin);
   const long faces = static_cast<long>(nf.skin.size());
   std::vector<Eigen::Vector3d> apex_at(nf.skin.size());
 #pragma omp parallel for schedule(dynamic, 64)

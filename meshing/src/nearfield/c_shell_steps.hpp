@@ -4,13 +4,13 @@
 // halos, offset and meshed (wing_layer.cpp).
 #pragma once
 
+#include "semimesh/mesh/directed_edge_index.hpp"
 #include "semimesh/nearfield/body_mesh.hpp"
 
 #include "junction_shell.hpp"
 #include "shell_common.hpp"
 
 #include <array>
-#include <cstdint>
 #include <map>
 #include <set>
 #include <utility>
@@ -40,12 +40,9 @@ class RootSegments {
   int surface(int a, int b) const { return body_.triangle_surface[triangle(a, b)]; }
 
  private:
-  static std::uint64_t key(int a, int b) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-  }
   const BodyMesh& body_;
   const Frame& wall_;
-  std::vector<std::pair<std::uint64_t, int>> triangle_of_edge_;  ///< (key(a, b), triangle), sorted by key
+  mesh::DirectedEdgeIndex triangle_of_edge_;
 };
 
 // The root curve a root node lies on (of its vertex: the first curve on the wall).

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -235,20 +234,17 @@ RootSegments::RootSegments(const BodyMesh& body, const Frame& wall) : body_(body
   triangle_of_edge_.reserve(3 * body.triangles.size());
   for (std::size_t t = 0; t < body.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
-      triangle_of_edge_.emplace_back(key(body.triangles[t][k], body.triangles[t][(k + 1) % 3]), static_cast<int>(t));
-  // Stable: of two triangles with one directed edge, the later stays last (the one triangle() gives).
-  std::stable_sort(triangle_of_edge_.begin(), triangle_of_edge_.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
+      triangle_of_edge_.add(static_cast<std::uint32_t>(body.triangles[t][k]),
+                            static_cast<std::uint32_t>(body.triangles[t][(k + 1) % 3]), t);
+  triangle_of_edge_.sort();
 }
 
 int RootSegments::triangle(int a, int b) const {
-  const std::uint64_t k = key(a, b);
-  const auto after = std::upper_bound(triangle_of_edge_.begin(), triangle_of_edge_.end(), k,
-                                      [](std::uint64_t x, const auto& entry) { return x < entry.first; });
-  if (after == triangle_of_edge_.begin() || std::prev(after)->first != k)
+  const auto t = triangle_of_edge_.find(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
+  if (!t)
     throw std::out_of_range("RootSegments: no body triangle has the edge " + std::to_string(a) + " -> " +
                             std::to_string(b));
-  return std::prev(after)->second;
+  return static_cast<int>(*t);
 }
 
 Vec3 RootSegments::outward(int a, int b) const {

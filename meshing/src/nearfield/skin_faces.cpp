@@ -1,12 +1,12 @@
 // The H-type's skin, the near field's outer faces handed to the far field, and its quads cut in
 // advance where the split will cut the elements under them.
 #include "semimesh/ho/element_type.hpp"
+#include "semimesh/mesh/open_faces.hpp"
 
 #include "h_shell_steps.hpp"
 #include "labels.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -28,24 +28,12 @@ bool key_less(const FaceUse& a, const FaceUse& b) {
   return std::lexicographical_compare(a.key.begin(), a.key.begin() + a.count, b.key.begin(), b.key.begin() + b.count);
 }
 
-// The faces exactly one element uses and no boundary face lies on, in key order: the uses of each
-// face entity counted (a face entity per vertex set), then only those faces sorted.
+// The faces exactly one element uses and no boundary face lies on (the open faces), in key order.
 std::vector<FaceUse> single_uses(const mesh::Mesh& m) {
-  constexpr std::uint32_t kNone = 0xffffffffu;
-  std::vector<int> weight(m.faces().size(), 0);
-  std::vector<std::uint32_t> user(m.faces().size(), kNone);  // element * 8 + local face, of its first user
-  for (std::uint32_t e = 0; e < m.elements().size(); ++e) {
-    const mesh::Element& el = m.elements()[e];
-    for (std::uint32_t f = 0; f < ho::faces(el.shape).size(); ++f) {
-      if (weight[el.faces[f]]++ == 0) user[el.faces[f]] = 8 * e + f;
-    }
-  }
-  for (const mesh::BoundaryFace& b : m.boundary_faces()) weight[b.face] += 2;
   std::vector<FaceUse> single;
-  for (std::size_t face = 0; face < weight.size(); ++face) {
-    if (weight[face] != 1) continue;
-    const mesh::Element& el = m.elements()[user[face] / 8];
-    const std::vector<int>& local = ho::faces(el.shape)[user[face] % 8];
+  for (const mesh::OpenFace& open : mesh::open_faces(m)) {
+    const mesh::Element& el = m.elements()[open.element];
+    const std::vector<int>& local = ho::faces(el.shape)[open.local];
     FaceUse u;
     u.count = static_cast<int>(local.size());
     for (int k = 0; k < u.count; ++k) u.face.nodes[k] = el.vertices[local[k]];
