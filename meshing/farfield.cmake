@@ -15,6 +15,7 @@ add_library(semimesh_farfield
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/interior_points.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/short_edge.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/flat_tet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/src/farfield/untie_boundary.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/symmetry_faces.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/tetgen_volume.cpp
   ${CMAKE_CURRENT_LIST_DIR}/src/farfield/far_field.cpp)

@@ -114,9 +114,10 @@ std::string report_json(const RunResult& r, const Config& config) {
   j += "  \"boundary_faces_by_group\": " + json_counts(r.boundary_faces_by_group) + ",\n";
   j += fmt::format("  \"surface_triangles\": {},\n  \"surface_quads\": {},\n", r.surface_triangles, r.surface_quads);
   j += fmt::format("  \"far_field\": {{\"tets\": {}, \"pyramids\": {}, \"wall_triangles\": {}, \"box_triangles\": {}, "
-                   "\"interior_points\": {}, \"tetgen_added_points\": {}, \"tetgen_seconds\": {}}},\n",
+                   "\"interior_points\": {}, \"tetgen_added_points\": {}, \"tetgen_seconds\": {}, \"tetgen_untied\": {}}},\n",
                    r.far_field.tets, r.far_field.pyramids, r.far_field.wall_triangles, r.far_field.box_triangles,
-                   r.far_field.interior_points, r.far_field.added_points, json_number(r.far_field.seconds_tetgen));
+                   r.far_field.interior_points, r.far_field.added_points, json_number(r.far_field.seconds_tetgen),
+                   r.far_field.tetgen_untied);
   if (config.output.target == OutputTarget::Pyfr)
     j += fmt::format("  \"pyfr_split\": {{\"pyramids_refused\": {}, \"columns\": {}, \"hexes_to_prisms\": {}, "
                      "\"pyramids_to_tets\": {}, \"boundary_quads_to_triangles\": {}}},\n",

@@ -1,5 +1,7 @@
 #include "semimesh/farfield/detail/interior_points.hpp"
 
+#include "semimesh/farfield/detail/fixed_offset.hpp"
+
 #include "semimesh/geometry/box_tree.hpp"
 #include "semimesh/ho/closest_point.hpp"
 #include "semimesh/surface/size_field.hpp"
@@ -117,20 +119,6 @@ class Boundary {
   BoxTree tree_;
 };
 
-// A fixed pseudo-random offset in [-1, 1]^3 per cell (SplitMix64 of the cell's integer place).
-Vector3d cell_offset(std::uint64_t key) {
-  Vector3d offset;
-  for (int k = 0; k < 3; ++k) {
-    key += 0x9e3779b97f4a7c15ull;
-    std::uint64_t z = key;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    z ^= z >> 31;
-    offset[k] = 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ull << 53) - 1.0;
-  }
-  return offset;
-}
-
 enum class Side { Unknown, Inside, Outside };
 
 struct Cell {
@@ -173,7 +161,7 @@ class Filling {
     const Side known = classify(cell, h);
     if (known == Side::Outside) return;
     if (side <= kLeafSide * h) {
-      const Vector3d x = centre + kJitter * side * cell_offset(key_of(cell));
+      const Vector3d x = centre + kJitter * side * fixed_offset(key_of(cell));
       if (known == Side::Unknown && (boundary_.has_triangle_within(x, kClearance * h) || !boundary_.inside(x))) return;
       out.push_back(x);
       return;

@@ -3,6 +3,7 @@
 #include "semimesh/farfield/detail/boundary_crossing.hpp"
 #include "semimesh/farfield/detail/flat_tet.hpp"
 #include "semimesh/farfield/detail/short_edge.hpp"
+#include "semimesh/farfield/detail/untie_boundary.hpp"
 
 #include "semimesh/farfield/far_field.hpp"
 
@@ -16,8 +17,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <future>
+#include <optional>
 #include <system_error>
 #include <cstdio>
 #include <chrono>
@@ -248,18 +251,18 @@ TetgenRun tetrahedralize_in_child(std::string& switches, tetgenio& in, bool quie
   return run;
 }
 
-}  // namespace
-
-TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild& beside) {
-  if (const auto edge = find_edge_below_tolerance(input.points, input.triangles, kTetgenRelativeTolerance))
-    throw FarFieldError(describe_short_edge(input, *edge));
-  const int num_points = static_cast<int>(input.points.size());
+// TetGen's answer for the input's triangles on `given` points (the input's, or those moved off
+// their ties): its points and tets, each tet turned to positive volume at `given`. Throws
+// FarFieldError when TetGen fails or moved or dropped a given point.
+TetgenOutput tetgen_answer(const TetgenInput& input, const std::vector<Eigen::Vector3d>& given, bool quiet,
+                           const BesideChild& beside) {
+  const int num_points = static_cast<int>(given.size());
   tetgenio in;
   in.firstnumber = 0;
   in.numberofpoints = num_points;
   in.pointlist = new REAL[3 * num_points];
   for (int i = 0; i < num_points; ++i) {
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = input.points[i][k];
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = given[i][k];
   }
   in.numberoffacets = static_cast<int>(input.triangles.size());
   in.facetlist = new tetgenio::facet[in.numberoffacets];
@@ -297,7 +300,7 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild&
                         std::to_string(num_points) + " boundary points: it dropped boundary points");
   result.points = run.points;
   for (int i = 0; i < num_points; ++i)
-    if (result.points[i] != input.points[i])
+    if (result.points[i] != given[i])
       throw FarFieldError("TetGen moved boundary point " + std::to_string(i) + "; the boundary must be kept exactly");
 
   result.tets.resize(run.tets.size());
@@ -309,8 +312,38 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild&
     if (volume6 < 0) std::swap(tet[2], tet[3]);
     result.tets[t] = tet;
   }
+  return result;
+}
+
+// TetGen's answer on the boundary moved off its ties, taken on the true points when every tet
+// stays positive and none flat there; else none (the caller runs TetGen on the true points).
+std::optional<TetgenOutput> untied_answer(const TetgenInput& input, const BesideChild& beside) {
+  TetgenOutput result;
+  try {
+    result = tetgen_answer(input, untie_boundary(input.points, input.triangles, input.untie), /*quiet=*/true, beside);
+  } catch (const FarFieldError&) {
+    return std::nullopt;
+  }
+  std::copy(input.points.begin(), input.points.end(), result.points.begin());
+  if (first_unpositive_tet(result.points, result.tets) || find_flat_tet(result.points, result.tets, kFlatRelativeVolume))
+    return std::nullopt;
+  result.untied = true;
+  return result;
+}
+
+}  // namespace
+
+TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild& beside) {
+  if (const auto edge = find_edge_below_tolerance(input.points, input.triangles, kTetgenRelativeTolerance))
+    throw FarFieldError(describe_short_edge(input, *edge));
+  const auto start = std::chrono::steady_clock::now();
+  if (input.untie > 0)
+    if (std::optional<TetgenOutput> untied = untied_answer(input, beside)) return std::move(*untied);
+  // `beside` ran beside the untied try, if there was one.
+  TetgenOutput result = tetgen_answer(input, input.points, quiet, input.untie > 0 ? BesideChild() : beside);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (const auto flat = find_flat_tet(result.points, result.tets, kFlatRelativeVolume))
-    throw FarFieldError(describe_flat_tet(result.points, result.tets[flat->tet], *flat, num_points));
+    throw FarFieldError(describe_flat_tet(result.points, result.tets[flat->tet], *flat, static_cast<int>(input.points.size())));
   return result;
 }
 

@@ -144,6 +144,10 @@ TEST_F(FarFieldAroundCube, CountsAndSkinNodesUntouched) {
   for (NodeId i = 0; i < skin_points_.size(); ++i) EXPECT_EQ(mesh().node(i), skin_points_[i]) << "node " << i;
 }
 
+// The cube's structured faces and the box's planes tie TetGen's predicates: its mesh of the untied
+// boundary is the one taken (the tests of this suite check that mesh on the true points).
+TEST_F(FarFieldAroundCube, TetGensMeshOfTheUntiedBoundaryIsTaken) { EXPECT_TRUE(stats_.tetgen_untied); }
+
 TEST_F(FarFieldAroundCube, ElementsHavePositiveVolumeAndFillTheBoxMinusTheCube) {
   double volume = 0.0;
   for (std::size_t e = 0; e < mesh().elements().size(); ++e) {

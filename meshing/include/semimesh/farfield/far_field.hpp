@@ -49,6 +49,7 @@ struct FarFieldStats {
   int interior_points = 0;  ///< points given to TetGen inside the region (interior_points.hpp)
   int added_points = 0;     ///< points TetGen's refinement added
   double seconds_tetgen = 0;
+  bool tetgen_untied = false;  ///< TetGen's mesh of the untied boundary was taken (tetgen_volume.hpp)
 };
 
 struct FarField {
