@@ -343,7 +343,8 @@ TetgenOutput run_tetgen(const TetgenInput& input, bool quiet, const BesideChild&
   TetgenOutput result = tetgen_answer(input, input.points, quiet, input.untie > 0 ? BesideChild() : beside);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (const auto flat = find_flat_tet(result.points, result.tets, kFlatRelativeVolume))
-    throw FarFieldError(describe_flat_tet(result.points, result.tets[flat->tet], *flat, static_cast<int>(input.points.size())));
+    throw FarFieldError(
+        describe_flat_tet(result.points, result.tets[flat->tet], *flat, static_cast<int>(input.points.size())));
   return result;
 }
 
