@@ -325,8 +325,9 @@ std::optional<TetgenOutput> untied_answer(const TetgenInput& input, const Beside
     return std::nullopt;
   }
   std::copy(input.points.begin(), input.points.end(), result.points.begin());
-  if (first_unpositive_tet(result.points, result.tets) || find_flat_tet(result.points, result.tets, kFlatRelativeVolume))
-    return std::nullopt;
+  const bool holds = !first_unpositive_tet(result.points, result.tets) &&
+                     !find_flat_tet(result.points, result.tets, kFlatRelativeVolume);
+  if (!holds) return std::nullopt;
   result.untied = true;
   return result;
 }
