@@ -18,7 +18,8 @@ using Eigen::Vector3d;
 
 // The unit cube's boundary with each face an n x n grid of squares, each split into two
 // triangles: every square's corners are cocircular, every cell of the grid's points cospherical.
-TetgenInput structured_cube(int n) {
+// `turned`: the cube turned about (1, 2, 3) by 0.5 radians (no face then lies in a plane x_k = c).
+TetgenInput structured_cube(int n, bool turned = false) {
   TetgenInput input;
   std::vector<int> index((n + 1) * (n + 1) * (n + 1), -1);
   const auto at = [&](int i, int j, int k) {
@@ -45,6 +46,26 @@ TetgenInput structured_cube(int n) {
           input.triangles.push_back({corner(0, 0), corner(1, 1), corner(0, 1)});
         }
   input.parts.emplace_back(input.triangles.size(), "the cube");
+  if (turned) {
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    for (Vector3d& p : input.points) p = turn * p;
+  }
+  return input;
+}
+
+// A box with no face in a plane x_k = c but its top and bottom (z = 0, 1): its base the rectangle
+// (0, 0) (2, 1) (1, 3) (-1, 2). Its eight corners lie exactly on one sphere.
+TetgenInput slanted_box() {
+  TetgenInput input;
+  for (double z : {0.0, 1.0})
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {2.0, 1.0}, {1.0, 3.0}, {-1.0, 2.0}}) input.points.emplace_back(x, y, z);
+  input.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}};  // bottom, top
+  for (int k = 0; k < 4; ++k) {
+    const int a = k, b = (k + 1) % 4;
+    input.triangles.push_back({a, b, b + 4});
+    input.triangles.push_back({a, b + 4, a + 4});
+  }
+  input.parts.emplace_back(input.triangles.size(), "the box");
   return input;
 }
 
@@ -64,22 +85,45 @@ double insphere(const Vector3d& a, const Vector3d& b, const Vector3d& c, const V
 }
 
 TEST(UntieBoundary, MovesEachBoundaryPointWithinItsShareOfItsShortestEdgeAndNoOtherPoint) {
-  TetgenInput input = structured_cube(2);
+  TetgenInput input = structured_cube(2, /*turned=*/true);
   const std::size_t boundary = input.points.size();
   input.points.emplace_back(0.4, 0.5, 0.6);  // an interior point: no triangle uses it
   const std::vector<Vector3d> moved = untie_boundary(input.points, input.triangles, 1e-3);
   ASSERT_EQ(moved.size(), input.points.size());
   for (std::size_t i = 0; i < boundary; ++i) {
-    const double step = (moved[i] - input.points[i]).cwiseAbs().maxCoeff();
-    EXPECT_GT(step, 0.0) << "point " << i;
-    EXPECT_LE(step, 1e-3 * 0.5) << "point " << i;  // every edge at a point is >= 0.5 (a grid of 2)
+    const Vector3d step = (moved[i] - input.points[i]).cwiseAbs();
+    for (int axis = 0; axis < 3; ++axis) EXPECT_GT(step[axis], 0.0) << "point " << i << ", axis " << axis;
+    EXPECT_LE(step.maxCoeff(), 1e-3 * 0.5 + 1e-15) << "point " << i;  // every edge at a point is >= 0.5
   }
   EXPECT_EQ(moved.back(), input.points.back());
   EXPECT_EQ(untie_boundary(input.points, input.triangles, 1e-3), moved);  // fixed: the same every call
 }
 
-TEST(UntieBoundary, NoFiveCornersOfAGridCellStayCospherical) {
-  const TetgenInput input = structured_cube(1);  // the cube's 8 corners: all on one sphere
+TEST(UntieBoundary, KeepsThePointsOfATriangleInAPlaneXkEqualCOnThatPlane) {
+  // The cube's faces lie in planes x_k = 0 or 1: a point inside a face moves in that face only, one
+  // on an edge along the edge only, a corner not at all (four of a face's points moved off it
+  // could make a tet of TetGen's flat on the true points).
+  const TetgenInput input = structured_cube(2);
+  const std::vector<Vector3d> moved = untie_boundary(input.points, input.triangles, 1e-3);
+  int corners = 0;
+  for (std::size_t i = 0; i < input.points.size(); ++i) {
+    int on_planes = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double c = input.points[i][axis];
+      if (c == 0.0 || c == 1.0) {
+        ++on_planes;
+        EXPECT_EQ(moved[i][axis], c) << "point " << i << ", axis " << axis;
+      } else {
+        EXPECT_NE(moved[i][axis], c) << "point " << i << ", axis " << axis;
+      }
+    }
+    corners += on_planes == 3;
+  }
+  EXPECT_EQ(corners, 8);
+}
+
+TEST(UntieBoundary, NoFiveCornersOfABoxStayCospherical) {
+  const TetgenInput input = slanted_box();  // its 8 corners: all on one sphere
   const std::vector<Vector3d> moved = untie_boundary(input.points, input.triangles, 1e-8);
   const std::vector<Vector3d>& p = input.points;
   int subsets = 0;
@@ -89,9 +133,9 @@ TEST(UntieBoundary, NoFiveCornersOfAGridCellStayCospherical) {
         for (int d = c + 1; d < 8; ++d)
           for (int e = d + 1; e < 8; ++e) {
             ++subsets;
-            ASSERT_EQ(insphere(p[a], p[b], p[c], p[d], p[e]), 0.0);  // tied exactly before
-            // After: decided far above double round-off (~1e-15 here), at the moves' scale 1e-8.
-            EXPECT_GT(std::abs(insphere(moved[a], moved[b], moved[c], moved[d], moved[e])), 1e-12)
+            ASSERT_LT(std::abs(insphere(p[a], p[b], p[c], p[d], p[e])), 1e-12);  // tied before (round-off)
+            // After: decided far above double round-off, at the moves' scale (1e-8 of an edge).
+            EXPECT_GT(std::abs(insphere(moved[a], moved[b], moved[c], moved[d], moved[e])), 1e-10)
                 << a << " " << b << " " << c << " " << d << " " << e;
           }
   EXPECT_EQ(subsets, 56);
@@ -125,9 +169,10 @@ TEST(RunTetgen, TakesTheMeshOfTheUntiedBoundaryOnTheTruePoints) {
 }
 
 TEST(RunTetgen, MeshesTheTruePointsWhereTheUntiedMeshTurnsOverOnThem) {
-  // Moves of a fifth of an edge: TetGen's mesh of those points has tets that the true points turn
-  // over or flatten (a grid cell's four coplanar corners), so TetGen runs again on the true ones.
-  TetgenInput input = structured_cube(4);
+  // The turned cube's points moved by a fifth of an edge in every direction: TetGen's mesh of
+  // those points has tets that the true points turn over or flatten (a grid cell's four coplanar
+  // corners), so TetGen runs again on the true ones.
+  TetgenInput input = structured_cube(4, /*turned=*/true);
   input.untie = 0.2;
   const TetgenOutput output = run_tetgen(input, /*quiet=*/true);
   EXPECT_FALSE(output.untied);

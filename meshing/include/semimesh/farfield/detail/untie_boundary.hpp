@@ -17,7 +17,11 @@ namespace semimesh::farfield {
 
 /// [points][3]: `points` with each point that a triangle uses moved by at most `share` of its
 /// shortest edge among the triangles, per coordinate, in a pseudo-random direction fixed by its
-/// index (the same on every run and thread count); the points no triangle uses are unchanged.
+/// index (the same on every run and thread count); the points no triangle uses are unchanged. A
+/// point keeps coordinate k where one of its triangles lies in a plane x_k = c (all three equal
+/// there): such planes (a box face, a planar wall, a wall layer's tops) stay exact, else four of
+/// their points could make a tet of TetGen's that is flat on the true points (the paper's
+/// geometry at 1.4e5 elements: four points of the wall layer's tops, z = 0.1).
 /// `triangles` [triangles][3]: indices into `points`.
 std::vector<Eigen::Vector3d> untie_boundary(const std::vector<Eigen::Vector3d>& points,
                                             const std::vector<std::array<int, 3>>& triangles, double share);
