@@ -516,9 +516,10 @@ void vary_apex_heights(const std::vector<SkinPyramid>& pyramids, const std::vect
 
 // TetGen on the input (first on its untied boundary, kUntie); when it fails (a zero-volume tet
 // among exactly degenerate points, which it aborts on, or answers with when round-off makes it not
-// quite flat: run_tetgen refuses that answer), again with its refinement uncapped (its capped refinement and mesh optimisation can
-// leave a flat tet that further refinement takes away: the NekMesh wing's coarse case), then with
-// the apexes' heights varied; the first failure is the one reported when all fail.
+// quite flat: run_tetgen refuses that answer), again with its refinement uncapped (its capped
+// refinement and mesh optimisation can leave a flat tet that further refinement takes away: the
+// NekMesh wing's coarse case), then with the apexes' heights varied; the first failure is the one
+// reported when all fail.
 // `beside` runs beside the first try only (the last moves apexes of the mesh it reads).
 TetgenOutput run_tetgen_with_retries(TetgenInput& input, const std::vector<SkinPyramid>& pyramids,
                                      const std::vector<int>& plc_index, mesh::Mesh& mesh,
