@@ -8,8 +8,8 @@
 
 #include <Eigen/Geometry>
 
-#include <algorithm>
-#include <limits>
+#include <cmath>
+#include <utility>
 
 namespace semimesh::farfield {
 namespace {
@@ -58,7 +58,8 @@ TetgenInput structured_cube(int n, bool turned = false) {
 TetgenInput slanted_box() {
   TetgenInput input;
   for (double z : {0.0, 1.0})
-    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {2.0, 1.0}, {1.0, 3.0}, {-1.0, 2.0}}) input.points.emplace_back(x, y, z);
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {2.0, 1.0}, {1.0, 3.0}, {-1.0, 2.0}})
+      input.points.emplace_back(x, y, z);
   input.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}};  // bottom, top
   for (int k = 0; k < 4; ++k) {
     const int a = k, b = (k + 1) % 4;
