@@ -29,6 +29,8 @@
 #include "semimesh/surface/model_surfaces.hpp"
 #include "semimesh/surface/shell_size_limit.hpp"
 
+#include "conformity_beside.hpp"
+
 #include <fmt/format.h>
 
 #include <sys/resource.h>
@@ -42,6 +44,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <future>
 #include <iterator>
 #include <limits>
@@ -758,15 +761,13 @@ void check_mesh_volume(const Geometry& g, const surface::SurfaceMeshes& surfaces
 void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes& surfaces, double chord,
            const std::vector<ho::InheritedBounds>& inherited, Progress& progress, RunResult& result) {
   stage("checks", progress, result, [&](const ProgressCallback& report) {
-    // Conformity and the geometric error are serial passes that only read the mesh, the
-    // certification an OpenMP loop: they run side by side on threads of their own, each filling
-    // its own figures, so that no serial pass leaves a core idle at the end (as one after the
-    // other on one thread did). The volume comes after the certification: it takes the integrals
-    // the certification found (affine elements, trilinear hexahedra, split pieces) instead of
-    // gathering those elements' nodes again (the same figures, in less time).
-    if (report) report(0.0, "conformity, volume and certification");
-    std::future<void> conformity =
-        std::async(std::launch::async, [&] { result.conformity = checks::check_conformity(result.mesh); });
+    // The geometric error is a serial pass that only reads the mesh, the certification a parallel
+    // loop: they run side by side, each filling its own figures, so that no serial pass leaves a
+    // core idle at the end. The volume comes after the certification: it takes the integrals the
+    // certification found (affine elements, trilinear hexahedra, split pieces) instead of gathering
+    // those elements' nodes again (the same figures, in less time). The conformity check runs
+    // beside this stage and the write (ConformityBeside, run()).
+    if (report) report(0.0, "volume and certification");
     std::future<void> geometric = std::async(std::launch::async, [&] {
       std::vector<int> curved = g.roles.body;  // the far field stays straight-sided (a sphere's too)
       curved.push_back(g.roles.wall);
@@ -789,7 +790,6 @@ void check(const Config& config, const Geometry& g, const surface::SurfaceMeshes
     } catch (...) {
       geometric_error = std::current_exception();
     }
-    conformity.get();  // the errors in the order the passes were written: conformity's first
     if (validity_error) std::rethrow_exception(validity_error);
     if (geometric_error) std::rethrow_exception(geometric_error);
   });
@@ -815,8 +815,9 @@ namespace {
 /// lock (one call at a time).
 void write_mesh_files(mesh::Mesh& mesh, const std::vector<std::string>& formats,
                       const std::vector<std::string>& paths, MeshAfterWrite after_write,
-                      const ProgressCallback& report, std::vector<std::string>& written) {
-  if (formats.empty()) return;
+                      const ProgressCallback& report, std::vector<std::string>& written,
+                      const std::function<void()>& before_restore) {
+  if (formats.empty()) return before_restore();
   io::EquispacedNodes nodes(mesh, io::EquispacedNodes::InPlace{});
   if (after_write == MeshAfterWrite::AsWritten) nodes.leave_resampled();
   std::mutex lock;
@@ -844,12 +845,18 @@ void write_mesh_files(mesh::Mesh& mesh, const std::vector<std::string>& formats,
       if (!first_error) first_error = std::current_exception();
     }
   }
+  try {  // also after a writer's error: what runs beside must end before the positions move back
+    before_restore();
+  } catch (...) {
+    if (!first_error) first_error = std::current_exception();
+  }
   if (first_error) std::rethrow_exception(first_error);
 }
 
-}  // namespace
-
-void write_outputs(const Config& config, Progress& progress, RunResult& result, MeshAfterWrite after_write) {
+// write_outputs, with `conformity` (when given) joined into result.conformity once the mesh files
+// are staged: they are committed only when every check then passes or output.allow_invalid is on.
+void write_outputs_beside(const Config& config, Progress& progress, RunResult& result, MeshAfterWrite after_write,
+                          ConformityBeside* conformity) {
   stage("write", progress, result, [&](const ProgressCallback& report) {
     const std::vector<std::string> paths = output_paths(config.output);
     // Progress: an equal part per mesh file, and one for the pictures and the report.
@@ -870,8 +877,14 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result, 
           config.output.pictures ? mesh_pictures(result.mesh, result.validity, config.output.picture_station)
                                  : std::vector<Picture>{};
       std::vector<std::string> staged_files;
-      write_mesh_files(result.mesh, config.output.formats, staged_paths, after_write,
-                       progress_part(report, 0.0, (parts - 1) / parts), staged_files);
+      const ProgressCallback files_progress = progress_part(report, 0.0, (parts - 1) / parts);
+      write_mesh_files(result.mesh, config.output.formats, staged_paths, after_write, files_progress, staged_files, [&] {
+        if (!conformity) return;
+        if (files_progress) files_progress(1.0, "conformity");
+        result.conformity = conformity->join();
+      });
+      // The staging folder goes with `outputs`: the output folder stays as it was.
+      if (!result.checks_passed() && !config.output.allow_invalid) return;
       for (const std::string& file : staged_files) result.written_files.push_back(outputs.final_path(file));
       if (report) report((parts - 1) / parts, "report.json");
       for (const Picture& picture : pictures) {
@@ -894,6 +907,12 @@ void write_outputs(const Config& config, Progress& progress, RunResult& result, 
       throw;
     }
   });
+}
+
+}  // namespace
+
+void write_outputs(const Config& config, Progress& progress, RunResult& result, MeshAfterWrite after_write) {
+  write_outputs_beside(config, progress, result, after_write, nullptr);
 }
 
 RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_write) {
@@ -920,6 +939,8 @@ RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_wri
     result.mesh = meet_pyfr_pyramid_rule(std::move(result.mesh), progress, result);
     inherited = {};  // elements renumbered: every one is certified on its own
   }
+  // From here the mesh changes no more but for its node positions (the writers' resampling).
+  ConformityBeside conformity(result.mesh);
   check(config, geometry, surfaces, chord, inherited, progress, result);
   inherited = {};  // served the checks; the write needs the room
   // A user writing MSH for PyFR hears now what its importer would refuse.
@@ -927,7 +948,11 @@ RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_wri
                   [](const std::string& f) { return f == "msh41-ascii" || f == "msh22"; }))
     for (const std::string& refusal : pyfr_refusals(result.mesh)) result.warnings.push_back("output: " + refusal);
   result.peak_memory_mb = peak_memory_mb();
-  if (result.checks_passed() || config.output.allow_invalid) write_outputs(config, progress, result, after_write);
+  // The files are staged while the conformity check ends; written when it passes too.
+  if ((result.validity.ok() && result.volume_ok()) || config.output.allow_invalid)
+    write_outputs_beside(config, progress, result, after_write, &conformity);
+  else
+    result.conformity = conformity.join();
   return result;
 }
 

@@ -94,6 +94,34 @@ TEST(PipelineRun, CoarseWingIsAValidConformingHybridMesh) {
   fs::remove_all(dir);
 }
 
+// run() stages the mesh files while its conformity check ends and keeps them only when it passes:
+// write_outputs makes that decision on the result it is given. A result with a conformity problem
+// leaves the folder as it was (an earlier file kept, nothing added), unless invalid meshes are allowed.
+TEST(PipelineRun, AResultThatFailedItsConformityCheckIsWrittenOnlyWhenInvalidMeshesAreAllowed) {
+  CountingProgress progress;
+  const fs::path dir = fresh_directory("conformity_failed");
+  Config config = coarse_config(dir, {"output.formats=[\"msh41\"]"});
+  RunResult r = run(config, progress);
+  ASSERT_TRUE(r.checks_passed());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "keep.txt") << "an earlier result\n";
+  r.conformity.problems.emplace_back();
+  r.written_files.clear();
+  write_outputs(config, progress, r);
+  EXPECT_TRUE(r.written_files.empty());
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  EXPECT_EQ(names, std::vector<std::string>{"keep.txt"});
+
+  config.output.allow_invalid = true;
+  write_outputs(config, progress, r);
+  EXPECT_EQ(r.written_files.size(), 2u);
+  EXPECT_TRUE(fs::is_regular_file(dir / "coarse.msh"));
+  EXPECT_NE(read_text(dir / "report.json").find("\"checks_passed\": false"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // A caller that reads no position after the run may keep the mesh as written: the same files,
 // and a mesh that says what it is (equispaced nodes of the same maps, no CAD attachments), where
 // the default gives back the mesh as made.

@@ -92,8 +92,6 @@ void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses
     p.kind = kind;
     const auto& key = uses.front()->key;
     p.vertices.assign(key.begin(), key.begin() + key_size(key));
-    for (NodeId v : p.vertices) p.centroid += mesh.node(v);
-    p.centroid /= static_cast<double>(p.vertices.size());
     for (const Occurrence* o : elements) p.elements.push_back(o->owner);
     for (const Occurrence* o : boundary) p.boundary_faces.push_back(o->owner);
     std::sort(p.elements.begin(), p.elements.end());
@@ -254,7 +252,7 @@ std::vector<std::size_t> face_aligned_bounds(const std::vector<Occurrence>& all,
 
 }  // namespace
 
-ConformityResult check_conformity(const mesh::Mesh& mesh) {
+ConformityResult check_conformity(const mesh::Mesh& mesh, Located located) {
   // The serial passes' longest: its sort and its faces on all cores (the counts and the sorted
   // problems do not depend on how the faces are shared out).
   const std::size_t parts = std::max(1u, std::thread::hardware_concurrency());
@@ -270,7 +268,16 @@ ConformityResult check_conformity(const mesh::Mesh& mesh) {
     for (FaceProblem& p : part.problems) result.problems.push_back(std::move(p));
   }
   sort_problems(result);
+  if (located == Located::Yes) locate_problems(mesh, result);
   return result;
+}
+
+void locate_problems(const mesh::Mesh& mesh, ConformityResult& result) {
+  for (FaceProblem& p : result.problems) {
+    p.centroid.setZero();
+    for (NodeId v : p.vertices) p.centroid += mesh.node(v);
+    p.centroid /= static_cast<double>(p.vertices.size());
+  }
 }
 
 ConformityResult check_conformity_brute_force(const mesh::Mesh& mesh) {
@@ -295,6 +302,7 @@ ConformityResult check_conformity_brute_force(const mesh::Mesh& mesh) {
     classify(mesh, uses, result);
   }
   sort_problems(result);
+  locate_problems(mesh, result);
   return result;
 }
 

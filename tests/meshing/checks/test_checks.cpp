@@ -119,6 +119,23 @@ TEST(Conformity, FaceSharedByThreeElementsIsReportedWithItsCentroid) {
   expect_same(r, check_conformity_brute_force(t.mesh));
 }
 
+TEST(Conformity, ProblemsCheckedBeforeTheNodesMoveAreLocatedWhereTheNodesAreAtTheEnd) {
+  // Located::Later reads no node position (the pipeline runs it while the writers resample them):
+  // the nodes moved after the check, locate_problems puts the centroid where they are then.
+  TwoTets t(1, false);
+  const NodeId far = t.mesh.add_node(Eigen::Vector3d(0, 0, -2));
+  add(t.mesh, ho::Shape::Tetrahedron, {0, 2, 1, far}, t.midpoints);
+  ConformityResult r = check_conformity(t.mesh, Located::Later);
+  ASSERT_TRUE(has_problem(r, Kind::SharedByMoreThanTwo, {0, 1, 2}));
+  EXPECT_EQ(r.problems.front().centroid, Eigen::Vector3d::Zero());
+  expect_same(r, check_conformity(t.mesh));
+  for (NodeId v = 0; v < t.mesh.num_nodes(); ++v) t.mesh.place_node(v, t.mesh.node(v) + Eigen::Vector3d(10, 0, 0));
+  locate_problems(t.mesh, r);
+  EXPECT_NEAR(r.problems.front().centroid.x(), 10.0 + 1.0 / 3.0, 1e-14);
+  EXPECT_NEAR(r.problems.front().centroid.y(), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(r.problems.front().centroid.z(), 0.0, 1e-15);
+}
+
 TEST(Conformity, DuplicatedBoundaryFaceIsReported) {
   TwoTets t;
   t.mesh.add_boundary_face("other", ho::Shape::Triangle, {0, 1, 3});

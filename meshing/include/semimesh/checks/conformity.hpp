@@ -45,8 +45,16 @@ struct ConformityResult {
   bool ok() const { return problems.empty(); }
 };
 
-/// Hash-based check, O(number of faces).
-ConformityResult check_conformity(const mesh::Mesh& mesh);
+/// Whether check_conformity gives its problems' centroids (FaceProblem::centroid), the one thing
+/// it reads node positions for.
+enum class Located { Yes, Later };
+
+/// Sort-based check, O(number of faces). Located::Later: the problems' centroids stay zero (for a
+/// caller that runs the check while another thread moves the nodes; locate_problems gives them).
+ConformityResult check_conformity(const mesh::Mesh& mesh, Located located = Located::Yes);
+
+/// The centroid of each problem's vertices, at the mesh's current node positions.
+void locate_problems(const mesh::Mesh& mesh, ConformityResult& result);
 
 /// The same verdict by comparing every face with every other one, O(faces^2): a slow reference for
 /// tests on small meshes.

@@ -142,7 +142,10 @@ enum class MeshAfterWrite {
 RunResult run(const Config& config, Progress& progress, MeshAfterWrite after_write = MeshAfterWrite::AsMeshed);
 
 /// The write stage of run(): the mesh files in config order, then report.json, atomically; on a
-/// failure the files this call wrote are removed and the error rethrown. Sets written_files.
+/// failure the files this call wrote are removed and the error rethrown. Sets written_files. A
+/// result whose checks failed (checks_passed()) is written only with config.output.allow_invalid:
+/// else nothing is, and the output folder stays as it was (run() stages the files while its
+/// conformity check ends, and drops them when that check fails).
 void write_outputs(const Config& config, Progress& progress, RunResult& result,
                    MeshAfterWrite after_write = MeshAfterWrite::AsMeshed);
 
