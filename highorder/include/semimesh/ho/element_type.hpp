@@ -33,8 +33,35 @@ enum class NodeSet { Equispaced, GLL };
 
 constexpr int kMaxOrder = 10;
 
-int dimension(Shape shape);
-int num_vertices(Shape shape);
+namespace detail {
+constexpr int kShapes = 7;  ///< the values of Shape, from 0
+[[noreturn]] void throw_unknown_shape(const char* function);
+/// The shapes' edge and face tables (element_type.cpp), by Shape value.
+struct ElementTables {
+  std::array<std::vector<std::array<int, 2>>, kShapes> edges;
+  std::array<std::vector<std::vector<int>>, kShapes> faces;
+};
+ElementTables make_element_tables();
+inline const ElementTables& element_tables() {
+  static const ElementTables tables = make_element_tables();
+  return tables;
+}
+}  // namespace detail
+
+// Inline: the tables are read per element in every pass over a mesh; one function-local static
+// (one guard, read on first use) where a call per lookup and a guard per shape cost ~2 % of a run.
+inline int dimension(Shape shape) {
+  constexpr int kDimension[detail::kShapes] = {1, 2, 2, 3, 3, 3, 3};
+  const auto s = static_cast<unsigned>(shape);
+  if (s >= detail::kShapes) detail::throw_unknown_shape("dimension");
+  return kDimension[s];
+}
+inline int num_vertices(Shape shape) {
+  constexpr int kVertices[detail::kShapes] = {2, 3, 4, 4, 5, 6, 8};
+  const auto s = static_cast<unsigned>(shape);
+  if (s >= detail::kShapes) detail::throw_unknown_shape("num_vertices");
+  return kVertices[s];
+}
 /// Number of nodes of the order-P element (P >= 1).
 int num_nodes(Shape shape, int order);
 std::string to_string(Shape shape);
@@ -43,10 +70,18 @@ std::string to_string(Shape shape);
 Eigen::MatrixX3d reference_vertices(Shape shape);
 
 /// Local edges as vertex pairs (Gmsh's order and direction).
-const std::vector<std::array<int, 2>>& edges(Shape shape);
+inline const std::vector<std::array<int, 2>>& edges(Shape shape) {
+  const auto s = static_cast<unsigned>(shape);
+  if (s >= detail::kShapes) detail::throw_unknown_shape("edges");
+  return detail::element_tables().edges[s];
+}
 /// Local faces of 3D shapes as vertex lists (3 or 4), ordered so that their normal by the right-hand
-/// rule points out of the element (Gmsh's face order).
-const std::vector<std::vector<int>>& faces(Shape shape);
+/// rule points out of the element (Gmsh's face order); none for segments, triangles, quadrilaterals.
+inline const std::vector<std::vector<int>>& faces(Shape shape) {
+  const auto s = static_cast<unsigned>(shape);
+  if (s >= detail::kShapes) detail::throw_unknown_shape("faces");
+  return detail::element_tables().faces[s];
+}
 
 /// Reference coordinates of the nodes of an order-P element in canonical order; row i is node i.
 /// Shape (num_nodes, 3); unused coordinates are 0.
