@@ -524,6 +524,49 @@ void Mesh::assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t
                     const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                     std::vector<NodeId>& out) const {
   const NodeLayout& layout = node_layout(shape, order_);
+  if (!layout.in_blocks)
+    return assemble_by_slots(shape, vertices, edge_ids, reversed, face_ids, codes, first_interior, out);
+  // By runs (NodeLayout::in_blocks): the vertices, each edge's nodes forwards or backwards, each
+  // face's as stored (code 0) or through its slots, the interior's as stored. The entities' first
+  // pool entries are read up front: independent loads, whose cache misses the core overlaps.
+  const int nv = ho::num_vertices(shape);
+  out.resize(layout.slots.size());
+  NodeId* ids = out.data();
+  std::copy_n(vertices, nv, ids);
+  if (order_ < 2) return;  // no edge, face or element owns a node
+  const std::size_t num_edges = ho::edges(shape).size();
+  const bool volume = ho::dimension(shape) == 3;
+  const std::size_t num_faces = volume ? ho::faces(shape).size() : 1;
+  std::array<std::uint32_t, 12> edge_first;
+  std::array<std::uint32_t, 6> face_first;
+  for (std::size_t k = 0; k < num_edges; ++k) edge_first[k] = edges_[edge_ids[k]].first_node;
+  for (std::size_t k = 0; k < num_faces; ++k) face_first[k] = faces_[face_ids[k]].first_node;
+  const auto per_edge = static_cast<std::size_t>(edge_interior_count(order_));
+  std::size_t at = static_cast<std::size_t>(nv);
+  for (std::size_t k = 0; k < num_edges; ++k, at += per_edge) {
+    const NodeId* run = edge_pool_.data() + edge_first[k];
+    if ((reversed >> k) & 1u)
+      std::reverse_copy(run, run + per_edge, ids + at);
+    else
+      std::copy_n(run, per_edge, ids + at);
+  }
+  for (std::size_t f = 0; f < num_faces; ++f) {
+    const int n = volume ? static_cast<int>(ho::faces(shape)[f].size()) : nv;
+    const auto count = static_cast<std::size_t>(face_interior_count(n, order_));
+    const NodeId* run = face_pool_.data() + face_first[f];
+    if (codes[f] == 0)
+      std::copy_n(run, count, ids + at);
+    else
+      for (std::size_t j = 0; j < count; ++j) ids[at + j] = run[layout.slots[at + j].slot[codes[f]]];
+    at += count;
+  }
+  std::copy_n(interior_pool_.data() + first_interior, layout.num_interior, ids + at);
+}
+
+void Mesh::assemble_by_slots(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids,
+                             std::uint16_t reversed, const std::uint32_t* face_ids, const std::uint8_t* codes,
+                             std::uint32_t first_interior, std::vector<NodeId>& out) const {
+  const NodeLayout& layout = node_layout(shape, order_);
   // The edges' and faces' first pool entries are read up front: independent loads, whose cache
   // misses the core overlaps, where reading them slot by slot made it wait on the misses in turn.
   std::array<std::uint32_t, 12> edge_first;
@@ -569,6 +612,22 @@ void Mesh::element_nodes_at(std::size_t element, const std::vector<int>& positio
       case NodeSlot::Interior: out[k] = interior_pool_[el.first_node + s.slot[0]]; break;
     }
   }
+}
+
+std::vector<NodeId> Mesh::element_nodes_by_slots(std::size_t element) const {
+  const Element& el = elements_.at(element);
+  std::vector<NodeId> out;
+  assemble_by_slots(el.shape, el.vertices.data(), el.edges.data(), el.edge_reversed, el.faces.data(),
+                    el.face_orientation.data(), el.first_node, out);
+  return out;
+}
+
+std::vector<NodeId> Mesh::boundary_face_nodes_by_slots(std::size_t boundary_face) const {
+  const BoundaryFace& bf = boundary_.at(boundary_face);
+  std::vector<NodeId> out;
+  assemble_by_slots(bf.shape, bf.vertices.data(), bf.edges.data(), bf.edge_reversed, &bf.face, &bf.face_orientation,
+                    0, out);
+  return out;
 }
 
 std::vector<NodeId> Mesh::element_nodes(std::size_t element) const {

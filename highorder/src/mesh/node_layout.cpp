@@ -82,6 +82,32 @@ std::vector<FaceWeights> face_entity_weights(int num_face_vertices, int order) {
   return out;
 }
 
+// Whether the layout's slots come in the blocks NodeLayout::in_blocks describes.
+bool slots_in_blocks(const NodeLayout& layout) {
+  const ho::Shape shape = layout.shape;
+  const int P = layout.order, nv = ho::num_vertices(shape);
+  std::size_t at = 0;
+  const auto next = [&](NodeSlot::Kind kind, int local, int forward, int backward) {
+    if (at >= layout.slots.size()) return false;
+    const NodeSlot& s = layout.slots[at++];
+    return s.kind == kind && s.local == local && s.slot[0] == forward && (backward < 0 || s.slot[1] == backward);
+  };
+  for (int v = 0; v < nv; ++v)
+    if (!next(NodeSlot::Vertex, v, 0, -1)) return false;
+  for (int e = 0; e < static_cast<int>(ho::edges(shape).size()); ++e)
+    for (int j = 0; j < P - 1; ++j)
+      if (!next(NodeSlot::Edge, e, j, P - 2 - j)) return false;
+  const bool volume = ho::dimension(shape) == 3;
+  for (int f = 0; f < (volume ? static_cast<int>(ho::faces(shape).size()) : 1); ++f) {
+    const int n = volume ? static_cast<int>(ho::faces(shape)[f].size()) : nv;
+    for (int j = 0; j < face_interior_count(n, P); ++j)
+      if (!next(NodeSlot::Face, f, j, -1)) return false;
+  }
+  for (int j = 0; j < layout.num_interior; ++j)
+    if (!next(NodeSlot::Interior, 0, j, -1)) return false;
+  return at == layout.slots.size();
+}
+
 std::unique_ptr<NodeLayout> build_layout(ho::Shape shape, int order) {
   auto layout = std::make_unique<NodeLayout>();
   layout->shape = shape;
@@ -155,6 +181,7 @@ std::unique_ptr<NodeLayout> build_layout(ho::Shape shape, int order) {
     }
     layout->slots.push_back(slot);
   }
+  layout->in_blocks = slots_in_blocks(*layout);
   return layout;
 }
 

@@ -24,6 +24,19 @@ using semimesh::mesh::NodeId;
 Eigen::Vector3d straight_map(Shape shape, const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3d& r) {
   if (shape == Shape::Tetrahedron) return (1 - r[0] - r[1] - r[2]) * v[0] + r[0] * v[1] + r[1] * v[2] + r[2] * v[3];
   if (shape == Shape::Triangle) return (1 - r[0] - r[1]) * v[0] + r[0] * v[1] + r[1] * v[2];
+  if (shape == Shape::Prism) {  // triangle (0,0) (1,0) (0,1) times [-1, 1]
+    const double bottom = (1 - r[2]) / 2, top = (1 + r[2]) / 2;
+    const double w[3] = {1 - r[0] - r[1], r[0], r[1]};
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) x += w[k] * (bottom * v[k] + top * v[k + 3]);
+    return x;
+  }
+  if (shape == Shape::Pyramid) {  // base [-1,1]^2 at z = 0 (vertices counter-clockwise from (-1,-1)), apex (0,0,1)
+    if (r[2] > 1 - 1e-12) return v[4];
+    const double s = r[0] / (1 - r[2]), t = r[1] / (1 - r[2]);
+    const std::vector<Eigen::Vector3d> base(v.begin(), v.begin() + 4);
+    return (1 - r[2]) * straight_map(Shape::Quadrilateral, base, Eigen::Vector3d(s, t, 0)) + r[2] * v[4];
+  }
   if (shape == Shape::Quadrilateral)  // on [-1,1]^2, vertices counter-clockwise from (-1,-1)
     return ((1 - r[0]) * (1 - r[1]) * v[0] + (1 + r[0]) * (1 - r[1]) * v[1] + (1 + r[0]) * (1 + r[1]) * v[2] +
             (1 - r[0]) * (1 + r[1]) * v[3]) / 4.0;
@@ -150,6 +163,83 @@ TEST(MeshModel, TwoHexesShareAQuadInEveryOrientation) {
                                                      mesh.elements()[1].face_orientation.end()));
     }
   EXPECT_GE(distinct_faces_seen.size(), 4u);  // the shared face really met several orientations
+}
+
+// The vertex permutations that map the shape's edges onto its edges and its faces onto its faces
+// (its rotations and reflections).
+std::vector<std::vector<int>> symmetries(Shape shape) {
+  const int n = semimesh::ho::num_vertices(shape);
+  const auto sorted = [](std::vector<int> v) {
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  std::set<std::vector<int>> edges, faces;
+  for (const auto& e : semimesh::ho::edges(shape)) edges.insert(sorted({e[0], e[1]}));
+  for (const auto& f : semimesh::ho::faces(shape)) faces.insert(sorted(f));
+  std::vector<int> perm(n);
+  std::iota(perm.begin(), perm.end(), 0);
+  std::vector<std::vector<int>> out;
+  do {
+    bool kept = true;
+    for (const auto& e : semimesh::ho::edges(shape)) kept = kept && edges.count(sorted({perm[e[0]], perm[e[1]]}));
+    for (const auto& f : semimesh::ho::faces(shape)) {
+      std::vector<int> image;
+      for (int v : f) image.push_back(perm[v]);
+      kept = kept && faces.count(sorted(image));
+    }
+    if (kept) out.push_back(perm);
+  } while (std::next_permutation(perm.begin(), perm.end()));
+  return out;
+}
+
+// Mesh::assemble gathers an element's nodes by runs (its vertices, each edge's nodes forwards or
+// backwards, each face's as stored or through its slots, its interior's); its reference gathers
+// them slot by slot. Pinned together: an element and the same element listed from every symmetry
+// of its shape (so its edges meet both directions and its faces every orientation code), at orders
+// 1 to 5, and boundary faces on its faces listed from each of their rotations and reflections.
+TEST(MeshModel, AssemblyByRunsGivesTheSlotBySlotReferencesNodes) {
+  const std::map<Shape, std::vector<Eigen::Vector3d>> vertices{
+      {Shape::Tetrahedron, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},
+      {Shape::Pyramid, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.7}}},
+      {Shape::Prism, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}},
+      {Shape::Hexahedron, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}}};
+  int elements = 0, boundary_faces = 0;
+  std::set<int> codes_met;
+  for (const auto& [shape, v] : vertices)
+    for (int order = 1; order <= 5; ++order) {
+      Mesh mesh(order);
+      NodeMaker make{mesh, {}, {}};
+      mesh.add_element(shape, make.element(shape, order, v));
+      for (const std::vector<int>& perm : symmetries(shape)) {
+        std::vector<Eigen::Vector3d> moved;
+        for (int k : perm) moved.push_back(v[k]);
+        const std::vector<NodeId> ids = make.element(shape, order, moved);
+        const std::size_t e = mesh.add_element(shape, ids);
+        EXPECT_EQ(mesh.element_nodes(e), ids);
+        for (int f = 0; f < static_cast<int>(semimesh::ho::faces(shape).size()); ++f)
+          codes_met.insert(mesh.elements()[e].face_orientation[f]);
+      }
+      for (const auto& f : semimesh::ho::faces(shape)) {
+        const Shape face_shape = f.size() == 3 ? Shape::Triangle : Shape::Quadrilateral;
+        std::vector<Eigen::Vector3d> corners;
+        for (int k : f) corners.push_back(v[k]);
+        for (const std::vector<int>& perm : symmetries(face_shape)) {
+          std::vector<Eigen::Vector3d> moved;
+          for (int k : perm) moved.push_back(corners[k]);
+          const std::vector<NodeId> ids = make.element(face_shape, order, moved);
+          const std::size_t b = mesh.add_boundary_face("skin", face_shape, ids);
+          EXPECT_EQ(mesh.boundary_face_nodes(b), ids);
+          EXPECT_EQ(mesh.boundary_face_nodes(b), mesh.boundary_face_nodes_by_slots(b));
+          ++boundary_faces;
+        }
+      }
+      for (std::size_t e = 0; e < mesh.elements().size(); ++e, ++elements)
+        EXPECT_EQ(mesh.element_nodes(e), mesh.element_nodes_by_slots(e)) << semimesh::ho::to_string(shape) << " order "
+                                                                          << order << " element " << e;
+    }
+  EXPECT_EQ(codes_met.size(), 8u);  // every orientation code of a quadrilateral (a triangle's are among them)
+  EXPECT_EQ(elements, 5 * (1 + 24) + 5 * (1 + 8) + 5 * (1 + 12) + 5 * (1 + 48));
+  EXPECT_EQ(boundary_faces, 5 * (4 * 6) + 5 * (4 * 6 + 8) + 5 * (2 * 6 + 3 * 8) + 5 * (6 * 8));
 }
 
 TEST(MeshModel, SharedNodesAreOwnedOnceEvenIfGivenTwice) {

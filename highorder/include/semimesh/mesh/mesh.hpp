@@ -229,6 +229,10 @@ class Mesh {
   void element_coordinates(std::size_t element, Eigen::MatrixX3d& out) const;
   /// Node ids of a boundary face in canonical order of its own vertex order.
   std::vector<NodeId> boundary_face_nodes(std::size_t boundary_face) const;
+  /// element_nodes and boundary_face_nodes as their slow reference gathers them (node by node
+  /// through its layout slot, where the fast path copies runs): the tests pin them together.
+  std::vector<NodeId> element_nodes_by_slots(std::size_t element) const;
+  std::vector<NodeId> boundary_face_nodes_by_slots(std::size_t boundary_face) const;
   /// Node ids along an edge, vertices included, from vertices[0] to vertices[1]; shape (P+1).
   std::vector<NodeId> edge_nodes(std::size_t edge) const;
   void edge_nodes(std::size_t edge, std::vector<NodeId>& out) const;
@@ -318,6 +322,10 @@ class Mesh {
   void assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids, std::uint16_t reversed,
                 const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                 std::vector<NodeId>& out) const;
+  /// assemble's reference: every node through its layout slot, one at a time.
+  void assemble_by_slots(ho::Shape shape, const NodeId* vertices, const std::uint32_t* edge_ids,
+                         std::uint16_t reversed, const std::uint32_t* face_ids, const std::uint8_t* codes,
+                         std::uint32_t first_interior, std::vector<NodeId>& out) const;
 
   bool has_face_key(std::uint32_t face, const std::array<NodeId, 4>& sorted_vertices) const;
   std::uint64_t edge_hash(std::uint32_t edge) const;
