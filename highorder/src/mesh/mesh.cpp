@@ -524,9 +524,7 @@ void Mesh::assemble(ho::Shape shape, const NodeId* vertices, const std::uint32_t
                     const std::uint32_t* face_ids, const std::uint8_t* codes, std::uint32_t first_interior,
                     std::vector<NodeId>& out) const {
   const NodeLayout& layout = node_layout(shape, order_);
-  if (!layout.in_blocks)
-    return assemble_by_slots(shape, vertices, edge_ids, reversed, face_ids, codes, first_interior, out);
-  // By runs (NodeLayout::in_blocks): the vertices, each edge's nodes forwards or backwards, each
+  // By runs (the blocks NodeLayout guarantees): the vertices, each edge's nodes forwards or backwards, each
   // face's as stored (code 0) or through its slots, the interior's as stored. The entities' first
   // pool entries are read up front: independent loads, whose cache misses the core overlaps.
   const int nv = ho::num_vertices(shape);
@@ -567,24 +565,16 @@ void Mesh::assemble_by_slots(ho::Shape shape, const NodeId* vertices, const std:
                              std::uint16_t reversed, const std::uint32_t* face_ids, const std::uint8_t* codes,
                              std::uint32_t first_interior, std::vector<NodeId>& out) const {
   const NodeLayout& layout = node_layout(shape, order_);
-  // The edges' and faces' first pool entries are read up front: independent loads, whose cache
-  // misses the core overlaps, where reading them slot by slot made it wait on the misses in turn.
-  std::array<std::uint32_t, 12> edge_first;
-  std::array<std::uint32_t, 6> face_first;
-  if (order_ >= 2) {  // else no edge or face owns a node
-    for (std::size_t k = 0; k < ho::edges(shape).size(); ++k) edge_first[k] = edges_[edge_ids[k]].first_node;
-    const std::size_t num_faces = ho::dimension(shape) == 3 ? ho::faces(shape).size() : 1;
-    for (std::size_t k = 0; k < num_faces; ++k) face_first[k] = faces_[face_ids[k]].first_node;
-  }
   out.resize(layout.slots.size());
-  NodeId* ids = out.data();
   for (std::size_t i = 0; i < layout.slots.size(); ++i) {
     const NodeSlot& s = layout.slots[i];
     switch (s.kind) {
-      case NodeSlot::Vertex: ids[i] = vertices[s.local]; break;
-      case NodeSlot::Edge: ids[i] = edge_pool_[edge_first[s.local] + s.slot[(reversed >> s.local) & 1u]]; break;
-      case NodeSlot::Face: ids[i] = face_pool_[face_first[s.local] + s.slot[codes[s.local]]]; break;
-      case NodeSlot::Interior: ids[i] = interior_pool_[first_interior + s.slot[0]]; break;
+      case NodeSlot::Vertex: out[i] = vertices[s.local]; break;
+      case NodeSlot::Edge:
+        out[i] = edge_pool_[edges_[edge_ids[s.local]].first_node + s.slot[(reversed >> s.local) & 1u]];
+        break;
+      case NodeSlot::Face: out[i] = face_pool_[faces_[face_ids[s.local]].first_node + s.slot[codes[s.local]]]; break;
+      case NodeSlot::Interior: out[i] = interior_pool_[first_interior + s.slot[0]]; break;
     }
   }
 }

@@ -82,7 +82,7 @@ std::vector<FaceWeights> face_entity_weights(int num_face_vertices, int order) {
   return out;
 }
 
-// Whether the layout's slots come in the blocks NodeLayout::in_blocks describes.
+// Whether the layout's slots come in the blocks NodeLayout::slots describes.
 bool slots_in_blocks(const NodeLayout& layout) {
   const ho::Shape shape = layout.shape;
   const int P = layout.order, nv = ho::num_vertices(shape);
@@ -181,7 +181,9 @@ std::unique_ptr<NodeLayout> build_layout(ho::Shape shape, int order) {
     }
     layout->slots.push_back(slot);
   }
-  layout->in_blocks = slots_in_blocks(*layout);
+  if (!slots_in_blocks(*layout))
+    throw std::logic_error("node_layout: the nodes of the order-" + std::to_string(order) + " " + ho::to_string(shape) +
+                           " are not in Gmsh's blocks (vertices, edges, faces, interior), which Mesh relies on");
   return layout;
 }
 

@@ -1,5 +1,6 @@
 // Mesh data model: shared entities, orientation of shared faces, canonical assembly, CAD setter.
 #include "semimesh/mesh/mesh.hpp"
+#include "semimesh/mesh/node_layout.hpp"
 
 #include <gtest/gtest.h>
 
@@ -238,6 +239,11 @@ TEST(MeshModel, AssemblyByRunsGivesTheSlotBySlotReferencesNodes) {
                                                                           << order << " element " << e;
     }
   EXPECT_EQ(codes_met.size(), 8u);  // every orientation code of a quadrilateral (a triangle's are among them)
+  // The runs are those of every layout the mesh can use (node_layout refuses one out of blocks).
+  for (Shape shape : {Shape::Triangle, Shape::Quadrilateral, Shape::Tetrahedron, Shape::Pyramid, Shape::Prism,
+                      Shape::Hexahedron})
+    for (int order = 1; order <= semimesh::ho::kMaxOrder; ++order)
+      EXPECT_NO_THROW(semimesh::mesh::node_layout(shape, order)) << semimesh::ho::to_string(shape) << " " << order;
   EXPECT_EQ(elements, 5 * (1 + 24) + 5 * (1 + 8) + 5 * (1 + 12) + 5 * (1 + 48));
   EXPECT_EQ(boundary_faces, 5 * (4 * 6) + 5 * (4 * 6 + 8) + 5 * (2 * 6 + 3 * 8) + 5 * (6 * 8));
 }

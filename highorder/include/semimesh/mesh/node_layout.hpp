@@ -43,12 +43,11 @@ struct NodeLayout {
   ho::Shape shape{};
   int order = 1;
   int num_interior = 0;     ///< nodes owned by the element itself (0 for 2D shapes)
-  std::vector<NodeSlot> slots;  ///< one per canonical node, shape (num_nodes)
-  /// The slots in blocks, as Gmsh's order gives them: the vertices in order, then each edge's
-  /// P - 1 nodes in order (slot j as stored, P - 2 - j backwards), then each face's in order (slot
-  /// j at code 0), then the interior's in order. Found when the layout is built (true for every
-  /// shape and order so far); lets Mesh assemble an element's nodes by runs instead of slot by slot.
-  bool in_blocks = false;
+  /// One per canonical node, shape (num_nodes). In blocks, as Gmsh's order gives them (checked
+  /// when the layout is built): the vertices in order, then each edge's P - 1 nodes in order (slot
+  /// j as stored, P - 2 - j backwards), then each face's in order (slot j at code 0), then the
+  /// interior's in order; Mesh gathers an element's nodes by these runs.
+  std::vector<NodeSlot> slots;
 };
 
 /// Layout of the order-P element of `shape`; computed once per (shape, order) and cached.
