@@ -509,8 +509,10 @@ mesh::Mesh Curver::run(CurvingStats* stats) {
   std::size_t all_nodes = in_.num_nodes() + in_.edges().size() * static_cast<std::size_t>(params_.order - 1);
   for (const mesh::Face& face : in_.faces())
     all_nodes += static_cast<std::size_t>(mesh::face_interior_count(face.num_vertices, params_.order));
-  for (const mesh::Element& el : in_.elements()) all_nodes += interior_node_count(el.shape, params_.order);
-  out_.reserve_nodes(all_nodes);
+  std::size_t interior_nodes = 0;
+  for (const mesh::Element& el : in_.elements()) interior_nodes += interior_node_count(el.shape, params_.order);
+  out_.reserve_nodes(all_nodes + interior_nodes);
+  out_.reserve_elements(in_.elements().size(), interior_nodes);
   out_.copy_nodes(in_);
   for (const std::string& g : in_.group_names()) out_.group_index(g);
   out_.copy_regions_from(in_);

@@ -291,6 +291,9 @@ void Mesh::adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_no
   edge_pool_ = edge_nodes;
   faces_ = linear.faces_;
   face_pool_.clear();
+  std::size_t pool_size = 0;
+  for (const Face& face : faces_) pool_size += static_cast<std::size_t>(face_interior_count(face.num_vertices, order_));
+  face_pool_.reserve(pool_size);
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const auto count = static_cast<std::size_t>(face_interior_count(faces_[f].num_vertices, order_));
     faces_[f].first_node = static_cast<std::uint32_t>(face_pool_.size());

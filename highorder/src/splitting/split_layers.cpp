@@ -226,6 +226,8 @@ class Splitter {
   /// The pieces of one split element, with the bounds certify_pieces derived for them when asked.
   void add_pieces(std::size_t element, const std::vector<std::vector<NodeId>>& pieces,
                   const std::vector<std::optional<JacobianBounds>>& bounds, std::vector<InheritedBounds>* inherited);
+  /// Each inherited entry's element_fingerprint, taken from the finished output.
+  void fingerprint_pieces(std::vector<InheritedBounds>& inherited) const;
   /// Each input boundary face: one per piece lying on it when its element's split cuts it, else copied.
   void add_boundary_faces(const std::vector<LayerSplit>& split, const std::vector<int>& position,
                           const std::vector<std::size_t>& first_out);
@@ -850,6 +852,7 @@ mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<Split
   if (inherited) inherited->reserve(elements);  // an upper bound: the room never filled is never resident
   const std::vector<std::size_t> first_out = add_elements(position, split.size(), first_piece, progress, inherited);
   add_boundary_faces(split, position, first_out);  // the pieces made their faces: these link to them
+  if (inherited) fingerprint_pieces(*inherited);
   if (stats) *stats = split_stats();
   return std::move(out_);
 }
@@ -1029,11 +1032,18 @@ void Splitter::add_pieces(std::size_t element, const std::vector<std::vector<Nod
   for (std::size_t piece = 0; piece < pieces.size(); ++piece) {
     out_.add_element(in_.elements()[element].shape, pieces[piece], in_.elements()[element].region);
     if (!inherited || piece >= bounds.size() || !bounds[piece]) continue;
-    const std::size_t made = out_.elements().size() - 1;
-    // The fingerprint of the piece as made: its shared nodes may come from a neighbour's
-    // evaluation of the same point (the same up to rounding, which kPieceMargin covers).
-    inherited->push_back({made, element_fingerprint(out_, made), *bounds[piece]});
+    inherited->push_back({out_.elements().size() - 1, 0, *bounds[piece]});  // fingerprinted at the end
   }
+}
+
+// The fingerprint of each piece as made, on all cores once the split is done (its nodes no longer
+// move: the serial pass that makes the pieces had computed them one by one). Its shared nodes may
+// come from a neighbour's evaluation of the same point (the same up to rounding, which kPieceMargin
+// covers).
+void Splitter::fingerprint_pieces(std::vector<InheritedBounds>& inherited) const {
+  detail::parallel_for(inherited.size(), true, [&](std::size_t i) {
+    inherited[i].fingerprint = element_fingerprint(out_, inherited[i].element);
+  });
 }
 
 // Boundary faces: split with the element whose face they are when its split cuts them (each

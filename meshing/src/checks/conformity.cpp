@@ -81,8 +81,42 @@ void face_node_set(const mesh::Mesh& mesh, const Occurrence& o, std::vector<Node
   std::sort(nodes.begin(), nodes.end());
 }
 
+// The entities a use of a face reads its nodes from (face_sources): the face and its edges, sorted.
+struct UseSources {
+  std::uint32_t face = 0;
+  std::array<std::uint32_t, 4> edges{};
+  bool operator==(const UseSources& other) const { return face == other.face && edges == other.edges; }
+};
+
+// False when the layout reads more than those entities' whole runs (then the nodes are compared).
+bool use_sources(const mesh::Mesh& mesh, const Occurrence& o, UseSources& out) {
+  const auto sort_edges = [&](std::size_t n) { std::sort(out.edges.begin(), out.edges.begin() + static_cast<long>(n)); };
+  out.edges.fill(0);
+  if (o.boundary) {
+    const mesh::BoundaryFace& face = mesh.boundary_faces()[o.owner];
+    const detail::FaceSources& sources = detail::face_sources(face.shape, mesh.order(), mesh.node_set()).front();
+    if (!sources.whole) return false;
+    out.face = face.face;
+    for (std::size_t k = 0; k < sources.edges.size(); ++k) out.edges[k] = face.edges[sources.edges[k]];
+    sort_edges(sources.edges.size());
+    return true;
+  }
+  const mesh::Element& element = mesh.elements()[o.owner];
+  const detail::FaceSources& sources = detail::face_sources(element.shape, mesh.order(), mesh.node_set())[o.local];
+  if (!sources.whole) return false;
+  out.face = element.faces[o.local];
+  for (std::size_t k = 0; k < sources.edges.size(); ++k) out.edges[k] = element.edges[sources.edges[k]];
+  sort_edges(sources.edges.size());
+  return true;
+}
+
+// Whether classify may take uses that read the same entities as giving the same nodes (the fast
+// check), or gathers and compares every use's nodes (the brute-force reference).
+enum class Nodes { SameEntitiesSameNodes, CompareAll };
+
 // Classifies the uses of one face; adds at most one problem per face (the most severe).
-void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses, ConformityResult& result) {
+void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses, ConformityResult& result,
+              Nodes nodes = Nodes::SameEntitiesSameNodes) {
   thread_local std::vector<const Occurrence*> elements, boundary;  // per face: no allocation each
   elements.clear(), boundary.clear();
   for (const Occurrence* o : uses) (o->boundary ? boundary : elements).push_back(o);
@@ -100,6 +134,14 @@ void classify(const mesh::Mesh& mesh, const std::vector<const Occurrence*>& uses
   };
   auto nodes_differ = [&]() {
     if (mesh.order() == 1) return false;  // the nodes are the vertices, equal by construction of the key
+    // Uses that read the same entities' whole runs give the same set (their vertices are the key's):
+    // no need to gather it. Uses naming other entities are compared node by node.
+    thread_local UseSources first_sources, other_sources;
+    if (nodes == Nodes::SameEntitiesSameNodes && use_sources(mesh, *uses.front(), first_sources) &&
+        std::all_of(uses.begin() + 1, uses.end(), [&](const Occurrence* o) {
+          return use_sources(mesh, *o, other_sources) && other_sources == first_sources;
+        }))
+      return false;
     thread_local std::vector<NodeId> first, other;
     face_node_set(mesh, *uses.front(), first);
     return std::any_of(uses.begin() + 1, uses.end(), [&](const Occurrence* o) {
@@ -299,7 +341,7 @@ ConformityResult check_conformity_brute_force(const mesh::Mesh& mesh) {
         uses.push_back(&all[j]);
       }
     }
-    classify(mesh, uses, result);
+    classify(mesh, uses, result, Nodes::CompareAll);
   }
   sort_problems(result);
   locate_problems(mesh, result);

@@ -3,6 +3,9 @@
 #include "semimesh/checks/validity.hpp"
 #include "semimesh/checks/volume.hpp"
 #include "semimesh/ho/basis.hpp"
+#include "semimesh/mesh/node_layout.hpp"
+
+#include "face_nodes.hpp"  // meshing/src/checks
 
 #include <gtest/gtest.h>
 
@@ -236,6 +239,62 @@ TEST(Conformity, BruteForceAgreesOnALargerDamagedMesh) {
   const ConformityResult fast = check_conformity(m);
   EXPECT_FALSE(fast.ok());
   expect_same(fast, check_conformity_brute_force(m));
+}
+
+// The conformity check takes two uses of a face that name the same face and edge entities as giving
+// the same nodes, without gathering them: true only when a face's nodes are its vertices and the
+// whole runs of those entities (face_sources). Pinned on one element of every shape, order and node
+// set, and on boundary faces of both shapes, against the nodes element_nodes_at and
+// boundary_face_nodes gather.
+std::vector<NodeId> whole_runs(const Mesh& m, std::vector<NodeId> vertices, const std::vector<std::uint32_t>& edges,
+                               std::uint32_t face) {
+  for (std::uint32_t e : edges) {
+    const std::vector<NodeId> along = m.edge_nodes(e);  // its two ends around its inner nodes
+    vertices.insert(vertices.end(), along.begin() + 1, along.end() - 1);
+  }
+  const mesh::Face& f = m.faces()[face];
+  const int count = mesh::face_interior_count(f.num_vertices, m.order());
+  for (int k = 0; k < count; ++k) vertices.push_back(m.face_pool()[f.first_node + static_cast<std::size_t>(k)]);
+  std::sort(vertices.begin(), vertices.end());
+  return vertices;
+}
+
+Mesh affine_element(ho::Shape shape, int order, ho::NodeSet set);
+
+TEST(Conformity, AFacesNodesAreItsVerticesAndTheWholeRunsOfItsEntities) {
+  for (ho::NodeSet set : {ho::NodeSet::Equispaced, ho::NodeSet::GLL})
+    for (ho::Shape shape : {ho::Shape::Tetrahedron, ho::Shape::Pyramid, ho::Shape::Prism, ho::Shape::Hexahedron})
+      for (int order = 1; order <= 5; ++order) {
+        SCOPED_TRACE(ho::to_string(shape) + " order " + std::to_string(order));
+        Mesh m = affine_element(shape, order, set);
+        const mesh::Element& el = m.elements()[0];
+        const auto& sources = detail::face_sources(shape, order, set);
+        ASSERT_EQ(sources.size(), ho::faces(shape).size());
+        for (std::size_t f = 0; f < sources.size(); ++f) {
+          EXPECT_TRUE(sources[f].whole);
+          std::vector<NodeId> gathered, vertices;
+          m.element_nodes_at(0, detail::nodes_on_faces(shape, order, set)[f], gathered);
+          std::sort(gathered.begin(), gathered.end());
+          for (int v : ho::faces(shape)[f]) vertices.push_back(el.vertices[static_cast<std::size_t>(v)]);
+          std::vector<std::uint32_t> edges;
+          for (int k : sources[f].edges) edges.push_back(el.edges[static_cast<std::size_t>(k)]);
+          EXPECT_EQ(gathered, whole_runs(m, vertices, edges, el.faces[f])) << "face " << f;
+        }
+        // Each face also as a boundary face (its nodes as the face entity stores them).
+        for (std::size_t f = 0; f < ho::faces(shape).size(); ++f) {
+          const ho::Shape face_shape = ho::faces(shape)[f].size() == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral;
+          const std::size_t b = m.add_boundary_face("outer", face_shape, m.face_nodes(el.faces[f]));
+          const mesh::BoundaryFace& bf = m.boundary_faces()[b];
+          const detail::FaceSources& own = detail::face_sources(face_shape, order, set).front();
+          EXPECT_TRUE(own.whole);
+          std::vector<NodeId> gathered = m.boundary_face_nodes(b), vertices;
+          std::sort(gathered.begin(), gathered.end());
+          for (int v = 0; v < ho::num_vertices(face_shape); ++v) vertices.push_back(bf.vertices[static_cast<std::size_t>(v)]);
+          std::vector<std::uint32_t> edges;
+          for (int k : own.edges) edges.push_back(bf.edges[static_cast<std::size_t>(k)]);
+          EXPECT_EQ(gathered, whole_runs(m, vertices, edges, bf.face)) << "boundary face " << b;
+        }
+      }
 }
 
 // Unit-measure reference elements mapped by x -> A x + b (det A = 2).

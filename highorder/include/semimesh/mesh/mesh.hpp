@@ -188,6 +188,13 @@ class Mesh {
   void reserve_lookups(std::size_t num_edges, std::size_t num_faces);
   /// Reserves storage for this many nodes (avoids regrowing; optional).
   void reserve_nodes(std::size_t num_nodes) { nodes_.reserve(num_nodes); }
+  /// Reserves storage for exactly this many elements holding this many interior nodes in all, for
+  /// a builder that knows its counts (optional): no regrowth copies them, and no room is touched
+  /// that the mesh will not use.
+  void reserve_elements(std::size_t num_elements, std::size_t num_interior_nodes) {
+    elements_.reserve(num_elements);
+    interior_pool_.reserve(num_interior_nodes);
+  }
   /// Takes the nodes and CAD attachments of `other` (same ids; this mesh must have none), leaving it
   /// without nodes: for a stage that builds a new mesh on an old one's nodes and reads the old one's
   /// topology only (ho::split_layers).

@@ -5,6 +5,7 @@
 
 #include "semimesh/mesh/mesh.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -19,19 +20,17 @@ struct OpenFace {
 /// The open faces of `m`, by face id.
 inline std::vector<OpenFace> open_faces(const Mesh& m) {
   std::vector<std::uint8_t> uses(m.faces().size(), 0);  // 0, 1, 2: two or more (or a boundary face)
-  std::vector<OpenFace> user(m.faces().size());
+  for (const Element& el : m.elements())
+    for (std::uint32_t f = 0; f < ho::faces(el.shape).size(); ++f) uses[el.faces[f]] += uses[el.faces[f]] < 2;
+  for (const BoundaryFace& b : m.boundary_faces()) uses[b.face] = 2;
+  // The users of the few faces used once, found again (no user kept for every face).
+  std::vector<OpenFace> open;
   for (std::uint32_t e = 0; e < m.elements().size(); ++e) {
     const Element& el = m.elements()[e];
-    for (std::uint32_t f = 0; f < ho::faces(el.shape).size(); ++f) {
-      const std::uint32_t face = el.faces[f];
-      if (uses[face] == 0) user[face] = {face, e, static_cast<std::uint8_t>(f)};
-      if (uses[face] < 2) ++uses[face];
-    }
+    for (std::uint32_t f = 0; f < ho::faces(el.shape).size(); ++f)
+      if (uses[el.faces[f]] == 1) open.push_back({el.faces[f], e, static_cast<std::uint8_t>(f)});
   }
-  for (const BoundaryFace& b : m.boundary_faces()) uses[b.face] = 2;
-  std::vector<OpenFace> open;
-  for (std::size_t face = 0; face < uses.size(); ++face)
-    if (uses[face] == 1) open.push_back(user[face]);
+  std::sort(open.begin(), open.end(), [](const OpenFace& a, const OpenFace& b) { return a.face < b.face; });
   return open;
 }
 

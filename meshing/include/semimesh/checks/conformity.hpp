@@ -56,8 +56,9 @@ ConformityResult check_conformity(const mesh::Mesh& mesh, Located located = Loca
 /// The centroid of each problem's vertices, at the mesh's current node positions.
 void locate_problems(const mesh::Mesh& mesh, ConformityResult& result);
 
-/// The same verdict by comparing every face with every other one, O(faces^2): a slow reference for
-/// tests on small meshes.
+/// The same verdict by comparing every face with every other one, O(faces^2), and every use's
+/// nodes node by node (check_conformity takes uses that read the same face and edge entities as
+/// giving the same nodes): a slow reference for tests on small meshes.
 ConformityResult check_conformity_brute_force(const mesh::Mesh& mesh);
 
 }  // namespace semimesh::checks
