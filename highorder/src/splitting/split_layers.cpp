@@ -814,29 +814,32 @@ FaceCuts Splitter::cuts(std::size_t element, std::uint32_t face) const {
 
 void Splitter::check_side_faces(const std::vector<LayerSplit>& split) {
   // Elements using each face (at most two in a conforming mesh).
-  std::vector<std::array<long, 2>> users(in_.faces().size(), {-1, -1});
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<std::array<std::uint32_t, 2>> users(in_.faces().size(), {kNone, kNone});
   for (std::size_t e = 0; e < in_.elements().size(); ++e) {
     const mesh::Element& el = in_.elements()[e];
     for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
       auto& u = users[el.faces[f]];
-      (u[0] < 0 ? u[0] : u[1]) = static_cast<long>(e);
+      (u[0] == kNone ? u[0] : u[1]) = static_cast<std::uint32_t>(e);
     }
   }
-  for (const LayerSplit& s : split) {
+  // The entries on all cores: the error thrown is the first entry's, as in order.
+  detail::parallel_for(split.size(), true, [&](std::size_t j) {
+    const LayerSplit& s = split[j];
     const mesh::Element& el = in_.elements()[s.element];
     for (std::size_t f = 0; f < faces(el.shape).size(); ++f) {
       const auto mine = cuts(s.element, el.faces[f]);
       if (mine.empty()) continue;
       const auto& u = users[el.faces[f]];
-      const long other = u[0] == static_cast<long>(s.element) ? u[1] : u[0];
-      if (other < 0 || cuts(static_cast<std::size_t>(other), el.faces[f]) == mine) continue;
+      const std::uint32_t other = u[0] == s.element ? u[1] : u[0];
+      if (other == kNone || cuts(other, el.faces[f]) == mine) continue;
       throw std::invalid_argument(caller_ + ": element " + std::to_string(s.element) + " (" + to_string(el.shape) +
                                   ") is split across its face shared with element " + std::to_string(other) + " (" +
                                   to_string(in_.elements()[other].shape) + "), which is " +
                                   (plans_[other].split() ? "split in another way" : "not split") +
                                   ": the shared face would crack; split both the same way");
     }
-  }
+  });
 }
 
 mesh::Mesh Splitter::run(const std::vector<LayerSplit>& split, std::vector<SplitStats>* stats,

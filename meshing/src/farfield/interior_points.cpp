@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <future>
 #include <limits>
 #include <stdexcept>
+#include <system_error>
 
 namespace semimesh::farfield {
 namespace {
@@ -129,24 +131,23 @@ struct Cell {
 
 class Filling {
  public:
+  // The spacing field is built on another thread while this one builds the boundary's tree.
   Filling(const std::vector<Vector3d>& points, const std::vector<std::array<int, 3>>& triangles,
           const InteriorPointParams& params)
-      : boundary_(points, triangles), size_(spacing_field(points, triangles, params)), slope_(params.growth - 1.0) {
-    Box box{points.front(), points.front()};
-    for (const Vector3d& p : points) box.lo = box.lo.cwiseMin(p), box.hi = box.hi.cwiseMax(p);
-    root_side_ = (box.hi - box.lo).maxCoeff() * (1.0 + 1e-6);
-    root_lo_ = box.lo - Vector3d::Constant(1e-7 * root_side_);
-  }
+      : Filling(points, triangles, params, spacing_field_beside(points, triangles, params)) {}
 
   // Cells in depth-first order down to where there are enough of them to share among threads.
   std::vector<Cell> top_cells() const {
     std::vector<Cell> cells{Cell{{0, 0, 0}, 0, Side::Unknown}};
     while (cells.size() < 512 && cells.front().depth < 6) {
+      std::vector<Side> sides(cells.size());
+#pragma omp parallel for schedule(dynamic, 1)
+      for (std::size_t i = 0; i < cells.size(); ++i)
+        sides[i] = classify(cells[i], size_(corner_of(cells[i]) + Vector3d::Constant(0.5 * side_at(cells[i].depth))));
       std::vector<Cell> next;
-      for (const Cell& cell : cells) {
-        const Side side = classify(cell, size_(corner_of(cell) + Vector3d::Constant(0.5 * side_at(cell.depth))));
-        if (side == Side::Outside) continue;
-        for (int child = 0; child < 8; ++child) next.push_back(child_of(cell, child, side));
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (sides[i] == Side::Outside) continue;
+        for (int child = 0; child < 8; ++child) next.push_back(child_of(cells[i], child, sides[i]));
       }
       if (next.empty()) break;
       cells = std::move(next);
@@ -170,6 +171,26 @@ class Filling {
   }
 
  private:
+  Filling(const std::vector<Vector3d>& points, const std::vector<std::array<int, 3>>& triangles,
+          const InteriorPointParams& params, std::future<surface::SizeField> spacing)
+      : boundary_(points, triangles), size_(spacing.get()), slope_(params.growth - 1.0) {
+    Box box{points.front(), points.front()};
+    for (const Vector3d& p : points) box.lo = box.lo.cwiseMin(p), box.hi = box.hi.cwiseMax(p);
+    root_side_ = (box.hi - box.lo).maxCoeff() * (1.0 + 1e-6);
+    root_lo_ = box.lo - Vector3d::Constant(1e-7 * root_side_);
+  }
+
+  static std::future<surface::SizeField> spacing_field_beside(const std::vector<Vector3d>& points,
+                                                              const std::vector<std::array<int, 3>>& triangles,
+                                                              const InteriorPointParams& params) {
+    const auto build = [&points, &triangles, params] { return spacing_field(points, triangles, params); };
+    try {
+      return std::async(std::launch::async, build);
+    } catch (const std::system_error&) {  // no thread to be had: built when asked, on this one
+      return std::async(std::launch::deferred, build);
+    }
+  }
+
   static surface::SizeField spacing_field(const std::vector<Vector3d>& points,
                                           const std::vector<std::array<int, 3>>& triangles,
                                           const InteriorPointParams& params) {
