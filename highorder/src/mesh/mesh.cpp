@@ -5,6 +5,7 @@
 #include "entity_keys.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <future>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +13,35 @@
 #include <system_error>
 
 namespace semimesh::mesh {
+namespace {
+
+// Runs `mine` on this thread and `theirs` on another (here too when no thread is to be had): two
+// halves of a copy that write different members. Both are done when it returns or throws (this
+// thread's error first).
+template <class Mine, class Theirs>
+void both_sides(const Mine& mine, const Theirs& theirs) {
+  std::future<void> other;
+  try {
+    other = std::async(std::launch::async, theirs);
+  } catch (const std::system_error&) {
+  }
+  std::exception_ptr error;
+  try {
+    mine();
+  } catch (...) {
+    error = std::current_exception();
+  }
+  if (other.valid()) {
+    other.wait();
+    if (!error) other.get();
+  } else if (!error) {
+    theirs();
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace
+
 namespace {
 
 using detail::edge_key;
@@ -286,22 +316,27 @@ void Mesh::adopt_entities(const Mesh& linear, const std::vector<NodeId>& edge_no
                                 std::to_string(face_nodes.size()) + " ids for " + std::to_string(linear.edges_.size()) +
                                 " edges and " + std::to_string(linear.faces_.size()) + " faces at order " +
                                 std::to_string(order_));
-  edges_ = linear.edges_;
-  for (std::size_t e = 0; e < edges_.size(); ++e) edges_[e].first_node = static_cast<std::uint32_t>(e * per_edge);
-  edge_pool_ = edge_nodes;
-  faces_ = linear.faces_;
-  face_pool_.clear();
-  std::size_t pool_size = 0;
-  for (const Face& face : faces_) pool_size += static_cast<std::size_t>(face_interior_count(face.num_vertices, order_));
-  face_pool_.reserve(pool_size);
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    const auto count = static_cast<std::size_t>(face_interior_count(faces_[f].num_vertices, order_));
-    faces_[f].first_node = static_cast<std::uint32_t>(face_pool_.size());
-    face_pool_.insert(face_pool_.end(), face_nodes.begin() + static_cast<long>(f * face_stride),
-                      face_nodes.begin() + static_cast<long>(f * face_stride + count));
-  }
-  edge_index_ = linear.edge_index_;
-  face_index_ = linear.face_index_;
+  both_sides(
+      [&] {
+        edges_ = linear.edges_;
+        for (std::size_t e = 0; e < edges_.size(); ++e) edges_[e].first_node = static_cast<std::uint32_t>(e * per_edge);
+        edge_pool_ = edge_nodes;
+        edge_index_ = linear.edge_index_;
+      },
+      [&] {
+        faces_ = linear.faces_;
+        face_pool_.clear();
+        std::size_t pool_size = 0;
+        for (const Face& face : faces_) pool_size += static_cast<std::size_t>(face_interior_count(face.num_vertices, order_));
+        face_pool_.reserve(pool_size);
+        for (std::size_t f = 0; f < faces_.size(); ++f) {
+          const auto count = static_cast<std::size_t>(face_interior_count(faces_[f].num_vertices, order_));
+          faces_[f].first_node = static_cast<std::uint32_t>(face_pool_.size());
+          face_pool_.insert(face_pool_.end(), face_nodes.begin() + static_cast<long>(f * face_stride),
+                            face_nodes.begin() + static_cast<long>(f * face_stride + count));
+        }
+        face_index_ = linear.face_index_;
+      });
 }
 
 void Mesh::adopt_all_entities(const Mesh& other, Mesh* lookups_from) {
@@ -312,14 +347,19 @@ void Mesh::adopt_all_entities(const Mesh& other, Mesh* lookups_from) {
                                 " into one of order " + std::to_string(order_));
   if (lookups_from && lookups_from != &other)
     throw std::invalid_argument("Mesh::adopt_all_entities: the lookups must come from the mesh adopted");
-  edges_ = other.edges_, faces_ = other.faces_;
-  edge_pool_ = other.edge_pool_, face_pool_ = other.face_pool_;
-  if (lookups_from) {
-    edge_index_ = std::move(lookups_from->edge_index_), face_index_ = std::move(lookups_from->face_index_);
-    lookups_from->edge_index_ = IdTable(), lookups_from->face_index_ = IdTable();
-  } else {
-    edge_index_ = other.edge_index_, face_index_ = other.face_index_;
-  }
+  both_sides(
+      [&] {
+        edges_ = other.edges_, edge_pool_ = other.edge_pool_;
+        if (!lookups_from) return void(edge_index_ = other.edge_index_);
+        edge_index_ = std::move(lookups_from->edge_index_);
+        lookups_from->edge_index_ = IdTable();
+      },
+      [&] {
+        faces_ = other.faces_, face_pool_ = other.face_pool_;
+        if (!lookups_from) return void(face_index_ = other.face_index_);
+        face_index_ = std::move(lookups_from->face_index_);
+        lookups_from->face_index_ = IdTable();
+      });
 }
 
 void Mesh::add_elements_as_in(const Mesh& other, std::size_t first, std::size_t end) {
