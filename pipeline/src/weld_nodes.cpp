@@ -136,10 +136,28 @@ bool take_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine, c
   return moved;
 }
 
+// The faces' part of snap_welded_entities (below).
+void snap_faces(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to, std::vector<char>& face_moved,
+                double& largest_move);
+
+// The edges' inner nodes and the faces' on two threads: each side writes `to` only at its own
+// entities' inner nodes and reads it there and at vertices, which neither writes.
 Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to) {
   const int P = mesh.order();
   Snapped out{std::vector<char>(mesh.edges().size(), 0), std::vector<char>(mesh.faces().size(), 0), 0.0};
   if (P < 2) return out;
+  double largest_face_move = 0.0;
+  std::future<void> faces;
+  try {
+    faces = std::async(std::launch::async, [&] { snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move); });
+  } catch (const std::system_error&) {  // no thread to be had: after the edges, on this one
+  }
+  struct Join {  // also when the edges' side throws
+    std::future<void>& f;
+    ~Join() {
+      if (f.valid()) f.wait();
+    }
+  } join{faces};
   for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
     const mesh::Edge& edge = mesh.edges()[e];
     const mesh::NodeId a = to[edge.vertices[0]], b = to[edge.vertices[1]];
@@ -151,6 +169,17 @@ Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vect
     out.edge_moved[e] = take_nodes(mesh, pool_part(mesh.edge_pool(), edge.first_node, P - 1), theirs, tolerance, to,
                                    out.largest_move);
   }
+  if (faces.valid())
+    faces.get();
+  else
+    snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move);
+  out.largest_move = std::max(out.largest_move, largest_face_move);
+  return out;
+}
+
+void snap_faces(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to, std::vector<char>& face_moved,
+                double& largest_move) {
+  const int P = mesh.order();
   std::vector<mesh::NodeId> welded;  // one face's vertices after the weld, reused: most faces do not move
   for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
     const mesh::Face& face = mesh.faces()[f];
@@ -174,9 +203,8 @@ Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vect
         mine.push_back(mesh.face_pool()[face.first_node + slot.slot[0]]);
         theirs.push_back(mesh.face_pool()[their_face.first_node + slot.slot[code]]);
       }
-    out.face_moved[f] = take_nodes(mesh, mine, theirs, tolerance, to, out.largest_move);
+    face_moved[f] = take_nodes(mesh, mine, theirs, tolerance, to, largest_move);
   }
-  return out;
 }
 
 // The points after the weld: node v at to[v]'s, or where `moved` puts it.

@@ -803,12 +803,24 @@ Mesh::EntityUpdate Mesh::replace_nodes_with(bool remap, std::vector<NodeId> to,
       if (referenced[v]) used[to[v]] = 1;
   }
   const EntityMerges merges = merging.valid() ? merging.get() : remap ? entity_merges(to) : EntityMerges{};
+  // The order a rebuild meets the entities in, on another thread while this one compacts the nodes:
+  // it reads the elements' and boundary faces' entity ids only, which nothing below changes before
+  // it is taken.
+  const bool remapping = remap && !merges.collapsed;
+  std::future<EntityOrder> ordering;
+  if (remapping) {
+    try {
+      ordering = std::async(std::launch::async, [&] { return entity_order(merges); });
+    } catch (const std::system_error&) {  // no thread to be had: found below, on this one
+    }
+  }
   {
     // `to` then leads straight to the new ids: one map of 4 bytes a node held through the rebuild.
     const std::vector<NodeId> new_id = compact_nodes(used, moved);
     for (NodeId& t : to) t = t < new_id.size() ? new_id[t] : kNoNode;
   }
   used = {};
+  const EntityOrder order = ordering.valid() ? ordering.get() : remapping ? entity_order(merges) : EntityOrder{};
   // The old entities move into a mesh of their own, which still assembles the old node lists. The
   // elements stay: each is rebuilt in its own place once its old node list is read (held once).
   Mesh old(order_, node_set_);
@@ -818,7 +830,7 @@ Mesh::EntityUpdate Mesh::replace_nodes_with(bool remap, std::vector<NodeId> to,
   edges_ = {}, faces_ = {}, boundary_ = {};
   edge_pool_ = {}, face_pool_ = {}, interior_pool_ = {};
   edge_index_.clear(), face_index_.clear();
-  if (remap && remap_entities(old, to, merges)) {
+  if (remapping && remap_entities(old, to, merges, order)) {
     if (rebuilt) rebuilt->store(elements_.size(), std::memory_order_release);
     if (done) done(1.0);
     return EntityUpdate::Remapped;

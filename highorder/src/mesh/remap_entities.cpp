@@ -102,15 +102,55 @@ Mesh::EntityMerges Mesh::entity_merges(const std::vector<NodeId>& to) const {
   return merges;
 }
 
-bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const EntityMerges& merges) {
+Mesh::EntityOrder Mesh::entity_order(const EntityMerges& merges) const {
+  EntityOrder order;
+  order.edge_target.resize(edges_.size());
+  order.face_target.resize(faces_.size());
+  for (std::uint32_t e = 0; e < order.edge_target.size(); ++e) order.edge_target[e] = e;
+  for (std::uint32_t f = 0; f < order.face_target.size(); ++f) order.face_target[f] = f;
+  for (const auto& [from, into] : merges.edges) order.edge_target[from] = into;
+  for (const auto& [from, into] : merges.faces) order.face_target[from] = into;
+  // New ids in the order the rebuild meets the entities: elements, then boundary faces; each face's
+  // first user gives its frame (its vertex order), as a new face takes its first element's.
+  order.new_edge.assign(edges_.size(), kNone);
+  order.new_face.assign(faces_.size(), kNone);
+  order.edge_order.reserve(edges_.size());
+  order.face_order.reserve(faces_.size());
+  order.first_user.reserve(faces_.size());
+  const auto meet_edge = [&](std::uint32_t e) {
+    const std::uint32_t t = order.edge_target[e];
+    if (order.new_edge[t] == kNone)
+      order.new_edge[t] = static_cast<std::uint32_t>(order.edge_order.size()), order.edge_order.push_back(t);
+  };
+  const auto meet_face = [&](std::uint32_t f, EntityOrder::FirstUser user) {
+    const std::uint32_t t = order.face_target[f];
+    if (order.new_face[t] == kNone)
+      order.new_face[t] = static_cast<std::uint32_t>(order.face_order.size()), order.face_order.push_back(t),
+      order.first_user.push_back(user);
+  };
+  for (std::uint32_t e = 0; e < elements_.size(); ++e) {
+    const Element& el = elements_[e];
+    for (std::size_t k = 0; k < ho::edges(el.shape).size(); ++k) meet_edge(el.edges[k]);
+    for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f)
+      meet_face(el.faces[f], {e, static_cast<std::uint8_t>(f), false});
+  }
+  for (std::uint32_t b = 0; b < boundary_.size(); ++b) {
+    const BoundaryFace& bf = boundary_[b];
+    for (std::size_t k = 0; k < ho::edges(bf.shape).size(); ++k) meet_edge(bf.edges[k]);
+    meet_face(bf.face, {b, 0, true});
+  }
+  return order;
+}
+
+bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const EntityMerges& merges,
+                          const EntityOrder& order) {
   if (merges.collapsed) return false;  // the rebuild's error names the element
   const int P = order_;
   const std::size_t per_edge = static_cast<std::size_t>(edge_interior_count(P));
-  std::vector<std::uint32_t> edge_target(old.edges_.size()), face_target(old.faces_.size());
-  for (std::uint32_t e = 0; e < edge_target.size(); ++e) edge_target[e] = e;
-  for (std::uint32_t f = 0; f < face_target.size(); ++f) face_target[f] = f;
-  for (const auto& [from, into] : merges.edges) edge_target[from] = into;
-  for (const auto& [from, into] : merges.faces) face_target[from] = into;
+  const std::vector<std::uint32_t>&edge_target = order.edge_target, &face_target = order.face_target;
+  const std::vector<std::uint32_t>&new_edge = order.new_edge, &new_face = order.new_face;
+  const std::vector<std::uint32_t>&edge_order = order.edge_order, &face_order = order.face_order;
+  const std::vector<EntityOrder::FirstUser>& first_user = order.first_user;
 
   const std::array<FrameSlots, 2> frames{frame_slots(3, P), frame_slots(4, P)};
   // Merged entities must give the nodes of the one they join, as the rebuild's later users must.
@@ -134,50 +174,21 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
     face_nodes_in_frame(old.face_pool_, b.first_node, frames[b.num_vertices - 3], code, to, theirs.data());
     if (mine != theirs) return false;
   }
-
-  // New ids in the order the rebuild meets the entities: elements, then boundary faces; each face's
-  // first user gives its frame (its vertex order), as a new face takes its first element's.
-  struct FirstUser {
-    std::uint32_t owner;
-    std::uint8_t local;
-    bool boundary;
-  };
-  std::vector<std::uint32_t> new_edge(old.edges_.size(), kNone), new_face(old.faces_.size(), kNone);
-  std::vector<std::uint32_t> edge_order, face_order;
-  std::vector<FirstUser> first_user;
-  edge_order.reserve(old.edges_.size());
-  face_order.reserve(old.faces_.size());
-  first_user.reserve(old.faces_.size());
-  const auto meet_edge = [&](std::uint32_t e) {
-    const std::uint32_t t = edge_target[e];
-    if (new_edge[t] == kNone) new_edge[t] = static_cast<std::uint32_t>(edge_order.size()), edge_order.push_back(t);
-  };
-  const auto meet_face = [&](std::uint32_t f, FirstUser user) {
-    const std::uint32_t t = face_target[f];
-    if (new_face[t] == kNone)
-      new_face[t] = static_cast<std::uint32_t>(face_order.size()), face_order.push_back(t), first_user.push_back(user);
-  };
+  // An element or boundary face whose renamed vertices repeat: the rebuild refuses it.
   std::array<NodeId, 8> v{};
-  for (std::uint32_t e = 0; e < elements_.size(); ++e) {
-    const Element& el = elements_[e];
+  for (const Element& el : elements_) {
     const int nv = ho::num_vertices(el.shape);
     for (int k = 0; k < nv; ++k) v[k] = to[el.vertices[k]];
     if (repeats(v.data(), nv)) return false;
-    for (std::size_t k = 0; k < ho::edges(el.shape).size(); ++k) meet_edge(el.edges[k]);
-    for (std::size_t f = 0; f < ho::faces(el.shape).size(); ++f)
-      meet_face(el.faces[f], {e, static_cast<std::uint8_t>(f), false});
   }
-  for (std::uint32_t b = 0; b < old.boundary_.size(); ++b) {
-    const BoundaryFace& bf = old.boundary_[b];
+  for (const BoundaryFace& bf : old.boundary_) {
     const int nv = ho::num_vertices(bf.shape);
     for (int k = 0; k < nv; ++k) v[k] = to[bf.vertices[k]];
     if (repeats(v.data(), nv)) return false;
-    for (std::size_t k = 0; k < ho::edges(bf.shape).size(); ++k) meet_edge(bf.edges[k]);
-    meet_face(bf.face, {b, 0, true});
   }
 
   // The first user's vertices of a face, in its own order, renamed.
-  const auto user_vertices = [&](const FirstUser& u, std::array<NodeId, 4>& out) {
+  const auto user_vertices = [&](const EntityOrder::FirstUser& u, std::array<NodeId, 4>& out) {
     if (u.boundary) {
       const BoundaryFace& bf = old.boundary_[u.owner];
       for (int k = 0; k < ho::num_vertices(bf.shape); ++k) out[k] = to[bf.vertices[k]];
@@ -236,7 +247,7 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
       face.first_node = static_cast<std::uint32_t>(pool_end);
       face_nodes_in_frame(old.face_pool_, was.first_node, frames[n - 3], code, to, face_pool.data() + pool_end);
       pool_end += per_face[n - 3];
-      const FirstUser& u = first_user[i];
+      const EntityOrder::FirstUser& u = first_user[i];
       const auto& own = ho::edges(n == 3 ? ho::Shape::Triangle : ho::Shape::Quadrilateral);
       for (std::size_t k = 0; k < own.size(); ++k) {
         const std::uint32_t e = u.boundary ? old.boundary_[u.owner].edges[k]

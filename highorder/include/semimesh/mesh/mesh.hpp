@@ -316,10 +316,27 @@ class Mesh {
     bool collapsed = false;
   };
   EntityMerges entity_merges(const std::vector<NodeId>& to) const;
+  /// The order in which a rebuild, element by element then boundary face by boundary face, meets
+  /// the entities once `merges` joined some into others: read from the entity ids alone (no node
+  /// id), so it is found while the nodes are compacted.
+  struct EntityOrder {
+    struct FirstUser {
+      std::uint32_t owner;
+      std::uint8_t local;
+      bool boundary;
+    };
+    std::vector<std::uint32_t> edge_target, face_target;  ///< [old id] the entity it is (itself unless merged)
+    std::vector<std::uint32_t> new_edge, new_face;        ///< [old id of a target] its new id
+    std::vector<std::uint32_t> edge_order, face_order;    ///< [new id] the old id
+    std::vector<FirstUser> first_user;                    ///< [new face id] the element or boundary face meeting it first
+  };
+  EntityOrder entity_order(const EntityMerges& merges) const;
   /// replace_nodes' remap of the entities moved into `old` (its edges, faces, pools and boundary
-  /// faces; this mesh's elements still name them), `to`: old node ids onto new. False, with
-  /// this mesh's elements and boundary untouched, where the result would not be the rebuild's.
-  bool remap_entities(const Mesh& old, const std::vector<NodeId>& to, const EntityMerges& merges);
+  /// faces; this mesh's elements still name them), `to`: old node ids onto new, `order` the
+  /// entity_order of `merges`. False, with this mesh's elements and boundary untouched, where the
+  /// result would not be the rebuild's.
+  bool remap_entities(const Mesh& old, const std::vector<NodeId>& to, const EntityMerges& merges,
+                      const EntityOrder& order);
   EntityUpdate replace_nodes_with(bool remap, std::vector<NodeId> to,
                                   const std::unordered_map<NodeId, Eigen::Vector3d>& moved,
                                   const std::function<void(double)>& done, std::atomic<std::size_t>* rebuilt);
