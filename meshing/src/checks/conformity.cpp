@@ -31,31 +31,43 @@ void sort_key(std::array<NodeId, 4>& key, int n) {
     for (int j = i; j > 0 && key[j] < key[j - 1]; --j) std::swap(key[j], key[j - 1]);
 }
 
+// use(o) for every use of a face by the items [first, end): the elements in order, then the
+// boundary faces (item elements().size() + b).
+template <class Use>
+void uses_of(const mesh::Mesh& mesh, std::size_t first, std::size_t end, const Use& use) {
+  const std::size_t num_elements = mesh.elements().size();
+  for (std::size_t item = first; item < end; ++item) {
+    if (item < num_elements) {
+      const mesh::Element& element = mesh.elements()[item];
+      const auto& faces = ho::faces(element.shape);
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        Occurrence o;
+        for (std::size_t i = 0; i < faces[f].size(); ++i) o.key[i] = element.vertices[faces[f][i]];
+        sort_key(o.key, static_cast<int>(faces[f].size()));
+        o.owner = static_cast<std::uint32_t>(item);
+        o.local = static_cast<std::uint8_t>(f);
+        use(o);
+      }
+    } else {
+      const std::size_t b = item - num_elements;
+      const mesh::BoundaryFace& face = mesh.boundary_faces()[b];
+      const int n = ho::num_vertices(face.shape);
+      Occurrence o;
+      std::copy(face.vertices.begin(), face.vertices.begin() + n, o.key.begin());
+      sort_key(o.key, n);
+      o.owner = static_cast<std::uint32_t>(b);
+      o.boundary = true;
+      use(o);
+    }
+  }
+}
+
+std::size_t num_items(const mesh::Mesh& mesh) { return mesh.elements().size() + mesh.boundary_faces().size(); }
+
 std::vector<Occurrence> collect_occurrences(const mesh::Mesh& mesh) {
   std::vector<Occurrence> all;
   all.reserve(mesh.elements().size() * 5 + mesh.boundary_faces().size());
-  for (std::size_t e = 0; e < mesh.elements().size(); ++e) {
-    const mesh::Element& element = mesh.elements()[e];
-    const auto& faces = ho::faces(element.shape);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      Occurrence o;
-      for (std::size_t i = 0; i < faces[f].size(); ++i) o.key[i] = element.vertices[faces[f][i]];
-      sort_key(o.key, static_cast<int>(faces[f].size()));
-      o.owner = static_cast<std::uint32_t>(e);
-      o.local = static_cast<std::uint8_t>(f);
-      all.push_back(o);
-    }
-  }
-  for (std::size_t b = 0; b < mesh.boundary_faces().size(); ++b) {
-    const mesh::BoundaryFace& face = mesh.boundary_faces()[b];
-    const int n = ho::num_vertices(face.shape);
-    Occurrence o;
-    std::copy(face.vertices.begin(), face.vertices.begin() + n, o.key.begin());
-    sort_key(o.key, n);
-    o.owner = static_cast<std::uint32_t>(b);
-    o.boundary = true;
-    all.push_back(o);
-  }
+  uses_of(mesh, 0, num_items(mesh), [&](const Occurrence& o) { all.push_back(o); });
   return all;
 }
 
@@ -88,13 +100,26 @@ struct UseSources {
   bool operator==(const UseSources& other) const { return face == other.face && edges == other.edges; }
 };
 
+// face_sources of a shape at the mesh's order and node set, remembered per thread by shape (the
+// check asks for every use of every face; face_sources' own lookup is a map's).
+const std::vector<detail::FaceSources>& sources_of(const mesh::Mesh& mesh, ho::Shape shape) {
+  thread_local int order = 0;
+  thread_local ho::NodeSet set = ho::NodeSet::Equispaced;
+  thread_local std::array<const std::vector<detail::FaceSources>*, 16> known{};
+  if (mesh.order() != order || mesh.node_set() != set) order = mesh.order(), set = mesh.node_set(), known.fill(nullptr);
+  const auto slot = static_cast<std::size_t>(shape);
+  if (slot >= known.size()) return detail::face_sources(shape, order, set);
+  if (!known[slot]) known[slot] = &detail::face_sources(shape, order, set);
+  return *known[slot];
+}
+
 // False when the layout reads more than those entities' whole runs (then the nodes are compared).
 bool use_sources(const mesh::Mesh& mesh, const Occurrence& o, UseSources& out) {
   const auto sort_edges = [&](std::size_t n) { std::sort(out.edges.begin(), out.edges.begin() + static_cast<long>(n)); };
   out.edges.fill(0);
   if (o.boundary) {
     const mesh::BoundaryFace& face = mesh.boundary_faces()[o.owner];
-    const detail::FaceSources& sources = detail::face_sources(face.shape, mesh.order(), mesh.node_set()).front();
+    const detail::FaceSources& sources = sources_of(mesh, face.shape).front();
     if (!sources.whole) return false;
     out.face = face.face;
     for (std::size_t k = 0; k < sources.edges.size(); ++k) out.edges[k] = face.edges[sources.edges[k]];
@@ -102,7 +127,7 @@ bool use_sources(const mesh::Mesh& mesh, const Occurrence& o, UseSources& out) {
     return true;
   }
   const mesh::Element& element = mesh.elements()[o.owner];
-  const detail::FaceSources& sources = detail::face_sources(element.shape, mesh.order(), mesh.node_set())[o.local];
+  const detail::FaceSources& sources = sources_of(mesh, element.shape)[o.local];
   if (!sources.whole) return false;
   out.face = element.faces[o.local];
   for (std::size_t k = 0; k < sources.edges.size(); ++k) out.edges[k] = element.edges[sources.edges[k]];
@@ -229,23 +254,26 @@ void run_parts(std::size_t parts, const Part& part) {
   for (auto& other : others) other.get();
 }
 
-// `all` sorted by occurs_before, without comparing most pairs: a counting pass puts each
-// occurrence in the bucket of its smallest vertex's range (a few faces a bucket; stable, so a
-// bucket keeps the collection's order), then each bucket is sorted on its own. Buckets follow
-// each other in key order, so the whole is sorted: a face's uses are next to each other (the brute
-// force check, which groups them without sorting, is the tests' reference). The counts, the moves
-// and the buckets' sorts are shared among `parts` threads.
-void sort_occurrences(std::vector<Occurrence>& all, std::size_t parts, std::size_t num_nodes) {
-  int shift = 0;  // buckets of 2^shift smallest vertices: about one bucket per 8 occurrences
-  while ((num_nodes >> shift) > std::max<std::size_t>(1, all.size() / 8)) ++shift;
+// Every use of a face, sorted by occurs_before, without comparing most pairs: a counting pass
+// finds how many uses fall in each bucket of smallest vertices (a few faces a bucket), a second
+// pass writes each use into its bucket's room, then each bucket is sorted on its own. Buckets
+// follow each other in key order, so the whole is sorted: a face's uses are next to each other (the
+// brute force check, which groups them without sorting, is the tests' reference). Both passes over
+// the elements and the buckets' sorts are shared among `parts` threads; the order is
+// occurs_before's alone, whatever the parts.
+std::vector<Occurrence> sorted_occurrences(const mesh::Mesh& mesh, std::size_t parts) {
+  const std::size_t num_nodes = mesh.num_nodes(), items = num_items(mesh);
+  const std::size_t at_most = 6 * mesh.elements().size() + mesh.boundary_faces().size();
+  int shift = 0;  // buckets of 2^shift smallest vertices: about one bucket per 8 uses
+  while ((num_nodes >> shift) > std::max<std::size_t>(1, at_most / 8)) ++shift;
   const std::size_t buckets = (num_nodes >> shift) + 1;
   const auto bucket = [shift](const Occurrence& o) { return static_cast<std::size_t>(o.key[0]) >> shift; };
   std::vector<std::size_t> bounds;
-  for (std::size_t k = 0; k <= parts; ++k) bounds.push_back(all.size() * k / parts);
-  // starts[k][b]: where part k's first occurrence in bucket b goes (parts in order within a bucket).
+  for (std::size_t k = 0; k <= parts; ++k) bounds.push_back(items * k / parts);
+  // starts[k][b]: where part k's first use in bucket b goes (parts in order within a bucket).
   std::vector<std::vector<std::size_t>> starts(parts, std::vector<std::size_t>(buckets + 1, 0));
   run_parts(parts, [&](std::size_t k) {
-    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) ++starts[k][bucket(all[i])];
+    uses_of(mesh, bounds[k], bounds[k + 1], [&](const Occurrence& o) { ++starts[k][bucket(o)]; });
   });
   std::size_t at = 0;
   std::vector<std::size_t> bucket_start(buckets + 1);
@@ -254,17 +282,17 @@ void sort_occurrences(std::vector<Occurrence>& all, std::size_t parts, std::size
     for (std::size_t k = 0; k < parts; ++k) at += std::exchange(starts[k][b], at);
   }
   bucket_start[buckets] = at;
-  std::vector<Occurrence> sorted(all.size());
+  std::vector<Occurrence> sorted(at);
   run_parts(parts, [&](std::size_t k) {
-    for (std::size_t i = bounds[k]; i < bounds[k + 1]; ++i) sorted[starts[k][bucket(all[i])]++] = all[i];
+    uses_of(mesh, bounds[k], bounds[k + 1], [&](const Occurrence& o) { sorted[starts[k][bucket(o)]++] = o; });
   });
   starts = {};
-  all = std::move(sorted);
   run_parts(parts, [&](std::size_t k) {
     for (std::size_t b = buckets * k / parts; b < buckets * (k + 1) / parts; ++b)
-      std::sort(all.begin() + static_cast<long>(bucket_start[b]), all.begin() + static_cast<long>(bucket_start[b + 1]),
-                occurs_before);
+      std::sort(sorted.begin() + static_cast<long>(bucket_start[b]),
+                sorted.begin() + static_cast<long>(bucket_start[b + 1]), occurs_before);
   });
+  return sorted;
 }
 
 // The faces of sorted occurrences [first, end) classified into `result`.
@@ -298,8 +326,7 @@ ConformityResult check_conformity(const mesh::Mesh& mesh, Located located) {
   // The serial passes' longest: its sort and its faces on all cores (the counts and the sorted
   // problems do not depend on how the faces are shared out).
   const std::size_t parts = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<Occurrence> all = collect_occurrences(mesh);
-  sort_occurrences(all, parts, mesh.num_nodes());
+  const std::vector<Occurrence> all = sorted_occurrences(mesh, parts);
   const std::vector<std::size_t> bounds = face_aligned_bounds(all, parts);
   std::vector<ConformityResult> part_results(parts);
   run_parts(parts, [&](std::size_t k) { classify_range(mesh, all, bounds[k], bounds[k + 1], part_results[k]); });
