@@ -190,8 +190,9 @@ void Mesh::reserve(ho::Shape typical_shape, std::size_t num_elements) {
 }
 
 void Mesh::reserve_lookups(std::size_t num_edges, std::size_t num_faces) {
-  edge_index_.reserve(num_edges, [&](std::uint32_t e) { return edge_hash(e); });
-  face_index_.reserve(num_faces, [&](std::uint32_t f) { return face_hash(f); });
+  // Two tables, each rehashing what it holds: one on each side.
+  both_sides([&] { edge_index_.reserve(num_edges, [&](std::uint32_t e) { return edge_hash(e); }); },
+             [&] { face_index_.reserve(num_faces, [&](std::uint32_t f) { return face_hash(f); }); });
 }
 
 std::string Mesh::Named::text() const {
