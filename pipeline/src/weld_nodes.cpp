@@ -136,47 +136,7 @@ bool take_nodes(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& mine, c
   return moved;
 }
 
-// The faces' part of snap_welded_entities (below).
-void snap_faces(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to, std::vector<char>& face_moved,
-                double& largest_move);
-
-// The edges' inner nodes and the faces' on two threads: each side writes `to` only at its own
-// entities' inner nodes and reads it there and at vertices, which neither writes.
-Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to) {
-  const int P = mesh.order();
-  Snapped out{std::vector<char>(mesh.edges().size(), 0), std::vector<char>(mesh.faces().size(), 0), 0.0};
-  if (P < 2) return out;
-  double largest_face_move = 0.0;
-  std::future<void> faces;
-  try {
-    faces = std::async(std::launch::async, [&] { snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move); });
-  } catch (const std::system_error&) {  // no thread to be had: after the edges, on this one
-  }
-  struct Join {  // also when the edges' side throws
-    std::future<void>& f;
-    ~Join() {
-      if (f.valid()) f.wait();
-    }
-  } join{faces};
-  for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
-    const mesh::Edge& edge = mesh.edges()[e];
-    const mesh::NodeId a = to[edge.vertices[0]], b = to[edge.vertices[1]];
-    if (a == edge.vertices[0] && b == edge.vertices[1]) continue;
-    const long other = mesh.find_edge(a, b);
-    if (other < 0 || static_cast<std::size_t>(other) == e) continue;
-    std::vector<mesh::NodeId> theirs = pool_part(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1);
-    if (mesh.edges()[other].vertices[0] != a) std::reverse(theirs.begin(), theirs.end());
-    out.edge_moved[e] = take_nodes(mesh, pool_part(mesh.edge_pool(), edge.first_node, P - 1), theirs, tolerance, to,
-                                   out.largest_move);
-  }
-  if (faces.valid())
-    faces.get();
-  else
-    snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move);
-  out.largest_move = std::max(out.largest_move, largest_face_move);
-  return out;
-}
-
+// The faces' part of snap_welded_entities: each face whose welded vertices are another's takes its inner nodes.
 void snap_faces(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to, std::vector<char>& face_moved,
                 double& largest_move) {
   const int P = mesh.order();
@@ -206,6 +166,38 @@ void snap_faces(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::Node
     face_moved[f] = take_nodes(mesh, mine, theirs, tolerance, to, largest_move);
   }
 }
+
+// The edges' inner nodes and the faces' on two threads: each side writes `to` only at its own
+// entities' inner nodes and reads it there and at vertices, which neither writes.
+Snapped snap_welded_entities(const mesh::Mesh& mesh, double tolerance, std::vector<mesh::NodeId>& to) {
+  const int P = mesh.order();
+  Snapped out{std::vector<char>(mesh.edges().size(), 0), std::vector<char>(mesh.faces().size(), 0), 0.0};
+  if (P < 2) return out;
+  double largest_face_move = 0.0;
+  std::future<void> faces;  // std::async's: waits in its destructor, also when the edges' side throws
+  try {
+    faces = std::async(std::launch::async, [&] { snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move); });
+  } catch (const std::system_error&) {  // no thread to be had: after the edges, on this one
+  }
+  for (std::size_t e = 0; e < mesh.edges().size(); ++e) {
+    const mesh::Edge& edge = mesh.edges()[e];
+    const mesh::NodeId a = to[edge.vertices[0]], b = to[edge.vertices[1]];
+    if (a == edge.vertices[0] && b == edge.vertices[1]) continue;
+    const long other = mesh.find_edge(a, b);
+    if (other < 0 || static_cast<std::size_t>(other) == e) continue;
+    std::vector<mesh::NodeId> theirs = pool_part(mesh.edge_pool(), mesh.edges()[other].first_node, P - 1);
+    if (mesh.edges()[other].vertices[0] != a) std::reverse(theirs.begin(), theirs.end());
+    out.edge_moved[e] = take_nodes(mesh, pool_part(mesh.edge_pool(), edge.first_node, P - 1), theirs, tolerance, to,
+                                   out.largest_move);
+  }
+  if (faces.valid())
+    faces.get();
+  else
+    snap_faces(mesh, tolerance, to, out.face_moved, largest_face_move);
+  out.largest_move = std::max(out.largest_move, largest_face_move);
+  return out;
+}
+
 
 // The points after the weld: node v at to[v]'s, or where `moved` puts it.
 Eigen::MatrixXd welded_points(const mesh::Mesh& mesh, const std::vector<mesh::NodeId>& ids,

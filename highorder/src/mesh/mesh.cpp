@@ -40,10 +40,6 @@ void both_sides(const Mine& mine, const Theirs& theirs) {
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace
-
-namespace {
-
 using detail::edge_key;
 using detail::face_edges_of;
 using detail::face_key;

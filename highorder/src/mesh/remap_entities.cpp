@@ -147,9 +147,12 @@ bool Mesh::remap_entities(const Mesh& old, const std::vector<NodeId>& to, const 
   if (merges.collapsed) return false;  // the rebuild's error names the element
   const int P = order_;
   const std::size_t per_edge = static_cast<std::size_t>(edge_interior_count(P));
-  const std::vector<std::uint32_t>&edge_target = order.edge_target, &face_target = order.face_target;
-  const std::vector<std::uint32_t>&new_edge = order.new_edge, &new_face = order.new_face;
-  const std::vector<std::uint32_t>&edge_order = order.edge_order, &face_order = order.face_order;
+  const std::vector<std::uint32_t>& edge_target = order.edge_target;
+  const std::vector<std::uint32_t>& face_target = order.face_target;
+  const std::vector<std::uint32_t>& new_edge = order.new_edge;
+  const std::vector<std::uint32_t>& new_face = order.new_face;
+  const std::vector<std::uint32_t>& edge_order = order.edge_order;
+  const std::vector<std::uint32_t>& face_order = order.face_order;
   const std::vector<EntityOrder::FirstUser>& first_user = order.first_user;
 
   const std::array<FrameSlots, 2> frames{frame_slots(3, P), frame_slots(4, P)};
